@@ -1,0 +1,17 @@
+package touchline.transport;
+
+/** The wire protocol that carried an {@link Envelope}. */
+public enum Channel {
+    /** FUmanoids protobuf {@code Message} over UDP (legacy 12-byte or 4-byte length header). */
+    FUMANOID,
+    /** Reliable-stream segment (sequence byte + ack byte) sharing the robot's UDP port. */
+    RELIABLE_STREAM,
+    /** GameController game-state ("RGme") or return ("RGrt") packet. */
+    GAMECONTROLLER,
+    /** NAO RPC request or reply over ZeroMQ. */
+    NAO_RPC,
+    /** NAO camera request or JPEG frame over ZeroMQ. */
+    NAO_CAMERA,
+    /** Connection events of a link (NAO online/lost, ...); raw holds the UTF-8 text. */
+    LINK_EVENT
+}

@@ -1,0 +1,61 @@
+package touchline.transport;
+
+import com.google.protobuf.Message;
+
+import java.net.InetSocketAddress;
+import java.util.Arrays;
+import java.util.Objects;
+
+/**
+ * One datagram or call as it crossed the console's boundary, time-stamped when it did.
+ * Everything the console sees or sends, live or replayed, travels as an Envelope: the
+ * model, the recorder, the CLI and (through the model) the UI consume this one stream.
+ *
+ * @param timeMicros   receive (or send) time, microseconds since the epoch
+ * @param direction    inbound from a robot or outbound from the console
+ * @param channel      which wire protocol carried it
+ * @param peer         the robot's (or GameController's) address; null when unknown
+ * @param robotId      the robot's ID, or {@link #NO_ROBOT} when the bytes do not say
+ * @param kind         the message identity, e.g. {@code status}, {@code ext#1042}, {@code malformed}
+ * @param message      the decoded protobuf message, or null when there is none
+ * @param raw          the exact bytes on the wire (never null)
+ * @param error        why the bytes could not be decoded, or null when they could
+ */
+public record Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                       int robotId, String kind, Message message, byte[] raw, String error) {
+
+    public static final int NO_ROBOT = -1;
+
+    public Envelope {
+        Objects.requireNonNull(direction, "direction");
+        Objects.requireNonNull(channel, "channel");
+        Objects.requireNonNull(kind, "kind");
+        Objects.requireNonNull(raw, "raw");
+    }
+
+    public boolean isMalformed() {
+        return error != null;
+    }
+
+    public int size() {
+        return raw.length;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Envelope e && timeMicros == e.timeMicros && robotId == e.robotId
+                && direction == e.direction && channel == e.channel && Objects.equals(peer, e.peer)
+                && kind.equals(e.kind) && Objects.equals(error, e.error) && Arrays.equals(raw, e.raw);
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(timeMicros, direction, channel, robotId, kind, Arrays.hashCode(raw));
+    }
+
+    @Override
+    public String toString() {
+        return "Envelope[" + direction + " " + channel + " " + kind + " robot=" + robotId + " peer=" + peer
+                + " bytes=" + raw.length + (error == null ? "" : " error=" + error) + "]";
+    }
+}
