@@ -68,7 +68,7 @@ public final class RobotProcess implements AutoCloseable {
         }
         Thread drain = new Thread(() -> {
             try {
-                out.transferTo(java.io.OutputStream.nullOutputStream());
+                out.transferTo(java.io.Writer.nullWriter());
             } catch (IOException ignored) {
                 // the process ended
             }
