@@ -37,16 +37,23 @@ public final class Console implements AutoCloseable {
     }
 
     public Console(ConsoleConfig config, MicrosClock clock) {
+        this(config, clock, true);
+    }
+
+    /** @param withModel false leaves the model unsubscribed (benchmarks of the bare transport) */
+    public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
         this.robots = new RobotRegistry(clock);
         this.traffic = new TrafficMeter(clock);
         this.udp = new UdpTransport(config.udp(), codec, bus, clock);
         this.options = new DebugOptionSession(udp, codec, clock);
-        bus.subscribe(robots);
-        bus.subscribe(traffic);
-        bus.subscribe(options);
-        robots.addPresenceListener(options);
+        if (withModel) {
+            bus.subscribe(robots);
+            bus.subscribe(traffic);
+            bus.subscribe(options);
+            robots.addPresenceListener(options);
+        }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "touchline-tick");
             t.setDaemon(true);

@@ -12,6 +12,7 @@ import picocli.CommandLine.Command;
         subcommands = {
                 ListenCommand.class,
                 OptionsCommand.class,
+                BenchCommand.class,
         })
 public final class Main implements Runnable {
 
