@@ -3,7 +3,7 @@
  * over a socketpair, exactly as it would talk to the module's UART on the board.
  *
  *   touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]
- *                   [--framing legacy|length] [--wifi-sim] [--rate HZ]
+ *                   [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]
  *                   [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]
  *                   [--reliable-peer HOST:PORT] [--seed S]
  *
@@ -52,7 +52,7 @@ static void usage(const char *why)
     fprintf(stderr,
             "touchline-robot: %s\n"
             "usage: touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]\n"
-            "                       [--framing legacy|length] [--wifi-sim] [--rate HZ]\n"
+            "                       [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]\n"
             "                       [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]\n"
             "                       [--reliable-peer HOST:PORT] [--seed S]\n",
             why);
@@ -147,7 +147,7 @@ int main(int argc, char **argv)
     char name[32];
     long port = 3838;
     bool wifi_sim = false, have_id = false;
-    uint32_t seed = 0;
+    uint32_t seed = 0, baud = 0;
     int i, fd, actual;
     struct sigaction sa;
 
@@ -173,6 +173,7 @@ int main(int argc, char **argv)
             else usage("--framing must be legacy or length");
         }
         else if (strcmp(a, "--wifi-sim") == 0) wifi_sim = true;
+        else if (strcmp(a, "--baud") == 0) { NEED_VALUE(); baud = (uint32_t)strtoul(v, NULL, 10); }
         else if (strcmp(a, "--rate") == 0) {
             long r;
             NEED_VALUE();
@@ -244,7 +245,7 @@ int main(int argc, char **argv)
     cfg.position = sim_world_position;
 
     if (wifi_sim) {
-        if (host_wifi_open(&wifi, fd, &console, (uint16_t)actual) != 0) {
+        if (host_wifi_open(&wifi, fd, &console, (uint16_t)actual, baud) != 0) {
             fprintf(stderr, "touchline-robot: cannot start the simulated GS1500M\n");
             return 1;
         }
@@ -278,7 +279,18 @@ int main(int argc, char **argv)
                 (unsigned long)c->gc_rejected, (unsigned long)c->reliable_segments, (unsigned long)c->messages_out,
                 (unsigned long)c->bytes_out, (unsigned long)c->send_failures);
     }
-    if (wifi_sim) host_wifi_close(&wifi);
+    if (wifi_sim) {
+        gs_sim_stats ms;
+        const gs_parser_stats *ps = &wifi.gs.parser.stats;
+        host_wifi_close(&wifi, &ms);
+        fprintf(stderr,
+                "robot %ld: GS1500M: serial parser %lu datagrams, %lu lines, %lu garbage lines, %lu resyncs, "
+                "%lu oversize; module %lu udp in (%lu dropped), %lu out, %lu failed, %lu bytes lost in %lu overflows\n",
+                (long)cfg.robot_id, (unsigned long)ps->datagrams, (unsigned long)ps->lines,
+                (unsigned long)ps->garbage_lines, (unsigned long)ps->resyncs, (unsigned long)ps->oversize,
+                (unsigned long)ms.udp_in, (unsigned long)ms.udp_dropped, (unsigned long)ms.udp_out,
+                (unsigned long)ms.send_failed, (unsigned long)ms.overflow_bytes, (unsigned long)ms.overflow_events);
+    }
     close(fd);
     free(apps.send_data);
     return 0;

@@ -253,9 +253,14 @@ void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint3
 void robot_poll(uint32_t now)
 {
     uint8_t i, budget;
+    /* Asked on every poll: a driver may lose its link (DISCONNECT) and re-open it. */
+    if (!pollInitNetwork(now)) {
+        if (g_net_ready) fw_log("network lost, re-initialising", 0, 0);
+        g_net_ready = false;
+        return;
+    }
     if (!g_net_ready) {
-        g_net_ready = pollInitNetwork(now);
-        if (!g_net_ready) return;
+        g_net_ready = true;
         fw_log("network ready", 0, 0);
         g_next_keepalive = now;
     }
