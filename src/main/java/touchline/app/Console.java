@@ -7,6 +7,8 @@ import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.EnvelopeBus;
 import touchline.transport.MicrosClock;
+import touchline.transport.ReliableStreamHandler;
+import touchline.transport.SendGate;
 import touchline.transport.SendResult;
 import touchline.transport.UdpTransport;
 
@@ -30,6 +32,7 @@ public final class Console implements AutoCloseable {
     private final TrafficMeter traffic;
     private final DebugOptionSession options;
     private final UdpTransport udp;
+    private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
 
     public Console(ConsoleConfig config) {
@@ -46,7 +49,8 @@ public final class Console implements AutoCloseable {
         this.clock = clock;
         this.robots = new RobotRegistry(clock);
         this.traffic = new TrafficMeter(clock);
-        this.udp = new UdpTransport(config.udp(), codec, bus, clock);
+        this.reliable = new ReliableStreamHandler(bus, clock);
+        this.udp = new UdpTransport(config.udp(), codec, bus, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, clock);
         if (withModel) {
             bus.subscribe(robots);
@@ -86,6 +90,13 @@ public final class Console implements AutoCloseable {
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
     public UdpTransport udp() { return udp; }
+    public ReliableStreamHandler reliable() { return reliable; }
+
+    /** Match mode and the like: what may go to robots right now (GameController packets aside). */
+    public void setGate(SendGate gate) {
+        udp.setGate(gate);
+        reliable.setGate(gate);
+    }
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }

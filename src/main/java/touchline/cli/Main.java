@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
                 ListenCommand.class,
                 OptionsCommand.class,
                 BenchCommand.class,
+                StreamCommand.class,
         })
 public final class Main implements Runnable {
 
