@@ -325,6 +325,20 @@ static void test_driver(void)
     len = sizeof rx;
     CHECK(!m.driver.recv(m.driver.ctx, rx, len, &len, &from));
 
+    /* a datagram whose rest was lost in the module: abandoned once the line is idle, so it
+     * cannot swallow the next frame */
+    module_says("\x1bZ10100abc");
+    len = sizeof rx;
+    CHECK(!m.driver.recv(m.driver.ctx, rx, len, &len, &from));
+    CHECK(m.driver.poll_init(m.driver.ctx, now += GS_IDLE_RESYNC_MS + 1));
+    len = sizeof rx;
+    CHECK(!m.driver.recv(m.driver.ctx, rx, len, &len, &from));
+    CHECK_EQ(m.stats.idle_aborts, 1);
+    module_says("\x1bZ10002ok");
+    len = sizeof rx;
+    CHECK(m.driver.recv(m.driver.ctx, rx, len, &len, &from));
+    CHECK(len == 2 && memcmp(rx, "ok", 2) == 0);
+
     /* the module drops the console connection: the driver opens everything again */
     module_says("\r\nDISCONNECT 1\r\n");
     len = sizeof rx;
