@@ -5,7 +5,7 @@
  *   touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]
  *                   [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]
  *                   [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]
- *                   [--reliable-peer HOST:PORT] [--seed S]
+ *                   [--reliable-peer HOST:PORT] [--seed S] [--rto MS]
  *
  * First line on stdout: "listening on port <port>". */
 #define _POSIX_C_SOURCE 200809L
@@ -54,7 +54,7 @@ static void usage(const char *why)
             "usage: touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]\n"
             "                       [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]\n"
             "                       [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]\n"
-            "                       [--reliable-peer HOST:PORT] [--seed S]\n",
+            "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n",
             why);
     exit(2);
 }
@@ -192,6 +192,7 @@ int main(int argc, char **argv)
         }
         else if (strcmp(a, "--reliable-peer") == 0) { NEED_VALUE(); cfg.reliable_enabled = true; peer_arg = v; }
         else if (strcmp(a, "--seed") == 0) { NEED_VALUE(); seed = (uint32_t)strtoul(v, NULL, 10); }
+        else if (strcmp(a, "--rto") == 0) { NEED_VALUE(); cfg.reliable_rto_ms = (uint32_t)strtoul(v, NULL, 10); }
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) usage("help");
         else usage("unknown argument");
 #undef NEED_VALUE

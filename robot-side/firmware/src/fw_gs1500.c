@@ -72,6 +72,15 @@ uint16_t gs_parser_line(const gs_parser *p, char *out, uint16_t cap)
     return n;
 }
 
+bool gs_parser_abort(gs_parser *p)
+{
+    if (p->state == S_TEXT) return false;
+    p->stats.resyncs++;
+    p->state = S_TEXT;
+    line_reset(p);
+    return true;
+}
+
 /* A header went wrong (cut off by an overflowing module buffer, or garbage): count it
  * and treat the byte that broke it as ordinary input again. */
 static void resync(gs_parser *p)
@@ -301,7 +310,13 @@ static bool pump(gs_module *m)
     for (;;) {
         if (m->chunk_pos == m->chunk_len) {
             int n = m->serial.read(m->serial.ctx, m->chunk, sizeof m->chunk);
-            if (n <= 0) return false;
+            if (n <= 0) {
+                if ((uint32_t)(m->now - m->last_byte_at) >= GS_IDLE_RESYNC_MS && gs_parser_abort(&m->parser)) {
+                    m->stats.idle_aborts++;
+                }
+                return false;
+            }
+            m->last_byte_at = m->now;
             m->chunk_len = (uint8_t)n;
             m->chunk_pos = 0;
         }
@@ -352,6 +367,7 @@ static void send_command(gs_module *m)
 static bool gs_poll_init(void *ctx, uint32_t now)
 {
     gs_module *m = ctx;
+    m->now = now;
     if (m->step == STEP_READY) return true;
     gs_parser_set_buffer(&m->parser, 0, 0); /* no datagrams expected before the link is up */
     (void)pump(m);
@@ -446,8 +462,10 @@ void gs_module_init(gs_module *m, const gs_serial *serial, const gs_config *cfg)
     m->ok_seen = m->error_seen = false;
     m->connect_cid = 0;
     m->step_at = 0;
+    m->now = m->last_byte_at = 0;
     m->server_cid = m->console_cid = 0;
     m->stats.sent = m->stats.send_rejected = m->stats.command_retries = m->stats.disconnects = 0;
+    m->stats.idle_aborts = 0;
     m->driver.poll_init = gs_poll_init;
     m->driver.recv = gs_recv;
     m->driver.send_con = gs_send_con;

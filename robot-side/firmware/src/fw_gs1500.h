@@ -24,6 +24,9 @@
 #define GS_ESC 0x1B
 #define GS_MAX_DATA 1400u
 #define GS_LINE_RING 64u
+/* A datagram's bytes arrive back to back at the baud rate; a silent line for this long in
+ * the middle of a header or datagram means its rest was lost in the module. */
+#define GS_IDLE_RESYNC_MS 20u
 
 typedef enum {
     GS_EV_NONE = 0,
@@ -73,6 +76,8 @@ void gs_parser_set_buffer(gs_parser *p, uint8_t *buf, uint16_t cap);
 gs_event gs_parser_push(gs_parser *p, uint8_t byte);
 /* Copies the last completed text line (NUL-terminated), returns its length. */
 uint16_t gs_parser_line(const gs_parser *p, char *out, uint16_t cap);
+/* Abandons a header or datagram in progress (its rest was lost); true if there was one. */
+bool gs_parser_abort(gs_parser *p);
 
 /* ---- the driver ---- */
 typedef struct {
@@ -93,6 +98,7 @@ typedef struct {
     uint32_t send_rejected;  /* not ready, or too long */
     uint32_t command_retries;
     uint32_t disconnects;
+    uint32_t idle_aborts;    /* partial datagrams abandoned after GS_IDLE_RESYNC_MS */
 } gs_driver_stats;
 
 typedef struct {
@@ -106,6 +112,8 @@ typedef struct {
     bool ok_seen, error_seen;
     char connect_cid;
     uint32_t step_at;
+    uint32_t now;            /* last time seen in poll_init (called on every robot poll) */
+    uint32_t last_byte_at;
     char server_cid, console_cid;
     char line[GS_LINE_RING + 1];
     gs_driver_stats stats;
