@@ -56,7 +56,10 @@ SimMemory::SimMemory(RobotState& robot, CallLog& log)
   add({"removeData", {{"key", ParamType::String}}, "void", "Removes a key.",
        [this](const Params& p) {
          std::lock_guard<std::mutex> lock(mutex_);
-         if (data_.erase(stringArg(p, 0)) == 0) throw CallError("ALMemory: no key '" + stringArg(p, 0) + "'");
+         auto it = data_.find(stringArg(p, 0));
+         if (it == data_.end()) throw CallError("ALMemory: no key '" + stringArg(p, 0) + "'");
+         storedBytes_ -= it->second.ByteSizeLong();
+         data_.erase(it);
          return none();
        }});
   add({"declareEvent", {{"eventName", ParamType::String}}, "void", "Declares an event.",
@@ -123,6 +126,14 @@ Value SimMemory::get(const std::string& key) const {
 void SimMemory::insert(const std::string& key, const Value& value) {
   if (deviceKey(key)) throw CallError("ALMemory: key '" + key + "' is read-only (device key)");
   std::lock_guard<std::mutex> lock(mutex_);
+  // Bounded like every store fed from the network: a client cannot fill the robot's RAM.
+  auto it = data_.find(key);
+  std::size_t replaced = it == data_.end() ? 0 : it->second.ByteSizeLong();
+  if (it == data_.end() && data_.size() >= kMaxKeys)
+    throw CallError("ALMemory: key limit reached (" + std::to_string(kMaxKeys) + " keys)");
+  if (storedBytes_ - replaced + value.ByteSizeLong() > kMaxBytes)
+    throw CallError("ALMemory: storage limit reached (" + std::to_string(kMaxBytes) + " bytes)");
+  storedBytes_ = storedBytes_ - replaced + value.ByteSizeLong();
   data_[key] = value;
 }
 

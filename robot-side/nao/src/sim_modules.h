@@ -71,7 +71,10 @@ class SimMemory : public SimModule {
   RobotState& robot_;
   CallLog& log_;
   mutable std::mutex mutex_;
+  static constexpr std::size_t kMaxKeys = 10000;
+  static constexpr std::size_t kMaxBytes = 64u << 20;
   std::map<std::string, Value> data_;
+  std::size_t storedBytes_ = 0;
   std::set<std::string> events_;
 };
 

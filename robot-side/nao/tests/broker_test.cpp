@@ -218,3 +218,18 @@ TEST(Broker, ShutdownWakesBlockingCalls) {
   caller.join();
   EXPECT_LT(secondsSince(start), 5.0);  // the 30 s say was cut short
 }
+
+TEST(Broker, MemoryIsBounded) {
+  SimulatedBroker broker(kScale);
+  std::string chunk(15u << 20, 'x');
+  for (int i = 0; i < 4; ++i)
+    broker.call("ALMemory", "insertData", {stringValue("blob" + std::to_string(i)), binaryValue(chunk)});
+  EXPECT_NE(errorOf(broker, "ALMemory", "insertData", {stringValue("blob4"), binaryValue(chunk)})
+                .find("storage limit"),
+            std::string::npos);
+  // Replacing or removing frees room again.
+  broker.call("ALMemory", "removeData", {stringValue("blob0")});
+  broker.call("ALMemory", "insertData", {stringValue("blob4"), binaryValue(chunk)});
+  broker.call("ALMemory", "insertData", {stringValue("blob4"), binaryValue("small")});
+  EXPECT_EQ(broker.call("ALMemory", "getData", {stringValue("blob4")})->binary(), "small");
+}
