@@ -8,6 +8,7 @@
 // Usage: touchline-nao-bench [--seconds 3] [--workers 4]
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -124,11 +125,11 @@ void rpcBench(int workers, double seconds) {
   DealerClient raw(context, loopback(echoPort));
   roundTrips(rpc, ping, 200);  // warm up
   roundTrips(raw, ping, 200);
-  // Interleave in blocks so machine noise hits both alike.
+  // Alternate call by call so machine noise hits both alike.
   std::vector<double> rpcTimes, echoTimes;
-  for (int block = 0; block < 10; ++block) {
-    auto a = roundTrips(rpc, ping, 300);
-    auto b = roundTrips(raw, ping, 300);
+  for (int i = 0; i < 5000; ++i) {
+    auto a = roundTrips(rpc, ping, 1);
+    auto b = roundTrips(raw, ping, 1);
     rpcTimes.insert(rpcTimes.end(), a.begin(), a.end());
     echoTimes.insert(echoTimes.end(), b.begin(), b.end());
   }
@@ -182,8 +183,10 @@ int main(int argc, char** argv) {
     if (arg == "--seconds") seconds = std::stod(argv[i + 1]);
     else if (arg == "--workers") workers = std::stoi(argv[i + 1]);
   }
-  std::printf("touchline-nao-bench (robot side), %u hardware threads\n",
-              std::thread::hardware_concurrency());
+  std::string load;
+  std::getline(std::ifstream("/proc/loadavg"), load);
+  std::printf("touchline-nao-bench (robot side), %u hardware threads, load average %s\n",
+              std::thread::hardware_concurrency(), load.c_str());
   cameraBench(seconds);
   rpcBench(workers, seconds);
   return 0;
