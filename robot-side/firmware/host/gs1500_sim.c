@@ -26,7 +26,8 @@ struct gs_sim {
     /* module -> MCU */
     uint8_t ring[RING];
     uint32_t head, len;
-    double credit;
+    double credit;     /* bytes the line may carry to the MCU now */
+    double rx_credit;  /* bytes the line may carry from the MCU now */
     /* connections: '0' = UDP server on local_port, '1' = UDP client to the console */
     int server_open, client_open;
     struct sockaddr_in client_peer;
@@ -294,22 +295,28 @@ static void *run(void *arg)
         struct pollfd p[2];
         uint64_t t;
         p[0].fd = s->serial_fd;
-        p[0].events = POLLIN;
+        /* the UART from the MCU carries no more than the baud rate: without credit the
+         * bytes wait in the (small) socket buffer and the firmware's write blocks */
+        p[0].events = s->rx_credit >= 1.0 ? POLLIN : 0;
         p[1].fd = s->udp_fd;
         p[1].events = POLLIN;
         p[0].revents = p[1].revents = 0;
         (void)poll(p, 2, 1);
         if (p[0].revents & (POLLIN | POLLHUP)) {
             uint8_t buf[512];
-            ssize_t n = recv(s->serial_fd, buf, sizeof buf, MSG_DONTWAIT);
+            size_t want = s->rx_credit < (double)sizeof buf ? (size_t)s->rx_credit : sizeof buf;
+            ssize_t n = recv(s->serial_fd, buf, want ? want : 1, MSG_DONTWAIT);
             ssize_t i;
             if (n == 0) break; /* the firmware side closed */
+            if (n > 0) s->rx_credit -= (double)n;
             pthread_mutex_lock(&s->lock);
             for (i = 0; i < n; i++) from_mcu(s, buf[i]);
             pthread_mutex_unlock(&s->lock);
         }
         if (p[1].revents & POLLIN) from_network(s);
         t = now_us();
+        s->rx_credit += (double)(t - last) * s->bytes_per_us;
+        if (s->rx_credit > 256.0) s->rx_credit = 256.0;
         drain(s, (double)(t - last));
         last = t;
     }
