@@ -23,7 +23,7 @@ struct gs_sim {
     double bytes_per_us;
     pthread_t thread;
     pthread_mutex_t lock;       /* guards the ring and the connection table */
-    volatile int stop;
+    volatile int stop;          /* set by gs_sim_stop, read by the thread (atomic builtins) */
     /* module -> MCU: bytes not yet on the line, oldest first, and the sizes of the frames
      * (datagram with header, notice, text response) they belong to */
     uint8_t out[BUFFER];
@@ -328,7 +328,7 @@ static void *run(void *arg)
 {
     gs_sim *s = arg;
     uint64_t last = now_us();
-    while (!s->stop) {
+    while (!__atomic_load_n(&s->stop, __ATOMIC_ACQUIRE)) {
         struct pollfd p[2];
         uint64_t t;
         p[0].fd = s->serial_fd;
@@ -391,7 +391,7 @@ void gs_sim_disconnect(gs_sim *s, char cid)
 void gs_sim_stop(gs_sim *s, gs_sim_stats *stats)
 {
     if (s == NULL) return;
-    s->stop = 1;
+    __atomic_store_n(&s->stop, 1, __ATOMIC_RELEASE);
     pthread_join(s->thread, NULL);
     if (stats) *stats = s->stats;
     pthread_mutex_destroy(&s->lock);
