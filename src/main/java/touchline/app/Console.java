@@ -31,6 +31,7 @@ public final class Console implements AutoCloseable {
     private final DebugOptionSession options;
     private final UdpTransport udp;
     private final ScheduledExecutorService ticker;
+    private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -46,6 +47,8 @@ public final class Console implements AutoCloseable {
         bus.subscribe(robots);
         bus.subscribe(traffic);
         bus.subscribe(options);
+        this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
+        bus.subscribe(stores);
         robots.addPresenceListener(options);
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "touchline-tick");
@@ -82,6 +85,8 @@ public final class Console implements AutoCloseable {
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+    /** The bounded stores the UI's views pull from once per frame. */
+    public touchline.model.store.ViewStores stores() { return stores; }
 
     @Override
     public void close() {

@@ -12,6 +12,8 @@ import picocli.CommandLine.Command;
         subcommands = {
                 ListenCommand.class,
                 OptionsCommand.class,
+                ConsoleCommand.class,
+                ScreenshotsCommand.class,
         })
 public final class Main implements Runnable {
 
