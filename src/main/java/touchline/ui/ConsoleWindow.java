@@ -68,7 +68,8 @@ public final class ConsoleWindow {
     public ConsoleWindow show(Stage stage) {
         this.stage = stage;
         applyTheme();
-        Scene scene = new Scene(root, 1400, 900);
+        javafx.geometry.Rectangle2D screen = javafx.stage.Screen.getPrimary().getVisualBounds();
+        Scene scene = new Scene(root, Math.min(1400, screen.getWidth()), Math.min(900, screen.getHeight()));
         scene.getStylesheets().add(ConsoleWindow.class.getResource("touchline.css").toExternalForm());
         scene.getStylesheets().add(software.coley.bentofx.Bento.class.getResource("/bento.css").toExternalForm());
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
@@ -133,8 +134,10 @@ public final class ConsoleWindow {
     }
 
     private void applyTheme() {
-        Application.setUserAgentStylesheet(dark ? new PrimerDark().getUserAgentStylesheet()
-                : new PrimerLight().getUserAgentStylesheet());
+        String css = dark ? new PrimerDark().getUserAgentStylesheet() : new PrimerLight().getUserAgentStylesheet();
+        // the theme names a class-path resource; resolve it to a URL so any class loader finds it
+        java.net.URL url = ConsoleWindow.class.getResource(css);
+        Application.setUserAgentStylesheet(url != null ? url.toExternalForm() : css);
     }
 
     public void quickOpen() {

@@ -22,6 +22,7 @@ public final class FramePulse extends AnimationTimer {
     private final FrameContext frame = new FrameContext(latency);
     private final Set<String> reported = new HashSet<>();
     private final Runnable extra;
+    private final java.util.Map<String, Long> refreshNanos = new java.util.TreeMap<>();
     private long frames;
     private long windowStart;
     private long windowFrames;
@@ -48,8 +49,13 @@ public final class FramePulse extends AnimationTimer {
         }
         extra.run();
         for (Shell.OpenView v : shell.openViews()) {
+            if (!showing(v.view().node())) {
+                continue; // a tab behind another one catches up the moment it is selected
+            }
+            long t0 = System.nanoTime();
             try {
                 v.view().refresh(frame);
+                refreshNanos.merge(v.spec().id(), System.nanoTime() - t0, Long::sum);
             } catch (RuntimeException e) {
                 if (reported.add(v.spec().id() + e)) {
                     LOG.warn("view {} failed to refresh: {}", v.spec().title(), e.toString(), e);
@@ -60,12 +66,32 @@ public final class FramePulse extends AnimationTimer {
         status.refresh(frame.nowMicros(), fps, latency);
     }
 
+    /** On screen: in a shown window and neither it nor any ancestor hidden. */
+    static boolean showing(javafx.scene.Node node) {
+        if (node.getScene() == null || node.getScene().getWindow() == null || !node.getScene().getWindow().isShowing()) {
+            return false;
+        }
+        for (javafx.scene.Node n = node; n != null; n = n.getParent()) {
+            if (!n.isVisible()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     public long frames() {
         return frames;
     }
 
     public double fps() {
         return fps;
+    }
+
+    /** Time spent in each view's refresh since the last call, by view ID, and resets it (profiling). */
+    public java.util.Map<String, Long> takeRefreshNanos() {
+        java.util.Map<String, Long> out = new java.util.TreeMap<>(refreshNanos);
+        refreshNanos.clear();
+        return out;
     }
 
     public LatencyProbe latency() {

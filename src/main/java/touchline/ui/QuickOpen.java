@@ -78,10 +78,9 @@ public final class QuickOpen {
                 context.open(c.spec(), c.source());
             }
         };
-        filter.setOnKeyPressed(e -> {
-            if (e.getCode() == KeyCode.ENTER) {
-                go.run();
-            } else if (e.getCode() == KeyCode.ESCAPE) {
+        filter.setOnAction(e -> go.run());
+        filter.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
+            if (e.getCode() == KeyCode.ESCAPE) {
                 stage.close();
             } else if (e.getCode() == KeyCode.DOWN) {
                 list.getSelectionModel().selectNext();

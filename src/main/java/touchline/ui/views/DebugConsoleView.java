@@ -49,6 +49,7 @@ public final class DebugConsoleView implements View {
         lines.setId("debug-lines");
         lines.getSelectionModel().setSelectionMode(SelectionMode.MULTIPLE);
         lines.setStyle("-fx-font-family: monospace;");
+        lines.setFixedCellSize(22); // no per-cell measuring: appending stays cheap
         search.setPromptText("search");
         search.setId("debug-search");
         robot.valueProperty().addListener((o, a, b) -> reload = true);

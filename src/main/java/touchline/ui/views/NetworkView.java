@@ -56,6 +56,7 @@ public final class NetworkView implements View {
         this.context = context;
         this.robot = new RobotFilter(context);
         table.setId("network-table");
+        table.setFixedCellSize(24);
         table.getColumns().add(column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96));
         table.getColumns().add(column("Dir", e -> e.direction() == Direction.IN ? "in" : "out", 40));
         table.getColumns().add(column("Peer", e -> e.peer() == null ? "" : e.peer().getAddress().getHostAddress() + ":" + e.peer().getPort(), 130));

@@ -61,7 +61,8 @@ public final class OptionsView implements View {
                         : row.option().streaming() ? "-fx-text-fill: #2da44e;" : "");
             }
         });
-        tree.setOnKeyPressed(e -> {
+        // a filter, not a handler: the tree's own key handling would take Space and Enter first
+        tree.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
             if (e.getCode() == KeyCode.SPACE) {
                 toggleSelected();
                 e.consume();

@@ -33,6 +33,9 @@ public final class PlotView extends SourcedView {
         chart = new XYChart(x, y);
         chart.setId("plot-chart");
         chart.setLegendVisible(true);
+        // markers on thousands of points cost more than the lines; the lines show the shape
+        chart.getRenderers().stream().filter(r -> r instanceof io.fair_acc.chartfx.renderer.spi.ErrorDataSetRenderer)
+                .forEach(r -> ((io.fair_acc.chartfx.renderer.spi.ErrorDataSetRenderer) r).setDrawMarker(false));
         root.setCenter(chart);
     }
 

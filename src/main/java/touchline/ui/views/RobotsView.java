@@ -1,7 +1,6 @@
 package touchline.ui.views;
 
 import javafx.beans.property.ReadOnlyObjectWrapper;
-import javafx.collections.FXCollections;
 import javafx.scene.Node;
 import javafx.scene.control.Label;
 import javafx.scene.control.SplitPane;
@@ -111,13 +110,16 @@ public final class RobotsView implements View {
     @Override
     public void refresh(FrameContext frame) {
         long v = context.console().robots().version();
-        if (v == seenVersion && frame.nowMicros() - lastRebuildMicros < 500_000) {
+        // keep-alives change the version many times a second; rates and "last seen" only need
+        // two updates a second, but a robot appearing shows at once
+        if (v == seenVersion || (frame.nowMicros() - lastRebuildMicros < 500_000
+                && context.console().robots().robots().size() == table.getItems().size())) {
             return;
         }
         seenVersion = v;
         lastRebuildMicros = frame.nowMicros();
         List<RobotSnapshot> robots = context.console().robots().robots();
-        table.setItems(FXCollections.observableArrayList(robots));
+        table.getItems().setAll(robots);
         StringBuilder p = new StringBuilder();
         for (SourceSnapshot s : context.console().robots().sources()) {
             if (s.malformed() > 0) {

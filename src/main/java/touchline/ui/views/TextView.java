@@ -1,6 +1,6 @@
 package touchline.ui.views;
 
-import javafx.scene.control.TextArea;
+import javafx.scene.control.ListView;
 import touchline.model.store.Latest;
 import touchline.model.store.SequencedRing;
 import touchline.model.store.TextLine;
@@ -9,25 +9,32 @@ import touchline.ui.SourcedView;
 import touchline.ui.ViewContext;
 import touchline.ui.ViewSource;
 
-import java.util.ArrayDeque;
-import java.util.Deque;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Set;
 
-/** Plain text of one option: its newest {@link #LINES} lines, time-stamped. */
+/**
+ * Plain text of one option: its newest {@link #LINES} lines, time-stamped, newest at the
+ * bottom. A list (not a text area) so appending a line costs one cell, not a re-layout of all.
+ */
 public final class TextView extends SourcedView {
 
-    static final int LINES = 200;
-    private final TextArea text = new TextArea();
-    private final Deque<String> lines = new ArrayDeque<>();
+    static final int LINES = 500;
+    private final ListView<String> lines = new ListView<>();
     private long seenSeq;
     private ViewSource seenSource = ViewSource.NONE;
 
     public TextView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.TEXT_VALUE), source);
-        text.setEditable(false);
-        text.setId("option-text");
-        text.setStyle("-fx-font-family: monospace;");
-        root.setCenter(text);
+        lines.setId("option-text");
+        lines.setStyle("-fx-font-family: monospace;");
+        lines.setFixedCellSize(22);
+        root.setCenter(lines);
+    }
+
+    /** The lines shown (for tests). */
+    public List<String> shownLines() {
+        return List.copyOf(lines.getItems());
     }
 
     @Override
@@ -36,19 +43,23 @@ public final class TextView extends SourcedView {
         if (!s.equals(seenSource)) {
             seenSource = s;
             seenSeq = 0;
-            lines.clear();
+            lines.getItems().clear();
         }
-        for (SequencedRing.Entry<TextLine> e : context.stores().text().since(seenSeq, s.robotId(), 5_000)) {
+        List<String> add = new ArrayList<>();
+        for (SequencedRing.Entry<TextLine> e : context.stores().text().since(seenSeq, s.robotId(), LINES)) {
             if (e.value().option().equals(s.option())) {
-                lines.addLast(DebugConsoleView.format(e.value()));
-                if (lines.size() > LINES) {
-                    lines.removeFirst();
-                }
+                add.add(DebugConsoleView.format(e.value()));
             }
         }
         seenSeq = context.stores().text().version();
-        text.setText(String.join("\n", lines));
-        text.positionCaret(text.getLength());
-        return lines.size() + " lines";
+        if (!add.isEmpty()) {
+            lines.getItems().addAll(add);
+            int over = lines.getItems().size() - LINES;
+            if (over > 0) {
+                lines.getItems().remove(0, over);
+            }
+            lines.scrollTo(lines.getItems().size() - 1);
+        }
+        return lines.getItems().size() + " lines";
     }
 }
