@@ -14,6 +14,8 @@ import picocli.CommandLine.Command;
                 OptionsCommand.class,
                 BenchCommand.class,
                 StreamCommand.class,
+                ConsoleCommand.class,
+                ScreenshotsCommand.class,
         })
 public final class Main implements Runnable {
 
