@@ -1,0 +1,103 @@
+package touchline.record;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * An {@link EnvelopeSink} that records everything it is given to MCAP. The network thread
+ * only puts the envelope in a bounded queue (never blocks; a full queue drops and counts);
+ * one writer thread drains it into an {@link EnvelopeWriter} and writes the open chunk at
+ * least every {@link #MAX_CHUNK_AGE_NANOS} plus one poll, so a killed process loses at
+ * most about a second. Subscribe it to the {@code EnvelopeBus}; close it to finish the file.
+ */
+public final class Recorder implements EnvelopeSink, AutoCloseable {
+
+    static final long MAX_CHUNK_AGE_NANOS = 800_000_000L;
+    private static final long POLL_MILLIS = 100;
+    private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
+
+    private final BlockingQueue<Envelope> queue;
+    private final EnvelopeWriter writer;
+    private final Thread thread;
+    private final AtomicLong received = new AtomicLong();
+    private final AtomicLong written = new AtomicLong();
+    private final AtomicLong dropped = new AtomicLong();
+    private volatile boolean stopping;
+    private volatile String failure;
+    private volatile long bytes;
+
+    public Recorder(Path file, EnvelopeWriter.Options options) throws IOException {
+        this(file, options, 1 << 16);
+    }
+
+    public Recorder(Path file, EnvelopeWriter.Options options, int queueCapacity) throws IOException {
+        this.queue = new ArrayBlockingQueue<>(queueCapacity);
+        this.writer = new EnvelopeWriter(file, options);
+        this.thread = new Thread(this::run, "touchline-recorder");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    @Override
+    public void accept(Envelope envelope) {
+        received.incrementAndGet();
+        if (failure != null || stopping || !queue.offer(envelope)) {
+            dropped.incrementAndGet();
+        }
+    }
+
+    private void run() {
+        List<Envelope> batch = new ArrayList<>(4096);
+        try {
+            while (true) {
+                Envelope first = queue.poll(POLL_MILLIS, TimeUnit.MILLISECONDS);
+                if (first != null) {
+                    batch.add(first);
+                    queue.drainTo(batch, 4095);
+                    for (Envelope e : batch) {
+                        writer.write(e);
+                    }
+                    written.addAndGet(batch.size());
+                    batch.clear();
+                } else if (stopping) {
+                    break;
+                }
+                writer.flushIfOlderThan(MAX_CHUNK_AGE_NANOS);
+                bytes = writer.bytes();
+            }
+        } catch (IOException | RuntimeException e) {
+            failure = "recording stopped: " + e.getMessage();
+            LOG.error("{} ({} envelopes written to {})", failure, written.get(), writer.files());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    public RecorderStats stats() {
+        return new RecorderStats(received.get(), written.get(), dropped.get(), bytes, writer.files(), failure);
+    }
+
+    /** Writes everything queued so far, the summary and the footer; waits for the writer thread. */
+    @Override
+    public void close() throws IOException {
+        stopping = true;
+        try {
+            thread.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        bytes = writer.bytes();
+        writer.close();
+    }
+}
