@@ -67,19 +67,27 @@ final class EnvelopeLayout {
             return m;
         }
 
+        /** e.g. /robot/3/status, /robot/3/out/debugOptionRequest, /gc/out/hl12, /nao/rpc, /robot/2/malformed. */
         String topic() {
             String robot = robotId == Envelope.NO_ROBOT ? "unknown" : Integer.toString(robotId);
-            String base = switch (channel) {
-                case FUMANOID -> "/robot/" + robot;
-                case RELIABLE_STREAM -> "/robot/" + robot + "/stream";
-                case GAMECONTROLLER -> "/gc";
-                case NAO_RPC -> "/nao/rpc";
-                case NAO_CAMERA -> "/nao/camera";
-                case LINK_EVENT -> "/link";
-            };
             String dir = direction == Direction.OUT ? "/out" : "";
-            String suffix = layout.equals(MALFORMED) ? "/malformed" : "";
-            return base + dir + "/" + kind.replaceAll("[^A-Za-z0-9_#.\\-]", "_") + suffix;
+            String[] parts = switch (channel) {
+                case FUMANOID -> new String[]{"/robot/" + robot, ""};
+                case RELIABLE_STREAM -> new String[]{"/robot/" + robot, "/stream"};
+                case GAMECONTROLLER -> new String[]{"/gc", ""};
+                case NAO_RPC -> new String[]{"/nao", "/rpc"};
+                case NAO_CAMERA -> new String[]{"/nao", "/camera"};
+                case LINK_EVENT -> new String[]{"/link", ""};
+            };
+            String name = kind.replaceAll("[^A-Za-z0-9_#.\\-]", "_");
+            String topic = parts[0] + dir + parts[1];
+            if (!parts[1].equals("/" + name)) {
+                topic += "/" + name;
+            }
+            if (layout.equals(MALFORMED) && !name.contains("malformed")) {
+                topic += "/malformed";
+            }
+            return topic;
         }
 
         String encoding() {

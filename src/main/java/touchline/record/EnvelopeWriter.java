@@ -159,6 +159,10 @@ public final class EnvelopeWriter implements Closeable {
         return inner.hasField(c.timestamp) ? (Long) inner.getField(c.timestamp) * 1_000_000L : fallback;
     }
 
+    void metadataForTest(String name, Map<String, String> values) throws IOException {
+        writer.addMetadata(name, values);
+    }
+
     /** Writes the open chunk when it is older than {@code maxAgeNanos} (crash safety). */
     public void flushIfOlderThan(long maxAgeNanos) throws IOException {
         writer.flushIfOlderThan(maxAgeNanos);

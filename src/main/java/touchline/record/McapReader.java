@@ -359,6 +359,10 @@ public final class McapReader implements Closeable {
         return endTime == Long.MIN_VALUE ? 0 : endTime;
     }
 
+    List<Block> blocksForTest() {
+        return List.copyOf(blocks);
+    }
+
     public long chunkCount() {
         return blocks.stream().filter(b -> !b.loose()).count();
     }
