@@ -21,6 +21,8 @@ public final class Player implements AutoCloseable {
     /** Envelopes delivered per pump at most, so controls never wait long for the lock. */
     private static final int BATCH = 20_000;
     private static final long MAX_WAIT_NANOS = 20_000_000L;
+    /** A loop over a range with no envelopes must not spin forever inside one pump. */
+    private static final int MAX_LAPS_PER_PUMP = 1000;
 
     private final Recording recording;
     private final EnvelopeSink sink;
@@ -84,12 +86,14 @@ public final class Player implements AutoCloseable {
         }
         long target = targetPosition();
         int delivered = 0;
-        while (delivered < BATCH) {
+        int laps = 0;
+        while (delivered < BATCH && laps < MAX_LAPS_PER_PUMP) {
             if (pending == null) {
                 pending = cursor.next();
                 if (pending == null) {
                     if (loopFrom >= 0) {
-                        reposition(loopFrom);
+                        target = wrap(target, Math.min(loopTo, recording.endMicros()));
+                        laps++;
                         continue;
                     }
                     position = Math.max(position, recording.endMicros());
@@ -99,8 +103,8 @@ public final class Player implements AutoCloseable {
                 }
             }
             if (loopTo >= 0 && pending.timeMicros() > loopTo && target >= loopTo) {
-                reposition(loopFrom);
-                target = anchorRecording;
+                target = wrap(target, loopTo);
+                laps++;
                 continue;
             }
             if (pending.timeMicros() > target) {
@@ -115,6 +119,14 @@ public final class Player implements AutoCloseable {
             return 0;
         }
         return (long) ((pending.timeMicros() - target) * 1000 / speed);
+    }
+
+    /** Jumps back to the loop start, carrying over the time played past {@code end}; returns the new target. */
+    private long wrap(long target, long end) {
+        long excess = Math.max(0, target - end);
+        reposition(loopFrom);
+        anchorWall -= (long) (excess * 1000 / speed);
+        return loopFrom + excess;
     }
 
     private void deliver(Envelope e) {

@@ -97,7 +97,7 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        bytes = writer.bytes();
         writer.close();
+        bytes = writer.bytes();
     }
 }
