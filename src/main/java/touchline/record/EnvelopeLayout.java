@@ -1,7 +1,6 @@
 package touchline.record;
 
 import touchline.protocol.FrameCodec;
-import touchline.protocol.FrameResult;
 import touchline.protocol.Framing;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
@@ -106,32 +105,45 @@ final class EnvelopeLayout {
         }
     }
 
-    // No size limit here: the recorder keeps whatever the transport accepted.
+    // No size limit on replay: the recorder kept whatever the transport accepted.
     private final FrameCodec frames = new FrameCodec(Integer.MAX_VALUE);
 
-    /** The channel key of {@code e}; for PAYLOAD, {@code payloadOut[0]} receives the payload. */
-    Key keyOf(Envelope e, byte[][] payloadOut) {
+    /**
+     * The channel key of {@code e}. PAYLOAD needs a header {@link FrameCodec} accepts and would
+     * write identically (legacy flags and reserved bytes zero), so replay rebuilds it byte for
+     * byte; the payload then starts at {@code key.framing().headerSize()}. Checked in place,
+     * without copying, because this runs for every recorded datagram.
+     */
+    Key keyOf(Envelope e) {
         if (e.error() != null) {
             return key(e, MALFORMED, null);
         }
-        if (e.channel() == Channel.FUMANOID && e.message() != null
-                && frames.decode(e.raw()) instanceof FrameResult.Frame f && exactHeader(f.framing(), e.raw())) {
-            payloadOut[0] = f.payload();
-            return key(e, PAYLOAD, f.framing());
+        if (e.channel() == Channel.FUMANOID && e.message() != null) {
+            Framing framing = exactFraming(e.raw());
+            if (framing != null) {
+                return key(e, PAYLOAD, framing);
+            }
         }
         return key(e, RAW, null);
     }
 
-    /** True when the header is exactly what {@link FrameCodec#encode} writes, so replay rebuilds it byte for byte. */
-    private static boolean exactHeader(Framing framing, byte[] raw) {
-        if (framing == Framing.LEGACY) {
+    static Framing exactFraming(byte[] raw) {
+        if (raw.length >= 2 && raw[0] == 0 && raw[1] == Framing.MESSAGE_TYPE) {
+            if (raw.length < 12 || lengthField(raw, 8) != raw.length - 12) {
+                return null;
+            }
             for (int i = 2; i < 8; i++) {
                 if (raw[i] != 0) {
-                    return false;
+                    return null;
                 }
             }
+            return Framing.LEGACY;
         }
-        return true;
+        return raw.length >= 4 && lengthField(raw, 0) == raw.length - 4 ? Framing.LENGTH_PREFIX : null;
+    }
+
+    private static long lengthField(byte[] d, int at) {
+        return ((long) (d[at] & 0xFF) << 24) | ((d[at + 1] & 0xFF) << 16) | ((d[at + 2] & 0xFF) << 8) | (d[at + 3] & 0xFF);
     }
 
     private static Key key(Envelope e, String layout, Framing framing) {

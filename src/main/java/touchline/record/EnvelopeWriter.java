@@ -61,7 +61,6 @@ public final class EnvelopeWriter implements Closeable {
     private final List<Path> files = new ArrayList<>();
     private final Map<EnvelopeLayout.Key, ChannelState> channels = new HashMap<>();
     private final Map<Set<String>, Integer> schemaIds = new HashMap<>();
-    private final byte[][] payload = new byte[1][];
     private McapWriter writer;
     private long fileStartMicros;
     private long bytesOfClosedFiles;
@@ -101,16 +100,18 @@ public final class EnvelopeWriter implements Closeable {
             openNext();
             fileStartMicros = e.timeMicros();
         }
-        payload[0] = null;
-        EnvelopeLayout.Key key = layout.keyOf(e, payload);
+        EnvelopeLayout.Key key = layout.keyOf(e);
         ChannelState channel = channels.get(key);
         if (channel == null) {
             channel = addChannel(key, e.message());
         }
         long logTime = e.timeMicros() * 1000;
         switch (key.layout()) {
-            case EnvelopeLayout.PAYLOAD -> writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), logTime),
-                    payload[0]);
+            case EnvelopeLayout.PAYLOAD -> {
+                int header = key.framing().headerSize();
+                writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), logTime),
+                        e.raw(), header, e.raw().length - header);
+            }
             case EnvelopeLayout.MALFORMED -> writer.addMessage(channel.id, logTime, logTime,
                     EnvelopeLayout.malformedData(e.error(), e.raw()));
             default -> writer.addMessage(channel.id, logTime, logTime, e.raw());

@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -47,13 +46,16 @@ public final class McapWriter implements Closeable {
     private final List<MetadataIndex> metadataIndexes = new ArrayList<>();
     private final Bytes chunkIndexes = new Bytes(4096);
     private int chunkCount;
-    private final Map<Integer, Long> messageCounts = new TreeMap<>();
+    // per channel id: sequence numbers, message counts, and this chunk's message index (time, offset pairs)
     private int[] sequences = new int[16];
+    private long[] messageCounts = new long[16];
+    private long[][] chunkIndex = new long[16][];
+    private int[] chunkIndexSize = new int[16];
+    private int[] chunkChannels = new int[16];
+    private int chunkChannelCount;
 
     private final Bytes chunk;
     private final Bytes scratch = new Bytes(1024);
-    private final Map<Integer, long[]> chunkMessageIndex = new LinkedHashMap<>();
-    private final Map<Integer, Integer> chunkMessageIndexSize = new LinkedHashMap<>();
     private final List<Integer> pendingDefinitions = new ArrayList<>();
     private long chunkStart = Long.MAX_VALUE;
     private long chunkEnd = Long.MIN_VALUE;
@@ -100,7 +102,12 @@ public final class McapWriter implements Closeable {
         channels.add(new ChannelRecord(id, schemaId, topic, messageEncoding, Map.copyOf(metadata)));
         pendingDefinitions.add(id);
         if (id >= sequences.length) {
-            sequences = Arrays.copyOf(sequences, sequences.length * 2);
+            int n = sequences.length * 2;
+            sequences = Arrays.copyOf(sequences, n);
+            messageCounts = Arrays.copyOf(messageCounts, n);
+            chunkIndex = Arrays.copyOf(chunkIndex, n);
+            chunkIndexSize = Arrays.copyOf(chunkIndexSize, n);
+            chunkChannels = Arrays.copyOf(chunkChannels, n);
         }
         return id;
     }
@@ -148,25 +155,28 @@ public final class McapWriter implements Closeable {
         firstTime = Math.min(firstTime, logTimeNanos);
         lastTime = Math.max(lastTime, logTimeNanos);
         messageCount++;
-        messageCounts.merge(channelId, 1L, Long::sum);
+        messageCounts[channelId]++;
         if (chunk.size >= chunkBytes) {
             flushChunk();
         }
     }
 
     private void indexMessage(int channelId, long time, long offset) {
-        long[] index = chunkMessageIndex.get(channelId);
-        int n = chunkMessageIndexSize.getOrDefault(channelId, 0);
-        if (index == null) {
-            index = new long[64];
-            chunkMessageIndex.put(channelId, index);
+        long[] index = chunkIndex[channelId];
+        int n = chunkIndexSize[channelId];
+        if (n == 0) {
+            chunkChannels[chunkChannelCount++] = channelId;
+            if (index == null) {
+                index = new long[64];
+                chunkIndex[channelId] = index;
+            }
         } else if (n + 2 > index.length) {
             index = Arrays.copyOf(index, index.length * 2);
-            chunkMessageIndex.put(channelId, index);
+            chunkIndex[channelId] = index;
         }
         index[n] = time;
         index[n + 1] = offset;
-        chunkMessageIndexSize.put(channelId, n + 2);
+        chunkIndexSize[channelId] = n + 2;
     }
 
     private void writeDefinitions() {
@@ -228,18 +238,22 @@ public final class McapWriter implements Closeable {
         scratch.clear();
         Map<Integer, Long> indexOffsets = new TreeMap<>();
         long indexStart = chunkOffset + chunkLength;
-        for (Map.Entry<Integer, long[]> e : new TreeMap<>(chunkMessageIndex).entrySet()) {
-            int n = chunkMessageIndexSize.get(e.getKey());
-            indexOffsets.put(e.getKey(), indexStart + scratch.size);
+        Arrays.sort(chunkChannels, 0, chunkChannelCount);
+        for (int c = 0; c < chunkChannelCount; c++) {
+            int channel = chunkChannels[c];
+            int n = chunkIndexSize[channel];
+            indexOffsets.put(channel, indexStart + scratch.size);
             int rec = scratch.beginRecord(McapRecords.MESSAGE_INDEX);
-            scratch.u16(e.getKey());
+            scratch.u16(channel);
             scratch.u32(n * 8L);
-            long[] index = e.getValue();
+            long[] index = chunkIndex[channel];
             for (int i = 0; i < n; i++) {
                 scratch.u64(index[i]);
             }
             scratch.endRecord(rec);
+            chunkIndexSize[channel] = 0;
         }
+        chunkChannelCount = 0;
         long indexLength = scratch.size;
         emit(scratch, true);
 
@@ -262,8 +276,6 @@ public final class McapWriter implements Closeable {
         chunkCount++;
 
         chunk.clear();
-        chunkMessageIndex.clear();
-        chunkMessageIndexSize.clear();
         chunkStart = Long.MAX_VALUE;
         chunkEnd = Long.MIN_VALUE;
         chunkHasContent = false;
@@ -360,9 +372,9 @@ public final class McapWriter implements Closeable {
             summary.u64(messageCount == 0 ? 0 : firstTime);
             summary.u64(messageCount == 0 ? 0 : lastTime);
             int map = summary.beginPrefixed32();
-            for (Map.Entry<Integer, Long> e : messageCounts.entrySet()) {
-                summary.u16(e.getKey());
-                summary.u64(e.getValue());
+            for (int c = 0; c < channels.size(); c++) {
+                summary.u16(c);
+                summary.u64(messageCounts[c]);
             }
             summary.endPrefixed32(map);
             summary.endRecord(st);

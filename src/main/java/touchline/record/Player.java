@@ -221,6 +221,11 @@ public final class Player implements AutoCloseable {
 
     /** Delivers everything from the position to the end on the calling thread, unpaced. */
     public long runToEnd() {
+        return runFor(Long.MAX_VALUE);
+    }
+
+    /** Delivers up to {@code max} envelopes from the position on the calling thread, unpaced. */
+    public long runFor(long max) {
         long n = 0;
         while (true) {
             synchronized (this) {
@@ -230,12 +235,16 @@ public final class Player implements AutoCloseable {
                     pending = null;
                     n++;
                 }
-                for (Envelope e = null; batch < BATCH && (e = cursor.next()) != null; batch++) {
+                int limit = (int) Math.min(BATCH, max - n);
+                for (Envelope e = null; batch < limit && (e = cursor.next()) != null; batch++) {
                     deliver(e);
                     position = e.timeMicros();
                 }
                 n += batch;
-                if (batch < BATCH) {
+                if (n >= max) {
+                    return n;
+                }
+                if (batch < limit) {
                     finished = true;
                     playing = false;
                     position = recording.endMicros();

@@ -11,7 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -24,7 +24,7 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     static final long MAX_CHUNK_AGE_NANOS = 800_000_000L;
-    private static final long POLL_MILLIS = 100;
+    private static final long IDLE_PARK_NANOS = 2_000_000L;
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
 
     private final BlockingQueue<Envelope> queue;
@@ -61,10 +61,10 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
         List<Envelope> batch = new ArrayList<>(4096);
         try {
             while (true) {
-                Envelope first = queue.poll(POLL_MILLIS, TimeUnit.MILLISECONDS);
-                if (first != null) {
-                    batch.add(first);
-                    queue.drainTo(batch, 4095);
+                // Polling, not a blocking take: a waiting consumer would make every offer() on the
+                // network thread signal it (a futex wake per datagram); parked, it costs nothing there.
+                queue.drainTo(batch, 4096);
+                if (!batch.isEmpty()) {
                     for (Envelope e : batch) {
                         writer.write(e);
                     }
@@ -72,6 +72,8 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
                     batch.clear();
                 } else if (stopping) {
                     break;
+                } else {
+                    LockSupport.parkNanos(IDLE_PARK_NANOS);
                 }
                 writer.flushIfOlderThan(MAX_CHUNK_AGE_NANOS);
                 bytes = writer.bytes();
@@ -79,8 +81,6 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
         } catch (IOException | RuntimeException e) {
             failure = "recording stopped: " + e.getMessage();
             LOG.error("{} ({} envelopes written to {})", failure, written.get(), writer.files());
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
         }
     }
 

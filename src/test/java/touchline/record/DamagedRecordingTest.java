@@ -105,10 +105,11 @@ class DamagedRecordingTest {
             EnvelopeLayout layout = new EnvelopeLayout();
             int schema = w.addSchema("fumanoid.Message", "protobuf", "not a descriptor set".getBytes(StandardCharsets.UTF_8));
             Envelope status = sent.stream().filter(e -> e.kind().equals("status")).findFirst().orElseThrow();
-            byte[][] payload = new byte[1][];
-            EnvelopeLayout.Key key = layout.keyOf(status, payload);
+            EnvelopeLayout.Key key = layout.keyOf(status);
             int channel = w.addChannel(schema, key.topic(), key.encoding(), key.metadata());
-            w.addMessage(channel, status.timeMicros() * 1000, status.timeMicros() * 1000, payload[0]);
+            int header = key.framing().headerSize();
+            w.addMessage(channel, status.timeMicros() * 1000, status.timeMicros() * 1000, status.raw(), header,
+                    status.raw().length - header);
         }
         try (Recording r = Recording.open(file)) {
             List<Envelope> back = RecordingFixture.readAll(r);

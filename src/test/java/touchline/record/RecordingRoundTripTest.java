@@ -34,6 +34,11 @@ class RecordingRoundTripTest {
                 null, Envelope.NO_ROBOT, "jpeg", null, new byte[]{(byte) 0xFF, (byte) 0xD8, 0, 0}, null));
         sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.FUMANOID,
                 null, Envelope.NO_ROBOT, "malformed", null, new byte[0], "empty datagram"));
+        byte[] flagged = sent.stream().filter(e -> e.kind().equals("status") && e.robotId() == 1).findFirst()
+                .orElseThrow().raw().clone();
+        flagged[2] = 1; // legacy header with a flag set: kept as raw bytes, still replayed exactly
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.FUMANOID, null, 1,
+                "status", Fumanoid.Message.getDefaultInstance(), flagged, null));
         Set<Channel> channels = sent.stream().map(Envelope::channel).collect(Collectors.toCollection(() -> EnumSet.noneOf(Channel.class)));
         assertEquals(EnumSet.allOf(Channel.class), channels, "the fixture covers every wire channel");
 
