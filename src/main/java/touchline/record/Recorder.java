@@ -9,8 +9,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -27,7 +27,11 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     private static final long IDLE_PARK_NANOS = 2_000_000L;
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
 
-    private final BlockingQueue<Envelope> queue;
+    // Lock-free hand-off: the network thread does one CAS to count and one to enqueue, never
+    // takes a lock the writer holds and never wakes it (the writer parks and polls).
+    private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
+    private final AtomicInteger queued = new AtomicInteger();
+    private final int capacity;
     private final EnvelopeWriter writer;
     private final Thread thread;
     private final AtomicLong received = new AtomicLong();
@@ -42,7 +46,7 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     }
 
     public Recorder(Path file, EnvelopeWriter.Options options, int queueCapacity) throws IOException {
-        this.queue = new ArrayBlockingQueue<>(queueCapacity);
+        this.capacity = queueCapacity;
         this.writer = new EnvelopeWriter(file, options);
         this.thread = new Thread(this::run, "touchline-recorder");
         thread.setDaemon(true);
@@ -52,9 +56,12 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     @Override
     public void accept(Envelope envelope) {
         received.incrementAndGet();
-        if (failure != null || stopping || !queue.offer(envelope)) {
+        if (failure != null || stopping || queued.get() >= capacity) {
             dropped.incrementAndGet();
+            return;
         }
+        queued.incrementAndGet();
+        queue.offer(envelope);
     }
 
     private void run() {
@@ -63,7 +70,10 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
             while (true) {
                 // Polling, not a blocking take: a waiting consumer would make every offer() on the
                 // network thread signal it (a futex wake per datagram); parked, it costs nothing there.
-                queue.drainTo(batch, 4096);
+                for (Envelope e; batch.size() < 4096 && (e = queue.poll()) != null; ) {
+                    batch.add(e);
+                }
+                queued.addAndGet(-batch.size());
                 if (!batch.isEmpty()) {
                     for (Envelope e : batch) {
                         writer.write(e);
@@ -96,6 +106,10 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
             thread.join();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+        // envelopes that raced with stopping were accepted but never written: they count as dropped
+        for (Envelope e; (e = queue.poll()) != null; ) {
+            dropped.incrementAndGet();
         }
         writer.close();
         bytes = writer.bytes();
