@@ -3,41 +3,31 @@ package touchline.cli;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import touchline.protocol.FrameCodec;
-import touchline.protocol.FrameResult;
-import touchline.protocol.MessageCodec;
-import touchline.protocol.MessageKinds;
-import touchline.protocol.MessageResult;
+import com.google.protobuf.Descriptors.FileDescriptor;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
 import touchline.record.EnvelopeSource;
 import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
 import touchline.record.RecorderStats;
 import touchline.record.RecordingException;
 import touchline.record.SchemaSet;
-import touchline.transport.Channel;
-import touchline.transport.Direction;
-import touchline.transport.Envelope;
-import touchline.transport.EnvelopeSink;
 
 import java.io.PrintWriter;
-import java.net.DatagramPacket;
-import java.net.DatagramSocket;
-import java.net.InetSocketAddress;
-import java.net.SocketException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
-import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.function.BiFunction;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.function.IntFunction;
 
 /**
- * {@code touchline record}: headless match-day recording of everything the console hears to
- * an MCAP file, until Ctrl+C (or {@code --seconds}). The traffic comes from an
- * {@link EnvelopeSource} per port; the application passes its live transports, and until
- * those are wired in, a plain UDP listener that frames and decodes FUmanoids datagrams.
+ * {@code touchline record}: headless match-day recording of everything the console hears and
+ * sends to an MCAP file, until Ctrl+C (or {@code --seconds}). The traffic is the application
+ * core's Envelope stream ({@link Console}, as {@code listen} runs it), so the robots are
+ * greeted and asked for their options exactly as in the console.
  */
 @Command(name = "record", mixinStandardHelpOptions = true,
         description = "Record every datagram the console receives to an MCAP file (headless).")
@@ -46,8 +36,8 @@ public final class RecordCommand implements Callable<Integer> {
     @Option(names = "--out", description = "output file (default: touchline-<date>-<time>.mcap)")
     Path out;
 
-    @Option(names = "--port", defaultValue = "11011", description = "UDP port to listen on (default: ${DEFAULT-VALUE})")
-    int port;
+    @CommandLine.Mixin
+    UdpOptions udp;
 
     @Option(names = "--split-size", paramLabel = "MB", description = "start a new file after this many megabytes")
     long splitMegabytes;
@@ -65,14 +55,20 @@ public final class RecordCommand implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
-    private final IntFunction<EnvelopeSource> sources;
+    private final BiFunction<ConsoleConfig, List<FileDescriptor>, EnvelopeSource> sources;
 
+    /** Records what the application core ({@link Console}: UDP transport and model) sees. */
     public RecordCommand() {
-        this(UdpSource::new);
+        this((config, teamFiles) -> sink -> {
+            Console console = new Console(config);
+            teamFiles.forEach(f -> console.kinds().add(f));
+            console.bus().subscribe(sink);
+            return console.start();
+        });
     }
 
-    /** {@code sources} gives the live traffic source for a port (the application's transports). */
-    public RecordCommand(IntFunction<EnvelopeSource> sources) {
+    /** {@code sources} gives the live traffic for a configuration and the team's own types (tests pass a fake). */
+    public RecordCommand(BiFunction<ConsoleConfig, List<FileDescriptor>, EnvelopeSource> sources) {
         this.sources = sources;
     }
 
@@ -84,11 +80,13 @@ public final class RecordCommand implements Callable<Integer> {
                 : Path.of("touchline-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
         EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults()
                 .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L);
+        List<FileDescriptor> teamFiles = List.of();
         if (proto != null) {
             try {
                 SchemaSet schemas = new SchemaSet();
                 schemas.load(proto);
-                options = options.withTeamFiles(schemas.teamFiles());
+                teamFiles = schemas.teamFiles();
+                options = options.withTeamFiles(teamFiles);
             } catch (RecordingException e) {
                 err.println("touchline record: " + e.getMessage());
                 return 2;
@@ -100,13 +98,14 @@ public final class RecordCommand implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(hook);
         AutoCloseable source;
         try {
-            source = sources.apply(port).start(recorder);
+            source = sources.apply(udp.config(), teamFiles).start(recorder);
         } catch (Exception e) {
             recorder.close();
-            err.println("touchline record: cannot listen on port " + port + ": " + e.getMessage());
+            err.println("touchline record: cannot listen on port " + udp.port + ": " + e.getMessage());
             return 1;
         }
-        stdout.println("recording port " + port + " to " + file.toAbsolutePath() + " (Ctrl+C to stop)");
+        int port = source instanceof Console c ? c.udp().localPort() : udp.port;
+        stdout.println("recording UDP port " + port + " to " + file.toAbsolutePath() + " (Ctrl+C to stop)");
         stdout.flush();
         long deadline = seconds > 0 ? System.nanoTime() + seconds * 1_000_000_000L : Long.MAX_VALUE;
         while (!stop.await(Math.min(5_000_000_000L, Math.max(1, deadline - System.nanoTime())), TimeUnit.NANOSECONDS)) {
@@ -129,67 +128,6 @@ public final class RecordCommand implements Callable<Integer> {
         stdout.printf("recorded %d envelopes (%d dropped) to %s%n", s.written(), s.dropped(), s.files());
         stdout.flush();
         return s.failure() == null ? 0 : 1;
-    }
-
-    /**
-     * Stand-in until the application's UDP transport is wired in: receives datagrams on a port
-     * and publishes them as Envelopes (FUmanoids framed and decoded, GameController packets and
-     * reliable-stream segments raw, bad datagrams with their reason).
-     */
-    static final class UdpSource implements EnvelopeSource {
-        private final int port;
-
-        UdpSource(int port) {
-            this.port = port;
-        }
-
-        @Override
-        public AutoCloseable start(EnvelopeSink sink) throws SocketException {
-            DatagramSocket socket = new DatagramSocket(port);
-            FrameCodec frames = new FrameCodec();
-            MessageCodec codec = new MessageCodec(new MessageKinds());
-            Thread t = new Thread(() -> {
-                byte[] buf = new byte[65536];
-                DatagramPacket p = new DatagramPacket(buf, buf.length);
-                while (!socket.isClosed()) {
-                    try {
-                        socket.receive(p);
-                    } catch (java.io.IOException e) {
-                        return;
-                    }
-                    long now = System.currentTimeMillis() * 1000L;
-                    byte[] raw = Arrays.copyOf(buf, p.getLength());
-                    sink.accept(envelope(now, (InetSocketAddress) p.getSocketAddress(), raw, frames, codec));
-                }
-            }, "touchline-record-udp");
-            t.setDaemon(true);
-            t.start();
-            return socket::close;
-        }
-
-        static Envelope envelope(long now, InetSocketAddress peer, byte[] raw, FrameCodec frames, MessageCodec codec) {
-            if (raw.length >= 2 && raw[0] == 'R' && raw[1] == 'G') {
-                return new Envelope(now, Direction.IN, Channel.GAMECONTROLLER, peer, Envelope.NO_ROBOT, "gamecontroller",
-                        null, raw, null);
-            }
-            if (raw.length >= 2 && raw[0] < 42 && raw[1] < 42 && raw[0] >= 0 && raw[1] >= 0 && !(raw[0] == 0 && raw[1] == 42)
-                    && frames.decode(raw) instanceof FrameResult.Malformed) {
-                return new Envelope(now, Direction.IN, Channel.RELIABLE_STREAM, peer, Envelope.NO_ROBOT, "segment",
-                        null, raw, null);
-            }
-            FrameResult frame = frames.decode(raw);
-            if (frame instanceof FrameResult.Malformed m) {
-                return new Envelope(now, Direction.IN, Channel.FUMANOID, peer, Envelope.NO_ROBOT, "malformed", null, raw,
-                        m.reason());
-            }
-            MessageResult result = codec.decode(((FrameResult.Frame) frame).payload());
-            if (result instanceof MessageResult.Decoded d) {
-                return new Envelope(now, Direction.IN, Channel.FUMANOID, peer, d.message().getRobotID(), d.kind(),
-                        d.message(), raw, null);
-            }
-            return new Envelope(now, Direction.IN, Channel.FUMANOID, peer, Envelope.NO_ROBOT, "malformed", null, raw,
-                    ((MessageResult.Malformed) result).reason());
-        }
     }
 
     public static void main(String[] args) {

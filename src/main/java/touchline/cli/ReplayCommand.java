@@ -4,7 +4,6 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import touchline.record.EnvelopeText;
 import touchline.record.PlaybackClock;
 import touchline.record.Player;
 import touchline.record.Recording;
@@ -17,8 +16,8 @@ import java.util.concurrent.Callable;
 
 /**
  * {@code touchline replay FILE}: plays a recording through the same Envelope stream as live
- * traffic. Here, without a window, each envelope becomes one text line (time, direction,
- * channel, robot, kind, size); {@code --headless} plays as fast as possible, otherwise at
+ * traffic. Here, without a window, each envelope becomes one text line, as {@code listen}
+ * prints live traffic; {@code --headless} plays as fast as possible, otherwise at
  * {@code --speed} times real time. Problems with the file are reported, what is readable plays.
  */
 @Command(name = "replay", mixinStandardHelpOptions = true,
@@ -56,13 +55,13 @@ public final class ReplayCommand implements Callable<Integer> {
         }
         try (recording) {
             recording.problems().forEach(p -> err.println("note: " + p));
-            EnvelopeText text = new EnvelopeText();
+            EnvelopeLine text = new EnvelopeLine();
             if (events) {
                 for (TimelineEvent e : recording.events()) {
                     out.printf("event %+.1f s %s %s%n", (e.timeMicros() - recording.startMicros()) / 1e6, e.type(), e.label());
                 }
             }
-            Player player = new Player(recording, e -> out.println(text.line(e)), PlaybackClock.system());
+            Player player = new Player(recording, e -> out.println(text.format(e)), PlaybackClock.system());
             player.seek(recording.startMicros() + (long) (from * 1e6));
             long n;
             if (headless) {

@@ -5,8 +5,6 @@ import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import touchline.protocol.FrameCodec;
 import touchline.protocol.Framing;
-import touchline.protocol.MessageCodec;
-import touchline.protocol.MessageKinds;
 import touchline.proto.Fumanoid;
 import touchline.record.Recording;
 import touchline.record.bench.SyntheticTeam;
@@ -15,7 +13,6 @@ import touchline.transport.Envelope;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
-import java.net.InetSocketAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -45,7 +42,7 @@ class RecordCommandsTest {
         List<Envelope> sent = new ArrayList<>();
         new SyntheticTeam(3, 1_000_000_000_000L, 1).generate(seconds, sent::add);
         Path file = dir.resolve("cli.mcap");
-        Run r = run(new RecordCommand(port -> sink -> {
+        Run r = run(new RecordCommand((config, teamFiles) -> sink -> {
             sent.forEach(sink::accept);
             return () -> { };
         }), "--out", file.toString(), "--seconds", "1");
@@ -65,7 +62,7 @@ class RecordCommandsTest {
             assertEquals(rec.mcap().messageCount(), envelopes);
         }
         assertTrue(lines.contains("event +10.0 s STATE_CHANGE GC: INITIAL → READY"), r.out().substring(0, 300));
-        assertTrue(r.out().contains("Z IN FUMANOID robot=2 status 74 B"), r.out().substring(0, 600));
+        assertTrue(r.out().contains("IN  fumanoid robot 2 10.0.13.12:3858 status"), r.out().substring(0, 600));
     }
 
     @Test
@@ -101,19 +98,41 @@ class RecordCommandsTest {
     }
 
     @Test
-    void theStandInUdpSourceClassifiesDatagrams() {
-        FrameCodec frames = new FrameCodec();
-        MessageCodec codec = new MessageCodec(new MessageKinds());
-        InetSocketAddress peer = new InetSocketAddress("127.0.0.1", 4000);
-        byte[] status = frames.encode(Framing.LEGACY, Fumanoid.Message.newBuilder().setRobotID(5)
+    @org.junit.jupiter.api.Tag("integration")
+    void recordsLiveUdpTrafficThroughTheConsole() throws Exception {
+        java.util.concurrent.atomic.AtomicInteger port = new java.util.concurrent.atomic.AtomicInteger();
+        Path file = dir.resolve("live.mcap");
+        RecordCommand command = new RecordCommand((config, teamFiles) -> sink -> {
+            touchline.app.Console console = new touchline.app.Console(config);
+            console.bus().subscribe(sink);
+            console.start();
+            port.set(console.udp().localPort());
+            return console;
+        });
+        Thread recording = new Thread(() -> run(command, "--out", file.toString(), "--port", "0", "--bind", "127.0.0.1",
+                "--seconds", "2"));
+        recording.start();
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        while (port.get() == 0 && System.nanoTime() < deadline) {
+            Thread.onSpinWait();
+        }
+        byte[] status = new FrameCodec().encode(Framing.LENGTH_PREFIX, Fumanoid.Message.newBuilder().setRobotID(7)
                 .setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTeamID(13).build()).build().toByteArray());
-        Envelope e = RecordCommand.UdpSource.envelope(1, peer, status, frames, codec);
-        assertEquals(5, e.robotId());
-        assertEquals("status", e.kind());
-        Envelope gc = RecordCommand.UdpSource.envelope(1, peer, "RGme....".getBytes(), frames, codec);
-        assertEquals(Channel.GAMECONTROLLER, gc.channel());
-        Envelope bad = RecordCommand.UdpSource.envelope(1, peer, new byte[]{0x50, 0x51, 0, 9, 1}, frames, codec);
-        assertTrue(bad.isMalformed());
-        assertEquals(Channel.RELIABLE_STREAM, RecordCommand.UdpSource.envelope(1, peer, new byte[]{3, 1, 7}, frames, codec).channel());
+        try (java.net.DatagramSocket robot = new java.net.DatagramSocket(0, java.net.InetAddress.getLoopbackAddress())) {
+            for (int i = 0; i < 5; i++) {
+                robot.send(new java.net.DatagramPacket(status, status.length, java.net.InetAddress.getLoopbackAddress(), port.get()));
+            }
+        }
+        recording.join(20_000);
+        try (Recording r = Recording.open(file)) {
+            List<Envelope> back = new ArrayList<>();
+            Recording.Cursor c = r.cursor(Long.MIN_VALUE);
+            for (Envelope e = c.next(); e != null; e = c.next()) {
+                back.add(e);
+            }
+            assertEquals(5, back.stream().filter(e -> e.robotId() == 7 && e.kind().equals("status")
+                    && e.channel() == Channel.FUMANOID).count(), back.toString());
+            assertTrue(r.problems().isEmpty(), r.problems().toString());
+        }
     }
 }
