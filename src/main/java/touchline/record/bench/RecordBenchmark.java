@@ -1,5 +1,6 @@
 package touchline.record.bench;
 
+import picocli.CommandLine;
 import touchline.record.EnvelopeWriter;
 import touchline.record.PlaybackClock;
 import touchline.record.Player;
@@ -19,6 +20,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
+import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -26,15 +28,25 @@ import java.util.concurrent.atomic.AtomicLong;
  * messages/s (vs the same bytes to a BufferedOutputStream), headless replay speed of a
  * one-hour six-robot recording (vs reading the file's bytes), seek time in that file, and
  * the cost the recorder adds on the publishing (network) thread (bus with vs without it).
- * Usage: {@code java ... touchline.record.bench.RecordBenchmark [DIR]}.
+ * Usage: {@code java ... touchline.record.bench.RecordBenchmark [DIR]}, or as the picocli
+ * subcommand {@code bench record [--dir DIR]}.
  */
-public final class RecordBenchmark {
+@CommandLine.Command(name = "record", mixinStandardHelpOptions = true,
+        description = "Writer messages/s, headless replay speed and seek time of a one-hour six-robot recording.")
+public final class RecordBenchmark implements Callable<Integer> {
 
-    private RecordBenchmark() {
-    }
+    @CommandLine.Option(names = "--dir", description = "where the benchmark files go (default: a temporary directory)")
+    Path dir;
 
     public static void main(String[] args) throws Exception {
-        Path dir = args.length > 0 ? Path.of(args[0]) : Files.createTempDirectory("touchline-bench");
+        RecordBenchmark bench = new RecordBenchmark();
+        bench.dir = args.length > 0 ? Path.of(args[0]) : null;
+        bench.call();
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        Path dir = this.dir != null ? this.dir : Files.createTempDirectory("touchline-bench");
         Files.createDirectories(dir);
         System.out.println("generating one hour of a six-robot team ...");
         List<Envelope> hour = new ArrayList<>();
@@ -103,6 +115,7 @@ public final class RecordBenchmark {
             System.out.printf("seek (to a random time, until the first envelope is delivered): median %.1f ms, max %.1f ms%n",
                     seeks[seeks.length / 2] / 1e6, seeks[seeks.length - 1] / 1e6);
         }
+        return 0;
     }
 
     private static double baselineWrite(List<Envelope> hour, Path file) throws IOException {
