@@ -115,6 +115,14 @@ public final class RecordBenchmark implements Callable<Integer> {
             System.out.printf("seek (to a random time, until the first envelope is delivered): median %.1f ms, max %.1f ms%n",
                     seeks[seeks.length / 2] / 1e6, seeks[seeks.length - 1] / 1e6);
         }
+        if (this.dir == null) {
+            try (var files = Files.list(dir)) {
+                for (Path f : files.toList()) {
+                    Files.delete(f);
+                }
+            }
+            Files.delete(dir);
+        }
         return 0;
     }
 
