@@ -49,6 +49,9 @@ public final class RecordCommand implements Callable<Integer> {
             description = "a team's protoc descriptor set (.desc/.pb) to embed in the recording")
     Path proto;
 
+    @Option(names = "--camera-fps", paramLabel = "N", description = "record at most N camera frames a second per camera (default: all)")
+    double cameraFps;
+
     @Option(names = "--seconds", description = "stop after this many seconds (default: until Ctrl+C)")
     long seconds;
 
@@ -79,7 +82,7 @@ public final class RecordCommand implements Callable<Integer> {
         Path file = out != null ? out
                 : Path.of("touchline-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
         EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults()
-                .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L);
+                .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L).withCameraRate(cameraFps);
         List<FileDescriptor> teamFiles = List.of();
         if (proto != null) {
             try {

@@ -28,24 +28,39 @@ import java.util.TreeSet;
  */
 public final class EnvelopeWriter implements Closeable {
 
-    /** Limits and tuning; 0 disables a split limit. */
-    public record Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles) {
+    /**
+     * Limits and tuning; 0 disables a split limit. {@code cameraIntervalMicros} thins camera
+     * frames (NAO_CAMERA) to at most one per interval per channel; 0 keeps every frame.
+     */
+    public record Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles,
+                          long cameraIntervalMicros) {
+
+        public Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles) {
+            this(splitBytes, splitMicros, chunkBytes, teamFiles, 0);
+        }
+
         public static Options defaults() {
-            return new Options(0, 0, 512 * 1024, List.of());
+            return new Options(0, 0, 512 * 1024, List.of(), 0);
         }
 
         public Options withSplit(long bytes, long micros) {
-            return new Options(bytes, micros, chunkBytes, teamFiles);
+            return new Options(bytes, micros, chunkBytes, teamFiles, cameraIntervalMicros);
         }
 
         public Options withTeamFiles(List<FileDescriptor> files) {
-            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files));
+            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files), cameraIntervalMicros);
+        }
+
+        /** Camera frames at most {@code fps} per second per camera channel (0 = all). */
+        public Options withCameraRate(double fps) {
+            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, fps <= 0 ? 0 : (long) (1e6 / fps));
         }
     }
 
     /** The channel id in the current file, plus what finding the robot's timestamp needs. */
     private static final class ChannelState {
         final int id;
+        long nextFrameMicros = Long.MIN_VALUE;
         FieldDescriptor extension;
         FieldDescriptor timestamp;
         boolean timestampResolved;
@@ -64,6 +79,7 @@ public final class EnvelopeWriter implements Closeable {
     private McapWriter writer;
     private long fileStartMicros;
     private long bytesOfClosedFiles;
+    private long thinnedFrames;
 
     public EnvelopeWriter(Path file, Options options) throws IOException {
         this.base = file;
@@ -104,6 +120,19 @@ public final class EnvelopeWriter implements Closeable {
         ChannelState channel = channels.get(key);
         if (channel == null) {
             channel = addChannel(key, e.message());
+        }
+        if (options.cameraIntervalMicros() > 0 && key.channel() == touchline.transport.Channel.NAO_CAMERA
+                && !key.layout().equals(EnvelopeLayout.MALFORMED)) {
+            // one frame per interval slot, slots counted from the first frame, so 30 fps thinned
+            // to 5 fps gives 5 frames a second rather than whatever divides 30 evenly
+            long interval = options.cameraIntervalMicros();
+            if (channel.nextFrameMicros != Long.MIN_VALUE && e.timeMicros() < channel.nextFrameMicros) {
+                thinnedFrames++;
+                return;
+            }
+            channel.nextFrameMicros = channel.nextFrameMicros == Long.MIN_VALUE
+                    || channel.nextFrameMicros + interval <= e.timeMicros()
+                    ? e.timeMicros() + interval : channel.nextFrameMicros + interval;
         }
         long logTime = e.timeMicros() * 1000;
         switch (key.layout()) {
@@ -176,6 +205,11 @@ public final class EnvelopeWriter implements Closeable {
     /** Bytes written to all files so far (including the open chunk). */
     public long bytes() {
         return writer.size() + bytesOfClosedFiles;
+    }
+
+    /** Camera frames left out by the camera rate limit. */
+    public long thinnedFrames() {
+        return thinnedFrames;
     }
 
     public List<Path> files() {

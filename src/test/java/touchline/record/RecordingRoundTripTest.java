@@ -114,4 +114,27 @@ class RecordingRoundTripTest {
             assertTrue(Files.size(f) < 80_000, f + " is " + Files.size(f));
         }
     }
+
+    @Test
+    void cameraFramesAreThinnedToTheConfiguredRate() throws Exception {
+        List<Envelope> frames = new java.util.ArrayList<>();
+        for (int i = 0; i < 300; i++) { // 30 frames a second for ten seconds
+            frames.add(new Envelope(1_000_000L + i * 33_333L, Direction.IN, Channel.NAO_CAMERA, null, Envelope.NO_ROBOT,
+                    "jpeg", null, new byte[]{(byte) 0xFF, (byte) 0xD8, (byte) i}, null));
+        }
+        Path file = dir.resolve("camera.mcap");
+        long thinned;
+        try (EnvelopeWriter w = new EnvelopeWriter(file, EnvelopeWriter.Options.defaults().withCameraRate(5))) {
+            for (Envelope e : frames) {
+                w.write(e);
+            }
+            thinned = w.thinnedFrames();
+        }
+        try (Recording r = Recording.open(file)) {
+            List<Envelope> back = RecordingFixture.readAll(r);
+            assertEquals(50, back.size(), "five frames a second");
+            assertEquals(250, thinned);
+            assertEquals(frames.get(0), back.get(0));
+        }
+    }
 }
