@@ -16,6 +16,7 @@ import picocli.CommandLine.Command;
                 StreamCommand.class,
                 ConsoleCommand.class,
                 ScreenshotsCommand.class,
+                RecordCommand.class, ReplayCommand.class, ExportCommand.class,
         })
 public final class Main implements Runnable {
 
