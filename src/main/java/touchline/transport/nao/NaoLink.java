@@ -70,6 +70,7 @@ public final class NaoLink implements AutoCloseable {
     static final int HEARTBEAT_IVL_MS = 500;
     static final int HEARTBEAT_TIMEOUT_MS = 1500;
     static final int HEARTBEAT_TTL_MS = 3000;
+    static final int HANDSHAKE_IVL_MS = 2000;
 
     private final String host;
     private final int port;
@@ -314,12 +315,10 @@ public final class NaoLink implements AutoCloseable {
                         drain.clear();
                     }
                 }
-                if (poller.pollin(1)) {
-                    readMonitor();
-                }
-                if (poller.pollin(0)) {
-                    readReplies();
-                }
+                // Read both sockets on every pass, not only when the poller flagged them: JeroMQ's
+                // poller signals through the socket's mailbox and was seen to miss a monitor event.
+                readMonitor();
+                readReplies();
                 Submission s;
                 while ((s = submissions.poll()) != null) {
                     dispatch(s);
@@ -347,13 +346,15 @@ public final class NaoLink implements AutoCloseable {
         dealer.setHeartbeatIvl(HEARTBEAT_IVL_MS);
         dealer.setHeartbeatTimeout(HEARTBEAT_TIMEOUT_MS);
         dealer.setHeartbeatTtl(HEARTBEAT_TTL_MS);
+        // A peer that accepts TCP but never completes ZMTP (frozen process, or a stalled accept)
+        // is dropped and retried after 2 s instead of libzmq's 30 s default.
+        dealer.setHandshakeIvl(HANDSHAKE_IVL_MS);
         dealer.setReconnectIVL(100);
         dealer.setReconnectIVLMax(1000);
         dealer.setSndHWM(10_000);
         dealer.setRcvHWM(10_000);
         String monitorAddress = "inproc://nao-link-monitor-" + MONITOR_IDS.incrementAndGet();
-        dealer.monitor(monitorAddress, ZMQ.EVENT_HANDSHAKE_PROTOCOL | ZMQ.EVENT_DISCONNECTED
-                | ZMQ.EVENT_CONNECTED | ZMQ.EVENT_CLOSED);
+        dealer.monitor(monitorAddress, ZMQ.EVENT_ALL);
         monitor = zmq.createSocket(SocketType.PAIR);
         monitor.connect(monitorAddress);
         dealer.connect("tcp://" + host + ":" + port);
@@ -519,6 +520,7 @@ public final class NaoLink implements AutoCloseable {
         ZMQ.Event event;
         while (monitor != null && (event = ZMQ.Event.recv(monitor, ZMQ.DONTWAIT)) != null) {
             int e = event.getEvent();
+            LOG.debug("monitor event {} {} {}", e, event.getAddress(), event.getValue());
             if (e == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
                 if (state != ConnectionState.ONLINE) {
                     setState(ConnectionState.ONLINE, "handshake with " + host + ":" + port);

@@ -41,17 +41,17 @@ final class FakeNaoRobot implements AutoCloseable {
     FakeNaoRobot(int port) {
         router = zmq.createSocket(SocketType.ROUTER);
         router.setLinger(0);
-        router.setHeartbeatIvl(500);
-        router.setHeartbeatTimeout(1500);
-        this.port = port == 0 ? router.bindToRandomPort("tcp://127.0.0.1") : bind(port);
+        this.port = bind(port);
         thread = new Thread(this::run, "fake-nao-" + this.port);
         thread.setDaemon(true);
         thread.start();
     }
 
     private int bind(int p) {
-        router.bind("tcp://127.0.0.1:" + p);
-        return p;
+        // ":*" lets the OS choose (JeroMQ's bindToRandomPort guesses ports instead)
+        router.bind("tcp://127.0.0.1:" + (p == 0 ? "*" : Integer.toString(p)));
+        String endpoint = router.getLastEndpoint();
+        return Integer.parseInt(endpoint.substring(endpoint.lastIndexOf(':') + 1));
     }
 
     int port() {
