@@ -15,7 +15,7 @@ import java.io.IOException;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /** In-test stand-in for the camera server: a REP socket with the configure / fetch contract. */
-final class FakeNaoCamera implements AutoCloseable {
+public final class FakeNaoCamera implements AutoCloseable {
 
     private final ZContext zmq = new ZContext(1);
     private final ZMQ.Socket rep;
@@ -25,7 +25,7 @@ final class FakeNaoCamera implements AutoCloseable {
     final AtomicInteger fetches = new AtomicInteger();
     final AtomicInteger configures = new AtomicInteger();
 
-    FakeNaoCamera() {
+    public FakeNaoCamera() {
         rep = zmq.createSocket(SocketType.REP);
         rep.setLinger(0);
         rep.setReceiveTimeOut(50);
@@ -37,7 +37,7 @@ final class FakeNaoCamera implements AutoCloseable {
         thread.start();
     }
 
-    int port() {
+    public int port() {
         return port;
     }
 

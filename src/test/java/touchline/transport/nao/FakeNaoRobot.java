@@ -23,7 +23,7 @@ import java.util.concurrent.TimeUnit;
  * a few methods, replies out of order (Test.sleep), honours deadlineMillis and logs what it
  * executed. Used where the C++ binary is not built; the integration tests use the real one.
  */
-final class FakeNaoRobot implements AutoCloseable {
+public final class FakeNaoRobot implements AutoCloseable {
 
     private final ZContext zmq = new ZContext(1);
     private final ZMQ.Socket router;
@@ -38,7 +38,7 @@ final class FakeNaoRobot implements AutoCloseable {
     private record Delayed(long dueNanos, byte[][] frames) {
     }
 
-    FakeNaoRobot(int port) {
+    public FakeNaoRobot(int port) {
         router = zmq.createSocket(SocketType.ROUTER);
         router.setLinger(0);
         this.port = bind(port);
@@ -54,7 +54,7 @@ final class FakeNaoRobot implements AutoCloseable {
         return Integer.parseInt(endpoint.substring(endpoint.lastIndexOf(':') + 1));
     }
 
-    int port() {
+    public int port() {
         return port;
     }
 
