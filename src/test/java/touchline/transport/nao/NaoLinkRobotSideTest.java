@@ -57,7 +57,7 @@ class NaoLinkRobotSideTest {
             }
             SequenceOutcome stand = new NaoMoves(link).stand().get(30, TimeUnit.SECONDS);
             assertTrue(stand.ok(), stand.describe());
-            assertEquals(new CallOutcome.Value("Stand"), get(link.call("ALRobotPosture", "getPosture")));
+            assertEquals(new CallOutcome.Value("Standing"), get(link.call("ALRobotPosture", "getPostureFamily")));
             SequenceOutcome bad = link.sequence(List.of(NaoCall.of("ALRobotPosture", "goToPosture", "NoSuchPosture", 1.0f),
                     NaoCall.of("ALMemory", "insertData", "Touchline/after", 1))).get(30, TimeUnit.SECONDS);
             assertEquals(0, bad.failedIndex(), bad.describe());
@@ -85,7 +85,11 @@ class NaoLinkRobotSideTest {
             Thread.sleep(500); // nothing to await: a late delivery would arrive now if anything were queued
             assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "Touchline/late")),
                     "the call made while the robot was down must not run after it restarts");
-            assertTrue(restarted.rpcPort == port);
+            assertEquals(port, restarted.rpcPort);
+            CallOutcome log = get(link.call("Robot", "getCallLog"));
+            assertInstanceOf(CallOutcome.Value.class, log);
+            assertTrue(((List<?>) ((CallOutcome.Value) log).value()).stream()
+                    .noneMatch(entry -> String.valueOf(entry).contains("insertData")), "call log: " + log.describe());
         } finally {
             sim.close();
         }
