@@ -207,7 +207,13 @@ public final class NaoCameraStream implements AutoCloseable {
                     }
                 } else {
                     long period = TimeUnit.SECONDS.toNanos(1) / want.fps();
-                    nextFetch = Math.max(nextFetch + period, System.nanoTime());
+                    // Keep the average rate: a slightly late fetch is made up by the next slot;
+                    // only when more than a whole period behind do we restart the schedule.
+                    nextFetch += period;
+                    long now = System.nanoTime();
+                    if (now - nextFetch > period) {
+                        nextFetch = now;
+                    }
                     Reply r = exchange(socket, null);
                     replied = r != null;
                     if (r != null && r.response != null) {
@@ -309,7 +315,6 @@ public final class NaoCameraStream implements AutoCloseable {
     }
 
     private static long micros() {
-        java.time.Instant now = java.time.Instant.now();
-        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1000;
+        return NaoEnvelopeChannel.nowMicros();
     }
 }

@@ -520,7 +520,7 @@ public final class NaoLink implements AutoCloseable {
         ZMQ.Event event;
         while (monitor != null && (event = ZMQ.Event.recv(monitor, ZMQ.DONTWAIT)) != null) {
             int e = event.getEvent();
-            LOG.debug("monitor event {} {} {}", e, event.getAddress(), event.getValue());
+            LOG.trace("monitor event {} {} {}", e, event.getAddress(), event.getValue());
             if (e == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
                 if (state != ConnectionState.ONLINE) {
                     setState(ConnectionState.ONLINE, "handshake with " + host + ":" + port);
@@ -644,7 +644,6 @@ public final class NaoLink implements AutoCloseable {
     }
 
     private static long micros() {
-        java.time.Instant now = java.time.Instant.now();
-        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1000;
+        return NaoEnvelopeChannel.nowMicros();
     }
 }
