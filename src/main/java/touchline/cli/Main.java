@@ -16,7 +16,11 @@ import picocli.CommandLine.Command;
                 StreamCommand.class,
                 ConsoleCommand.class,
                 ScreenshotsCommand.class,
-                RecordCommand.class, ReplayCommand.class, ExportCommand.class,
+                RecordCommand.class,
+                ReplayCommand.class,
+                ExportCommand.class,
+                GcCommand.class,
+                NaoCommand.class,
         })
 public final class Main implements Runnable {
 
