@@ -233,3 +233,11 @@ TEST(Broker, MemoryIsBounded) {
   broker.call("ALMemory", "insertData", {stringValue("blob4"), binaryValue("small")});
   EXPECT_EQ(broker.call("ALMemory", "getData", {stringValue("blob4")})->binary(), "small");
 }
+
+TEST(Broker, RejectedCallsAreNotLoggedAsRun) {
+  SimulatedBroker broker(kScale);
+  errorOf(broker, "ALMotion", "fly");
+  errorOf(broker, "ALTextToSpeech", "say", {intValue(3)});
+  errorOf(broker, "ALNope", "say");
+  EXPECT_TRUE(strings(*broker.call("Robot", "getCallLog", {})).empty());
+}
