@@ -25,9 +25,10 @@ final class EventDetector {
 
     private final List<TimelineEvent> events = new ArrayList<>();
     private final Map<Integer, Long> lastSeen = new HashMap<>();
-    private int gcState = -1;
-    private int score0 = -1;
-    private int score1 = -1;
+    // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
+    private final int[] gcState = {-1, -1};
+    private final int[] score0 = {-1, -1};
+    private final int[] score1 = {-1, -1};
     private boolean sawGc;
     private String robotState;
     private long lastTime = Long.MIN_VALUE;
@@ -67,21 +68,23 @@ final class EventDetector {
             sawGc = true;
             events.removeIf(ev -> ev.type() == TimelineEvent.Type.STATE_CHANGE);
         }
+        int d = e.direction().ordinal();
+        String who = e.direction() == Direction.IN ? "GC: " : "our GC: ";
         int state = r[9] & 0xFF;
         int s0 = r[24 + 2] & 0xFF;
         int s1 = r[356 + 2] & 0xFF;
-        if (gcState >= 0 && state != gcState) {
+        if (gcState[d] >= 0 && state != gcState[d]) {
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.STATE_CHANGE, -1,
-                    "GC: " + stateName(gcState) + " → " + stateName(state)));
+                    who + stateName(gcState[d]) + " → " + stateName(state)));
         }
-        if (score0 >= 0 && (s0 > score0 || s1 > score1)) {
-            int team = s0 > score0 ? r[24] & 0xFF : r[356] & 0xFF;
+        if (score0[d] >= 0 && (s0 > score0[d] || s1 > score1[d])) {
+            int team = s0 > score0[d] ? r[24] & 0xFF : r[356] & 0xFF;
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.GOAL, -1,
-                    "goal for team " + team + " (" + s0 + ":" + s1 + ")"));
+                    who + "goal for team " + team + " (" + s0 + ":" + s1 + ")"));
         }
-        gcState = state;
-        score0 = s0;
-        score1 = s1;
+        gcState[d] = state;
+        score0[d] = s0;
+        score1[d] = s1;
     }
 
     private static String stateName(int s) {
