@@ -27,8 +27,9 @@ final class EventDetector {
     private final Map<Integer, Long> lastSeen = new HashMap<>();
     // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
     private final int[] gcState = {-1, -1};
-    private final int[] score0 = {-1, -1};
-    private final int[] score1 = {-1, -1};
+    // scores by team number: the teams swap slots at half time
+    @SuppressWarnings("unchecked")
+    private final Map<Integer, Integer>[] scores = new Map[]{new HashMap<>(), new HashMap<>()};
     private boolean sawGc;
     private String robotState;
     private long lastTime = Long.MIN_VALUE;
@@ -77,14 +78,16 @@ final class EventDetector {
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.STATE_CHANGE, -1,
                     who + stateName(gcState[d]) + " → " + stateName(state)));
         }
-        if (score0[d] >= 0 && (s0 > score0[d] || s1 > score1[d])) {
-            int team = s0 > score0[d] ? r[24] & 0xFF : r[356] & 0xFF;
-            events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.GOAL, -1,
-                    who + "goal for team " + team + " (" + s0 + ":" + s1 + ")"));
+        int team0 = r[24] & 0xFF;
+        int team1 = r[356] & 0xFF;
+        for (int[] team : new int[][]{{team0, s0}, {team1, s1}}) {
+            Integer before = scores[d].put(team[0], team[1]);
+            if (before != null && team[1] > before) {
+                events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.GOAL, -1,
+                        who + "goal for team " + team[0] + " (" + team0 + " " + s0 + ":" + s1 + " " + team1 + ")"));
+            }
         }
         gcState[d] = state;
-        score0[d] = s0;
-        score1[d] = s1;
     }
 
     private static String stateName(int s) {
