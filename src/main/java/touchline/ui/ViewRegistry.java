@@ -1,6 +1,7 @@
 package touchline.ui;
 
 import touchline.proto.Fumanoid.DebugKind;
+import touchline.ui.replay.ReplayView;
 import touchline.ui.views.DebugConsoleView;
 import touchline.ui.views.FieldView;
 import touchline.ui.views.ImageDataView;
@@ -51,6 +52,7 @@ public final class ViewRegistry {
             new ViewSpec("image", "Image", "An option's image (GRAY8, RGB888, colour classes, JPEG, PNG); images "
                     + "that do not decode are marked.", Set.of(DebugKind.IMAGE_VALUE), ImageDataView::new),
             new ViewSpec("text", "Text", "An option's text lines.", Set.of(DebugKind.TEXT_VALUE), TextView::new),
+            new ViewSpec("replay", "Record & replay", "Record the session to MCAP; open a recording, play, seek by timeline or event, loop, speed; live listening; load team schemas.", Set.of(), (c, s) -> new ReplayView(c)),
             new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
                     + "text.", Set.of(), RawDataView::new));
 

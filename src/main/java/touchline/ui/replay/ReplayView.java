@@ -1,0 +1,422 @@
+package touchline.ui.replay;
+
+import javafx.scene.Node;
+import javafx.scene.control.Button;
+import javafx.scene.control.CheckBox;
+import javafx.scene.control.ComboBox;
+import javafx.scene.control.Label;
+import javafx.scene.control.ListView;
+import javafx.scene.control.ScrollPane;
+import javafx.scene.control.Separator;
+import javafx.scene.control.TextField;
+import javafx.scene.layout.HBox;
+import javafx.scene.layout.Priority;
+import javafx.scene.layout.VBox;
+import javafx.stage.FileChooser;
+import javafx.util.StringConverter;
+import touchline.app.Console;
+import touchline.app.Replay;
+import touchline.record.PlayerState;
+import touchline.record.RecordingException;
+import touchline.record.TimelineEvent;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * Record and replay in one view: record the session to an MCAP file; open a recording and
+ * drive it with a timeline (events, seek, loop A–B), play/pause, speed and seek-to-event;
+ * choose whether live traffic keeps flowing beside the replay; load a team's own message
+ * types. The replay feeds the console's one Envelope stream, so every other view shows it.
+ * Everything that reads a file or may wait on the console's lock runs on a background thread;
+ * the player's state is pulled once per frame.
+ */
+public final class ReplayView implements View {
+
+    static final List<Double> SPEEDS = List.of(0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 10.0, 25.0, 50.0);
+
+    private final Console console;
+    private final WorkQueue work;
+    private final WorkQueue scans;
+    private final RecordPanel record;
+    private final TeamSchemas schemas;
+    private final TimelineCanvas timeline;
+    private final TextField path = new TextField();
+    private final Label message = new Label();
+    private final ListView<String> problems = new ListView<>();
+    private final Button play = new Button("▶ Play");
+    private final ComboBox<Double> speed = new ComboBox<>();
+    private final Label position = new Label("No recording open.");
+    private final Label loop = new Label();
+    private final CheckBox live = new CheckBox("Live listening");
+    private final ListView<String> schemaList = new ListView<>();
+    private final List<Node> replayControls = new ArrayList<>();
+    private final AtomicLong pendingSeek = new AtomicLong(-1);
+    private final VBox root;
+    private final ScrollPane scroll;
+    private Replay shown;
+    private PlayerState state;
+    private List<TimelineEvent> events = List.of();
+    private long loopA = -1;
+    private List<String> shownProblems = List.of();
+
+    public ReplayView(ViewContext context) {
+        this.console = context.console();
+        this.work = new WorkQueue("touchline-replay-view", this::fail);
+        this.scans = new WorkQueue("touchline-replay-events", this::fail);
+        this.record = new RecordPanel(console, work);
+        this.schemas = new TeamSchemas(console.kinds());
+        this.timeline = new TimelineCanvas(this::requestSeek);
+        root = new VBox(10, record.node(), new Separator(), replayPane(), new Separator(), schemaPane());
+        root.setStyle("-fx-padding: 8;");
+        scroll = new ScrollPane(root);
+        scroll.setFitToWidth(true);
+    }
+
+    private Node replayPane() {
+        path.setId("replay-path");
+        path.setPromptText("recording.mcap");
+        path.setOnAction(e -> open());
+        HBox.setHgrow(path, Priority.ALWAYS);
+        Button browse = new Button("Browse…");
+        browse.setOnAction(e -> browse());
+        Button open = button("replay-open", "Open", this::open);
+        Button close = button("replay-close", "Close replay", () -> work.run(console::closeReplay));
+        HBox fileRow = row(new Label("File"), path, browse, open, close);
+
+        message.setId("replay-message");
+        message.setWrapText(true);
+        problems.setId("replay-problems");
+        problems.setPrefHeight(60);
+        problems.setVisible(false);
+        problems.setManaged(false);
+
+        play.setId("replay-play");
+        play.setOnAction(e -> playOrPause());
+        play.setMinWidth(80);
+        speed.setId("replay-speed");
+        speed.getItems().setAll(SPEEDS);
+        speed.setValue(1.0);
+        speed.setConverter(new StringConverter<>() {
+            @Override
+            public String toString(Double d) {
+                return d == null ? "" : speedText(d);
+            }
+
+            @Override
+            public Double fromString(String s) {
+                return Double.parseDouble(s.replace("×", "").trim());
+            }
+        });
+        speed.setOnAction(e -> {
+            Replay r = shown;
+            Double v = speed.getValue();
+            if (r != null && v != null) {
+                work.run(() -> r.setSpeed(v));
+            }
+        });
+        Button goal = button("replay-next-goal", "Next goal", () -> next(TimelineEvent.Type.GOAL));
+        Button change = button("replay-next-state", "Next state change", () -> next(TimelineEvent.Type.STATE_CHANGE));
+        Button lost = button("replay-next-lost", "Next robot lost", () -> next(TimelineEvent.Type.ROBOT_LOST));
+        goal.setStyle("-fx-border-color: #d4a72c; -fx-border-width: 0 0 3 0;");
+        change.setStyle("-fx-border-color: #2f81f7; -fx-border-width: 0 0 3 0;");
+        lost.setStyle("-fx-border-color: #cf222e; -fx-border-width: 0 0 3 0;");
+        Button a = button("replay-loop-a", "Loop A", this::setLoopA);
+        Button b = button("replay-loop-b", "Loop B", this::setLoopB);
+        Button clear = button("replay-loop-clear", "Clear loop", this::clearLoop);
+        HBox controls = row(play, new Label("Speed"), speed, goal, change, lost, a, b, clear, loop);
+        replayControls.addAll(List.of(play, speed, goal, change, lost, a, b, clear, close));
+
+        position.setId("replay-position");
+        live.setId("replay-live");
+        live.setOnAction(e -> console.setLiveListening(live.isSelected()));
+        live.setSelected(console.liveListening());
+        Label hint = new Label("(off: only the replay feeds the views, and their clock follows it)");
+        hint.setStyle("-fx-opacity: 0.7;");
+        Label title = new Label("Replay");
+        title.setStyle("-fx-font-weight: bold;");
+        return new VBox(6, title, fileRow, message, problems, timeline.node(), position, controls, row(live, hint));
+    }
+
+    private Node schemaPane() {
+        Label title = new Label("Team schemas");
+        title.setStyle("-fx-font-weight: bold;");
+        Button load = button("schema-load", "Load team schema…", this::chooseSchema);
+        Label hint = new Label("a protoc descriptor set: protoc --include_imports --descriptor_set_out=team.desc team.proto");
+        hint.setStyle("-fx-opacity: 0.7;");
+        schemaList.setId("schema-list");
+        schemaList.setPrefHeight(80);
+        schemaList.setPlaceholder(new Label("No team schema loaded: the built-in FUmanoids types decode."));
+        return new VBox(6, title, row(load, hint), schemaList);
+    }
+
+    private static HBox row(Node... nodes) {
+        HBox row = new HBox(8, nodes);
+        row.setStyle("-fx-alignment: center-left;");
+        return row;
+    }
+
+    private static Button button(String id, String text, Runnable action) {
+        Button b = new Button(text);
+        b.setId(id);
+        b.setOnAction(e -> action.run());
+        return b;
+    }
+
+    static String speedText(double s) {
+        return (s == Math.rint(s) ? String.format(Locale.ROOT, "%.0f", s) : String.format(Locale.ROOT, "%.2f", s)
+                .replaceAll("0+$", "")) + "×";
+    }
+
+    private void fail(String why) {
+        message.setText(why);
+        message.setStyle("-fx-text-fill: #cf222e;");
+    }
+
+    private void say(String text) {
+        message.setText(text);
+        message.setStyle("");
+    }
+
+    // ---- actions (FX thread); anything slow goes to the work queue ----
+
+    private void browse() {
+        FileChooser chooser = new FileChooser();
+        chooser.setTitle("Open recording");
+        chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("MCAP recordings", "*.mcap"),
+                new FileChooser.ExtensionFilter("All files", "*"));
+        java.io.File f = chooser.showOpenDialog(root.getScene().getWindow());
+        if (f != null) {
+            path.setText(f.toString());
+            open();
+        }
+    }
+
+    /** Opens the file named in the path field (paused at its start). */
+    void open() {
+        String text = path.getText().trim();
+        if (text.isEmpty()) {
+            fail("Type or choose a recording to open.");
+            return;
+        }
+        Path file = Path.of(text);
+        say("Opening " + file + " …");
+        work.run(() -> {
+            try {
+                console.openReplay(file);
+                work.handOff(() -> say("Opened " + file.getFileName() + "."));
+            } catch (RecordingException e) {
+                work.handOff(() -> fail("Cannot replay " + file.getFileName() + ": " + e.getMessage()));
+            }
+        });
+    }
+
+    private void playOrPause() {
+        Replay r = shown;
+        if (r == null) {
+            return;
+        }
+        boolean playing = state != null && state.playing();
+        Double v = speed.getValue();
+        work.run(() -> {
+            if (playing) {
+                r.pause();
+            } else {
+                if (v != null) {
+                    r.setSpeed(v);
+                }
+                r.play();
+            }
+        });
+    }
+
+    private void next(TimelineEvent.Type type) {
+        Replay r = shown;
+        if (r == null) {
+            return;
+        }
+        work.run(() -> {
+            if (r.seekToNext(type).isEmpty()) {
+                work.handOff(() -> say("No " + type.name().toLowerCase(Locale.ROOT).replace('_', ' ')
+                        + " after this point."));
+            }
+        });
+    }
+
+    /** Seeks (coalesced: a drag asks many times, the player only seeks to the newest). */
+    private void requestSeek(long micros) {
+        Replay r = shown;
+        if (r == null) {
+            return;
+        }
+        if (pendingSeek.getAndSet(micros) < 0) {
+            work.run(() -> {
+                long t = pendingSeek.getAndSet(-1);
+                if (t >= 0) {
+                    r.seek(t);
+                }
+            });
+        }
+    }
+
+    private void setLoopA() {
+        if (state != null) {
+            loopA = state.positionMicros();
+            loop.setText("A at " + TimelineCanvas.clock(loopA - state.startMicros()) + ", now set B");
+        }
+    }
+
+    private void setLoopB() {
+        Replay r = shown;
+        if (r == null || state == null) {
+            return;
+        }
+        if (loopA < 0) {
+            loop.setText("Set A first");
+            return;
+        }
+        long from = Math.min(loopA, state.positionMicros());
+        long to = Math.max(loopA, state.positionMicros());
+        if (to <= from) {
+            loop.setText("A and B are the same time");
+            return;
+        }
+        loopA = -1;
+        work.run(() -> r.setLoop(from, to));
+    }
+
+    private void clearLoop() {
+        Replay r = shown;
+        loopA = -1;
+        loop.setText("");
+        if (r != null) {
+            work.run(r::clearLoop);
+        }
+    }
+
+    private void chooseSchema() {
+        FileChooser chooser = new FileChooser();
+        chooser.setTitle("Load team schema (protoc descriptor set)");
+        chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("Descriptor sets", "*.desc", "*.pb"),
+                new FileChooser.ExtensionFilter("All files", "*"));
+        java.io.File f = chooser.showOpenDialog(root.getScene().getWindow());
+        if (f != null) {
+            loadSchema(f.toPath());
+        }
+    }
+
+    /** Loads a team's descriptor set in the background; the list shows what it brought. */
+    void loadSchema(Path file) {
+        work.run(() -> {
+            List<String> lines = new ArrayList<>();
+            try {
+                TeamSchemas.Outcome o = schemas.load(file);
+                o.extensions().forEach(x -> lines.add("✔ " + x));
+                o.refusals().forEach(x -> lines.add("✖ " + x));
+            } catch (RecordingException e) {
+                lines.add("✖ " + e.getMessage());
+            }
+            work.handOff(() -> schemaList.getItems().addAll(lines));
+        });
+    }
+
+    // ---- once per frame ----
+
+    @Override
+    public Node node() {
+        return scroll;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        work.drain();
+        scans.drain();
+        record.refresh();
+        if (live.isSelected() != console.liveListening()) {
+            live.setSelected(console.liveListening());
+        }
+        if (work.busy()) {
+            return; // a file operation may hold the console or player lock: never wait for it here
+        }
+        Replay r = console.replay().orElse(null);
+        if (r != shown) {
+            adopt(r);
+        }
+        state = r == null ? null : r.state();
+        timeline.show(state, events);
+        showState();
+    }
+
+    /** A new replay (or none): its events are read on the scan thread (the first read scans the file). */
+    private void adopt(Replay r) {
+        shown = r;
+        events = List.of();
+        loopA = -1;
+        loop.setText("");
+        replayControls.forEach(n -> n.setDisable(r == null));
+        if (r != null) {
+            scans.run(() -> {
+                List<TimelineEvent> ev = r.events();
+                scans.handOff(() -> {
+                    if (shown == r) {
+                        events = ev;
+                    }
+                });
+            });
+        }
+    }
+
+    private void showState() {
+        List<String> p = state == null ? List.of() : state.problems();
+        if (!p.equals(shownProblems)) {
+            shownProblems = List.copyOf(p);
+            problems.getItems().setAll(p.stream().map(s -> "⚠ " + s).toList());
+            problems.setVisible(!p.isEmpty());
+            problems.setManaged(!p.isEmpty());
+        }
+        String text;
+        if (state == null) {
+            text = "No recording open.";
+        } else {
+            text = TimelineCanvas.clock(state.positionMicros() - state.startMicros()) + " / "
+                    + TimelineCanvas.clock(state.durationMicros())
+                    + (state.finished() ? "  finished" : state.playing() ? "  playing at " + speedText(state.speed())
+                    : "  paused")
+                    + "  ·  " + String.format(Locale.ROOT, "%,d", state.emitted()) + " envelopes"
+                    + "  ·  " + (events.isEmpty() && shown != null && scans.busy() ? "reading events…"
+                    : events.size() + " events");
+            if (state.loopFromMicros() >= 0 && loopA < 0) {
+                loop.setText("Loop " + TimelineCanvas.clock(state.loopFromMicros() - state.startMicros()) + "–"
+                        + TimelineCanvas.clock(state.loopToMicros() - state.startMicros()));
+            }
+        }
+        if (!text.equals(position.getText())) {
+            position.setText(text);
+        }
+        String label = state != null && state.playing() ? "⏸ Pause" : "▶ Play";
+        if (!label.equals(play.getText())) {
+            play.setText(label);
+        }
+    }
+
+    /** The timeline's events as shown now (FX thread; for tests). */
+    List<TimelineEvent> shownEvents() {
+        return timeline.events();
+    }
+
+    TimelineCanvas timeline() {
+        return timeline;
+    }
+
+    @Override
+    public void close() {
+        work.close();
+        scans.close();
+    }
+}

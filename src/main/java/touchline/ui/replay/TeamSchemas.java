@@ -1,0 +1,64 @@
+package touchline.ui.replay;
+
+import com.google.protobuf.Descriptors.FieldDescriptor;
+import com.google.protobuf.Descriptors.FileDescriptor;
+import touchline.proto.Fumanoid;
+import touchline.protocol.MessageKinds;
+import touchline.record.RecordingException;
+import touchline.record.SchemaSet;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A team's own message types loaded at run time from a protoc descriptor set: the files are
+ * built onto the compiled FUmanoids types and their {@code Message} extensions handed to the
+ * console's {@link MessageKinds}, which then decodes them by name. Remembers what was loaded
+ * and what was refused, for the view to list.
+ */
+final class TeamSchemas {
+
+    /** What one descriptor set brought: extensions now decoded, and what was refused and why. */
+    record Outcome(Path file, List<String> extensions, List<String> refusals) { }
+
+    private final SchemaSet schemas = new SchemaSet();
+    private final MessageKinds kinds;
+
+    TeamSchemas(MessageKinds kinds) {
+        this.kinds = kinds;
+    }
+
+    /** Loads {@code file}; throws with a user-facing message when it is not a usable descriptor set. */
+    Outcome load(Path file) throws RecordingException {
+        List<FileDescriptor> added = schemas.load(file);
+        List<String> extensions = new ArrayList<>();
+        List<String> refusals = new ArrayList<>();
+        if (added.isEmpty()) {
+            refusals.add(file.getFileName() + ": nothing new (its files are loaded already)");
+        }
+        for (FileDescriptor f : added) {
+            String refused = kinds.add(f).orElse("");
+            if (!refused.isEmpty()) {
+                refusals.add(f.getName() + ": " + refused);
+            }
+            int before = extensions.size();
+            for (FieldDescriptor ext : f.getExtensions()) {
+                boolean ofMessage = ext.getContainingType().getFullName()
+                        .equals(Fumanoid.Message.getDescriptor().getFullName());
+                if (ofMessage && !refused.contains("(" + ext.getFullName() + ")")) {
+                    extensions.add(ext.getName() + " = " + ext.getNumber() + "  (" + typeName(ext) + ", " + f.getName() + ")");
+                }
+            }
+            if (extensions.size() == before && refused.isEmpty()) {
+                refusals.add(f.getName() + ": declares no extension of fumanoid.Message (nothing new to decode)");
+            }
+        }
+        return new Outcome(file, extensions, refusals);
+    }
+
+    private static String typeName(FieldDescriptor ext) {
+        return ext.getJavaType() == FieldDescriptor.JavaType.MESSAGE ? ext.getMessageType().getFullName()
+                : ext.getType().name().toLowerCase(java.util.Locale.ROOT);
+    }
+}
