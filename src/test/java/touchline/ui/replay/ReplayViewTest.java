@@ -1,0 +1,264 @@
+package touchline.ui.replay;
+
+import javafx.embed.swing.SwingFXUtils;
+import javafx.geometry.Bounds;
+import javafx.geometry.Point2D;
+import javafx.scene.control.ComboBox;
+import javafx.scene.control.Label;
+import javafx.scene.control.ListView;
+import javafx.scene.control.TextField;
+import javafx.stage.Stage;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.testfx.api.FxRobot;
+import org.testfx.api.FxToolkit;
+import org.testfx.util.WaitForAsyncUtils;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.record.PlayerState;
+import touchline.record.Recording;
+import touchline.record.TimelineEvent;
+import touchline.transport.UdpConfig;
+import touchline.ui.ConsoleWindow;
+import touchline.ui.Shell;
+import touchline.ui.UiSettings;
+import touchline.ui.ViewSource;
+
+import javax.imageio.ImageIO;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Random;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The Record &amp; replay view in the real console window (headless Monocle): the sample
+ * recording opened through the view plays into the model, its events are on the timeline,
+ * seeking by timeline and by event lands where it should, a broken file is reported and the
+ * console carries on, recording writes a file.
+ */
+@Tag("ui")
+class ReplayViewTest {
+
+    static final Path SAMPLE = Path.of("samples/demo-team.mcap").toAbsolutePath();
+
+    @TempDir
+    Path dir;
+    private Console console;
+    private ConsoleWindow window;
+    private ReplayView view;
+    private final FxRobot robot = new FxRobot();
+
+    @BeforeEach
+    void open() throws Exception {
+        console = new Console(ConsoleConfig.defaults().withUdp(
+                UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+        Stage stage = FxToolkit.registerPrimaryStage();
+        window = fx(() -> new ConsoleWindow(console, new UiSettings(dir, true, false)).show(stage));
+        view = fx(() -> {
+            window.open("replay", ViewSource.NONE);
+            return window.shell().openViews().stream().map(Shell.OpenView::view)
+                    .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
+        });
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        fx(() -> {
+            window.pulse().stop();
+            window.scene().getWindow().hide();
+            return null;
+        });
+        FxToolkit.cleanupStages();
+        console.close();
+    }
+
+    @Test
+    void theSamplePlaysIntoTheModelAndSeeksToTheGoal() throws Exception {
+        openFile(SAMPLE);
+        await(20, () -> !view.shownEvents().isEmpty());
+        assertTrue(fx(() -> view.shownEvents().stream().map(TimelineEvent::type).distinct().count()) == 3,
+                "goal, state changes and the robot drop-out are on the timeline");
+        TimelineEvent goal = fx(() -> view.shownEvents().stream()
+                .filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow());
+
+        robot.clickOn("#replay-live"); // replay alone: the model's clock follows the replay
+        assertFalse(console.liveListening());
+        chooseSpeed(50.0);
+        robot.clickOn("#replay-play");
+        await(20, () -> console.robots().robots().size() == 3);
+        await(20, () -> state().positionMicros() - state().startMicros() > 10_000_000L);
+        assertEquals(50.0, state().speed());
+        assertTrue(state().playing());
+        robot.clickOn("#replay-play"); // pause
+        await(5, () -> !state().playing());
+
+        // click the very left of the timeline: back to the start
+        Bounds b = fx(() -> view.timeline().node().localToScreen(view.timeline().node().getBoundsInLocal()));
+        robot.clickOn(new Point2D(b.getMinX() + TimelineCanvas.PAD, b.getCenterY()));
+        await(5, () -> state().positionMicros() == state().startMicros());
+
+        robot.clickOn("#replay-next-goal");
+        await(5, () -> state().positionMicros() == goal.timeMicros());
+        String at = TimelineCanvas.clock(goal.timeMicros() - state().startMicros());
+        await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().startsWith(at + " /"));
+
+        // playing at 50x, "next state change" lands on the event (plus at most a frame's worth of play)
+        TimelineEvent finished = fx(() -> view.shownEvents().stream().filter(e -> e.type() == TimelineEvent.Type.STATE_CHANGE
+                && e.timeMicros() > goal.timeMicros()).findFirst().orElseThrow());
+        robot.clickOn("#replay-play");
+        robot.clickOn("#replay-next-state");
+        await(5, () -> state().positionMicros() >= finished.timeMicros());
+        robot.clickOn("#replay-play");
+        await(5, () -> !state().playing());
+
+        // loop A at the goal, B ten seconds later
+        robot.clickOn(new Point2D(fx(() -> view.timeline().node().localToScreen(
+                view.timeline().xOf(goal.timeMicros()), 0).getX()), b.getCenterY()));
+        await(5, () -> Math.abs(state().positionMicros() - goal.timeMicros()) < 2_000_000);
+        long a = state().positionMicros();
+        robot.clickOn("#replay-loop-a");
+        robot.clickOn(new Point2D(fx(() -> view.timeline().node().localToScreen(
+                view.timeline().xOf(goal.timeMicros() + 10_000_000), 0).getX()), b.getCenterY()));
+        await(5, () -> state().positionMicros() > a + 5_000_000);
+        long bTime = state().positionMicros();
+        robot.clickOn("#replay-loop-b");
+        await(5, () -> state().loopFromMicros() == a && state().loopToMicros() == bTime);
+
+        robot.clickOn("#replay-loop-clear");
+        await(5, () -> state().loopFromMicros() < 0);
+        robot.clickOn("#replay-close");
+        await(5, () -> console.replay().isEmpty());
+        await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().equals("No recording open."));
+    }
+
+    @Test
+    void aBrokenFileIsReportedAndTheConsoleCarriesOn() throws Exception {
+        Path junk = dir.resolve("junk.mcap");
+        byte[] bytes = new byte[64];
+        new Random(7).nextBytes(bytes);
+        Files.write(junk, bytes);
+        openFile(junk);
+        await(10, () -> message().contains("Cannot replay junk.mcap") && message().contains("not an MCAP"));
+        assertTrue(console.replay().isEmpty());
+
+        openFile(dir.resolve("missing.mcap"));
+        await(10, () -> message().contains("Cannot replay missing.mcap"));
+
+        // a file cut in the middle: replays up to the cut, the problem is listed
+        Path cut = dir.resolve("cut.mcap");
+        byte[] whole = Files.readAllBytes(SAMPLE);
+        Files.write(cut, java.util.Arrays.copyOf(whole, whole.length / 2));
+        openFile(cut);
+        await(20, () -> !robot.lookup("#replay-problems").queryAs(ListView.class).getItems().isEmpty());
+        await(20, () -> !view.shownEvents().isEmpty());
+        assertTrue(window.scene().getWindow().isShowing());
+    }
+
+    @Test
+    void recordingWritesAFileThatReplays() throws Exception {
+        Path out = dir.resolve("rec/session.mcap");
+        fx(() -> {
+            robot.lookup("#record-path").queryAs(TextField.class).setText(out.toString());
+            return null;
+        });
+        robot.clickOn("#record-toggle");
+        await(10, () -> robot.lookup("#record-counters").queryAs(Label.class).getText().startsWith("Recording:"));
+        openFile(SAMPLE);
+        await(20, () -> !view.shownEvents().isEmpty());
+        chooseSpeed(50.0);
+        robot.clickOn("#replay-play");
+        await(20, () -> console.recording().map(s -> s.written() > 1000).orElse(false));
+        robot.clickOn("#record-toggle");
+        await(10, () -> robot.lookup("#record-counters").queryAs(Label.class).getText().startsWith("Stopped:"));
+        try (Recording r = Recording.open(out, new touchline.protocol.MessageKinds())) {
+            assertTrue(r.problems().isEmpty(), () -> "a complete file: " + r.problems());
+            assertTrue(r.endMicros() > r.startMicros());
+        }
+        assertTrue(fx(() -> robot.lookup("#record-path").queryAs(TextField.class).getText())
+                .startsWith(Path.of("recordings", "touchline-").toString()), "the next recording gets a new name");
+    }
+
+    @Test
+    void aTeamSchemaLoadsFromTheView() throws Exception {
+        Path desc = dir.resolve("team.desc");
+        Files.write(desc, TeamSchemasTest.teamSet("teamBall", 1042).toByteArray());
+        fx(() -> {
+            view.loadSchema(desc);
+            return null;
+        });
+        await(10, () -> robot.lookup("#schema-list").queryAs(ListView.class).getItems().stream()
+                .anyMatch(i -> i.toString().startsWith("✔ teamBall = 1042")));
+        assertTrue(console.kinds().byName("teamBall").isPresent());
+    }
+
+    /** Renders the view mid-replay to the file named by -Dtouchline.replay.screenshot (docs/screenshots/replay.png). */
+    @Test
+    void screenshot() throws Exception {
+        String target = System.getProperty("touchline.replay.screenshot");
+        org.junit.jupiter.api.Assumptions.assumeTrue(target != null && !target.isEmpty(),
+                "set -Dtouchline.replay.screenshot=FILE to render one");
+        fx(() -> {
+            window.shell().restore(java.util.List.of(new touchline.ui.layout.LayoutNode.Branch(true,
+                    java.util.List.of(0.62), java.util.List.of(
+                    new touchline.ui.layout.LayoutNode.Leaf(0, java.util.List.of(new touchline.ui.layout.LayoutNode.Entry("replay", ""))),
+                    new touchline.ui.layout.LayoutNode.Leaf(0, java.util.List.of(new touchline.ui.layout.LayoutNode.Entry("robots", "")))))));
+            view = window.shell().openViews().stream().map(Shell.OpenView::view)
+                    .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
+            return null;
+        });
+        robot.clickOn("#replay-live");
+        openFile(SAMPLE);
+        await(20, () -> !view.shownEvents().isEmpty());
+        chooseSpeed(50.0);
+        robot.clickOn("#replay-play");
+        await(20, () -> state().positionMicros() - state().startMicros() > 100_000_000L);
+        robot.clickOn("#replay-speed");
+        robot.clickOn("#replay-play");
+        robot.clickOn("#replay-play");
+        robot.moveTo("#replay-next-goal");
+        Thread.sleep(500); // let the robot table's half-second refresh catch up before the picture
+        Path png = Path.of(target);
+        Files.createDirectories(png.toAbsolutePath().getParent());
+        fx(() -> ImageIO.write(SwingFXUtils.fromFXImage(window.scene().snapshot(null), null), "png", png.toFile()));
+    }
+
+    private void openFile(Path file) throws Exception {
+        fx(() -> {
+            robot.lookup("#replay-path").queryAs(TextField.class).setText(file.toString());
+            return null;
+        });
+        robot.clickOn("#replay-open");
+    }
+
+    @SuppressWarnings("unchecked")
+    private void chooseSpeed(double speed) throws Exception {
+        fx(() -> {
+            ((ComboBox<Double>) robot.lookup("#replay-speed").query()).setValue(speed);
+            return null;
+        });
+    }
+
+    private String message() throws Exception {
+        return fx(() -> robot.lookup("#replay-message").queryAs(Label.class).getText());
+    }
+
+    private PlayerState state() throws Exception {
+        return console.replay().orElseThrow().state();
+    }
+
+    private <T> T fx(Callable<T> step) throws Exception {
+        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
+    }
+
+    private void await(int seconds, Callable<Boolean> condition) throws Exception {
+        WaitForAsyncUtils.waitFor(seconds, TimeUnit.SECONDS, () -> fx(condition));
+    }
+}
