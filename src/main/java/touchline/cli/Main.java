@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
                 OptionsCommand.class,
                 BenchCommand.class,
                 StreamCommand.class,
+                NaoCommand.class,
         })
 public final class Main implements Runnable {
 

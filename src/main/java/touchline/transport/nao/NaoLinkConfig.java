@@ -17,7 +17,7 @@ import java.util.Set;
 /**
  * Per-method rules of a {@link NaoLink}, loaded from a Java properties file (see
  * {@code samples/nao.properties}): default and per-method timeouts, minimum intervals between
- * calls of one method, which methods are idempotent (safe to retry, allowed during a match),
+ * calls of one method, which methods are idempotent (read-only, safe to retry),
  * and the retry count. Method names are {@code Module.method} or {@code *.method} for every
  * module. A broken entry never stops the console: it is skipped, reported in
  * {@link #problems()}, and the default stays in force.
