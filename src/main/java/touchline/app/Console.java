@@ -34,6 +34,7 @@ public final class Console implements AutoCloseable {
     private final UdpTransport udp;
     private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
+    private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -52,10 +53,12 @@ public final class Console implements AutoCloseable {
         this.reliable = new ReliableStreamHandler(bus, clock);
         this.udp = new UdpTransport(config.udp(), codec, bus, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, clock);
+        this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);
             bus.subscribe(options);
+            bus.subscribe(stores);
             robots.addPresenceListener(options);
         }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -100,6 +103,8 @@ public final class Console implements AutoCloseable {
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+    /** The bounded stores the UI's views pull from once per frame. */
+    public touchline.model.store.ViewStores stores() { return stores; }
 
     @Override
     public void close() {

@@ -14,6 +14,12 @@ import picocli.CommandLine.Command;
                 OptionsCommand.class,
                 BenchCommand.class,
                 StreamCommand.class,
+                ConsoleCommand.class,
+                ScreenshotsCommand.class,
+                RecordCommand.class,
+                ReplayCommand.class,
+                ExportCommand.class,
+                GcCommand.class,
                 NaoCommand.class,
         })
 public final class Main implements Runnable {
