@@ -90,6 +90,14 @@ public final class NaoView implements View {
         rpcPort.setPrefColumnCount(5);
         camPort.setPrefColumnCount(5);
         connect.setId("nao-connect");
+        host.setId("nao-host");
+        rpcPort.setId("nao-rpc-port");
+        camPort.setId("nao-cam-port");
+        module.setId("nao-module");
+        methods.setId("nao-methods");
+        params.setId("nao-params");
+        cameraOn.setId("nao-camera");
+        image.setId("nao-image");
         state.setId("nao-state");
         connect.setOnAction(e -> {
             if (connect.isSelected()) {
@@ -106,6 +114,7 @@ public final class NaoView implements View {
         module.setEditable(true);
         module.setValue("ALMotion");
         Button discover = new Button("Methods");
+        discover.setId("nao-discover");
         discover.setOnAction(e -> call(NaoCall.of(module.getValue(), "getMethodList"), true));
         params.setPromptText("parameters, e.g. HeadYaw, 0.5, 0.2  or  [HeadYaw, HeadPitch], [0.1, 0.2], 0.3");
         Button call = new Button("Call");
