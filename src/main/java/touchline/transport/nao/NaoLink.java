@@ -327,7 +327,7 @@ public final class NaoLink implements AutoCloseable {
                 }
                 runTimers(System.nanoTime());
             }
-        } catch (RuntimeException | IOException | Error e) {
+        } catch (RuntimeException | IOException e) {
             LOG.error("NAO link thread for {}:{} failed", host, port, e);
         } finally {
             failAll(new CallOutcome.Lost("link closed"));

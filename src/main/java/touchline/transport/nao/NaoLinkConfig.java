@@ -68,11 +68,10 @@ public final class NaoLinkConfig {
         try (Reader r = new StringReader(text)) {
             props.load(r);
         } catch (IOException | IllegalArgumentException e) {
-            problems.add(source + ": not a properties file (" + e.getMessage() + "); using the built-in defaults");
-            if (text != DEFAULT_TEXT) {
-                NaoLinkConfig d = defaults();
-                return new NaoLinkConfig(d.defaultTimeoutMs, d.retries, d.timeouts, d.intervals, d.idempotent, problems);
-            }
+            // e.g. a malformed \uXXXX escape. The built-in text always loads, so this cannot recurse.
+            NaoLinkConfig d = defaults();
+            return new NaoLinkConfig(d.defaultTimeoutMs, d.retries, d.timeouts, d.intervals, d.idempotent,
+                    List.of(source + ": not a readable properties file (" + e.getMessage() + "); using the built-in defaults"));
         }
         long defaultTimeout = DEFAULT_TIMEOUT_MS;
         int retries = DEFAULT_RETRIES;
