@@ -68,7 +68,7 @@ public final class NaoLinkConfig {
         try (Reader r = new StringReader(text)) {
             props.load(r);
         } catch (IOException | IllegalArgumentException e) {
-            // e.g. a malformed \uXXXX escape. The built-in text always loads, so this cannot recurse.
+            // e.g. a malformed unicode escape. The built-in text always loads, so this cannot recurse.
             NaoLinkConfig d = defaults();
             return new NaoLinkConfig(d.defaultTimeoutMs, d.retries, d.timeouts, d.intervals, d.idempotent,
                     List.of(source + ": not a readable properties file (" + e.getMessage() + "); using the built-in defaults"));
