@@ -25,9 +25,11 @@ final class EventDetector {
 
     private final List<TimelineEvent> events = new ArrayList<>();
     private final Map<Integer, Long> lastSeen = new HashMap<>();
-    private int gcState = -1;
-    private int score0 = -1;
-    private int score1 = -1;
+    // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
+    private final int[] gcState = {-1, -1};
+    // scores by team number: the teams swap slots at half time
+    @SuppressWarnings("unchecked")
+    private final Map<Integer, Integer>[] scores = new Map[]{new HashMap<>(), new HashMap<>()};
     private boolean sawGc;
     private String robotState;
     private long lastTime = Long.MIN_VALUE;
@@ -67,21 +69,25 @@ final class EventDetector {
             sawGc = true;
             events.removeIf(ev -> ev.type() == TimelineEvent.Type.STATE_CHANGE);
         }
+        int d = e.direction().ordinal();
+        String who = e.direction() == Direction.IN ? "GC: " : "our GC: ";
         int state = r[9] & 0xFF;
         int s0 = r[24 + 2] & 0xFF;
         int s1 = r[356 + 2] & 0xFF;
-        if (gcState >= 0 && state != gcState) {
+        if (gcState[d] >= 0 && state != gcState[d]) {
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.STATE_CHANGE, -1,
-                    "GC: " + stateName(gcState) + " → " + stateName(state)));
+                    who + stateName(gcState[d]) + " → " + stateName(state)));
         }
-        if (score0 >= 0 && (s0 > score0 || s1 > score1)) {
-            int team = s0 > score0 ? r[24] & 0xFF : r[356] & 0xFF;
-            events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.GOAL, -1,
-                    "goal for team " + team + " (" + s0 + ":" + s1 + ")"));
+        int team0 = r[24] & 0xFF;
+        int team1 = r[356] & 0xFF;
+        for (int[] team : new int[][]{{team0, s0}, {team1, s1}}) {
+            Integer before = scores[d].put(team[0], team[1]);
+            if (before != null && team[1] > before) {
+                events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.GOAL, -1,
+                        who + "goal for team " + team[0] + " (" + team0 + " " + s0 + ":" + s1 + " " + team1 + ")"));
+            }
         }
-        gcState = state;
-        score0 = s0;
-        score1 = s1;
+        gcState[d] = state;
     }
 
     private static String stateName(int s) {

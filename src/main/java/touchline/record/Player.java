@@ -182,12 +182,15 @@ public final class Player implements AutoCloseable {
     }
 
     /** Seeks to the first event of {@code type} after the current position, if there is one. */
-    public synchronized Optional<TimelineEvent> seekToNext(TimelineEvent.Type type) {
-        long now = position;
-        Optional<TimelineEvent> next = events().stream()
-                .filter(e -> e.type() == type && e.timeMicros() > now).findFirst();
-        next.ifPresent(e -> seek(e.timeMicros()));
-        return next;
+    public Optional<TimelineEvent> seekToNext(TimelineEvent.Type type) {
+        List<TimelineEvent> events = events(); // may read the whole file once: not under the lock
+        synchronized (this) {
+            long now = position;
+            Optional<TimelineEvent> next = events.stream()
+                    .filter(e -> e.type() == type && e.timeMicros() > now).findFirst();
+            next.ifPresent(e -> seek(e.timeMicros()));
+            return next;
+        }
     }
 
     /** Sets the speed, clamped to 0.1..50; returns the speed in effect. */
@@ -260,6 +263,10 @@ public final class Player implements AutoCloseable {
                 loopFrom, loopTo, emitted, recording.problems());
     }
 
+    /**
+     * The recording's timeline events. The first call reads the whole file (about a second per
+     * recorded hour), so a UI calls it off the FX thread; later calls return the cached list.
+     */
     public List<TimelineEvent> events() {
         return recording.events();
     }
