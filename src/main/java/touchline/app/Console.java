@@ -1,6 +1,13 @@
 package touchline.app;
 
+import touchline.game.GameClock;
+import touchline.game.MatchMode;
 import touchline.model.DebugOptionSession;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.gamecontroller.GcListener;
+import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
 import touchline.model.TrafficMeter;
 import touchline.protocol.MessageCodec;
@@ -47,6 +54,8 @@ public final class Console implements AutoCloseable {
     private final UdpTransport udp;
     private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
+    private final MatchMode matchMode = new MatchMode(GameClock.system());
+    private GcListener gcWatch;
     private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
@@ -73,6 +82,8 @@ public final class Console implements AutoCloseable {
         this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, modelClock);
         this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
+        bus.subscribe(new GameStateWatch(matchMode));
+        setGate(() -> matchMode.hold("console request") ? Optional.of(matchMode.notice()) : Optional.empty());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);
@@ -90,8 +101,27 @@ public final class Console implements AutoCloseable {
     /** Binds the UDP port and starts the model's clock; returns this for chaining. */
     public Console start() throws InterruptedException {
         udp.start();
+        watchGameController();
         ticker.scheduleAtFixedRate(this::tick, config.tickMillis(), config.tickMillis(), TimeUnit.MILLISECONDS);
         return this;
+    }
+
+    /**
+     * Listens on the GameController port (3838, shared with SO_REUSEADDR) so match mode hears
+     * the referee box; a port that cannot be opened is reported and the console runs on.
+     */
+    private void watchGameController() {
+        if (config.gameControllerPort() <= 0) {
+            return;
+        }
+        try {
+            gcWatch = new GcListener(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
+                    (data, from) -> live.accept(new Envelope(clock.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from,
+                            Envelope.NO_ROBOT, "gc", null, data, null)), "touchline-gc-watch");
+        } catch (IOException e) {
+            org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot listen for GameControllers on port {}: {} "
+                    + "(match mode still follows the robots' reported game state)", config.gameControllerPort(), e.toString());
+        }
     }
 
     private void tick() {
@@ -122,6 +152,7 @@ public final class Console implements AutoCloseable {
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+    public MatchMode matchMode() { return matchMode; }
     /** The bounded stores the UI's views pull from once per frame. */
     public touchline.model.store.ViewStores stores() { return stores; }
 
@@ -193,6 +224,9 @@ public final class Console implements AutoCloseable {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("closing the recording: {}", e.toString());
         }
         ticker.shutdownNow();
+        if (gcWatch != null) {
+            gcWatch.close();
+        }
         udp.close();
     }
 }
