@@ -78,9 +78,11 @@ public final class NaoView implements View {
     private volatile String lastResult = "";
     private volatile List<String> discovered;
     private long shownFrame;
+    private touchline.game.MatchMode matchMode;
 
     public NaoView(ViewContext context, ViewSource source) {
         this(context.console().bus());
+        this.matchMode = context.console().matchMode();
     }
 
     /** For tests and embedding: envelopes go to {@code sink}. */
@@ -167,6 +169,10 @@ public final class NaoView implements View {
             String h = host.getText().strip();
             channel = new NaoEnvelopeChannel(sink);
             link = new NaoLink(h, Integer.parseInt(rpcPort.getText().strip()), NaoLinkConfig.defaults(), channel);
+            if (matchMode != null) {
+                touchline.game.MatchMode mm = matchMode;
+                link.setSendGate(() -> !mm.hold("NAO command"), mm::notice); // no commands to a robot during play
+            }
             moves = new NaoMoves(link);
             camera = new NaoCameraStream(h, Integer.parseInt(camPort.getText().strip()), channel);
             configureCamera();
