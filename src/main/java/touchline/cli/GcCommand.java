@@ -97,10 +97,7 @@ public final class GcCommand implements Callable<Integer> {
             return 2;
         }
         GcConfig config = config(profile);
-        LeagueParams base = LeagueParams.hlSimulationKidSize();
-        LeagueParams params = new LeagueParams(players, halfSeconds, base.readySeconds(), base.kickOffBlockSeconds(),
-                base.setPlayPrepareSeconds(), base.afterSetPlayBlockSeconds(), base.penaltySeconds(),
-                base.halfTimePauseSeconds(), base.timeoutSeconds(), base.timeoutsPerTeam(), base.gameType());
+        LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(players, halfSeconds);
         Game game = new Game(params, teamA, colourA, teamB, colourB, GameClock.system());
         MatchMode matchMode = new MatchMode(GameClock.system());
         try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode)) {

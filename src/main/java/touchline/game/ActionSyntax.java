@@ -18,6 +18,7 @@ import java.util.Locale;
  *   prepare | execute | abort                set-play steps (and "setplay ready")
  *   dropball
  *   timeout TEAM                             ("ready" ends it)
+ *   penaltyshootout                          then per kick: set, play, goal TEAM or finish
  * </pre>
  * {@code undo} and {@code status} are handled by the caller, since they are not actions.
  */
@@ -49,6 +50,7 @@ public final class ActionSyntax {
             prepare | execute | abort        set-play steps (also "setplay ready")
             dropball
             timeout TEAM                     ("ready" ends the timeout)
+            penaltyshootout                  after a drawn 2nd half; then per kick: set, play, goal TEAM | finish
             undo | status | quit""";
 
     /** Parses one line against the current state (which decides what "ready" means). */
@@ -84,6 +86,7 @@ public final class ActionSyntax {
                 case "abort" -> args(w, 0, new SetPlayStep(SetPlayStep.Step.ABORT));
                 case "dropball", "droppedball" -> args(w, 0, new DropBall());
                 case "timeout" -> args(w, 1, new Timeout(num(w[1])));
+                case "penaltyshootout", "pso" -> args(w, 0, new StartPenaltyShootout());
                 default -> Parsed.error("unknown command '" + w[0] + "'");
             };
         } catch (ArrayIndexOutOfBoundsException e) {
