@@ -1,0 +1,65 @@
+package touchline.cli;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import touchline.app.Console;
+import touchline.transport.Envelope;
+
+import java.io.PrintStream;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/** Prints the robots seen and every decoded message as text, until stopped. */
+@Command(name = "listen", mixinStandardHelpOptions = true,
+        description = "Listen for robots: print every message as text and a robot table every few seconds.")
+final class ListenCommand implements java.util.concurrent.Callable<Integer> {
+
+    @Mixin
+    UdpOptions udp;
+
+    @Option(names = "--quiet", description = "print only the robot table, not every message")
+    boolean quiet;
+
+    @Option(names = "--seconds", description = "stop after this many seconds (0 = run until Ctrl+C)", defaultValue = "0")
+    long seconds;
+
+    @Option(names = "--table-every", description = "seconds between robot tables (default ${DEFAULT-VALUE})", defaultValue = "2")
+    long tableEvery;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintStream out = new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.out), true);
+        EnvelopeLine lines = new EnvelopeLine();
+        RobotTable table = new RobotTable();
+        CountDownLatch stop = new CountDownLatch(1);
+        Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
+        try (Console console = new Console(udp.config())) {
+            if (!quiet) {
+                console.bus().subscribe((Envelope e) -> {
+                    synchronized (out) {
+                        out.println(lines.format(e));
+                    }
+                });
+            }
+            console.start();
+            System.err.println("listening on UDP port " + console.udp().localPort());
+            long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
+            while (System.nanoTime() < deadline) {
+                if (stop.await(Math.min(TimeUnit.SECONDS.toNanos(tableEvery), Math.max(1, deadline - System.nanoTime())),
+                        TimeUnit.NANOSECONDS)) {
+                    break;
+                }
+                synchronized (out) {
+                    table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
+                    out.flush();
+                }
+            }
+            synchronized (out) {
+                table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
+                out.flush();
+            }
+        }
+        return 0;
+    }
+}

@@ -1,0 +1,24 @@
+package touchline.cli;
+
+import picocli.CommandLine.Option;
+import touchline.app.ConsoleConfig;
+import touchline.transport.UdpConfig;
+
+/** The network options every listening command shares. */
+final class UdpOptions {
+
+    @Option(names = "--port", description = "UDP port robots send to (default ${DEFAULT-VALUE})", defaultValue = "11011")
+    int port;
+
+    @Option(names = "--bind", description = "local address to listen on (default ${DEFAULT-VALUE})", defaultValue = "0.0.0.0")
+    String bind;
+
+    @Option(names = "--robot-port", defaultValue = "0",
+            description = "port robots listen on (3838 on a field); 0 answers each robot at its source port (default)")
+    int robotPort;
+
+    ConsoleConfig config() {
+        return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port).withBindAddress(bind)
+                .withRobotPort(robotPort));
+    }
+}

@@ -1,0 +1,235 @@
+package touchline.model;
+
+import com.google.protobuf.Descriptors.FieldDescriptor;
+import com.google.protobuf.Message;
+import touchline.proto.Fumanoid;
+import touchline.protocol.MessageCodec;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+import touchline.transport.MicrosClock;
+import touchline.transport.RobotCommands;
+import touchline.transport.SendResult;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The console's side of the debug-option protocol, per robot: ask a new robot for its option
+ * list until one arrives, replace it when a new one comes, remember what the user switched on,
+ * and reconcile: what is wanted but not streaming is requested again, what is unwanted but
+ * still streaming is switched off again, and when a robot comes back after being offline
+ * everything that was on is switched on again without being asked.
+ */
+public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
+
+    static final long LIST_RETRY_MICROS = 500_000;
+    static final long COMMAND_RETRY_MICROS = 1_000_000;
+    static final long STREAMING_WINDOW_MICROS = 2_000_000;
+
+    private final RobotCommands commands;
+    private final MessageCodec codec;
+    private final MicrosClock clock;
+    private final Map<Integer, PerRobot> robots = new HashMap<>();
+    private long version;
+
+    private static final class PerRobot {
+        boolean online = true;
+        boolean listReceived;
+        int listRequests;
+        long lastListRequest = Long.MIN_VALUE / 2;
+        final Map<String, Fumanoid.DebugOption> list = new LinkedHashMap<>();
+        final Set<String> wanted = new LinkedHashSet<>();
+        final Map<String, Long> lastData = new HashMap<>();
+        final Map<String, Long> lastCommand = new HashMap<>();
+        String lastHold = "";
+    }
+
+    public DebugOptionSession(RobotCommands commands, MessageCodec codec, MicrosClock clock) {
+        this.commands = commands;
+        this.codec = codec;
+        this.clock = clock;
+    }
+
+    @Override
+    public void accept(Envelope e) {
+        if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
+            return;
+        }
+        if (m.hasExtension(Fumanoid.debugOptionList)) {
+            onList(e.robotId(), m.getExtension(Fumanoid.debugOptionList));
+            return;
+        }
+        String option = optionNameOf(m);
+        if (option != null) {
+            synchronized (this) {
+                robot(e.robotId()).lastData.put(option, e.timeMicros());
+            }
+        }
+    }
+
+    /** The {@code option} field every data message carries (teams' own types too, by convention). */
+    static String optionNameOf(Fumanoid.Message m) {
+        for (Map.Entry<FieldDescriptor, Object> f : m.getAllFields().entrySet()) {
+            if (f.getKey().isExtension() && f.getValue() instanceof Message data) {
+                FieldDescriptor name = data.getDescriptorForType().findFieldByName("option");
+                if (name != null && name.getType() == FieldDescriptor.Type.STRING && data.hasField(name)) {
+                    return (String) data.getField(name);
+                }
+            }
+        }
+        return null;
+    }
+
+    private void onList(int robotId, Fumanoid.DebugOptionList list) {
+        List<String> toEnable = new ArrayList<>();
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.list.clear();
+            for (Fumanoid.DebugOption o : list.getOptionsList()) {
+                r.list.put(o.getName(), o);
+            }
+            r.listReceived = true;
+            for (String w : r.wanted) {
+                Fumanoid.DebugOption o = r.list.get(w);
+                if (o != null && !o.getEnabled()) {
+                    toEnable.add(w);
+                }
+            }
+            version++;
+        }
+        for (String name : toEnable) {
+            command(robotId, name, true);
+        }
+    }
+
+    @Override
+    public void cameOnline(int robotId, boolean firstTime) {
+        List<String> reEnable;
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.online = true;
+            r.listReceived = r.listReceived && firstTime;
+            reEnable = firstTime ? List.of() : List.copyOf(r.wanted);
+            version++;
+        }
+        requestList(robotId);
+        for (String name : reEnable) {
+            command(robotId, name, true);
+        }
+    }
+
+    @Override
+    public void wentOffline(int robotId) {
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.online = false;
+            r.listReceived = false;
+            version++;
+        }
+    }
+
+    /** Switches an option on or off for a robot; remembered, so it survives the robot's restarts. */
+    public SendResult setWanted(int robotId, String option, boolean on) {
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            if (on) {
+                r.wanted.add(option);
+            } else {
+                r.wanted.remove(option);
+            }
+            version++;
+        }
+        return command(robotId, option, on);
+    }
+
+    /** Retries what has not taken effect yet; call a few times a second. */
+    public void tick() {
+        long now = clock.nowMicros();
+        List<Integer> needList = new ArrayList<>();
+        Map<Integer, Map<String, Boolean>> retries = new HashMap<>();
+        synchronized (this) {
+            for (Map.Entry<Integer, PerRobot> e : robots.entrySet()) {
+                PerRobot r = e.getValue();
+                if (!r.online) {
+                    continue;
+                }
+                if (!r.listReceived && now - r.lastListRequest >= LIST_RETRY_MICROS) {
+                    needList.add(e.getKey());
+                }
+                if (!r.listReceived) {
+                    continue;
+                }
+                for (String name : r.list.keySet()) {
+                    boolean wanted = r.wanted.contains(name);
+                    boolean streaming = streaming(r, name, now);
+                    long last = r.lastCommand.getOrDefault(name, Long.MIN_VALUE / 2);
+                    if (wanted != streaming && now - last >= COMMAND_RETRY_MICROS) {
+                        retries.computeIfAbsent(e.getKey(), k -> new LinkedHashMap<>()).put(name, wanted);
+                    }
+                }
+            }
+        }
+        needList.forEach(this::requestList);
+        retries.forEach((id, options) -> options.forEach((name, on) -> command(id, name, on)));
+    }
+
+    private boolean streaming(PerRobot r, String name, long now) {
+        Long t = r.lastData.get(name);
+        return t != null && now - t <= STREAMING_WINDOW_MICROS;
+    }
+
+    private void requestList(int robotId) {
+        SendResult result = commands.send(robotId, codec.optionListRequest());
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.lastListRequest = clock.nowMicros();
+            r.listRequests++;
+            r.lastHold = result.isSent() ? "" : result.reason();
+            version++;
+        }
+    }
+
+    private SendResult command(int robotId, String option, boolean on) {
+        SendResult result = commands.send(robotId, codec.optionRequest(option, on));
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.lastCommand.put(option, clock.nowMicros());
+            r.lastHold = result.isSent() ? "" : result.reason();
+            version++;
+        }
+        return result;
+    }
+
+    private PerRobot robot(int id) {
+        return robots.computeIfAbsent(id, k -> new PerRobot());
+    }
+
+    public synchronized RobotOptions options(int robotId) {
+        PerRobot r = robots.get(robotId);
+        if (r == null) {
+            return new RobotOptions(robotId, false, 0, List.of(), "");
+        }
+        long now = clock.nowMicros();
+        List<OptionState> states = new ArrayList<>();
+        for (Fumanoid.DebugOption o : r.list.values()) {
+            states.add(new OptionState(o.getName(), o.getDescription(), o.getKind(), r.wanted.contains(o.getName()),
+                    o.getEnabled(), streaming(r, o.getName(), now)));
+        }
+        return new RobotOptions(robotId, r.listReceived, r.listRequests, states, r.lastHold);
+    }
+
+    public synchronized Set<String> wanted(int robotId) {
+        PerRobot r = robots.get(robotId);
+        return r == null ? Set.of() : Set.copyOf(r.wanted);
+    }
+
+    public synchronized long version() {
+        return version;
+    }
+}

@@ -1,0 +1,76 @@
+package touchline.protocol;
+
+import com.google.protobuf.Descriptors.FieldDescriptor;
+import com.google.protobuf.InvalidProtocolBufferException;
+import touchline.proto.Fumanoid;
+
+import java.util.Map;
+
+/**
+ * Decodes FUmanoids {@code Message} payloads with the extension registry and builds the
+ * console's own messages. Pure: no I/O, no threads.
+ */
+public final class MessageCodec {
+
+    /** The robot ID the console uses in its own messages. */
+    public static final int CONSOLE_ID = 0;
+
+    private final MessageKinds kinds;
+
+    public MessageCodec(MessageKinds kinds) {
+        this.kinds = kinds;
+    }
+
+    public MessageKinds kinds() {
+        return kinds;
+    }
+
+    public MessageResult decode(byte[] payload) {
+        Fumanoid.Message message;
+        try {
+            message = Fumanoid.Message.parseFrom(payload, kinds.registry());
+        } catch (InvalidProtocolBufferException e) {
+            String reason = e.getMessage() == null ? "not a protobuf message" : e.getMessage();
+            if (reason.contains("required fields")) {
+                reason = "message without the required robotID";
+            }
+            return new MessageResult.Malformed("protobuf: " + firstLine(reason));
+        } catch (RuntimeException e) {
+            return new MessageResult.Malformed("protobuf: " + e.getClass().getSimpleName());
+        }
+        int extension = 0;
+        for (Map.Entry<FieldDescriptor, Object> field : message.getAllFields().entrySet()) {
+            if (field.getKey().isExtension()) {
+                extension = field.getKey().getNumber();
+                break;
+            }
+        }
+        if (extension == 0) {
+            for (int number : message.getUnknownFields().asMap().keySet()) {
+                extension = number;
+                break;
+            }
+        }
+        String kind = extension == 0 ? "empty" : kinds.kindOf(extension);
+        return new MessageResult.Decoded(message, extension, kind);
+    }
+
+    private static String firstLine(String s) {
+        int nl = s.indexOf('\n');
+        String line = nl < 0 ? s : s.substring(0, nl);
+        return line.length() > 160 ? line.substring(0, 160) + "…" : line;
+    }
+
+    public Fumanoid.Message optionListRequest() {
+        return Fumanoid.Message.newBuilder().setRobotID(CONSOLE_ID)
+                .setExtension(Fumanoid.debugOptionListRequest, Fumanoid.DebugOptionListRequest.getDefaultInstance())
+                .build();
+    }
+
+    public Fumanoid.Message optionRequest(String name, boolean enable) {
+        return Fumanoid.Message.newBuilder().setRobotID(CONSOLE_ID)
+                .setExtension(Fumanoid.debugOptionRequest,
+                        Fumanoid.DebugOptionRequest.newBuilder().setName(name).setEnable(enable).build())
+                .build();
+    }
+}

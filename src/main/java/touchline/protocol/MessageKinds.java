@@ -1,0 +1,99 @@
+package touchline.protocol;
+
+import com.google.protobuf.Descriptors.FieldDescriptor;
+import com.google.protobuf.DynamicMessage;
+import com.google.protobuf.ExtensionRegistry;
+import com.google.protobuf.Descriptors.FileDescriptor;
+import touchline.proto.Fumanoid;
+
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * The registry of {@code Message} extensions: extension number to name and type. Holds the
+ * ones Touchline defines and any a team loads at run time from its own {@code .proto}
+ * descriptors, so their messages decode without recompiling. Thread-safe: teams' types may be
+ * added while datagrams are being decoded.
+ */
+public final class MessageKinds {
+
+    /** Extension numbers reserved for teams' own messages (documented in docs/protocol.md). */
+    public static final int TEAM_RANGE_FIRST = 1000;
+    public static final int TEAM_RANGE_LAST = 1999;
+
+    private volatile ExtensionRegistry registry;
+    private final Map<Integer, FieldDescriptor> byNumber = new ConcurrentHashMap<>();
+    private final Map<String, FieldDescriptor> byName = new ConcurrentHashMap<>();
+
+    public MessageKinds() {
+        ExtensionRegistry r = ExtensionRegistry.newInstance();
+        Fumanoid.registerAllExtensions(r);
+        registry = r;
+        for (FieldDescriptor ext : Fumanoid.getDescriptor().getExtensions()) {
+            byNumber.put(ext.getNumber(), ext);
+            byName.put(ext.getName(), ext);
+        }
+    }
+
+    /**
+     * Adds every extension of {@code Message} declared in {@code file} (a team's own types).
+     * An extension whose number is taken already is refused with the reason returned.
+     */
+    public synchronized Optional<String> add(FileDescriptor file) {
+        ExtensionRegistry r = ExtensionRegistry.newInstance();
+        Fumanoid.registerAllExtensions(r);
+        StringBuilder refused = new StringBuilder();
+        for (FieldDescriptor known : byNumber.values()) {
+            if (!known.getFile().equals(Fumanoid.getDescriptor())) {
+                addDynamic(r, known);
+            }
+        }
+        for (FieldDescriptor ext : file.getExtensions()) {
+            if (!ext.getContainingType().getFullName().equals(Fumanoid.Message.getDescriptor().getFullName())) {
+                continue;
+            }
+            FieldDescriptor taken = byNumber.get(ext.getNumber());
+            if (taken != null && !taken.getFullName().equals(ext.getFullName())) {
+                refused.append("extension ").append(ext.getNumber()).append(" (").append(ext.getFullName())
+                        .append(") is taken by ").append(taken.getFullName()).append("; ");
+                continue;
+            }
+            byNumber.put(ext.getNumber(), ext);
+            byName.put(ext.getName(), ext);
+            addDynamic(r, ext);
+        }
+        registry = r;
+        return refused.length() == 0 ? Optional.empty() : Optional.of(refused.toString().trim());
+    }
+
+    private static void addDynamic(ExtensionRegistry r, FieldDescriptor ext) {
+        if (ext.getJavaType() == FieldDescriptor.JavaType.MESSAGE) {
+            r.add(ext, DynamicMessage.getDefaultInstance(ext.getMessageType()));
+        } else {
+            r.add(ext);
+        }
+    }
+
+    public ExtensionRegistry registry() {
+        return registry;
+    }
+
+    public Optional<FieldDescriptor> byNumber(int number) {
+        return Optional.ofNullable(byNumber.get(number));
+    }
+
+    public Optional<FieldDescriptor> byName(String name) {
+        return Optional.ofNullable(byName.get(name));
+    }
+
+    /** The kind name shown to users and used for channels: the extension's name, or {@code ext#N}. */
+    public String kindOf(int extensionNumber) {
+        FieldDescriptor d = byNumber.get(extensionNumber);
+        return d != null ? d.getName() : unknownKind(extensionNumber);
+    }
+
+    public static String unknownKind(int extensionNumber) {
+        return "ext#" + extensionNumber;
+    }
+}

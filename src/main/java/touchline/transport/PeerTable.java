@@ -1,0 +1,41 @@
+package touchline.transport;
+
+import touchline.protocol.Framing;
+
+import java.net.InetSocketAddress;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * Where each robot is and which framing it speaks, learned from its datagrams, so a
+ * command goes to its current address in the header format it uses. With a fixed robot
+ * port (3838 on a real field) replies go to that port; otherwise to the datagram's source
+ * port (simulated robots share one host and listen on different ports).
+ */
+public final class PeerTable {
+
+    /** A robot's address and framing as last seen. */
+    public record Peer(InetSocketAddress address, Framing framing) { }
+
+    private final Map<Integer, Peer> peers = new ConcurrentHashMap<>();
+    private final int fixedRobotPort;
+
+    /** @param fixedRobotPort the port robots listen on, or 0 to reply to each datagram's source port */
+    public PeerTable(int fixedRobotPort) {
+        this.fixedRobotPort = fixedRobotPort;
+    }
+
+    public void learn(int robotId, InetSocketAddress source, Framing framing) {
+        InetSocketAddress target = fixedRobotPort == 0 ? source : new InetSocketAddress(source.getAddress(), fixedRobotPort);
+        Peer now = new Peer(target, framing);
+        Peer before = peers.get(robotId);
+        if (!now.equals(before)) {
+            peers.put(robotId, now);
+        }
+    }
+
+    public Optional<Peer> peer(int robotId) {
+        return Optional.ofNullable(peers.get(robotId));
+    }
+}

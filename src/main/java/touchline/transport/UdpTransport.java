@@ -1,0 +1,159 @@
+package touchline.transport;
+
+import io.netty.bootstrap.Bootstrap;
+import io.netty.buffer.Unpooled;
+import io.netty.channel.ChannelHandler;
+import io.netty.channel.ChannelInitializer;
+import io.netty.channel.ChannelOption;
+import io.netty.channel.EventLoopGroup;
+import io.netty.channel.FixedRecvByteBufAllocator;
+import io.netty.channel.MultiThreadIoEventLoopGroup;
+import io.netty.channel.nio.NioIoHandler;
+import io.netty.channel.socket.DatagramChannel;
+import io.netty.channel.socket.DatagramPacket;
+import io.netty.channel.socket.nio.NioDatagramChannel;
+import touchline.proto.Fumanoid;
+import touchline.protocol.FrameCodec;
+import touchline.protocol.Framing;
+import touchline.protocol.MessageCodec;
+
+import java.net.InetSocketAddress;
+import java.util.Optional;
+
+/**
+ * The console's UDP endpoint: a Netty pipeline that accounts, demultiplexes, frames and
+ * decodes every datagram into the Envelope stream, and the outbound path that sends a
+ * message to a robot at its current address in the framing that robot uses. Outbound
+ * messages pass the {@link SendGate} (match mode) and are published as OUT Envelopes.
+ */
+public final class UdpTransport implements RobotCommands, AutoCloseable {
+
+    private final UdpConfig config;
+    private final MessageCodec messages;
+    private final FrameCodec frames = new FrameCodec();
+    private final EnvelopeSink sink;
+    private final MicrosClock clock;
+    private final PeerTable peers;
+    private final TrafficCounters counters = new TrafficCounters();
+    private volatile SendGate gate = SendGate.open();
+    private final ChannelHandler[] extraInbound;
+    private EventLoopGroup group;
+    private DatagramChannel channel;
+
+    /**
+     * @param extraInbound handlers placed before the FUmanoids decoder (e.g. the reliable stream),
+     *                     receiving {@link ReceivedDatagram}s
+     */
+    public UdpTransport(UdpConfig config, MessageCodec messages, EnvelopeSink sink, MicrosClock clock,
+                        ChannelHandler... extraInbound) {
+        this.config = config;
+        this.messages = messages;
+        this.sink = sink;
+        this.clock = clock;
+        this.peers = new PeerTable(config.robotPort());
+        this.extraInbound = extraInbound;
+    }
+
+    public UdpTransport start() throws InterruptedException {
+        // Linux's epoll transport reads datagrams with far less overhead than NIO; NIO elsewhere.
+        boolean epoll = io.netty.channel.epoll.Epoll.isAvailable();
+        group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
+                : NioIoHandler.newFactory());
+        Bootstrap bootstrap = new Bootstrap()
+                .group(group)
+                .channel(epoll ? io.netty.channel.epoll.EpollDatagramChannel.class : NioDatagramChannel.class)
+                .option(ChannelOption.SO_RCVBUF, config.receiveBuffer())
+                .option(ChannelOption.SO_BROADCAST, true)
+                // Read many datagrams per wake-up: a datagram never fills the buffer, so Netty's
+                // "maybe more data" guess would otherwise stop after one.
+                .option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(2048).respectMaybeMoreData(false)
+                        .maxMessagesPerRead(64))
+                .handler(new ChannelInitializer<DatagramChannel>() {
+                    @Override
+                    protected void initChannel(DatagramChannel ch) {
+                        ch.pipeline().addLast("account", new DatagramAccounting(counters));
+                        ch.pipeline().addLast("demultiplex", new DatagramDemultiplexer(clock));
+                        for (int i = 0; i < extraInbound.length; i++) {
+                            ch.pipeline().addLast("extra" + i, extraInbound[i]);
+                        }
+                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters));
+                        ch.pipeline().addLast("publish", new EnvelopePublisher(sink));
+                    }
+                });
+        channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();
+        return this;
+    }
+
+    public int localPort() {
+        return ((InetSocketAddress) channel.localAddress()).getPort();
+    }
+
+    public void setGate(SendGate gate) {
+        this.gate = gate;
+    }
+
+    public PeerTable peers() {
+        return peers;
+    }
+
+    public TrafficCounters counters() {
+        return counters;
+    }
+
+    @Override
+    public SendResult send(int robotId, Fumanoid.Message message) {
+        Optional<PeerTable.Peer> peer = peers.peer(robotId);
+        if (peer.isEmpty()) {
+            return SendResult.failed("robot " + robotId + " has not been seen yet");
+        }
+        return sendTo(peer.get().address(), peer.get().framing(), robotId, message);
+    }
+
+    /** Sends to an explicit address (robots not yet seen, scripts); still gated by match mode. */
+    public SendResult sendTo(InetSocketAddress target, Framing framing, int robotId, Fumanoid.Message message) {
+        Optional<String> hold = gate.holdReason();
+        if (hold.isPresent()) {
+            counters.countHeld();
+            return SendResult.held(hold.get());
+        }
+        byte[] datagram;
+        try {
+            datagram = frames.encode(framing, message.toByteArray());
+        } catch (IllegalArgumentException e) {
+            return SendResult.failed(e.getMessage());
+        }
+        return sendRaw(target, datagram, Channel.FUMANOID, robotId, kindOf(message), message);
+    }
+
+    /** Sends bytes that are already framed (reliable-stream segments); not gated here: callers gate. */
+    public SendResult sendRaw(InetSocketAddress target, byte[] datagram, Channel kindChannel, int robotId, String kind,
+                              com.google.protobuf.Message decoded) {
+        DatagramChannel ch = channel;
+        if (ch == null || !ch.isActive()) {
+            return SendResult.failed("the console's UDP socket is closed");
+        }
+        counters.countOut(datagram.length);
+        ch.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(datagram), target));
+        sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, kindChannel, target, robotId, kind, decoded, datagram, null));
+        return SendResult.sent();
+    }
+
+    private String kindOf(Fumanoid.Message message) {
+        for (var field : message.getAllFields().keySet()) {
+            if (field.isExtension()) {
+                return field.getName();
+            }
+        }
+        return "empty";
+    }
+
+    @Override
+    public void close() {
+        if (channel != null) {
+            channel.close().syncUninterruptibly();
+        }
+        if (group != null) {
+            group.shutdownGracefully(0, 1, java.util.concurrent.TimeUnit.SECONDS).syncUninterruptibly();
+        }
+    }
+}

@@ -1,0 +1,63 @@
+package touchline.protocol;
+
+import com.google.protobuf.ByteString;
+import com.google.protobuf.UnknownFieldSet;
+import org.junit.jupiter.api.Test;
+import touchline.proto.Fumanoid;
+
+import java.util.HexFormat;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class MessageCodecTest {
+
+    private final MessageCodec codec = new MessageCodec(new MessageKinds());
+    private final MessageText text = new MessageText();
+
+    @Test
+    void unknownExtensionIsKeptAndShownFieldByField() {
+        // robotID 4, extension 1042 { 1: 7, 2: "ok", 3: { 1: 150 } } -- a team's own type we do not know
+        byte[] inner = UnknownFieldSet.newBuilder()
+                .addField(1, UnknownFieldSet.Field.newBuilder().addVarint(7).build())
+                .addField(2, UnknownFieldSet.Field.newBuilder().addLengthDelimited(ByteString.copyFromUtf8("ok")).build())
+                .addField(3, UnknownFieldSet.Field.newBuilder().addLengthDelimited(
+                        ByteString.copyFrom(HexFormat.of().parseHex("089601"))).build())
+                .build().toByteArray();
+        byte[] payload = Fumanoid.Message.newBuilder().setRobotID(4)
+                .setUnknownFields(UnknownFieldSet.newBuilder().addField(1042,
+                        UnknownFieldSet.Field.newBuilder().addLengthDelimited(ByteString.copyFrom(inner)).build()).build())
+                .build().toByteArray();
+
+        var decoded = assertInstanceOf(MessageResult.Decoded.class, codec.decode(payload));
+        assertEquals(1042, decoded.extension());
+        assertEquals("ext#1042", decoded.kind());
+        String rendered = text.render(decoded.message());
+        assertTrue(rendered.contains("robotID: 4"), rendered);
+        assertTrue(rendered.contains("unknown extension 1042 {"), rendered);
+        assertTrue(rendered.contains("field 1 (varint): 7"), rendered);
+        assertTrue(rendered.contains("field 2 (bytes, 2): \"ok\""), rendered);
+        assertTrue(rendered.contains("field 1 (varint): 150"), rendered);
+    }
+
+    @Test
+    void knownExtensionRendersAsText() {
+        var decoded = assertInstanceOf(MessageResult.Decoded.class,
+                codec.decode(codec.optionRequest("demo.text", true).toByteArray()));
+        assertEquals("debugOptionRequest", decoded.kind());
+        String rendered = text.renderLine(decoded.message());
+        assertTrue(rendered.contains("[fumanoid.debugOptionRequest] { name: \"demo.text\" enable: true }"), rendered);
+    }
+
+    @Test
+    void garbageIsMalformedWithReason() {
+        var m = assertInstanceOf(MessageResult.Malformed.class, codec.decode(new byte[]{(byte) 0xff, (byte) 0xff, 0x01}));
+        assertTrue(m.reason().startsWith("protobuf: "), m.reason());
+    }
+
+    @Test
+    void missingRobotIdIsMalformed() {
+        byte[] payload = HexFormat.of().parseHex("ba0100"); // only an empty status extension
+        var m = assertInstanceOf(MessageResult.Malformed.class, codec.decode(payload));
+        assertEquals("protobuf: message without the required robotID", m.reason());
+    }
+}
