@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
                 ListenCommand.class,
                 OptionsCommand.class,
                 BenchCommand.class,
+                GcCommand.class,
                 StreamCommand.class,
         })
 public final class Main implements Runnable {
