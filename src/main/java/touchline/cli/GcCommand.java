@@ -15,6 +15,7 @@ import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.RobotLiveness;
 
 import java.io.BufferedReader;
+import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.net.InetSocketAddress;
@@ -79,13 +80,15 @@ public final class GcCommand implements Callable<Integer> {
     @Option(names = "--interval-ms", defaultValue = "500", hidden = true)
     long intervalMs;
 
+    private final InputStream input;
     private final PrintStream out;
 
     public GcCommand() {
-        this(System.out);
+        this(System.in, System.out);
     }
 
-    GcCommand(PrintStream out) {
+    GcCommand(InputStream input, PrintStream out) {
+        this.input = input;
         this.out = out;
     }
 
@@ -115,7 +118,7 @@ public final class GcCommand implements Callable<Integer> {
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
             print("state: " + game.describe());
             ActionSyntax syntax = new ActionSyntax();
-            BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+            BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
             for (String line = in.readLine(); line != null; line = in.readLine()) {
                 String cmd = line.trim();
                 if (cmd.isEmpty() || cmd.startsWith("#")) {
@@ -179,7 +182,8 @@ public final class GcCommand implements Callable<Integer> {
         int returns = returnPort != null ? returnPort : profile.defaultReturnPort();
         InetSocketAddress rivals = null;
         int rival = rivalPort != null ? rivalPort : GcProfile.GAME_STATE_PORT;
-        if (rival >= 0 && rival != returns) {
+        // In the 2014 profiles the return socket is the game-state port and hears rivals itself.
+        if (rival >= 0 && rival != returns && !profile.returnsOnGameStatePort()) {
             rivals = new InetSocketAddress(bind, rival);
         }
         return new GcConfig(profile, v7Compat, dests, null, new InetSocketAddress(bind, returns), rivals,
