@@ -12,7 +12,7 @@ import java.util.List;
  * 0–2, u32 secsRemaining, no secondary time, teams ordered by colour (blue first) with goal
  * colour always 1 and u16 penalty / u16 secsTillUnpenalised per player.
  */
-public final class GameState7 implements GameStateFormat {
+public final class GameState7 extends FixedSizeFormat {
 
     public static final int SIZE = 116;
     public static final int VERSION = 7;
@@ -28,23 +28,12 @@ public final class GameState7 implements GameStateFormat {
 
     /** @param humanoid translate HL penalties to the legacy HL codes 1..6 (false: SPL codes unchanged) */
     public GameState7(boolean humanoid) {
+        super("gc.v7", VERSION, SIZE);
         this.humanoid = humanoid;
     }
 
-    @Override
-    public String kind() {
-        return "gc.v7";
-    }
 
-    @Override
-    public int version() {
-        return VERSION;
-    }
 
-    @Override
-    public int size() {
-        return SIZE;
-    }
 
     @Override
     public byte[] encode(GameControlData d) {

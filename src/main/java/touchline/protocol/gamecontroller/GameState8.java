@@ -11,7 +11,7 @@ import java.util.List;
  * 40-byte coach message, 2-byte RobotInfo × 11. In humanoid mode HL penalties 30..35 are
  * written as the 2014 HL codes 1..6.
  */
-public final class GameState8 implements GameStateFormat {
+public final class GameState8 extends FixedSizeFormat {
 
     public static final int SIZE = 158;
     public static final int VERSION = 8;
@@ -27,23 +27,12 @@ public final class GameState8 implements GameStateFormat {
 
     /** @param humanoid translate HL penalties to the 2014 HL codes 1..6 (false: SPL codes unchanged) */
     public GameState8(boolean humanoid) {
+        super("gc.v8", VERSION, SIZE);
         this.humanoid = humanoid;
     }
 
-    @Override
-    public String kind() {
-        return "gc.v8";
-    }
 
-    @Override
-    public int version() {
-        return VERSION;
-    }
 
-    @Override
-    public int size() {
-        return SIZE;
-    }
 
     @Override
     public byte[] encode(GameControlData d) {

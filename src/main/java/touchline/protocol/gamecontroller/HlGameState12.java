@@ -11,7 +11,7 @@ import java.util.List;
  * written as {@code 0x80} like the Java GameController 2017–2024 (configurable to 255, the
  * value of the header and of the 2025 Rust GameController).
  */
-public final class HlGameState12 implements GameStateFormat {
+public final class HlGameState12 extends FixedSizeFormat {
 
     public static final int SIZE = 688;
     public static final int VERSION = 12;
@@ -28,23 +28,12 @@ public final class HlGameState12 implements GameStateFormat {
 
     /** @param dropBallByte kickOffTeam byte for a dropped ball: 0x80 (Java GC) or 255 (header, Rust GC) */
     public HlGameState12(int dropBallByte) {
+        super("gc.hl12", VERSION, SIZE);
         this.dropBallByte = dropBallByte & 0xFF;
     }
 
-    @Override
-    public String kind() {
-        return "gc.hl12";
-    }
 
-    @Override
-    public int version() {
-        return VERSION;
-    }
 
-    @Override
-    public int size() {
-        return SIZE;
-    }
 
     @Override
     public byte[] encode(GameControlData d) {
