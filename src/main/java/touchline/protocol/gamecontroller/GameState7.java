@@ -28,7 +28,7 @@ public final class GameState7 extends FixedSizeFormat {
 
     /** @param humanoid translate HL penalties to the legacy HL codes 1..6 (false: SPL codes unchanged) */
     public GameState7(boolean humanoid) {
-        super("gc.v7", VERSION, SIZE);
+        super("gc.v7", VERSION, 4, SIZE);
         this.humanoid = humanoid;
     }
 
@@ -36,10 +36,7 @@ public final class GameState7 extends FixedSizeFormat {
 
 
     @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.putInt(VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.state());
         b.put((byte) (d.firstHalf() ? 1 : 0));
@@ -61,21 +58,10 @@ public final class GameState7 extends FixedSizeFormat {
                 b.putShort((short) r.secsTillUnpenalised());
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        long version = b.getInt() & 0xFFFFFFFFL;
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int playersPerTeam = WireChecks.u8(b);
         int state = WireChecks.u8(b);
         boolean firstHalf = WireChecks.u8(b) != 0;

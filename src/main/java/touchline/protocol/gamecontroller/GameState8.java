@@ -27,7 +27,7 @@ public final class GameState8 extends FixedSizeFormat {
 
     /** @param humanoid translate HL penalties to the 2014 HL codes 1..6 (false: SPL codes unchanged) */
     public GameState8(boolean humanoid) {
-        super("gc.v8", VERSION, SIZE);
+        super("gc.v8", VERSION, 1, SIZE);
         this.humanoid = humanoid;
     }
 
@@ -35,10 +35,7 @@ public final class GameState8 extends FixedSizeFormat {
 
 
     @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.put((byte) VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.state());
@@ -61,7 +58,6 @@ public final class GameState8 extends FixedSizeFormat {
                 putRobot(b, t.player(p));
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     private void putRobot(ByteBuffer b, RobotInfo r) {
@@ -70,17 +66,7 @@ public final class GameState8 extends FixedSizeFormat {
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        int version = WireChecks.u8(b);
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int packetNumber = WireChecks.u8(b);
         int playersPerTeam = WireChecks.u8(b);
         int state = WireChecks.u8(b);

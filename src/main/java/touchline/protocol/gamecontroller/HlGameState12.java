@@ -28,7 +28,7 @@ public final class HlGameState12 extends FixedSizeFormat {
 
     /** @param dropBallByte kickOffTeam byte for a dropped ball: 0x80 (Java GC) or 255 (header, Rust GC) */
     public HlGameState12(int dropBallByte) {
-        super("gc.hl12", VERSION, SIZE);
+        super("gc.hl12", VERSION, 2, SIZE);
         this.dropBallByte = dropBallByte & 0xFF;
     }
 
@@ -36,10 +36,7 @@ public final class HlGameState12 extends FixedSizeFormat {
 
 
     @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.putShort((short) VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.gameType());
@@ -68,7 +65,6 @@ public final class HlGameState12 extends FixedSizeFormat {
                 putRobot(b, t.player(p));
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     private static void putRobot(ByteBuffer b, RobotInfo r) {
@@ -81,17 +77,7 @@ public final class HlGameState12 extends FixedSizeFormat {
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        int version = WireChecks.u16(b);
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int packetNumber = WireChecks.u8(b);
         int playersPerTeam = WireChecks.u8(b);
         int gameType = WireChecks.u8(b);

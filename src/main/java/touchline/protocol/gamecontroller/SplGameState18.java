@@ -25,17 +25,14 @@ public final class SplGameState18 extends FixedSizeFormat {
     private static final int[] SECONDARY_OF_SET_PLAY = {0, 8, 4, 7, 9, 6};
 
     public SplGameState18() {
-        super("gc.spl18", VERSION, SIZE);
+        super("gc.spl18", VERSION, 1, SIZE);
     }
 
 
 
 
     @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.put((byte) VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.gameType());
@@ -65,7 +62,6 @@ public final class SplGameState18 extends FixedSizeFormat {
                 b.put((byte) r.secsTillUnpenalised());
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     private static int goalkeeperNumber(TeamInfo t) {
@@ -97,17 +93,7 @@ public final class SplGameState18 extends FixedSizeFormat {
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        int version = WireChecks.u8(b);
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int packetNumber = WireChecks.u8(b);
         int playersPerTeam = WireChecks.u8(b);
         int phase = WireChecks.u8(b);
