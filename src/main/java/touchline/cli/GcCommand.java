@@ -37,8 +37,8 @@ import java.util.concurrent.Callable;
 public final class GcCommand implements Callable<Integer> {
 
     @Option(names = "--format", defaultValue = "hl12",
-            description = "wire format: hl12 (HL v12, 688 B), spl18 (SPL v18, 118 B), v8 (2014, 158 B), "
-                    + "v7 (2013, 116 B). Default: ${DEFAULT-VALUE}")
+            description = "wire format: hl12 (HL v12, 688 B), hl12-640 (HL v12 2017-2021, 640 B), spl18 "
+                    + "(SPL v18, 118 B), v8 (2014, 158 B), v7 (2013, 116 B). Default: ${DEFAULT-VALUE}")
     String format;
 
     @Option(names = "--team-a", required = true, description = "team number on the left, kicks off first")
@@ -96,7 +96,7 @@ public final class GcCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         GcProfile profile = GcProfile.parse(format);
         if (profile == null) {
-            out.println("error: unknown format '" + format + "' (hl12, spl18, v8, v7)");
+            out.println("error: unknown format '" + format + "' (hl12, hl12-640, spl18, v8, v7)");
             return 2;
         }
         GcConfig config = config(profile);

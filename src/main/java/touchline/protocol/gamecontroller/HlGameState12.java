@@ -9,7 +9,9 @@ import java.util.List;
  * RoboCup-Humanoid-TC/GameController v2024.1 {@code RoboCupGameControlData.h}): u16 version,
  * 332-byte TeamInfo with a 253-byte coach message, 6-byte RobotInfo × 11. A dropped ball is
  * written as {@code 0x80} like the Java GameController 2017–2024 (configurable to 255, the
- * value of the header and of the 2025 Rust GameController).
+ * value of the header and of the 2025 Rust GameController). {@link #legacy640()} is the layout
+ * that carried the same version number from 2017-06 to 2021-04: 4-byte RobotInfo without
+ * warnings and goalkeeper flag, 640 bytes.
  */
 public final class HlGameState12 extends FixedSizeFormat {
 
@@ -18,8 +20,10 @@ public final class HlGameState12 extends FixedSizeFormat {
     public static final int MAX_PLAYERS = 11;
     static final int COACH_MESSAGE_SIZE = 253;
     static final int TEAM_SIZE = 332;
+    public static final int LEGACY_SIZE = 640;
 
     private final int dropBallByte;
+    private final boolean sixByteRobotInfo;
 
     /** The Java GameController's encoding (dropped ball = 0x80). */
     public HlGameState12() {
@@ -28,10 +32,19 @@ public final class HlGameState12 extends FixedSizeFormat {
 
     /** @param dropBallByte kickOffTeam byte for a dropped ball: 0x80 (Java GC) or 255 (header, Rust GC) */
     public HlGameState12(int dropBallByte) {
-        super("gc.hl12", VERSION, 2, SIZE);
-        this.dropBallByte = dropBallByte & 0xFF;
+        this("gc.hl12", dropBallByte, true);
     }
 
+    private HlGameState12(String kind, int dropBallByte, boolean sixByteRobotInfo) {
+        super(kind, VERSION, 2, sixByteRobotInfo ? SIZE : LEGACY_SIZE);
+        this.dropBallByte = dropBallByte & 0xFF;
+        this.sixByteRobotInfo = sixByteRobotInfo;
+    }
+
+    /** HL v12 as sent 2017-06 … 2021-04: 640 bytes, RobotInfo = penalty, secs, yellow, red. */
+    public static HlGameState12 legacy640() {
+        return new HlGameState12("gc.hl12-640", 0x80, false);
+    }
 
 
 
@@ -67,13 +80,17 @@ public final class HlGameState12 extends FixedSizeFormat {
         }
     }
 
-    private static void putRobot(ByteBuffer b, RobotInfo r) {
+    private void putRobot(ByteBuffer b, RobotInfo r) {
         b.put((byte) r.penalty());
         b.put((byte) r.secsTillUnpenalised());
-        b.put((byte) r.warnings());
+        if (sixByteRobotInfo) {
+            b.put((byte) r.warnings());
+        }
         b.put((byte) r.yellowCards());
         b.put((byte) r.redCards());
-        b.put((byte) (r.goalkeeper() ? 1 : 0));
+        if (sixByteRobotInfo) {
+            b.put((byte) (r.goalkeeper() ? 1 : 0));
+        }
     }
 
     @Override
@@ -117,7 +134,12 @@ public final class HlGameState12 extends FixedSizeFormat {
                 teams));
     }
 
-    private static RobotInfo getRobot(ByteBuffer b) {
+    private RobotInfo getRobot(ByteBuffer b) {
+        if (!sixByteRobotInfo) {
+            int penalty = WireChecks.u8(b);
+            int secs = WireChecks.u8(b);
+            return new RobotInfo(penalty, secs, 0, WireChecks.u8(b), WireChecks.u8(b), false);
+        }
         return new RobotInfo(WireChecks.u8(b), WireChecks.u8(b), WireChecks.u8(b), WireChecks.u8(b),
                 WireChecks.u8(b), WireChecks.u8(b) != 0);
     }

@@ -20,7 +20,8 @@ import java.util.Locale;
  * 10 min, {@code --seconds N}) and measures the receive intervals against the 500 ms budget
  * (±2 ms at p99). Beside it, in the same run, a baseline sender in the style of the official
  * Java GameController (send, then sleep 500 ms) is measured the same way. Optional
- * {@code --load-threads N} busy threads stand in for a loaded console.
+ * {@code --load-threads N} busy threads stand in for a loaded console; the first
+ * {@code --warmup N} seconds (default 10) are not measured.
  */
 public final class GcIntervalBenchmark {
 
@@ -60,6 +61,12 @@ public final class GcIntervalBenchmark {
             }
         }
 
+        void reset() {
+            synchronized (nanos) {
+                nanos.clear();
+            }
+        }
+
         double[] deviationsMs() {
             synchronized (nanos) {
                 double[] d = new double[Math.max(0, nanos.size() - 1)];
@@ -79,12 +86,14 @@ public final class GcIntervalBenchmark {
     public static void main(String[] args) throws Exception {
         int seconds = 600;
         int loadThreads = 0;
+        int warmupSeconds = 10;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
                 case "--load-threads" -> loadThreads = Integer.parseInt(args[++i]);
+                case "--warmup" -> warmupSeconds = Integer.parseInt(args[++i]);
                 default -> {
-                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N]");
+                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N]");
                     System.exit(2);
                 }
             }
@@ -110,10 +119,14 @@ public final class GcIntervalBenchmark {
             Thread naiveSender = new Thread(() -> sleepAfterSend(naive, game, format, baseline.address()),
                     "baseline-sender");
             naiveSender.setDaemon(true);
-            System.out.printf(Locale.ROOT, "measuring %d s on loopback, %d load thread(s), %d cores%n", seconds,
-                    loadThreads, Runtime.getRuntime().availableProcessors());
+            System.out.printf(Locale.ROOT, "measuring %d s on loopback after %d s warm-up, %d load thread(s), %d cores%n",
+                    seconds, warmupSeconds, loadThreads, Runtime.getRuntime().availableProcessors());
             sender.start();
             naiveSender.start();
+            // Intervals during start-up (JIT, thread set-up) are not part of the measurement.
+            Thread.sleep(warmupSeconds * 1000L);
+            ours.reset();
+            baseline.reset();
             Thread.sleep(seconds * 1000L);
             naive.close();
             report("touchline GcSender (drift-free grid)", ours.deviationsMs());
