@@ -77,6 +77,10 @@ public final class GcCommand implements Callable<Integer> {
     @Option(names = "--half", defaultValue = "600", description = "half length in seconds. Default: ${DEFAULT-VALUE}")
     int halfSeconds;
 
+    @Option(names = "--realtime", description = "ask for real-time scheduling of the sender thread "
+            + "(Linux, needs root or CAP_SYS_NICE): keeps the 500 ms cadence on a busy laptop")
+    boolean realtime;
+
     @Option(names = "--interval-ms", defaultValue = "500", hidden = true)
     long intervalMs;
 
@@ -116,6 +120,12 @@ public final class GcCommand implements Callable<Integer> {
             gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
+            if (realtime) {
+                // the sender thread reports the outcome once it has started
+                Thread.sleep(200);
+                String why = gc.sender().realtimeOutcome();
+                print(why.isEmpty() ? "sender runs with real-time priority" : "! no real-time priority: " + why);
+            }
             print("state: " + game.describe());
             ActionSyntax syntax = new ActionSyntax();
             BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
@@ -187,7 +197,7 @@ public final class GcCommand implements Callable<Integer> {
             rivals = new InetSocketAddress(bind, rival);
         }
         return new GcConfig(profile, v7Compat, dests, null, new InetSocketAddress(bind, returns), rivals,
-                intervalMs);
+                intervalMs, realtime);
     }
 
     static InetSocketAddress parseAddress(String text, int defaultPort) {

@@ -80,6 +80,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         sender = new GcSender(this::nextState, formats, config.destinations(), config.senderBind(), sink,
                 config.intervalMs());
         senderPort = sender.localAddress().getPort();
+        sender.useRealtimePriority(config.realtime());
         try {
             listeners.add(new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns"));
             if (config.rivalBind() != null) {

@@ -21,11 +21,14 @@ import java.util.Locale;
  * (±2 ms at p99). Beside it, in the same run, a baseline sender in the style of the official
  * Java GameController (send, then sleep 500 ms) is measured the same way. Optional
  * {@code --load-threads N} busy threads stand in for a loaded console; the first
- * {@code --warmup N} seconds (default 10) are not measured.
+ * {@code --warmup N} seconds (default 10) are not measured. {@code --realtime} gives our sender
+ * (and both receivers, not the baseline sender) SCHED_RR like {@code touchline gc --realtime}.
  */
 public final class GcIntervalBenchmark {
 
     private static final long INTERVAL_MS = 500;
+    /** With --realtime the receiving probes get the same priority, so they do not add their own delay. */
+    private static volatile boolean realtimeProbes;
 
     /** Receives datagrams on 127.0.0.1 and records receive times. */
     private static final class Probe implements AutoCloseable {
@@ -46,6 +49,9 @@ public final class GcIntervalBenchmark {
         }
 
         private void loop() {
+            if (realtimeProbes) {
+                new RealtimePriority(10).applyToCurrentThread();
+            }
             byte[] buf = new byte[2048];
             DatagramPacket p = new DatagramPacket(buf, buf.length);
             while (!socket.isClosed()) {
@@ -87,17 +93,20 @@ public final class GcIntervalBenchmark {
         int seconds = 600;
         int loadThreads = 0;
         int warmupSeconds = 10;
+        boolean realtime = false;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
                 case "--load-threads" -> loadThreads = Integer.parseInt(args[++i]);
                 case "--warmup" -> warmupSeconds = Integer.parseInt(args[++i]);
+                case "--realtime" -> realtime = true;
                 default -> {
-                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N]");
+                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N] [--realtime]");
                     System.exit(2);
                 }
             }
         }
+        realtimeProbes = realtime;
         List<Thread> load = new ArrayList<>();
         for (int i = 0; i < loadThreads; i++) {
             Thread t = new Thread(GcIntervalBenchmark::busy, "load-" + i);
@@ -121,6 +130,7 @@ public final class GcIntervalBenchmark {
             naiveSender.setDaemon(true);
             System.out.printf(Locale.ROOT, "measuring %d s on loopback after %d s warm-up, %d load thread(s), %d cores%n",
                     seconds, warmupSeconds, loadThreads, Runtime.getRuntime().availableProcessors());
+            sender.useRealtimePriority(realtime);
             sender.start();
             naiveSender.start();
             // Intervals during start-up (JIT, thread set-up) are not part of the measurement.
@@ -129,6 +139,8 @@ public final class GcIntervalBenchmark {
             baseline.reset();
             Thread.sleep(seconds * 1000L);
             naive.close();
+            System.out.println("sender real-time priority: " + (sender.realtimeOutcome().isEmpty() ? "yes"
+                    : sender.realtimeOutcome()));
             report("touchline GcSender (drift-free grid)", ours.deviationsMs());
             report("baseline: send, then sleep 500 ms (Java GC style)", baseline.deviationsMs());
         }

@@ -36,7 +36,7 @@ class EmbeddedGameControllerTest {
                                          MatchMode matchMode) throws Exception {
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
         GcConfig config = new GcConfig(profile, false, List.of(dest), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT,
-                watchRivals ? ANY_LOOPBACK_PORT : null, 500);
+                watchRivals ? ANY_LOOPBACK_PORT : null, 500, false);
         EmbeddedGameController gc = new EmbeddedGameController(game, config, envelopes::add, matchMode);
         gc.addEventListener(events::add);
         gc.start();
@@ -108,7 +108,7 @@ class EmbeddedGameControllerTest {
             try (EmbeddedGameController self = new EmbeddedGameController(
                     new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system()),
                     new GcConfig(GcProfile.HL12, false, List.of(gc.rivalAddress()), ANY_LOOPBACK_PORT,
-                            ANY_LOOPBACK_PORT, null, 500), e -> { }, null)) {
+                            ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null)) {
                 self.start();
                 Await.until(() -> gc.rivals().active(gc.game().now()).size() == 1, 2000, "a second GC noticed");
             }
@@ -134,7 +134,7 @@ class EmbeddedGameControllerTest {
             probe.close();
             InetSocketAddress shared = new InetSocketAddress(InetAddress.getLoopbackAddress(), port);
             try (EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.V8, true,
-                    List.of(shared), ANY_LOOPBACK_PORT, shared, null, 100), envelopes::add, null)) {
+                    List.of(shared), ANY_LOOPBACK_PORT, shared, null, 100, false), envelopes::add, null)) {
                 gc.addEventListener(events::add);
                 gc.start();
                 robot.send(new ReturnPacket.V2(13, 1, ReturnPacket.ALIVE).encode(), shared);
