@@ -125,7 +125,9 @@ public final class GcIntervalBenchmark {
                  return game.controlData();
              }, List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS);
              DatagramSocket naive = new DatagramSocket()) {
-            Thread naiveSender = new Thread(() -> sleepAfterSend(naive, game, format, baseline.address()),
+            // Its own game: a shared lock would let the baseline thread delay ours (priority inversion).
+            Game baselineGame = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+            Thread naiveSender = new Thread(() -> sleepAfterSend(naive, baselineGame, format, baseline.address()),
                     "baseline-sender");
             naiveSender.setDaemon(true);
             System.out.printf(Locale.ROOT, "measuring %d s on loopback after %d s warm-up, %d load thread(s), %d cores%n",
