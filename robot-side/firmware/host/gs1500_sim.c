@@ -11,7 +11,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#define RING 1400u
+#define RING 1400u            /* the largest datagram */
+#define BUFFER (RING + 32u)   /* the module's buffer towards the MCU: 1400 data bytes + header */
 #define ESC 0x1B
 
 enum { M_TEXT, M_ESC, M_CID, M_ADDR, M_PORT, M_LEN, M_DATA };
@@ -22,11 +23,16 @@ struct gs_sim {
     double bytes_per_us;
     pthread_t thread;
     pthread_mutex_t lock;       /* guards the ring and the connection table */
-    volatile int stop;
-    /* module -> MCU */
-    uint8_t ring[RING];
-    uint32_t head, len;
-    double credit;
+    volatile int stop;          /* set by gs_sim_stop, read by the thread (atomic builtins) */
+    /* module -> MCU: bytes not yet on the line, oldest first, and the sizes of the frames
+     * (datagram with header, notice, text response) they belong to */
+    uint8_t out[BUFFER];
+    uint32_t out_len;
+    uint16_t frames[BUFFER];
+    uint32_t nframes;
+    int first_started;  /* the first frame is partly on the line already */
+    double credit;     /* bytes the line may carry to the MCU now */
+    double rx_credit;  /* bytes the line may carry from the MCU now */
     /* connections: '0' = UDP server on local_port, '1' = UDP client to the console */
     int server_open, client_open;
     struct sockaddr_in client_peer;
@@ -53,24 +59,45 @@ static uint64_t now_us(void)
     return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
 }
 
-/* Appends bytes for the MCU; on overflow the oldest bytes are lost. Caller holds lock. */
-static void to_mcu(gs_sim *s, const void *bytes, size_t n)
+/* Removes bytes [at, at+n) of the buffer, shrinking or removing the frames they belong to. */
+static void drop_range(gs_sim *s, uint32_t at, uint32_t n)
 {
-    const uint8_t *b = bytes;
-    size_t i;
-    int overflowed = 0;
-    for (i = 0; i < n; i++) {
-        if (s->len == RING) {
-            s->head = (s->head + 1) % RING;
-            s->len--;
-            s->stats.overflow_bytes++;
-            overflowed = 1;
-        }
-        s->ring[(s->head + s->len) % RING] = b[i];
-        s->len++;
+    uint32_t pos = 0, i, k = 0;
+    memmove(s->out + at, s->out + at + n, s->out_len - at - n);
+    s->out_len -= n;
+    for (i = 0; i < s->nframes; i++) {
+        uint32_t fs = pos, fe = pos + s->frames[i];
+        uint32_t lo = fs > at ? fs : at, hi = fe < at + n ? fe : at + n;
+        uint32_t keep = s->frames[i] - (hi > lo ? hi - lo : 0);
+        if (keep > 0) s->frames[k++] = (uint16_t)keep;
+        pos = fe;
     }
-    if (overflowed) s->stats.overflow_events++;
+    s->nframes = k;
 }
+
+/* Queues one frame for the MCU. When the buffer is full the oldest waiting bytes are lost
+ * -- but never the rest of the frame already going out on the line -- so the frame that
+ * loses its first bytes reaches the MCU with its header cut off. If even that is not
+ * enough, the new frame itself loses its head. Caller holds lock. */
+static void to_mcu_frame(gs_sim *s, const void *hdr, size_t hlen, const void *data, size_t dlen)
+{
+    size_t n = hlen + dlen, skip = 0, free_bytes = BUFFER - s->out_len, i;
+    if (n > free_bytes) {
+        uint32_t protect = s->first_started ? s->frames[0] : 0;
+        size_t need = n - free_bytes, avail = s->out_len - protect, d = need < avail ? need : avail;
+        if (d > 0) drop_range(s, protect, (uint32_t)d);
+        skip = need - d;
+        s->stats.overflow_bytes += (uint32_t)need;
+        s->stats.overflow_events++;
+    }
+    if (skip >= n) return;
+    for (i = skip; i < n; i++) {
+        s->out[s->out_len++] = i < hlen ? ((const uint8_t *)hdr)[i] : ((const uint8_t *)data)[i - hlen];
+    }
+    s->frames[s->nframes++] = (uint16_t)(n - skip);
+}
+
+static void to_mcu(gs_sim *s, const void *bytes, size_t n) { to_mcu_frame(s, "", 0, bytes, n); }
 
 static void to_mcu_text(gs_sim *s, const char *text) { to_mcu(s, text, strlen(text)); }
 
@@ -259,8 +286,7 @@ static void from_network(gs_sim *s)
             pthread_mutex_unlock(&s->lock);
             continue;
         }
-        to_mcu(s, hdr, strlen(hdr));
-        to_mcu(s, buf, (size_t)n);
+        to_mcu_frame(s, hdr, strlen(hdr), buf, (size_t)n);
         pthread_mutex_unlock(&s->lock);
     }
 }
@@ -270,19 +296,31 @@ static void drain(gs_sim *s, double elapsed_us)
 {
     pthread_mutex_lock(&s->lock);
     s->credit += elapsed_us * s->bytes_per_us;
-    if (s->credit > RING) s->credit = RING;
-    while (s->len > 0 && s->credit >= 1.0) {
-        uint32_t chunk = s->len;
-        ssize_t w;
-        if (chunk > RING - s->head) chunk = RING - s->head;
+    if (s->credit > BUFFER) s->credit = BUFFER;
+    while (s->out_len > 0 && s->credit >= 1.0) {
+        uint32_t chunk = s->out_len, w;
+        ssize_t k;
         if (chunk > (uint32_t)s->credit) chunk = (uint32_t)s->credit;
-        w = send(s->serial_fd, s->ring + s->head, chunk, MSG_DONTWAIT | MSG_NOSIGNAL);
-        if (w <= 0) break;
-        s->head = (s->head + (uint32_t)w) % RING;
-        s->len -= (uint32_t)w;
+        k = send(s->serial_fd, s->out, chunk, MSG_DONTWAIT | MSG_NOSIGNAL);
+        if (k <= 0) break;
+        w = (uint32_t)k;
+        memmove(s->out, s->out + w, s->out_len - w);
+        s->out_len -= w;
         s->credit -= (double)w;
+        while (w > 0) { /* account the bytes to their frames */
+            if (w >= s->frames[0]) {
+                w -= s->frames[0];
+                memmove(s->frames, s->frames + 1, (s->nframes - 1) * sizeof s->frames[0]);
+                s->nframes--;
+                s->first_started = 0;
+            } else {
+                s->frames[0] = (uint16_t)(s->frames[0] - w);
+                w = 0;
+                s->first_started = 1;
+            }
+        }
     }
-    if (s->len == 0 && s->credit > 64) s->credit = 64; /* an idle line banks no bursts */
+    if (s->out_len == 0 && s->credit > 64) s->credit = 64; /* an idle line banks no bursts */
     pthread_mutex_unlock(&s->lock);
 }
 
@@ -290,26 +328,32 @@ static void *run(void *arg)
 {
     gs_sim *s = arg;
     uint64_t last = now_us();
-    while (!s->stop) {
+    while (!__atomic_load_n(&s->stop, __ATOMIC_ACQUIRE)) {
         struct pollfd p[2];
         uint64_t t;
         p[0].fd = s->serial_fd;
-        p[0].events = POLLIN;
+        /* the UART from the MCU carries no more than the baud rate: without credit the
+         * bytes wait in the (small) socket buffer and the firmware's write blocks */
+        p[0].events = s->rx_credit >= 1.0 ? POLLIN : 0;
         p[1].fd = s->udp_fd;
         p[1].events = POLLIN;
         p[0].revents = p[1].revents = 0;
         (void)poll(p, 2, 1);
         if (p[0].revents & (POLLIN | POLLHUP)) {
             uint8_t buf[512];
-            ssize_t n = recv(s->serial_fd, buf, sizeof buf, MSG_DONTWAIT);
+            size_t want = s->rx_credit < (double)sizeof buf ? (size_t)s->rx_credit : sizeof buf;
+            ssize_t n = recv(s->serial_fd, buf, want ? want : 1, MSG_DONTWAIT);
             ssize_t i;
             if (n == 0) break; /* the firmware side closed */
+            if (n > 0) s->rx_credit -= (double)n;
             pthread_mutex_lock(&s->lock);
             for (i = 0; i < n; i++) from_mcu(s, buf[i]);
             pthread_mutex_unlock(&s->lock);
         }
         if (p[1].revents & POLLIN) from_network(s);
         t = now_us();
+        s->rx_credit += (double)(t - last) * s->bytes_per_us;
+        if (s->rx_credit > 256.0) s->rx_credit = 256.0;
         drain(s, (double)(t - last));
         last = t;
     }
@@ -347,7 +391,7 @@ void gs_sim_disconnect(gs_sim *s, char cid)
 void gs_sim_stop(gs_sim *s, gs_sim_stats *stats)
 {
     if (s == NULL) return;
-    s->stop = 1;
+    __atomic_store_n(&s->stop, 1, __ATOMIC_RELEASE);
     pthread_join(s->thread, NULL);
     if (stats) *stats = s->stats;
     pthread_mutex_destroy(&s->lock);

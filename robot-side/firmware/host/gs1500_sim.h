@@ -1,9 +1,12 @@
 /* A simulated GS1500M serial Wi-Fi module (host only): a thread that speaks the module's
  * serial protocol (AT commands, bulk data ESC Z / ESC Y / ESC y, ESC O / ESC F notices)
  * on one end of a byte stream and does real UDP on the robot's port. Everything going to
- * the microcontroller passes through a 1400-byte buffer drained at the serial baud rate;
- * when it is full the oldest bytes are lost, so under load datagrams reach the firmware
- * with their header cut off, as on the real module. */
+ * the microcontroller passes through a buffer of 1400 data bytes (+ one header) drained at
+ * the serial baud rate; when it is full the oldest waiting bytes are lost -- never the rest
+ * of the frame already on the line -- so under load datagrams reach the firmware with their
+ * header cut off, as on the real module. The line from the firmware is limited
+ * to the baud rate too: the module reads no faster, so the firmware's UART writes block
+ * (the firmware end of the socketpair has a small send buffer). */
 #ifndef GS1500_SIM_H
 #define GS1500_SIM_H
 

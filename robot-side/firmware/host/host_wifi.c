@@ -38,6 +38,11 @@ int host_wifi_open(host_wifi *w, int udp_fd, const struct sockaddr_in *console, 
     if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0) return -1;
     w->serial_fd = sv[0];
     w->module_fd = sv[1];
+    {
+        /* a UART holds a few bytes, not the kernel's default of ~200 kB */
+        int small = 2048;
+        setsockopt(sv[0], SOL_SOCKET, SO_SNDBUF, &small, sizeof small);
+    }
     w->module = gs_sim_start(sv[1], udp_fd, local_port, baud);
     if (w->module == NULL) {
         close(sv[0]);

@@ -280,9 +280,16 @@ void robot_poll(uint32_t now)
     }
     for (i = 0; i < g_cfg->option_count && i < FW_MAX_OPTIONS; i++) {
         uint32_t period = 1000u / (g_cfg->rate_hz ? g_cfg->rate_hz : 10u);
-        if (!g_enabled[i] || (g_next_due[i] != 0 && (int32_t)(now - g_next_due[i]) < 0)) continue;
-        g_next_due[i] = (g_next_due[i] == 0 ? now : g_next_due[i]) + period;
-        if ((int32_t)(now - g_next_due[i]) >= 0) g_next_due[i] = now + period;
+        if (!g_enabled[i]) continue;
+        if (g_next_due[i] == 0) {
+            /* just switched on: each option gets its own phase, so options switched on
+             * together do not all hit the serial line in the same poll */
+            g_next_due[i] = now + (period * i) / (g_cfg->option_count ? g_cfg->option_count : 1u);
+            if (g_next_due[i] == 0) g_next_due[i] = 1;
+        }
+        if ((int32_t)(now - g_next_due[i]) < 0) continue;
+        g_next_due[i] += period;
+        if ((int32_t)(now - g_next_due[i]) >= 0) g_next_due[i] = now + period; /* we were late */
         if (g_next_due[i] == 0) g_next_due[i] = 1;
         if (g_cfg->options[i].produce != 0 && g_cfg->options[i].produce(now, &g_out)) send_outgoing();
     }

@@ -285,9 +285,7 @@ static void test_mathe(void)
         mathe_poll(&game, &P.s, now_ms());
         peer_pump();
         read_robot(&r);
-        if (mathe_done(&game) && strstr(r.text, "MATHE ") != NULL && strchr(strstr(r.text, "MATHE OK") ? strstr(r.text, "MATHE OK") : r.text, '\n')) {
-            if (strstr(r.text, "MATHE OK") || strstr(r.text, "MATHE MISMATCH")) break;
-        }
+        if (mathe_done(&game) && (strstr(r.text, "MATHE OK\n") || strstr(r.text, "MATHE MISMATCH\n"))) break;
     }
     CHECK(mathe_done(&game));
     CHECK(mathe_agrees(&game));

@@ -94,8 +94,7 @@ void echoLoop(zmq::socket_t& socket, const std::atomic<bool>& stop) {
     zmq::poll(items, 1, 50ms);
     if (!(items[0].revents & ZMQ_POLLIN)) continue;
     std::vector<zmq::message_t> frames;
-    zmq::recv_multipart(socket, std::back_inserter(frames));
-    zmq::send_multipart(socket, frames);
+    if (zmq::recv_multipart(socket, std::back_inserter(frames))) zmq::send_multipart(socket, frames);
   }
 }
 

@@ -31,23 +31,25 @@ void CameraServer::stop() {
 
 void CameraServer::loop() {
   while (!stopping_) {
-    zmq::pollitem_t items[] = {{socket_.handle(), 0, ZMQ_POLLIN, 0}};
-    zmq::poll(items, 1, std::chrono::milliseconds(100));
-    if (!(items[0].revents & ZMQ_POLLIN)) continue;
-    std::vector<zmq::message_t> frames;
-    if (!zmq::recv_multipart(socket_, std::back_inserter(frames))) continue;
-    if (!validEnvelope(frames)) {
-      ++counters_.malformedEnvelopes;
-      logLine("camera: dropped message with " + std::to_string(frames.size()) + " frames");
-      continue;
-    }
-    std::string reply;
-    try {
-      reply = handle(frames.back().to_string());
-    } catch (const std::exception& e) {
-      reply = error(std::string("camera failure: ") + e.what());
-    }
-    sendReply(socket_, frames, reply);
+    socketLoopStep("camera", [this] {
+      zmq::pollitem_t items[] = {{socket_.handle(), 0, ZMQ_POLLIN, 0}};
+      zmq::poll(items, 1, std::chrono::milliseconds(100));
+      if (!(items[0].revents & ZMQ_POLLIN)) return;
+      std::vector<zmq::message_t> frames;
+      if (!zmq::recv_multipart(socket_, std::back_inserter(frames))) return;
+      if (!validEnvelope(frames)) {
+        ++counters_.malformedEnvelopes;
+        logLine("camera: dropped message with " + std::to_string(frames.size()) + " frames");
+        return;
+      }
+      std::string reply;
+      try {
+        reply = handle(frames.back().to_string());
+      } catch (const std::exception& e) {
+        reply = error(std::string("camera failure: ") + e.what());
+      }
+      sendReply(socket_, frames, reply);
+    });
   }
 }
 

@@ -133,7 +133,7 @@ bool RobotState::commandAngle(const std::string& jointName, double target, doubl
   if (m.stiffness <= 0.0) return false;
   auto now = Clock::now();
   m.from = sensedLocked(m, now);
-  m.to = clamp(target, info.min, info.max);
+  m.to = m.command = clamp(target, info.min, info.max);
   m.start = now;
   m.realSeconds = std::max(0.0, robotSeconds) * timeScale_;
   return true;
@@ -141,7 +141,7 @@ bool RobotState::commandAngle(const std::string& jointName, double target, doubl
 
 double RobotState::commandedAngle(const std::string& joint) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return joints_.at(joint).to;
+  return joints_.at(joint).command;
 }
 
 double RobotState::sensedAngle(const std::string& joint) const {
@@ -203,7 +203,7 @@ void RobotState::applyPostureAnglesLocked(const std::string& posture) {
     auto it = angles.find(j.name);
     double v = clamp(it == angles.end() ? 0.0 : it->second, j.min, j.max);
     auto& m = joints_.at(j.name);
-    m.from = m.to = v;
+    m.from = m.to = m.command = v;
     m.realSeconds = 0.0;
   }
 }

@@ -47,7 +47,9 @@ class RobotState {
   // Moves the joint towards target (clamped to its limits) over robotSeconds. Does nothing
   // and returns false when the joint's stiffness is 0 (a limp motor does not move).
   bool commandAngle(const std::string& joint, double target, double robotSeconds);
-  double commandedAngle(const std::string& joint) const;  // last command (actuator)
+  // Last accepted command (actuator). Removing stiffness stops the joint where it is
+  // (sensor) but keeps the command, as on the robot.
+  double commandedAngle(const std::string& joint) const;
   double sensedAngle(const std::string& joint) const;     // where the joint is now (sensor)
 
   // Postures: Crouch, LyingBack, LyingBelly, Sit, SitRelax, Stand, StandInit, StandZero.
@@ -84,6 +86,7 @@ class RobotState {
  private:
   struct JointMotion {
     double stiffness = 0.0;
+    double command = 0.0;  // last accepted command (the actuator value)
     double from = 0.0;
     double to = 0.0;
     Clock::time_point start{};

@@ -52,51 +52,53 @@ void RpcServer::stop() {
 void RpcServer::brokerLoop() {
   std::deque<zmq::message_t> freeWorkers;  // worker identities
   while (!stopping_) {
-    zmq::pollitem_t items[] = {{backend_.handle(), 0, ZMQ_POLLIN, 0},
-                               {frontend_.handle(), 0, ZMQ_POLLIN, 0}};
-    // Work pulling: the frontend is polled only while some worker is free.
-    zmq::poll(items, freeWorkers.empty() ? 1 : 2, kPollPeriod);
+    socketLoopStep("rpc broker", [&] {
+      zmq::pollitem_t items[] = {{backend_.handle(), 0, ZMQ_POLLIN, 0},
+                                 {frontend_.handle(), 0, ZMQ_POLLIN, 0}};
+      // Work pulling: the frontend is polled only while some worker is free.
+      zmq::poll(items, freeWorkers.empty() ? 1 : 2, kPollPeriod);
 
-    if (items[0].revents & ZMQ_POLLIN) {
-      std::vector<zmq::message_t> frames;
-      if (!zmq::recv_multipart(backend_, std::back_inserter(frames))) continue;
-      zmq::message_t worker = std::move(frames.front());
-      freeWorkers.push_back(std::move(worker));
-      if (!(frames.size() == 2 && frames[1].to_string() == kReady)) {
-        // A reply: [worker][client envelope...][reply] -> frontend without the worker id.
-        for (std::size_t i = 1; i < frames.size(); ++i) {
-          frontend_.send(frames[i], i + 1 < frames.size() ? zmq::send_flags::sndmore
-                                                          : zmq::send_flags::none);
+      if (items[0].revents & ZMQ_POLLIN) {
+        std::vector<zmq::message_t> frames;
+        if (!zmq::recv_multipart(backend_, std::back_inserter(frames))) return;
+        zmq::message_t worker = std::move(frames.front());
+        freeWorkers.push_back(std::move(worker));
+        if (!(frames.size() == 2 && frames[1].to_string() == kReady)) {
+          // A reply: [worker][client envelope...][reply] -> frontend without the worker id.
+          for (std::size_t i = 1; i < frames.size(); ++i) {
+            frontend_.send(frames[i], i + 1 < frames.size() ? zmq::send_flags::sndmore
+                                                            : zmq::send_flags::none);
+          }
         }
       }
-    }
 
-    if (!freeWorkers.empty() && (items[1].revents & ZMQ_POLLIN)) {
-      std::vector<zmq::message_t> frames;
-      if (!zmq::recv_multipart(frontend_, std::back_inserter(frames))) continue;
-      if (!validEnvelope(frames)) {
-        ++counters_.malformedEnvelopes;
-        logLine("rpc: dropped message with " + std::to_string(frames.size()) +
-                " frames (expected [requestId][\"\"][payload])");
-        continue;
+      if (!freeWorkers.empty() && (items[1].revents & ZMQ_POLLIN)) {
+        std::vector<zmq::message_t> frames;
+        if (!zmq::recv_multipart(frontend_, std::back_inserter(frames))) return;
+        if (!validEnvelope(frames)) {
+          ++counters_.malformedEnvelopes;
+          logLine("rpc: dropped message with " + std::to_string(frames.size()) +
+                  " frames (expected [requestId][\"\"][payload])");
+          return;
+        }
+        ++counters_.requests;
+        if (frames.back().size() > options_.maxRequestBytes) {
+          ++counters_.oversize;
+          logLine("rpc: request of " + std::to_string(frames.back().size()) + " bytes rejected");
+          sendReply(frontend_, frames,
+                    errorReply("request of " + std::to_string(frames.back().size()) +
+                               " bytes exceeds the limit of " +
+                               std::to_string(options_.maxRequestBytes) + " bytes"));
+          return;
+        }
+        backend_.send(freeWorkers.front(), zmq::send_flags::sndmore);
+        freeWorkers.pop_front();
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+          backend_.send(frames[i], i + 1 < frames.size() ? zmq::send_flags::sndmore
+                                                         : zmq::send_flags::none);
+        }
       }
-      ++counters_.requests;
-      if (frames.back().size() > options_.maxRequestBytes) {
-        ++counters_.oversize;
-        logLine("rpc: request of " + std::to_string(frames.back().size()) + " bytes rejected");
-        sendReply(frontend_, frames,
-                  errorReply("request of " + std::to_string(frames.back().size()) +
-                             " bytes exceeds the limit of " +
-                             std::to_string(options_.maxRequestBytes) + " bytes"));
-        continue;
-      }
-      backend_.send(freeWorkers.front(), zmq::send_flags::sndmore);
-      freeWorkers.pop_front();
-      for (std::size_t i = 0; i < frames.size(); ++i) {
-        backend_.send(frames[i], i + 1 < frames.size() ? zmq::send_flags::sndmore
-                                                       : zmq::send_flags::none);
-      }
-    }
+    });
   }
 }
 
@@ -108,10 +110,12 @@ void RpcServer::workerLoop() {
   socket.set(zmq::sockopt::rcvtimeo, static_cast<int>(kPollPeriod.count()));
   socket.send(zmq::buffer(kReady), zmq::send_flags::none);
   while (!stopping_) {
-    std::vector<zmq::message_t> frames;
-    if (!zmq::recv_multipart(socket, std::back_inserter(frames)) || frames.empty()) continue;
-    std::string reply = handle(frames.back().to_string());
-    sendReply(socket, frames, reply);
+    socketLoopStep("rpc worker", [&] {
+      std::vector<zmq::message_t> frames;
+      if (!zmq::recv_multipart(socket, std::back_inserter(frames)) || frames.empty()) return;
+      std::string reply = handle(frames.back().to_string());
+      sendReply(socket, frames, reply);
+    });
   }
 }
 

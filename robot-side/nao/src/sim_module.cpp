@@ -97,7 +97,8 @@ Value SimModule::methodHelp(const std::string& method) const {
                      stringValue(spec.returns)});
 }
 
-std::optional<Value> SimModule::call(const std::string& method, const Params& params) const {
+std::optional<Value> SimModule::call(const std::string& method, const Params& params,
+                                     CallLog* log) const {
   auto it = methods_.find(method);
   if (it == methods_.end()) {
     throw CallError("unknown method '" + method + "' in module " + name_ +
@@ -118,6 +119,11 @@ std::optional<Value> SimModule::call(const std::string& method, const Params& pa
                       ", got " + kindName(kindOf(params[i])) + " " + describe(params[i], 40) +
                       "; usage: " + usage(spec));
     }
+  }
+  if (log) {
+    std::string entry = name_ + "." + method + "(";
+    for (std::size_t i = 0; i < params.size(); ++i) entry += (i ? ", " : "") + describe(params[i], 60);
+    log->record(entry + ")");
   }
   return spec.handler(params);
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "call_log.h"
 #include "mixed_value.h"
 
 namespace touchline::nao {
@@ -51,8 +52,10 @@ class SimModule {
   const std::string& name() const { return name_; }
   std::vector<std::string> methodNames() const { return order_; }
 
-  // Checks the parameter count and types, then runs the handler. Throws CallError.
-  std::optional<Value> call(const std::string& method, const Params& params) const;
+  // Checks the parameter count and types, records the call in log (if given) and runs
+  // the handler. Throws CallError. Calls rejected before running are not logged.
+  std::optional<Value> call(const std::string& method, const Params& params,
+                            CallLog* log = nullptr) const;
 
  protected:
   void add(MethodSpec spec);

@@ -8,6 +8,9 @@
 #include <zmq.hpp>
 #include <zmq_addon.hpp>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,19 @@ inline void sendReply(zmq::socket_t& socket, std::vector<zmq::message_t>& frames
 // "tcp://<bind>:<port>", with port 0 meaning "let the OS choose".
 inline std::string tcpEndpoint(const std::string& bind, int port) {
   return "tcp://" + bind + ":" + (port == 0 ? std::string("*") : std::to_string(port));
+}
+
+// Runs one iteration of a socket loop. An interrupted system call (EINTR) is retried; any
+// other ZeroMQ error would leave the server half-dead, so it ends the process visibly.
+template <typename Body>
+void socketLoopStep(const char* where, Body&& body) {
+  try {
+    body();
+  } catch (const zmq::error_t& e) {
+    if (e.num() == EINTR) return;
+    std::fprintf(stderr, "[nao-sim] %s: fatal ZeroMQ error: %s\n", where, e.what());
+    std::abort();
+  }
 }
 
 inline int boundPort(zmq::socket_t& socket) {

@@ -233,3 +233,26 @@ TEST(Broker, MemoryIsBounded) {
   broker.call("ALMemory", "insertData", {stringValue("blob4"), binaryValue("small")});
   EXPECT_EQ(broker.call("ALMemory", "getData", {stringValue("blob4")})->binary(), "small");
 }
+
+TEST(Broker, RejectedCallsAreNotLoggedAsRun) {
+  SimulatedBroker broker(kScale);
+  errorOf(broker, "ALMotion", "fly");
+  errorOf(broker, "ALTextToSpeech", "say", {intValue(3)});
+  errorOf(broker, "ALNope", "say");
+  EXPECT_TRUE(strings(*broker.call("Robot", "getCallLog", {})).empty());
+}
+
+TEST(Broker, RemovingStiffnessStopsTheJointButKeepsTheCommand) {
+  SimulatedBroker broker(1.0);
+  broker.call("ALMotion", "setStiffnesses", {stringValue("HeadYaw"), floatValue(1.0f)});
+  // 2 rad at 0.1 x 6 rad/s takes 3.3 s; stiffness goes to 0 right after the command.
+  broker.call("ALMotion", "setAngles", {stringValue("HeadYaw"), floatValue(2.0f), floatValue(0.1f)});
+  broker.call("ALMotion", "setStiffnesses", {stringValue("HeadYaw"), floatValue(0.0f)});
+  double sensed = floats(*broker.call("ALMotion", "getAngles", {stringValue("HeadYaw"), boolValue(true)})).at(0);
+  double commanded = floats(*broker.call("ALMotion", "getAngles", {stringValue("HeadYaw"), boolValue(false)})).at(0);
+  EXPECT_NEAR(commanded, 2.0, 1e-6);
+  EXPECT_LT(sensed, 1.0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // a limp joint does not move on
+  EXPECT_DOUBLE_EQ(floats(*broker.call("ALMotion", "getAngles", {stringValue("HeadYaw"), boolValue(true)})).at(0),
+                   sensed);
+}

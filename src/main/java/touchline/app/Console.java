@@ -12,6 +12,15 @@ import touchline.transport.SendGate;
 import touchline.transport.SendResult;
 import touchline.transport.UdpTransport;
 
+import touchline.record.EnvelopeWriter;
+import touchline.record.Recorder;
+import touchline.record.RecorderStats;
+import touchline.record.Recording;
+import touchline.record.RecordingException;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Optional;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -28,12 +37,17 @@ public final class Console implements AutoCloseable {
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
     private final EnvelopeBus bus = new EnvelopeBus();
+    private final LiveSwitch live = new LiveSwitch(bus);
+    private Recorder recorder;
+    private AutoCloseable recorderSubscription;
+    private volatile Replay replay;
     private final RobotRegistry robots;
     private final TrafficMeter traffic;
     private final DebugOptionSession options;
     private final UdpTransport udp;
     private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
+    private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -47,15 +61,23 @@ public final class Console implements AutoCloseable {
     public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
-        this.robots = new RobotRegistry(clock);
-        this.traffic = new TrafficMeter(clock);
-        this.reliable = new ReliableStreamHandler(bus, clock);
-        this.udp = new UdpTransport(config.udp(), codec, bus, clock, reliable);
-        this.options = new DebugOptionSession(udp, codec, clock);
+        // The model's "now" follows a replay while one plays with live listening paused, so
+        // robots in a recording are online exactly as long as they were during the match.
+        MicrosClock modelClock = () -> {
+            Replay r = replay;
+            return r != null && !live.isLive() ? r.state().positionMicros() : clock.nowMicros();
+        };
+        this.robots = new RobotRegistry(modelClock);
+        this.traffic = new TrafficMeter(modelClock);
+        this.reliable = new ReliableStreamHandler(live, clock);
+        this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
+        this.options = new DebugOptionSession(udp, codec, modelClock);
+        this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);
             bus.subscribe(options);
+            bus.subscribe(stores);
             robots.addPresenceListener(options);
         }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -100,9 +122,76 @@ public final class Console implements AutoCloseable {
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+    /** The bounded stores the UI's views pull from once per frame. */
+    public touchline.model.store.ViewStores stores() { return stores; }
+
+    /** Starts recording every envelope (in and out, live or replayed) into an MCAP file. */
+    public synchronized Recorder startRecording(Path file) throws IOException {
+        stopRecording();
+        recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
+        recorderSubscription = bus.subscribe(recorder);
+        return recorder;
+    }
+
+    /** Stops and closes the recording; the file is complete (footer and index) afterwards. */
+    public synchronized void stopRecording() throws IOException {
+        if (recorder != null) {
+            closeQuietly(recorderSubscription);
+            recorder.close();
+            recorder = null;
+        }
+    }
+
+    public synchronized Optional<RecorderStats> recording() {
+        return recorder == null ? Optional.empty() : Optional.of(recorder.stats());
+    }
+
+    /** Opens a recording and plays it into the same stream as live traffic (paused at its start). */
+    public synchronized Replay openReplay(Path file) throws RecordingException {
+        closeReplay();
+        Recording recording = Recording.open(file, kinds);
+        replay = new Replay(recording, bus);
+        return replay;
+    }
+
+    public synchronized Optional<Replay> replay() {
+        return Optional.ofNullable(replay);
+    }
+
+    public synchronized void closeReplay() {
+        if (replay != null) {
+            replay.close();
+            replay = null;
+        }
+    }
+
+    /** Live listening on or paused (a replay may run beside live traffic or alone). */
+    public void setLiveListening(boolean on) {
+        live.setLive(on);
+    }
+
+    public boolean liveListening() {
+        return live.isLive();
+    }
+
+    private static void closeQuietly(AutoCloseable c) {
+        try {
+            if (c != null) {
+                c.close();
+            }
+        } catch (Exception ignored) {
+            // unsubscribing cannot fail
+        }
+    }
 
     @Override
     public void close() {
+        closeReplay();
+        try {
+            stopRecording();
+        } catch (IOException e) {
+            org.slf4j.LoggerFactory.getLogger(Console.class).warn("closing the recording: {}", e.toString());
+        }
         ticker.shutdownNow();
         udp.close();
     }

@@ -8,6 +8,9 @@ import picocli.CommandLine.Command;
         description = "Run a benchmark (figures go into docs/benchmarks.md).",
         subcommands = {
                 IngestBenchCommand.class,
+                UiBenchCommand.class,
+                touchline.record.bench.RecordBenchmark.class,
+                NaoBenchCommand.class,
         })
 final class BenchCommand implements Runnable {
 

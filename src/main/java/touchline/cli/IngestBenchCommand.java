@@ -42,6 +42,12 @@ final class IngestBenchCommand implements Callable<Integer> {
     @Option(names = "--transport-only", description = "measure the transport without the model subscribed")
     boolean transportOnly;
 
+    @Option(names = "--record", description = "also record everything to a temporary MCAP file (recording overhead)")
+    boolean record;
+
+    @Option(names = "--compare-recording", description = "each round also runs the pipeline with the recorder attached")
+    boolean compareRecording;
+
     private final List<byte[]> datagrams = sampleTraffic();
 
     /** Six robots' realistic mix: keep-alives, plots, text, region growing. */
@@ -84,6 +90,13 @@ final class IngestBenchCommand implements Callable<Integer> {
         for (int round = 1; round <= rounds; round++) {
             double baseline = baseline(seconds);
             double pipeline = pipeline(seconds, 0).perSecond;
+            if (compareRecording) {
+                record = true;
+                double recorded = pipeline(seconds, 0).perSecond;
+                record = false;
+                System.out.printf("round %d: pipeline recording %,.0f msg/s, %.2f of the pipeline without%n", round,
+                        recorded, recorded / pipeline);
+            }
             bestBaseline = Math.max(bestBaseline, baseline);
             bestPipeline = Math.max(bestPipeline, pipeline);
             System.out.printf("round %d: baseline %,.0f msg/s, pipeline %,.0f msg/s, ratio %.2f%n", round, baseline,
@@ -109,8 +122,20 @@ final class IngestBenchCommand implements Callable<Integer> {
                     decoded.increment();
                 }
             });
+            java.nio.file.Path file = record ? java.nio.file.Files.createTempFile("touchline-ingest", ".mcap") : null;
+            if (record) {
+                console.startRecording(file);
+            }
             console.start();
-            return drive(console.udp().localPort(), secs, pacedRate, decoded);
+            try {
+                return drive(console.udp().localPort(), secs, pacedRate, decoded);
+            } finally {
+                if (record) {
+                    console.recording().ifPresent(s -> System.out.printf("  recorded %,d, dropped %,d%n", s.written(), s.dropped()));
+                    console.stopRecording();
+                    java.nio.file.Files.deleteIfExists(file);
+                }
+            }
         }
     }
 

@@ -13,8 +13,14 @@ import picocli.CommandLine.Command;
                 ListenCommand.class,
                 OptionsCommand.class,
                 BenchCommand.class,
-                GcCommand.class,
                 StreamCommand.class,
+                ConsoleCommand.class,
+                ScreenshotsCommand.class,
+                RecordCommand.class,
+                ReplayCommand.class,
+                ExportCommand.class,
+                GcCommand.class,
+                NaoCommand.class,
         })
 public final class Main implements Runnable {
 

@@ -24,10 +24,10 @@ class DebugOptionSessionTest {
     private Optional<String> hold = Optional.empty();
     private RobotRegistry registry;
     private DebugOptionSession session;
+    private final MessageCodec codec = new MessageCodec(new MessageKinds());
 
     @BeforeEach
     void setUp() {
-        MessageCodec codec = new MessageCodec(new MessageKinds());
         session = new DebugOptionSession((id, m) -> {
             if (hold.isPresent()) {
                 return SendResult.held(hold.get());
@@ -48,8 +48,10 @@ class DebugOptionSessionTest {
     }
 
     private void receive(int robot, Fumanoid.Message.Builder m) {
+        Fumanoid.Message built = m.setRobotID(robot).build();
+        String kind = ((touchline.protocol.MessageResult.Decoded) codec.decode(built.toByteArray())).kind();
         Envelope e = new Envelope(now[0], Direction.IN, Channel.FUMANOID, new InetSocketAddress("127.0.0.1", 4000 + robot),
-                robot, "x", m.setRobotID(robot).build(), new byte[10], null);
+                robot, kind, built, new byte[10], null);
         registry.accept(e);
         session.accept(e);
     }

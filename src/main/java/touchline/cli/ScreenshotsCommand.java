@@ -1,0 +1,114 @@
+package touchline.cli;
+
+import javafx.embed.swing.SwingFXUtils;
+import javafx.scene.image.WritableImage;
+import javafx.stage.Stage;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.model.OptionState;
+import touchline.transport.UdpConfig;
+import touchline.ui.ConsoleWindow;
+import touchline.ui.UiSettings;
+import touchline.ui.layout.LayoutNode;
+
+import javax.imageio.ImageIO;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Renders a PNG of each main view against three simulated robots into docs/screenshots (run it
+ * under {@code xvfb-run -a} on a machine without a screen): the demo layout, then each view
+ * filling the window.
+ */
+@Command(name = "screenshots", mixinStandardHelpOptions = true,
+        description = "Render a PNG of each main view against simulated robots (use xvfb-run without a screen).")
+final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer> {
+
+    @Option(names = "--out", defaultValue = "docs/screenshots", description = "output directory (default ${DEFAULT-VALUE})")
+    Path out;
+
+    @Option(names = "--light", description = "light theme")
+    boolean light;
+
+    /** view ID -> the robot-1 option it shows ("" for views without a source). */
+    static final Map<String, String> SHOTS = new java.util.LinkedHashMap<>();
+
+    static {
+        SHOTS.put("robots", "");
+        SHOTS.put("options", "");
+        SHOTS.put("debug-console", "");
+        SHOTS.put("network", "");
+        SHOTS.put("regions", "havimo.region");
+        SHOTS.put("plot", "demo.plotter");
+        SHOTS.put("table", "demo.table");
+        SHOTS.put("relative", "demo.relative");
+        SHOTS.put("field", "demo.field");
+        SHOTS.put("image", "demo.image");
+        SHOTS.put("text", "demo.text");
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        Files.createDirectories(out);
+        try (Console console = new Console(ConsoleConfig.defaults().withUdp(
+                UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+             SimulatedTeam team = SimulatedTeam.start(3, console.udp().localPort(), List.of())) {
+            FxThread.startToolkit();
+            Path layouts = Files.createTempDirectory("touchline-layouts");
+            ConsoleWindow window = FxThread.call(() -> new ConsoleWindow(console,
+                    new UiSettings(layouts, !light, true)).show(new Stage()));
+            if (!FxThread.await(() -> console.robots().robots().size() >= 3
+                    && console.options().options(1).listReceived(), 20_000)) {
+                System.err.println("the simulated robots did not show up");
+                return 1;
+            }
+            for (String option : SHOTS.values()) {
+                if (!option.isEmpty()) {
+                    console.setOption(1, option, true);
+                }
+            }
+            FxThread.await(() -> SHOTS.values().stream().filter(o -> !o.isEmpty()).allMatch(o ->
+                    console.options().options(1).option(o).map(OptionState::streaming).orElse(false)), 10_000);
+            Thread.sleep(3000); // let plots and logs fill
+            shoot(window, "demo-layout");
+            for (Map.Entry<String, String> s : SHOTS.entrySet()) {
+                String source = s.getValue().isEmpty() ? "" : "1/" + s.getValue();
+                FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                        List.of(new LayoutNode.Entry(s.getKey(), source))))));
+                Thread.sleep(1500);
+                shoot(window, s.getKey());
+            }
+            FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                    List.of(new LayoutNode.Entry("robots", ""))))));
+            FxThread.run(() -> window.quickOpen());
+            Thread.sleep(800);
+            FxThread.run(() -> {
+                for (javafx.stage.Window w : List.copyOf(javafx.stage.Window.getWindows())) {
+                    if (w instanceof Stage st && "Open view".equals(st.getTitle())) {
+                        write(st.getScene().snapshot(null), "quick-open");
+                        st.close();
+                    }
+                }
+            });
+            FxThread.run(() -> javafx.application.Platform.exit());
+        }
+        return 0;
+    }
+
+    private void shoot(ConsoleWindow window, String name) throws Exception {
+        FxThread.run(() -> write(window.scene().snapshot(null), name));
+        System.out.println("wrote " + out.resolve(name + ".png"));
+    }
+
+    private void write(WritableImage image, String name) {
+        try {
+            ImageIO.write(SwingFXUtils.fromFXImage(image, null), "png", out.resolve(name + ".png").toFile());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+}

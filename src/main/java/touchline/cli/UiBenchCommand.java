@@ -1,0 +1,209 @@
+package touchline.cli;
+
+import javafx.stage.Stage;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.model.OptionState;
+import touchline.model.RobotSnapshot;
+import touchline.transport.UdpConfig;
+import touchline.ui.ConsoleWindow;
+import touchline.ui.UiSettings;
+import touchline.ui.layout.LayoutNode;
+import touchline.ui.layout.LayoutNode.Branch;
+import touchline.ui.layout.LayoutNode.Entry;
+import touchline.ui.layout.LayoutNode.Leaf;
+
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * UI benchmark: the console window against simulated robots with every option on at a high
+ * rate. First a baseline with no view open, then the same traffic with every kind of view
+ * open; reports frames per second, packet-to-screen latency (datagram receive time to the
+ * pulse that shows it), heap, and where the FX thread's time went. Run under {@code xvfb-run}.
+ */
+@Command(name = "ui", mixinStandardHelpOptions = true,
+        description = "Benchmark the console UI (fps, packet-to-screen latency, heap) against simulated robots.")
+public final class UiBenchCommand implements java.util.concurrent.Callable<Integer> {
+
+    @Option(names = "--robots", defaultValue = "6", description = "simulated robots (default ${DEFAULT-VALUE})")
+    int robots;
+
+    @Option(names = "--rate", defaultValue = "50", description = "messages per second per option per robot (default ${DEFAULT-VALUE})")
+    int rate;
+
+    @Option(names = "--baseline-seconds", defaultValue = "60", description = "seconds with no view open (default ${DEFAULT-VALUE})")
+    int baselineSeconds;
+
+    @Option(names = "--seconds", defaultValue = "600", description = "seconds with the views open (default ${DEFAULT-VALUE})")
+    int seconds;
+
+    @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
+    String only;
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new UiBenchCommand()).execute(args));
+    }
+
+    /** One phase's figures. */
+    record Phase(String name, double fpsMean, double fpsMin, double p50, double p99, long shown, double packetsPerSecond,
+                 double heapMaxMb, double heapAfterGcFirstMinuteMb, double heapAfterGcEndMb, Map<String, Long> viewNanos,
+                 long frames) { }
+
+    @Override
+    public Integer call() throws Exception {
+        try (Console console = new Console(ConsoleConfig.defaults().withUdp(
+                UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+             SimulatedTeam team = SimulatedTeam.start(robots, console.udp().localPort(), List.of("--rate", Integer.toString(rate)))) {
+            FxThread.startToolkit();
+            ConsoleWindow window = FxThread.call(() -> new ConsoleWindow(console,
+                    new UiSettings(tempDir(), true, false)).show(new Stage()));
+            FxThread.run(() -> window.shell().restore(List.of()));
+            if (!FxThread.await(() -> allListsIn(console), 30_000)) {
+                System.err.println("not every simulated robot sent its option list");
+                return 1;
+            }
+            int switched = 0;
+            for (RobotSnapshot r : console.robots().robots()) {
+                for (OptionState o : console.options().options(r.id()).options()) {
+                    console.setOption(r.id(), o.name(), true);
+                    switched++;
+                }
+            }
+            System.out.printf(Locale.ROOT, "%d robots, %d options switched on at %d Hz%n", robots, switched, rate);
+            FxThread.await(() -> false, 5_000); // let every stream start
+            Phase baseline = phase("views closed (baseline)", console, window, baselineSeconds);
+            List<LayoutNode> layout = only == null ? benchLayout(robots)
+                    : List.of(new Leaf(0, List.of(new Entry(only, only.equals("field") ? "1/demo.field" : "1/" + sourceFor(only)))));
+            FxThread.run(() -> window.shell().restore(layout));
+            Phase open = phase("views open", console, window, seconds);
+            System.out.println();
+            System.out.println(header());
+            System.out.println(row(baseline));
+            System.out.println(row(open));
+            System.out.println();
+            System.out.println("FX thread time per frame by view (views open):");
+            open.viewNanos().forEach((id, ns) -> System.out.printf(Locale.ROOT, "  %-14s %.3f ms%n", id,
+                    ns / 1e6 / Math.max(1, open.frames())));
+            FxThread.run(javafx.application.Platform::exit);
+        }
+        return 0;
+    }
+
+    private static String sourceFor(String view) {
+        return switch (view) {
+            case "regions" -> "havimo.region";
+            case "plot" -> "demo.plotter";
+            case "image" -> "demo.image";
+            case "text" -> "demo.text";
+            case "relative" -> "demo.relative";
+            case "table" -> "demo.table";
+            default -> "";
+        };
+    }
+
+    private static java.nio.file.Path tempDir() {
+        try {
+            return Files.createTempDirectory("touchline-bench-layouts");
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private boolean allListsIn(Console console) {
+        List<RobotSnapshot> seen = console.robots().robots();
+        return seen.size() >= robots && seen.stream().allMatch(r -> console.options().options(r.id()).listReceived());
+    }
+
+    /** Every view kind on screen at once (robot 1), the other robots' overlays and plots in tabs. */
+    static List<LayoutNode> benchLayout(int robots) {
+        List<Entry> overlays = new ArrayList<>();
+        List<Entry> plots = new ArrayList<>();
+        for (int r = 1; r <= robots; r++) {
+            overlays.add(new Entry("regions", r + "/havimo.region"));
+            plots.add(new Entry("plot", r + "/demo.plotter"));
+        }
+        Leaf a = new Leaf(0, List.of(new Entry("robots", ""), new Entry("options", "")));
+        Leaf b = new Leaf(0, List.of(new Entry("debug-console", "")));
+        Leaf c = new Leaf(0, List.of(new Entry("network", "")));
+        Leaf d = new Leaf(0, List.of(new Entry("field", "1/demo.field")));
+        Leaf e = new Leaf(0, overlays);
+        Leaf f = new Leaf(0, plots);
+        Leaf g = new Leaf(0, List.of(new Entry("image", "1/demo.image"), new Entry("text", "1/demo.text")));
+        Leaf h = new Leaf(0, List.of(new Entry("relative", "1/demo.relative"), new Entry("table", "1/demo.table")));
+        Branch top = new Branch(false, List.of(0.25, 0.5, 0.75), List.of(a, b, c, d));
+        Branch bottom = new Branch(false, List.of(0.25, 0.5, 0.75), List.of(e, f, g, h));
+        return List.of(new Branch(true, List.of(0.5), List.of(top, bottom)));
+    }
+
+    private Phase phase(String name, Console console, ConsoleWindow window, int secs) throws Exception {
+        System.out.printf(Locale.ROOT, "%s: %d s%n", name, secs);
+        FxThread.run(() -> {
+            window.pulse().latency().reset();
+            window.pulse().takeRefreshNanos();
+        });
+        long startFrames = window.pulse().frames();
+        long startIn = console.udp().counters().datagramsIn();
+        long start = System.nanoTime();
+        double fpsSum = 0;
+        double fpsMin = Double.MAX_VALUE;
+        int samples = 0;
+        double heapMax = 0;
+        double heapFirstMinute = Double.NaN;
+        Runtime rt = Runtime.getRuntime();
+        for (int s = 1; s <= secs; s++) {
+            Thread.sleep(Math.max(0, start + s * 1_000_000_000L - System.nanoTime()) / 1_000_000);
+            double fps = window.pulse().fps();
+            if (s > 2) { // the first seconds include building the views
+                fpsSum += fps;
+                fpsMin = Math.min(fpsMin, fps);
+                samples++;
+            }
+            double used = (rt.totalMemory() - rt.freeMemory()) / 1e6;
+            heapMax = Math.max(heapMax, used);
+            if (s == Math.min(60, secs)) {
+                heapFirstMinute = heapAfterGc(rt);
+            }
+            if (s % 10 == 0) {
+                System.out.printf(Locale.ROOT, "  %4d s  %5.1f fps  p99 %6.1f ms  heap %6.1f MB  in %6.0f pkt/s%n", s, fps,
+                        window.pulse().latency().quantileMillis(0.99), used,
+                        (console.udp().counters().datagramsIn() - startIn) / ((System.nanoTime() - start) / 1e9));
+            }
+        }
+        double elapsed = (System.nanoTime() - start) / 1e9;
+        double pps = (console.udp().counters().datagramsIn() - startIn) / elapsed;
+        Map<String, Long> nanos = FxThread.call(() -> window.pulse().takeRefreshNanos());
+        long frames = window.pulse().frames() - startFrames;
+        double p50 = window.pulse().latency().quantileMillis(0.5);
+        double p99 = window.pulse().latency().quantileMillis(0.99);
+        long shown = window.pulse().latency().count();
+        return new Phase(name, fpsSum / Math.max(1, samples), samples == 0 ? 0 : fpsMin, p50, p99, shown, pps, heapMax,
+                heapFirstMinute, heapAfterGc(rt), nanos, frames);
+    }
+
+    private static double heapAfterGc(Runtime rt) {
+        System.gc();
+        return (rt.totalMemory() - rt.freeMemory()) / 1e6;
+    }
+
+    static String header() {
+        return "| phase | fps mean | fps min | latency p50 | latency p99 | items shown | packets/s in | heap max | heap after GC at 1 min | heap after GC at end |\n"
+                + "|---|---|---|---|---|---|---|---|---|---|";
+    }
+
+    static String row(Phase p) {
+        return String.format(Locale.ROOT, "| %s | %.1f | %.1f | %s | %s | %d | %.0f | %.0f MB | %.0f MB | %.0f MB |",
+                p.name(), p.fpsMean(), p.fpsMin(), ms(p.p50()), ms(p.p99()), p.shown(), p.packetsPerSecond(), p.heapMaxMb(),
+                p.heapAfterGcFirstMinuteMb(), p.heapAfterGcEndMb());
+    }
+
+    private static String ms(double v) {
+        return Double.isNaN(v) ? "–" : String.format(Locale.ROOT, "%.1f ms", v);
+    }
+}

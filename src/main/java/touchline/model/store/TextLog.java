@@ -1,0 +1,48 @@
+package touchline.model.store;
+
+import touchline.proto.Fumanoid;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+import java.util.List;
+
+/**
+ * The debug console's memory: every {@code DebugText} line, time-stamped on receipt, in one
+ * capped ring so a chatty robot costs bounded memory. Views filter by robot when they read.
+ */
+public final class TextLog implements EnvelopeSink {
+
+    public static final int DEFAULT_CAPACITY = 20_000;
+    private final SequencedRing<TextLine> lines;
+
+    public TextLog(int capacity) {
+        this.lines = new SequencedRing<>(capacity);
+    }
+
+    @Override
+    public void accept(Envelope e) {
+        if (e.direction() == Direction.IN && e.message() instanceof Fumanoid.Message m
+                && m.hasExtension(Fumanoid.debugText)) {
+            Fumanoid.DebugText t = m.getExtension(Fumanoid.debugText);
+            lines.append(new TextLine(e.timeMicros(), t.getTimestamp(), e.robotId(), t.getOption(), t.getText()));
+        }
+    }
+
+    /** Lines after {@code afterSeq} from one robot (or all when {@code robotId < 0}), at most {@code max}. */
+    public List<SequencedRing.Entry<TextLine>> since(long afterSeq, int robotId, int max) {
+        return lines.since(afterSeq, max, l -> robotId < 0 || l.robotId() == robotId);
+    }
+
+    public long version() {
+        return lines.version();
+    }
+
+    public int capacity() {
+        return lines.capacity();
+    }
+
+    public int size() {
+        return lines.size();
+    }
+}

@@ -1,0 +1,231 @@
+package touchline.ui;
+
+import atlantafx.base.theme.PrimerDark;
+import atlantafx.base.theme.PrimerLight;
+import javafx.application.Application;
+import javafx.scene.Scene;
+import javafx.scene.control.Alert;
+import javafx.scene.control.Menu;
+import javafx.scene.control.MenuBar;
+import javafx.scene.control.MenuItem;
+import javafx.scene.control.SeparatorMenuItem;
+import javafx.scene.control.TextInputDialog;
+import javafx.scene.input.KeyCode;
+import javafx.scene.input.KeyCodeCombination;
+import javafx.scene.input.KeyCombination;
+import javafx.scene.layout.BorderPane;
+import javafx.stage.Stage;
+import touchline.app.Console;
+import touchline.model.OptionState;
+import touchline.model.RobotSnapshot;
+import touchline.ui.layout.LayoutNode;
+import touchline.ui.layout.LayoutStore;
+
+import java.io.IOException;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The console's one window: menus (layouts, views, theme, help), the docking shell, the status
+ * bar, Ctrl+K quick-open, and the frame pulse that drives every view. Built on the FX thread
+ * from an already started {@link Console}; closing the window does not close the Console.
+ */
+public final class ConsoleWindow {
+
+    private final Console console;
+    private final UiSettings settings;
+    private final ViewRegistry registry = new ViewRegistry();
+    private final Shell shell;
+    private final ViewContext context;
+    private final StatusBar status;
+    private final FramePulse pulse;
+    private final LayoutStore layouts;
+    private final BorderPane root = new BorderPane();
+    private final Set<String> demoSwitched = new HashSet<>();
+    private final Menu layoutMenu = new Menu("Layout");
+    private Stage stage;
+    private boolean dark;
+
+    public ConsoleWindow(Console console, UiSettings settings) {
+        this.console = console;
+        this.settings = settings;
+        this.layouts = new LayoutStore(settings.layoutDir());
+        this.dark = settings.dark();
+        Shell[] holder = new Shell[1];
+        this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src));
+        this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
+        holder[0] = shell;
+        this.status = new StatusBar(console);
+        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep);
+        root.setTop(menus());
+        root.setCenter(shell.node());
+        root.setBottom(status);
+    }
+
+    /** Shows the window on {@code stage} with the demo layout, the "last" layout or the default. */
+    public ConsoleWindow show(Stage stage) {
+        this.stage = stage;
+        applyTheme();
+        javafx.geometry.Rectangle2D screen = javafx.stage.Screen.getPrimary().getVisualBounds();
+        Scene scene = new Scene(root, Math.min(1400, screen.getWidth()), Math.min(900, screen.getHeight()));
+        scene.getStylesheets().add(ConsoleWindow.class.getResource("touchline.css").toExternalForm());
+        scene.getStylesheets().add(software.coley.bentofx.Bento.class.getResource("/bento.css").toExternalForm());
+        scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
+        stage.setScene(scene);
+        stage.setTitle("Touchline — UDP port " + console.udp().localPort());
+        Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
+        shell.restore(last.orElseGet(DemoLayout::standard));
+        stage.setOnHiding(e -> {
+            saveQuietly("last");
+            pulse.stop();
+        });
+        stage.show();
+        pulse.start();
+        return this;
+    }
+
+    public Shell shell() { return shell; }
+    public FramePulse pulse() { return pulse; }
+    public StatusBar status() { return status; }
+    public LayoutStore layouts() { return layouts; }
+    public ViewRegistry registry() { return registry; }
+    public ViewContext context() { return context; }
+    public Scene scene() { return root.getScene(); }
+
+    public ConsoleWindow open(String viewId, ViewSource source) {
+        registry.byId(viewId).ifPresent(spec -> shell.open(spec, source));
+        return this;
+    }
+
+    public void saveLayout(String name) throws IOException {
+        layouts.save(name, shell.capture());
+        status.say("layout \"" + name + "\" saved in " + layouts.dir());
+        rebuildLayoutMenu();
+    }
+
+    public boolean loadLayout(String name) throws IOException {
+        Optional<List<LayoutNode>> l = layouts.load(name);
+        l.ifPresent(shell::restore);
+        status.say(l.isPresent() ? "layout \"" + name + "\" restored" : "no layout \"" + name + "\"");
+        return l.isPresent();
+    }
+
+    private Optional<List<LayoutNode>> loadQuietly(String name) {
+        try {
+            return layouts.load(name).filter(w -> !w.isEmpty());
+        } catch (IOException e) {
+            return Optional.empty();
+        }
+    }
+
+    private void saveQuietly(String name) {
+        try {
+            layouts.save(name, shell.capture());
+        } catch (IOException e) {
+            org.slf4j.LoggerFactory.getLogger(ConsoleWindow.class).warn("could not save layout: {}", e.toString());
+        }
+    }
+
+    public void setDark(boolean dark) {
+        this.dark = dark;
+        applyTheme();
+    }
+
+    private void applyTheme() {
+        String css = dark ? new PrimerDark().getUserAgentStylesheet() : new PrimerLight().getUserAgentStylesheet();
+        // the theme names a class-path resource; resolve it to a URL so any class loader finds it
+        java.net.URL url = ConsoleWindow.class.getResource(css);
+        Application.setUserAgentStylesheet(url != null ? url.toExternalForm() : css);
+    }
+
+    public void quickOpen() {
+        new QuickOpen(context).show(stage);
+    }
+
+    /** In demo mode: switch the demo options on for every robot once its list arrived. */
+    private void demoStep() {
+        if (!settings.demo() || pulse.frames() % 15 != 0) {
+            return;
+        }
+        for (RobotSnapshot r : console.robots().robots()) {
+            for (OptionState o : console.options().options(r.id()).options()) {
+                if (DemoLayout.DEMO_OPTIONS.contains(o.name()) && demoSwitched.add(r.id() + "/" + o.name())) {
+                    console.setOption(r.id(), o.name(), true);
+                }
+            }
+        }
+    }
+
+    private MenuBar menus() {
+        MenuItem save = new MenuItem("Save layout as…");
+        save.setOnAction(e -> {
+            TextInputDialog d = new TextInputDialog("my layout");
+            d.setHeaderText("Name of the layout");
+            d.showAndWait().ifPresent(name -> {
+                try {
+                    saveLayout(name);
+                } catch (IOException ex) {
+                    new Alert(Alert.AlertType.ERROR, "Could not save: " + ex.getMessage()).show();
+                }
+            });
+        });
+        MenuItem demo = new MenuItem("Default layout");
+        demo.setOnAction(e -> shell.restore(DemoLayout.standard()));
+        layoutMenu.getItems().addAll(save, demo, new SeparatorMenuItem());
+        layoutMenu.setOnShowing(e -> rebuildLayoutMenu());
+        rebuildLayoutMenu();
+
+        Menu views = new Menu("View");
+        for (ViewSpec s : registry.all()) {
+            if (s.id().equals(ViewRegistry.RAW)) {
+                continue;
+            }
+            MenuItem item = new MenuItem(s.title());
+            item.setOnAction(e -> shell.open(s, ViewSource.NONE));
+            views.getItems().add(item);
+        }
+        MenuItem quick = new MenuItem("Quick open…");
+        quick.setAccelerator(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN));
+        quick.setOnAction(e -> quickOpen());
+        views.getItems().addAll(new SeparatorMenuItem(), quick);
+
+        Menu theme = new Menu("Theme");
+        MenuItem darkItem = new MenuItem("Dark");
+        darkItem.setOnAction(e -> setDark(true));
+        MenuItem lightItem = new MenuItem("Light");
+        lightItem.setOnAction(e -> setDark(false));
+        theme.getItems().addAll(darkItem, lightItem);
+
+        Menu help = new Menu("Help");
+        MenuItem about = new MenuItem("Views…");
+        about.setOnAction(e -> {
+            StringBuilder s = new StringBuilder();
+            for (ViewSpec v : registry.all()) {
+                s.append(v.title()).append(": ").append(v.help()).append("\n\n");
+            }
+            s.append("Ctrl+K opens any view. Drag a tab to split or move it, or out of the window.");
+            Alert a = new Alert(Alert.AlertType.INFORMATION, s.toString());
+            a.setHeaderText("Touchline views");
+            a.show();
+        });
+        help.getItems().add(about);
+        return new MenuBar(layoutMenu, views, theme, help);
+    }
+
+    private void rebuildLayoutMenu() {
+        layoutMenu.getItems().remove(3, layoutMenu.getItems().size());
+        for (String name : layouts.names()) {
+            MenuItem item = new MenuItem("Open \"" + name + "\"");
+            item.setOnAction(e -> {
+                try {
+                    loadLayout(name);
+                } catch (IOException ex) {
+                    status.say("could not read layout " + name + ": " + ex.getMessage());
+                }
+            });
+            layoutMenu.getItems().add(item);
+        }
+    }
+}

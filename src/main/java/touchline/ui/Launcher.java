@@ -1,0 +1,16 @@
+package touchline.ui;
+
+import javafx.application.Application;
+
+/**
+ * Plain entry point: JavaFX refuses to start an Application subclass as the main class from
+ * the class path, so this class (which is not one) launches {@link TouchlineApp}.
+ */
+public final class Launcher {
+
+    private Launcher() { }
+
+    public static void main(String[] args) {
+        Application.launch(TouchlineApp.class, args);
+    }
+}

@@ -1,0 +1,107 @@
+package touchline.ui;
+
+import javafx.collections.FXCollections;
+import javafx.collections.transformation.FilteredList;
+import javafx.scene.Scene;
+import javafx.scene.control.ListView;
+import javafx.scene.control.TextField;
+import javafx.scene.input.KeyCode;
+import javafx.scene.layout.VBox;
+import javafx.stage.Modality;
+import javafx.stage.Stage;
+import javafx.stage.StageStyle;
+import javafx.stage.Window;
+import touchline.model.OptionState;
+import touchline.model.RobotSnapshot;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Ctrl+K: type a few letters, Enter opens. Lists every registered view and, for every robot's
+ * debug option, its visualisation.
+ */
+public final class QuickOpen {
+
+    /** One line of the list and what it opens. */
+    public record Choice(String label, ViewSpec spec, ViewSource source) {
+        @Override
+        public String toString() {
+            return label;
+        }
+    }
+
+    private final ViewContext context;
+
+    public QuickOpen(ViewContext context) {
+        this.context = context;
+    }
+
+    public List<Choice> choices() {
+        List<Choice> out = new ArrayList<>();
+        for (ViewSpec s : context.registry().all()) {
+            if (!s.id().equals(ViewRegistry.RAW)) {
+                out.add(new Choice(s.title() + " — " + s.help(), s, ViewSource.NONE));
+            }
+        }
+        for (RobotSnapshot r : context.console().robots().robots()) {
+            for (OptionState o : context.console().options().options(r.id()).options()) {
+                context.registry().forKind(o.kind()).ifPresent(spec -> out.add(new Choice(
+                        spec.title() + ": robot " + r.id() + " · " + o.name(), spec, new ViewSource(r.id(), o.name()))));
+            }
+        }
+        return out;
+    }
+
+    public Stage show(Window owner) {
+        Stage stage = new Stage(StageStyle.UTILITY);
+        stage.initOwner(owner);
+        stage.initModality(Modality.WINDOW_MODAL);
+        stage.setTitle("Open view");
+        TextField filter = new TextField();
+        filter.setId("quick-open-filter");
+        filter.setPromptText("type to find a view or option, Enter opens");
+        FilteredList<Choice> items = new FilteredList<>(FXCollections.observableArrayList(choices()));
+        ListView<Choice> list = new ListView<>(items);
+        list.setId("quick-open-list");
+        list.getSelectionModel().select(0);
+        filter.textProperty().addListener((o, a, b) -> {
+            String n = b.toLowerCase(Locale.ROOT);
+            items.setPredicate(c -> c.label().toLowerCase(Locale.ROOT).contains(n));
+            list.getSelectionModel().select(0);
+        });
+        Runnable go = () -> {
+            Choice c = list.getSelectionModel().getSelectedItem();
+            if (c != null) {
+                stage.close();
+                context.open(c.spec(), c.source());
+            }
+        };
+        filter.setOnAction(e -> go.run());
+        filter.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
+            if (e.getCode() == KeyCode.ESCAPE) {
+                stage.close();
+            } else if (e.getCode() == KeyCode.DOWN) {
+                list.getSelectionModel().selectNext();
+                e.consume();
+            } else if (e.getCode() == KeyCode.UP) {
+                list.getSelectionModel().selectPrevious();
+                e.consume();
+            }
+        });
+        list.setOnMouseClicked(e -> {
+            if (e.getClickCount() == 2) {
+                go.run();
+            }
+        });
+        Scene scene = new Scene(new VBox(6, filter, list), 640, 400);
+        if (owner != null && owner.getScene() != null) {
+            scene.getStylesheets().addAll(owner.getScene().getStylesheets());
+        }
+        stage.setScene(scene);
+        stage.show();
+        filter.requestFocus();
+        return stage;
+    }
+}

@@ -1,0 +1,234 @@
+package touchline.ui;
+
+import javafx.geometry.Orientation;
+import javafx.scene.layout.BorderPane;
+import software.coley.bentofx.Bento;
+import software.coley.bentofx.dockable.Dockable;
+import software.coley.bentofx.layout.DockContainer;
+import software.coley.bentofx.layout.container.DockContainerBranch;
+import software.coley.bentofx.layout.container.DockContainerLeaf;
+import software.coley.bentofx.layout.container.DockContainerRootBranch;
+import touchline.ui.layout.LayoutNode;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+
+/**
+ * The docking area (BentoFX): views live in tabs the user drags between split panes or out
+ * into their own windows. The shell knows which {@link View} each tab holds, so the frame
+ * pulse can refresh the open ones and a layout can be captured and rebuilt.
+ */
+public final class Shell {
+
+    /** An open view and the registry entry it came from. */
+    public record OpenView(ViewSpec spec, View view, Dockable dockable) { }
+
+    private final Bento bento = new Bento();
+    private final ViewRegistry registry;
+    private final Function<ViewSpec, Function<ViewSource, View>> maker;
+    private final BorderPane host = new BorderPane();
+    private final Map<Dockable, OpenView> open = new LinkedHashMap<>();
+    private DockContainerRootBranch root;
+
+    public Shell(ViewRegistry registry, Function<ViewSpec, Function<ViewSource, View>> maker) {
+        this.registry = registry;
+        this.maker = maker;
+        bento.events().addDockableCloseListener((path, d) -> forget(d));
+        root = bento.dockBuilding().root("main");
+        host.setCenter(root);
+    }
+
+    public BorderPane node() {
+        return host;
+    }
+
+    public Bento bento() {
+        return bento;
+    }
+
+    public Collection<OpenView> openViews() {
+        return List.copyOf(open.values());
+    }
+
+    private void forget(Dockable d) {
+        OpenView v = open.remove(d);
+        if (v != null) {
+            v.view().close();
+        }
+    }
+
+    /** Opens a view (or selects it when the same view with the same source is already open). */
+    public OpenView open(ViewSpec spec, ViewSource source) {
+        for (OpenView v : open.values()) {
+            ViewSource s = v.view().source();
+            if (v.spec().equals(spec) && (s == null || !source.isSet() || source.equals(s))) {
+                if (v.dockable().getContainer() != null) {
+                    v.dockable().getContainer().selectDockable(v.dockable());
+                }
+                return v;
+            }
+        }
+        OpenView v = create(spec, source);
+        DockContainerLeaf target = largestLeaf();
+        if (target == null) {
+            target = bento.dockBuilding().leaf();
+            root.addContainer(target);
+        }
+        target.addDockable(v.dockable());
+        target.selectDockable(v.dockable());
+        return v;
+    }
+
+    private OpenView create(ViewSpec spec, ViewSource source) {
+        View view = maker.apply(spec).apply(source);
+        Dockable d = bento.dockBuilding().dockable();
+        d.setTitle(spec.title() + (source.isSet() ? " · " + source.robotId() + " " + source.option() : ""));
+        d.setNode(view.node());
+        d.setTooltip(new javafx.scene.control.Tooltip(spec.help()));
+        OpenView v = new OpenView(spec, view, d);
+        open.put(d, v);
+        return v;
+    }
+
+    private DockContainerLeaf largestLeaf() {
+        DockContainerLeaf best = null;
+        double bestArea = -1;
+        for (DockContainerLeaf l : leaves(root)) {
+            double area = l.getWidth() * l.getHeight();
+            if (area > bestArea) {
+                best = l;
+                bestArea = area;
+            }
+        }
+        return best;
+    }
+
+    private static List<DockContainerLeaf> leaves(DockContainer c) {
+        List<DockContainerLeaf> out = new ArrayList<>();
+        if (c instanceof DockContainerLeaf l) {
+            out.add(l);
+        } else if (c instanceof DockContainerBranch b) {
+            for (DockContainer child : b.getChildContainers()) {
+                out.addAll(leaves(child));
+            }
+        }
+        return out;
+    }
+
+    /** The arrangement of every window (main first) as plain layout data. */
+    public List<LayoutNode> capture() {
+        List<LayoutNode> windows = new ArrayList<>();
+        windows.add(capture(root));
+        for (DockContainerRootBranch r : bento.getRootContainers()) {
+            if (r != root) {
+                windows.add(capture(r));
+            }
+        }
+        return windows;
+    }
+
+    private LayoutNode capture(DockContainer c) {
+        if (c instanceof DockContainerLeaf l) {
+            List<LayoutNode.Entry> views = new ArrayList<>();
+            int selected = 0;
+            for (Dockable d : l.getDockables()) {
+                OpenView v = open.get(d);
+                if (v != null) {
+                    if (d == l.getSelectedDockable()) {
+                        selected = views.size();
+                    }
+                    ViewSource s = v.view().source();
+                    views.add(new LayoutNode.Entry(v.spec().id(), s == null || !s.isSet() ? "" : s.encode()));
+                }
+            }
+            return new LayoutNode.Leaf(selected, views);
+        }
+        DockContainerBranch b = (DockContainerBranch) c;
+        List<Double> dividers = new ArrayList<>();
+        for (double d : b.getDividerPositions()) {
+            dividers.add(d);
+        }
+        List<LayoutNode> children = new ArrayList<>();
+        for (DockContainer child : b.getChildContainers()) {
+            children.add(capture(child));
+        }
+        return new LayoutNode.Branch(b.getOrientation() == Orientation.VERTICAL, dividers, children);
+    }
+
+    /**
+     * Replaces the arrangement: closes every view and builds the saved one. Views the registry
+     * no longer has are skipped; views whose robot is absent open and wait for it. Detached
+     * windows of the layout are docked into the main window.
+     */
+    public void restore(List<LayoutNode> windows) {
+        for (OpenView v : List.copyOf(open.values())) {
+            v.view().close();
+        }
+        open.clear();
+        DockContainerRootBranch fresh = bento.dockBuilding().root("main");
+        List<Runnable> dividers = new ArrayList<>();
+        for (LayoutNode w : windows) {
+            DockContainer c = build(w, dividers);
+            if (c == null) {
+                continue;
+            }
+            if (c instanceof DockContainerBranch b && fresh.getChildContainers().isEmpty() && windows.get(0) == w) {
+                fresh.setOrientation(b.getOrientation());
+                for (DockContainer child : List.copyOf(b.getChildContainers())) {
+                    b.removeContainer(child);
+                    fresh.addContainer(child);
+                }
+                double[] pos = ((LayoutNode.Branch) w).dividers().stream().mapToDouble(Double::doubleValue).toArray();
+                dividers.add(() -> fresh.setDividerPositions(pos));
+            } else {
+                fresh.addContainer(c);
+            }
+        }
+        root = fresh;
+        host.setCenter(root);
+        dividers.forEach(Runnable::run);
+        javafx.application.Platform.runLater(() -> dividers.forEach(Runnable::run));
+    }
+
+    private DockContainer build(LayoutNode node, List<Runnable> dividers) {
+        if (node instanceof LayoutNode.Leaf l) {
+            List<Dockable> made = new ArrayList<>();
+            for (LayoutNode.Entry e : l.views()) {
+                registry.byId(e.viewId()).ifPresent(spec -> made.add(create(spec, ViewSource.decode(e.source())).dockable()));
+            }
+            if (made.isEmpty()) {
+                return null;
+            }
+            DockContainerLeaf leaf = bento.dockBuilding().leaf();
+            made.forEach(leaf::addDockable);
+            leaf.selectDockable(made.get(Math.max(0, Math.min(made.size() - 1, l.selected()))));
+            return leaf;
+        }
+        LayoutNode.Branch b = (LayoutNode.Branch) node;
+        List<DockContainer> children = new ArrayList<>();
+        for (LayoutNode c : b.children()) {
+            DockContainer built = build(c, dividers);
+            if (built != null) {
+                children.add(built);
+            }
+        }
+        if (children.isEmpty()) {
+            return null;
+        }
+        if (children.size() == 1) {
+            return children.get(0);
+        }
+        DockContainerBranch branch = bento.dockBuilding().branch();
+        branch.setOrientation(b.vertical() ? Orientation.VERTICAL : Orientation.HORIZONTAL);
+        children.forEach(branch::addContainer);
+        if (b.dividers().size() == children.size() - 1) {
+            double[] pos = b.dividers().stream().mapToDouble(Double::doubleValue).toArray();
+            dividers.add(() -> branch.setDividerPositions(pos));
+        }
+        return branch;
+    }
+}

@@ -1,0 +1,87 @@
+package touchline.ui;
+
+import javafx.collections.FXCollections;
+import javafx.scene.control.ComboBox;
+import javafx.scene.control.Label;
+import javafx.scene.layout.HBox;
+import touchline.model.OptionState;
+import touchline.model.RobotOptions;
+import touchline.model.RobotSnapshot;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * The bar on top of a visualisation: which robot's option it shows, chosen from the options
+ * of the kinds it can draw, plus a status line (e.g. "waiting for data", "3 NaN skipped").
+ * A source from a saved layout stays selected even while its robot is absent.
+ */
+public final class SourceBar extends HBox {
+
+    private final ViewContext context;
+    private final Set<Integer> kinds;
+    private final ComboBox<ViewSource> choice = new ComboBox<>();
+    private final Label status = new Label();
+    private long seenOptionsVersion = -1;
+    private long seenRobotsVersion = -1;
+
+    SourceBar(ViewContext context, Set<Integer> kinds, ViewSource initial) {
+        super(8);
+        this.context = context;
+        this.kinds = kinds;
+        getStyleClass().add("source-bar");
+        choice.setPromptText("choose robot · option");
+        choice.setPrefWidth(260);
+        if (initial != null && initial.isSet()) {
+            choice.getItems().add(initial);
+            choice.getSelectionModel().select(initial);
+        }
+        status.getStyleClass().add("source-status");
+        getChildren().addAll(new Label("Source"), choice, status);
+        setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
+    }
+
+    public ViewSource selected() {
+        ViewSource s = choice.getValue();
+        return s == null ? ViewSource.NONE : s;
+    }
+
+    public void status(String text) {
+        if (!text.equals(status.getText())) {
+            status.setText(text);
+        }
+    }
+
+    /** Re-reads the option lists when they changed; cheap otherwise. */
+    public void refresh() {
+        long ov = context.console().options().version();
+        long rv = context.console().robots().version();
+        if (ov == seenOptionsVersion && rv == seenRobotsVersion) {
+            return;
+        }
+        seenOptionsVersion = ov;
+        seenRobotsVersion = rv;
+        List<ViewSource> found = new ArrayList<>();
+        for (RobotSnapshot r : context.console().robots().robots()) {
+            RobotOptions ro = context.console().options().options(r.id());
+            for (OptionState o : ro.options()) {
+                if (kinds.contains(o.kind())) {
+                    found.add(new ViewSource(r.id(), o.name()));
+                }
+            }
+        }
+        ViewSource current = choice.getValue();
+        if (current != null && current.isSet() && !found.contains(current)) {
+            found.add(0, current);
+        }
+        if (!found.equals(choice.getItems())) {
+            choice.setItems(FXCollections.observableArrayList(found));
+            if (current != null) {
+                choice.getSelectionModel().select(current);
+            } else if (!found.isEmpty()) {
+                choice.getSelectionModel().select(0);
+            }
+        }
+    }
+}

@@ -1,0 +1,86 @@
+package touchline.ui;
+
+import javafx.scene.control.Label;
+import javafx.scene.control.ProgressBar;
+import javafx.scene.control.Tooltip;
+import javafx.scene.layout.HBox;
+import javafx.scene.layout.Priority;
+import javafx.scene.layout.Region;
+import touchline.model.TrafficMeter;
+import touchline.transport.TrafficCounters;
+
+/**
+ * The bottom line: packets/s and bytes/s in and out, malformed and held counts, the team's
+ * traffic against the league's 1 Mbit/s limit as a small meter, and the UI's own frame rate.
+ * Recomputed twice a second from counters, never per packet.
+ */
+public final class StatusBar extends HBox {
+
+    private final touchline.app.Console console;
+    private final Label rates = new Label();
+    private final Label bad = new Label();
+    private final ProgressBar meter = new ProgressBar(0);
+    private final Label meterText = new Label();
+    private final Label fps = new Label();
+    private final Label message = new Label();
+    private long lastMicros;
+    private long lastIn;
+    private long lastBytesIn;
+    private long lastOut;
+    private long lastBytesOut;
+    private double packetsPerSecond;
+
+    public StatusBar(touchline.app.Console console) {
+        super(12);
+        this.console = console;
+        setId("status-bar");
+        setStyle("-fx-padding: 3 8 3 8; -fx-alignment: center-left;");
+        meter.setPrefWidth(120);
+        meter.setTooltip(new Tooltip("Team traffic (IP/UDP included) against the 1 Mbit/s league limit"));
+        rates.setId("status-rates");
+        meterText.setId("status-meter");
+        Region grow = new Region();
+        HBox.setHgrow(grow, Priority.ALWAYS);
+        getChildren().addAll(rates, bad, new Label("Team"), meter, meterText, message, grow, fps);
+    }
+
+    public double packetsPerSecond() {
+        return packetsPerSecond;
+    }
+
+    /** A one-line message (layout saved, command held, ...). */
+    public void say(String text) {
+        message.setText(text);
+    }
+
+    void refresh(long nowMicros, double framesPerSecond, LatencyProbe latency) {
+        if (nowMicros - lastMicros < 500_000) {
+            return;
+        }
+        TrafficCounters c = console.udp().counters();
+        double dt = lastMicros == 0 ? 1 : (nowMicros - lastMicros) / 1e6;
+        packetsPerSecond = (c.datagramsIn() - lastIn) / dt;
+        rates.setText(String.format("in %.0f pkt/s %s/s · out %.0f pkt/s %s/s", packetsPerSecond,
+                bytes((c.bytesIn() - lastBytesIn) / dt), (c.datagramsOut() - lastOut) / dt,
+                bytes((c.bytesOut() - lastBytesOut) / dt)));
+        bad.setText("malformed " + c.malformedIn() + " · held " + c.held());
+        bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
+        lastIn = c.datagramsIn();
+        lastBytesIn = c.bytesIn();
+        lastOut = c.datagramsOut();
+        lastBytesOut = c.bytesOut();
+        lastMicros = nowMicros;
+        TrafficMeter.Reading r = console.traffic().read();
+        double f = r.fractionOfLimit();
+        meter.setProgress(Math.min(1, f));
+        meter.setStyle(f > 1 ? "-fx-accent: #cf222e;" : f > 0.8 ? "-fx-accent: #bf8700;" : "-fx-accent: #2da44e;");
+        meterText.setText(String.format("%.0f kbit/s of 1 Mbit/s (%.0f %%)%s", r.teamBitsPerSecond() / 1000, f * 100,
+                r.overShare().isEmpty() ? "" : " · over share: " + r.overShare()));
+        double p99 = latency.quantileMillis(0.99);
+        fps.setText(String.format("%.0f fps", framesPerSecond) + (Double.isNaN(p99) ? "" : String.format(" · p99 %.0f ms", p99)));
+    }
+
+    static String bytes(double b) {
+        return b >= 1e6 ? String.format("%.1f MB", b / 1e6) : b >= 1e3 ? String.format("%.1f kB", b / 1e3) : String.format("%.0f B", b);
+    }
+}

@@ -1,0 +1,70 @@
+package touchline.ui;
+
+import touchline.proto.Fumanoid.DebugKind;
+import touchline.ui.views.DebugConsoleView;
+import touchline.ui.views.FieldView;
+import touchline.ui.views.ImageDataView;
+import touchline.ui.views.NetworkView;
+import touchline.ui.views.OptionsView;
+import touchline.ui.views.PlotView;
+import touchline.ui.views.RawDataView;
+import touchline.ui.views.RegionOverlayView;
+import touchline.ui.views.RelativePositionsView;
+import touchline.ui.views.RobotsView;
+import touchline.ui.views.TableDataView;
+import touchline.ui.views.TextView;
+
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * Every view the console offers, in one list: an entry here is all it takes for a view to
+ * appear in the View menu, in quick-open, in the help and in saved layouts, and (through its
+ * kinds) to open on double-click of a debug option.
+ */
+public final class ViewRegistry {
+
+    public static final String RAW = "raw";
+
+    private final List<ViewSpec> specs = List.of(
+            new ViewSpec("robots", "Robots", "Every robot seen: ID, name, team, battery, role, state, online/offline, "
+                    + "traffic and malformed packets; bad sources and notes below.", Set.of(),
+                    (c, s) -> new RobotsView(c)),
+            new ViewSpec("options", "Debug options", "Per robot the debug options it offers. Type to filter, Space "
+                    + "toggles, double-click opens the visualisation.", Set.of(), (c, s) -> new OptionsView(c)),
+            new ViewSpec("debug-console", "Debug console", "Time-stamped text from the robots; filter by robot, "
+                    + "search, pause, copy.", Set.of(), (c, s) -> new DebugConsoleView(c)),
+            new ViewSpec("network", "Network console", "Every datagram in and out with protobuf text and hex; "
+                    + "filter by robot, direction, kind.", Set.of(), (c, s) -> new NetworkView(c)),
+            new ViewSpec("field", "Field", "The field from above with every robot's reported position and role, "
+                    + "plus field objects of a chosen option.", Set.of(DebugKind.FIELD_VALUE), FieldView::new),
+            new ViewSpec("regions", "Region overlay", "HaViMo2 frame (blue), region-growing rectangles (red, filled in "
+                    + "their colour class) and the grid, with a legend.",
+                    Set.of(DebugKind.REGION_GROWING_VALUE, DebugKind.GRID_VALUE), RegionOverlayView::new),
+            new ViewSpec("plot", "Plot", "Line plot of an option's series (NaN skipped and counted, bursts decimated).",
+                    Set.of(DebugKind.PLOT_VALUE), PlotView::new),
+            new ViewSpec("table", "Table", "An option's table as the robot sends it.",
+                    Set.of(DebugKind.TABLE_VALUE), TableDataView::new),
+            new ViewSpec("relative", "Relative positions", "Objects around the robot, robot-centred (x forward).",
+                    Set.of(DebugKind.RELATIVE_POSITIONS_VALUE), RelativePositionsView::new),
+            new ViewSpec("image", "Image", "An option's image (GRAY8, RGB888, colour classes, JPEG, PNG); images "
+                    + "that do not decode are marked.", Set.of(DebugKind.IMAGE_VALUE), ImageDataView::new),
+            new ViewSpec("text", "Text", "An option's text lines.", Set.of(DebugKind.TEXT_VALUE), TextView::new),
+            new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
+                    + "text.", Set.of(), RawDataView::new));
+
+    public List<ViewSpec> all() {
+        return specs;
+    }
+
+    public Optional<ViewSpec> byId(String id) {
+        return specs.stream().filter(s -> s.id().equals(id)).findFirst();
+    }
+
+    /** The visualisation for a DebugKind number; unknown kinds get the raw view. */
+    public Optional<ViewSpec> forKind(int kind) {
+        Optional<ViewSpec> v = specs.stream().filter(s -> s.kinds().contains(kind)).findFirst();
+        return v.isPresent() ? v : byId(RAW);
+    }
+}

@@ -1,0 +1,127 @@
+package touchline.ui.views;
+
+import javafx.scene.Node;
+import javafx.scene.control.Button;
+import javafx.scene.control.Label;
+import javafx.scene.control.ListView;
+import javafx.scene.control.SelectionMode;
+import javafx.scene.control.TextField;
+import javafx.scene.control.ToggleButton;
+import javafx.scene.input.Clipboard;
+import javafx.scene.input.ClipboardContent;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.HBox;
+import touchline.model.store.SequencedRing;
+import touchline.model.store.TextLine;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.time.Instant;
+import java.time.ZoneId;
+import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Time-stamped text from the robots: filter by robot, search, pause, copy. It shows at most
+ * {@link #SHOWN} lines; the text log behind it is capped too, so a chatty robot cannot grow
+ * memory.
+ */
+public final class DebugConsoleView implements View {
+
+    static final int SHOWN = 5_000;
+    static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss.SSS").withZone(ZoneId.systemDefault());
+
+    private final ViewContext context;
+    private final ListView<String> lines = new ListView<>();
+    private final RobotFilter robot;
+    private final TextField search = new TextField();
+    private final ToggleButton pause = new ToggleButton("Pause");
+    private final Label count = new Label();
+    private final BorderPane root = new BorderPane();
+    private long seenSeq;
+    private boolean reload = true;
+
+    public DebugConsoleView(ViewContext context) {
+        this.context = context;
+        this.robot = new RobotFilter(context);
+        lines.setId("debug-lines");
+        lines.getSelectionModel().setSelectionMode(SelectionMode.MULTIPLE);
+        lines.setStyle("-fx-font-family: monospace;");
+        lines.setFixedCellSize(22); // no per-cell measuring: appending stays cheap
+        search.setPromptText("search");
+        search.setId("debug-search");
+        robot.valueProperty().addListener((o, a, b) -> reload = true);
+        search.textProperty().addListener((o, a, b) -> reload = true);
+        pause.selectedProperty().addListener((o, a, b) -> reload = !b);
+        Button copy = new Button("Copy");
+        copy.setOnAction(e -> copy());
+        Button clear = new Button("Clear");
+        clear.setOnAction(e -> {
+            lines.getItems().clear();
+        });
+        HBox bar = new HBox(8, new Label("Robot"), robot, search, pause, copy, clear, count);
+        bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
+        root.setTop(bar);
+        root.setCenter(lines);
+    }
+
+    private void copy() {
+        List<String> chosen = lines.getSelectionModel().getSelectedItems();
+        List<String> text = chosen.isEmpty() ? lines.getItems() : chosen;
+        ClipboardContent c = new ClipboardContent();
+        c.putString(String.join("\n", text));
+        Clipboard.getSystemClipboard().setContent(c);
+    }
+
+    static String format(TextLine l) {
+        return TIME.format(Instant.ofEpochSecond(0, l.timeMicros() * 1000)) + "  [" + l.robotId() + "] "
+                + l.option() + ": " + l.text();
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        robot.refresh();
+        if (pause.isSelected()) {
+            return;
+        }
+        if (reload) {
+            lines.getItems().clear();
+            seenSeq = 0;
+            reload = false;
+        }
+        if (context.stores().text().version() == seenSeq) {
+            return;
+        }
+        String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);
+        List<SequencedRing.Entry<TextLine>> fresh = context.stores().text().since(seenSeq, robot.robotId(), SHOWN);
+        seenSeq = context.stores().text().version();
+        if (fresh.isEmpty()) {
+            return;
+        }
+        List<String> add = new java.util.ArrayList<>(fresh.size());
+        for (SequencedRing.Entry<TextLine> e : fresh) {
+            String s = format(e.value());
+            if (needle.isEmpty() || s.toLowerCase(Locale.ROOT).contains(needle)) {
+                add.add(s);
+            }
+        }
+        frame.shown(fresh.get(fresh.size() - 1).value().timeMicros());
+        boolean atEnd = lines.getItems().isEmpty() || lines.getSelectionModel().isEmpty();
+        lines.getItems().addAll(add);
+        int over = lines.getItems().size() - SHOWN;
+        if (over > 0) {
+            lines.getItems().remove(0, over);
+        }
+        if (atEnd && !lines.getItems().isEmpty()) {
+            lines.scrollTo(lines.getItems().size() - 1);
+        }
+        count.setText(lines.getItems().size() + " lines");
+    }
+}

@@ -1,0 +1,161 @@
+package touchline.ui.views;
+
+import javafx.beans.property.ReadOnlyObjectWrapper;
+import javafx.geometry.Orientation;
+import javafx.scene.Node;
+import javafx.scene.control.ComboBox;
+import javafx.scene.control.Label;
+import javafx.scene.control.SplitPane;
+import javafx.scene.control.TableColumn;
+import javafx.scene.control.TableView;
+import javafx.scene.control.TextArea;
+import javafx.scene.control.TextField;
+import javafx.scene.control.ToggleButton;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.HBox;
+import touchline.model.store.SequencedRing;
+import touchline.protocol.Hex;
+import touchline.protocol.MessageText;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.time.Instant;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Function;
+import java.util.function.Predicate;
+
+/**
+ * Every datagram in and out: time, direction, peer, size, kind; the selected one as protobuf
+ * text (unknown extensions field by field) and as hex. Filters by robot, direction and kind;
+ * pause; at most {@link #SHOWN} rows.
+ */
+public final class NetworkView implements View {
+
+    static final int SHOWN = 2_000;
+
+    private final ViewContext context;
+    private final TableView<Envelope> table = new TableView<>();
+    private final RobotFilter robot;
+    private final ComboBox<String> direction = new ComboBox<>();
+    private final TextField kind = new TextField();
+    private final ToggleButton pause = new ToggleButton("Pause");
+    private final TextArea text = new TextArea();
+    private final TextArea hex = new TextArea();
+    private final Label count = new Label();
+    private final BorderPane root = new BorderPane();
+    private final MessageText messageText = new MessageText();
+    private final Hex hexDump = new Hex();
+    private long seenSeq;
+    private boolean reload = true;
+
+    public NetworkView(ViewContext context) {
+        this.context = context;
+        this.robot = new RobotFilter(context);
+        table.setId("network-table");
+        table.setFixedCellSize(24);
+        table.getColumns().add(column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96));
+        table.getColumns().add(column("Dir", e -> e.direction() == Direction.IN ? "in" : "out", 40));
+        table.getColumns().add(column("Peer", e -> e.peer() == null ? "" : e.peer().getAddress().getHostAddress() + ":" + e.peer().getPort(), 130));
+        table.getColumns().add(column("Robot", e -> e.robotId() < 0 ? "–" : Integer.toString(e.robotId()), 50));
+        table.getColumns().add(column("Size", e -> Integer.toString(e.size()), 50));
+        table.getColumns().add(column("Kind", Envelope::kind, 140));
+        table.getColumns().add(column("Channel", e -> e.channel().name(), 90));
+        table.getSelectionModel().selectedItemProperty().addListener((o, a, e) -> show(e));
+        direction.getItems().addAll("in and out", "in", "out");
+        direction.getSelectionModel().select(0);
+        kind.setPromptText("kind (e.g. status)");
+        robot.valueProperty().addListener((o, a, b) -> reload = true);
+        direction.valueProperty().addListener((o, a, b) -> reload = true);
+        kind.textProperty().addListener((o, a, b) -> reload = true);
+        pause.selectedProperty().addListener((o, a, b) -> reload = !b);
+        text.setEditable(false);
+        hex.setEditable(false);
+        text.setId("network-text");
+        text.setStyle("-fx-font-family: monospace;");
+        hex.setStyle("-fx-font-family: monospace;");
+        SplitPane detail = new SplitPane(text, hex);
+        SplitPane split = new SplitPane(table, detail);
+        split.setOrientation(Orientation.VERTICAL);
+        split.setDividerPositions(0.6);
+        HBox bar = new HBox(8, new Label("Robot"), robot, direction, kind, pause, count);
+        bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
+        root.setTop(bar);
+        root.setCenter(split);
+    }
+
+    private static TableColumn<Envelope, String> column(String title, Function<Envelope, String> value, double width) {
+        TableColumn<Envelope, String> c = new TableColumn<>(title);
+        c.setCellValueFactory(cell -> new ReadOnlyObjectWrapper<>(value.apply(cell.getValue())));
+        c.setPrefWidth(width);
+        c.setSortable(false);
+        return c;
+    }
+
+    private void show(Envelope e) {
+        if (e == null) {
+            return;
+        }
+        String body;
+        if (e.message() != null) {
+            body = messageText.render(e.message());
+        } else {
+            body = "(no decoded message)";
+        }
+        if (e.error() != null) {
+            body = "NOT DECODED: " + e.error() + "\n" + body;
+        }
+        text.setText(body);
+        hex.setText(e.size() + " bytes\n" + hexDump.dump(e.raw(), 4096));
+    }
+
+    private Predicate<Envelope> filter() {
+        int id = robot.robotId();
+        String dir = direction.getValue();
+        String k = kind.getText() == null ? "" : kind.getText().trim().toLowerCase(Locale.ROOT);
+        return e -> (id < 0 || e.robotId() == id)
+                && (dir == null || dir.equals("in and out") || (dir.equals("in") == (e.direction() == Direction.IN)))
+                && (k.isEmpty() || e.kind().toLowerCase(Locale.ROOT).contains(k));
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        robot.refresh();
+        if (pause.isSelected()) {
+            return;
+        }
+        if (reload) {
+            table.getItems().clear();
+            seenSeq = 0;
+            reload = false;
+        }
+        long v = context.stores().network().version();
+        if (v == seenSeq) {
+            return;
+        }
+        List<SequencedRing.Entry<Envelope>> fresh = context.stores().network().since(seenSeq, SHOWN, filter());
+        seenSeq = v;
+        if (fresh.isEmpty()) {
+            return;
+        }
+        List<Envelope> add = new java.util.ArrayList<>(fresh.size());
+        for (SequencedRing.Entry<Envelope> e : fresh) {
+            add.add(e.value());
+        }
+        frame.shown(add.get(add.size() - 1).timeMicros());
+        table.getItems().addAll(add);
+        int over = table.getItems().size() - SHOWN;
+        if (over > 0) {
+            table.getItems().remove(0, over);
+        }
+        count.setText(table.getItems().size() + " shown of " + context.stores().network().size() + " kept");
+    }
+}

@@ -1,0 +1,214 @@
+package touchline.ui.views;
+
+import javafx.scene.Node;
+import javafx.scene.control.Label;
+import javafx.scene.control.TextField;
+import javafx.scene.control.TreeCell;
+import javafx.scene.control.TreeItem;
+import javafx.scene.control.TreeView;
+import javafx.scene.input.KeyCode;
+import javafx.scene.input.MouseButton;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.HBox;
+import javafx.scene.layout.Priority;
+import touchline.model.OptionState;
+import touchline.model.RobotOptions;
+import touchline.model.RobotSnapshot;
+import touchline.transport.SendResult;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+import touchline.ui.ViewSource;
+import touchline.ui.ViewSpec;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * Per robot, the debug options it offers as a tree. Type to filter; Space (or a click on the
+ * box) toggles the selected option; double-click (or Enter) opens the visualisation for its
+ * data kind. Every state shown comes from the model: requesting the list, received, wanted,
+ * streaming, and why the last command was held.
+ */
+public final class OptionsView implements View {
+
+    /** A tree row: a robot (option == null) or one of its options. */
+    public record Row(int robotId, String label, OptionState option) { }
+
+    private final ViewContext context;
+    private final TreeView<Row> tree = new TreeView<>(new TreeItem<>(new Row(-1, "robots", null)));
+    private final TextField filter = new TextField();
+    private final Label status = new Label();
+    private final BorderPane root = new BorderPane();
+    private final Map<Integer, Boolean> collapsed = new HashMap<>();
+    private long seenOptions = -1;
+    private long seenRobots = -1;
+    private boolean rebuild = true;
+
+    public OptionsView(ViewContext context) {
+        this.context = context;
+        tree.setId("options-tree");
+        tree.setShowRoot(false);
+        tree.setCellFactory(t -> new TreeCell<>() {
+            @Override
+            protected void updateItem(Row row, boolean empty) {
+                super.updateItem(row, empty);
+                setText(empty || row == null ? null : row.label());
+                setStyle(empty || row == null || row.option() == null ? "-fx-font-weight: bold;"
+                        : row.option().streaming() ? "-fx-text-fill: #2da44e;" : "");
+            }
+        });
+        // a filter, not a handler: the tree's own key handling would take Space and Enter first
+        tree.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
+            if (e.getCode() == KeyCode.SPACE) {
+                toggleSelected();
+                e.consume();
+            } else if (e.getCode() == KeyCode.ENTER) {
+                openSelected();
+                e.consume();
+            }
+        });
+        tree.setOnMouseClicked(e -> {
+            if (e.getButton() == MouseButton.PRIMARY && e.getClickCount() == 2) {
+                openSelected();
+            }
+        });
+        filter.setPromptText("type to filter options");
+        filter.setId("options-filter");
+        filter.textProperty().addListener((o, a, b) -> rebuild = true);
+        HBox.setHgrow(filter, Priority.ALWAYS);
+        HBox bar = new HBox(8, filter);
+        bar.setStyle("-fx-padding: 4 8 4 8;");
+        root.setTop(bar);
+        root.setCenter(tree);
+        Label hint = new Label("Space: on/off   Double-click or Enter: open visualisation");
+        HBox bottom = new HBox(16, hint, status);
+        bottom.setStyle("-fx-padding: 2 8 2 8;");
+        root.setBottom(bottom);
+    }
+
+    private Optional<Row> selectedOption() {
+        TreeItem<Row> item = tree.getSelectionModel().getSelectedItem();
+        return item == null || item.getValue().option() == null ? Optional.empty() : Optional.of(item.getValue());
+    }
+
+    /** Flips the selected option's wanted state through the model (which sends the request). */
+    public void toggleSelected() {
+        selectedOption().ifPresent(r -> {
+            SendResult result = context.console().setOption(r.robotId(), r.option().name(), !r.option().wanted());
+            status.setText((r.option().wanted() ? "off: " : "on: ") + r.option().name() + " → " + result);
+            rebuild = true;
+        });
+    }
+
+    /** Opens the visualisation registered for the selected option's data kind. */
+    public void openSelected() {
+        selectedOption().ifPresent(r -> {
+            Optional<ViewSpec> spec = context.registry().forKind(r.option().kind());
+            if (spec.isPresent()) {
+                context.open(spec.get(), new ViewSource(r.robotId(), r.option().name()));
+            } else {
+                status.setText(r.option().name() + ": " + r.option().kindName() + " — no visualisation for it");
+            }
+        });
+    }
+
+    static String label(OptionState o) {
+        StringBuilder s = new StringBuilder(o.wanted() ? "☑ " : "☐ ").append(o.name()).append("   ").append(o.kindName());
+        if (o.streaming()) {
+            s.append(" · streaming");
+        } else if (o.wanted()) {
+            s.append(o.enabledOnRobot() ? " · on, waiting for data" : " · wanted, not yet on");
+        } else if (o.enabledOnRobot()) {
+            s.append(" · on at robot");
+        }
+        if (o.description() != null && !o.description().isEmpty()) {
+            s.append("   — ").append(o.description());
+        }
+        return s.toString();
+    }
+
+    static String robotLabel(RobotSnapshot r, RobotOptions o) {
+        String name = r.name() == null || r.name().isEmpty() ? "" : " " + r.name();
+        String list = o.listReceived() ? o.options().size() + " options"
+                : "requesting option list (" + o.listRequests() + " requests)";
+        String held = o.lastHoldReason() == null ? "" : " · held: " + o.lastHoldReason();
+        return "Robot " + r.id() + name + (r.online() ? "" : " (offline)") + " — " + list + held;
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        long ov = context.console().options().version();
+        long rv = context.console().robots().version();
+        // streaming flags age without a version change: re-read twice a second anyway
+        if (!rebuild && ov == seenOptions && rv == seenRobots && frame.frame() % 30 != 0) {
+            return;
+        }
+        seenOptions = ov;
+        seenRobots = rv;
+        rebuild = false;
+        String needle = filter.getText() == null ? "" : filter.getText().trim().toLowerCase(Locale.ROOT);
+        TreeItem<Row> selected = tree.getSelectionModel().getSelectedItem();
+        Row keep = selected == null ? null : selected.getValue();
+        for (TreeItem<Row> r : tree.getRoot().getChildren()) {
+            collapsed.put(r.getValue().robotId(), !r.isExpanded());
+        }
+        List<TreeItem<Row>> robots = new java.util.ArrayList<>();
+        TreeItem<Row> reselect = null;
+        for (RobotSnapshot r : context.console().robots().robots()) {
+            RobotOptions ro = context.console().options().options(r.id());
+            TreeItem<Row> robotItem = new TreeItem<>(new Row(r.id(), robotLabel(r, ro), null));
+            robotItem.setExpanded(!collapsed.getOrDefault(r.id(), false) || !needle.isEmpty());
+            for (OptionState o : ro.options()) {
+                if (!needle.isEmpty() && !o.name().toLowerCase(Locale.ROOT).contains(needle)) {
+                    continue;
+                }
+                TreeItem<Row> item = new TreeItem<>(new Row(r.id(), label(o), o));
+                robotItem.getChildren().add(item);
+                if (keep != null && keep.option() != null && keep.robotId() == r.id()
+                        && keep.option().name().equals(o.name())) {
+                    reselect = item;
+                }
+            }
+            if (keep != null && keep.option() == null && keep.robotId() == r.id()) {
+                reselect = robotItem;
+            }
+            if (needle.isEmpty() || !robotItem.getChildren().isEmpty()) {
+                robots.add(robotItem);
+            }
+        }
+        if (!sameRows(robots)) {
+            tree.getRoot().getChildren().setAll(robots);
+            if (reselect != null) {
+                tree.getSelectionModel().select(reselect);
+            }
+        }
+    }
+
+    private boolean sameRows(List<TreeItem<Row>> robots) {
+        List<TreeItem<Row>> old = tree.getRoot().getChildren();
+        if (old.size() != robots.size()) {
+            return false;
+        }
+        for (int i = 0; i < old.size(); i++) {
+            if (!old.get(i).getValue().equals(robots.get(i).getValue())
+                    || old.get(i).getChildren().size() != robots.get(i).getChildren().size()) {
+                return false;
+            }
+            for (int k = 0; k < old.get(i).getChildren().size(); k++) {
+                if (!old.get(i).getChildren().get(k).getValue().equals(robots.get(i).getChildren().get(k).getValue())) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+}

@@ -1,0 +1,47 @@
+package touchline.ui.views;
+
+import javafx.collections.FXCollections;
+import javafx.scene.control.ComboBox;
+import touchline.model.RobotSnapshot;
+import touchline.ui.ViewContext;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/** A "which robot" chooser ("all robots" or one ID) that follows the robots seen. */
+final class RobotFilter extends ComboBox<String> {
+
+    static final String ALL = "all robots";
+    private final ViewContext context;
+    private long seenVersion = -1;
+
+    RobotFilter(ViewContext context) {
+        this.context = context;
+        getItems().add(ALL);
+        getSelectionModel().select(ALL);
+    }
+
+    /** The chosen robot ID, or -1 for all. */
+    int robotId() {
+        String v = getValue();
+        return v == null || v.equals(ALL) ? -1 : Integer.parseInt(v.substring("robot ".length()));
+    }
+
+    void refresh() {
+        long v = context.console().robots().version();
+        if (v == seenVersion) {
+            return;
+        }
+        seenVersion = v;
+        List<String> items = new ArrayList<>();
+        items.add(ALL);
+        for (RobotSnapshot r : context.console().robots().robots()) {
+            items.add("robot " + r.id());
+        }
+        if (!items.equals(getItems())) {
+            String keep = getValue();
+            setItems(FXCollections.observableArrayList(items));
+            getSelectionModel().select(items.contains(keep) ? keep : ALL);
+        }
+    }
+}

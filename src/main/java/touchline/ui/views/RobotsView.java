@@ -1,0 +1,137 @@
+package touchline.ui.views;
+
+import javafx.beans.property.ReadOnlyObjectWrapper;
+import javafx.scene.Node;
+import javafx.scene.control.Label;
+import javafx.scene.control.SplitPane;
+import javafx.scene.control.TableCell;
+import javafx.scene.control.TableColumn;
+import javafx.scene.control.TableView;
+import javafx.scene.control.TextArea;
+import javafx.geometry.Orientation;
+import javafx.scene.layout.BorderPane;
+import touchline.model.RobotSnapshot;
+import touchline.model.SourceSnapshot;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * Every robot ever seen, one row each, with online/offline at a glance; below, the senders
+ * whose datagrams were rejected and the registry's notes (address changes, duplicate IDs).
+ * Rows are rebuilt at most twice a second: rates and "last seen" need no more.
+ */
+public final class RobotsView implements View {
+
+    private final ViewContext context;
+    private final TableView<RobotSnapshot> table = new TableView<>();
+    private final TextArea problems = new TextArea();
+    private final SplitPane root = new SplitPane();
+    private long lastRebuildMicros;
+    private long seenVersion = -1;
+
+    public RobotsView(ViewContext context) {
+        this.context = context;
+        table.setId("robot-table");
+        table.setPlaceholder(new Label("No robot seen yet: robots send keep-alives to UDP port "
+                + context.console().udp().localPort()));
+        TableColumn<RobotSnapshot, String> online = column("", r -> r.online() ? "●" : "○", 36);
+        online.setCellFactory(c -> new TableCell<>() {
+            @Override
+            protected void updateItem(String item, boolean empty) {
+                super.updateItem(item, empty);
+                setText(empty ? null : item);
+                RobotSnapshot r = empty ? null : getTableRow().getItem();
+                setStyle(r == null ? "" : r.online() ? "-fx-text-fill: #2da44e;" : "-fx-text-fill: #cf222e;");
+            }
+        });
+        table.getColumns().add(online);
+        table.getColumns().add(column("ID", r -> Integer.toString(r.id()), 44));
+        table.getColumns().add(column("Name", r -> text(r.name()), 100));
+        table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
+        table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
+        table.getColumns().add(column("Role", r -> text(r.role()), 90));
+        table.getColumns().add(column("State", r -> text(r.state()), 90));
+        table.getColumns().add(column("Game", r -> text(r.gameState()), 80));
+        table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
+        table.getColumns().add(column("Last seen", r -> ago(context.console().clock().nowMicros() - r.lastSeenMicros()), 76));
+        table.getColumns().add(column("Status", r -> r.online() ? "online" : "offline", 64));
+        table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
+        table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
+        table.getColumns().add(column("Malformed", r -> Long.toString(r.malformed()), 72));
+        table.getColumns().add(column("Address", r -> r.address() == null ? "" : r.address().getAddress().getHostAddress()
+                + ":" + r.address().getPort(), 130));
+        problems.setEditable(false);
+        problems.setPrefRowCount(4);
+        problems.setPromptText("Bad sources and notes appear here.");
+        root.setOrientation(Orientation.VERTICAL);
+        BorderPane bottom = new BorderPane(problems);
+        bottom.setTop(new Label(" Bad sources and notes"));
+        root.getItems().addAll(table, bottom);
+        root.setDividerPositions(0.75);
+    }
+
+    private static TableColumn<RobotSnapshot, String> column(String title, Function<RobotSnapshot, String> value, double width) {
+        TableColumn<RobotSnapshot, String> c = new TableColumn<>(title);
+        c.setCellValueFactory(cell -> new ReadOnlyObjectWrapper<>(value.apply(cell.getValue())));
+        c.setPrefWidth(width);
+        return c;
+    }
+
+    private static String text(String s) {
+        return s == null || s.isEmpty() ? "–" : s;
+    }
+
+    private static String number(int n) {
+        return n == RobotSnapshot.UNKNOWN ? "–" : Integer.toString(n);
+    }
+
+    static String duration(long seconds) {
+        if (seconds < 0) {
+            return "–";
+        }
+        return seconds >= 3600 ? String.format("%d:%02d:%02d", seconds / 3600, seconds / 60 % 60, seconds % 60)
+                : String.format("%d:%02d", seconds / 60, seconds % 60);
+    }
+
+    static String ago(long micros) {
+        double s = micros / 1e6;
+        return s < 1 ? "now" : s < 120 ? String.format("%.0f s ago", s) : String.format("%.0f min ago", s / 60);
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        long v = context.console().robots().version();
+        // keep-alives change the version many times a second; rates and "last seen" only need
+        // two updates a second, but a robot appearing shows at once
+        if (v == seenVersion || (frame.nowMicros() - lastRebuildMicros < 500_000
+                && context.console().robots().robots().size() == table.getItems().size())) {
+            return;
+        }
+        seenVersion = v;
+        lastRebuildMicros = frame.nowMicros();
+        List<RobotSnapshot> robots = context.console().robots().robots();
+        table.getItems().setAll(robots);
+        StringBuilder p = new StringBuilder();
+        for (SourceSnapshot s : context.console().robots().sources()) {
+            if (s.malformed() > 0) {
+                p.append(s.address()).append(": ").append(s.malformed()).append(" malformed of ").append(s.packets())
+                        .append(s.lastError() == null ? "" : " — last: " + s.lastError()).append('\n');
+            }
+        }
+        for (String n : context.console().robots().notes()) {
+            p.append(n).append('\n');
+        }
+        if (!p.toString().equals(problems.getText())) {
+            problems.setText(p.toString());
+        }
+    }
+}

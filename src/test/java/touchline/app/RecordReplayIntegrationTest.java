@@ -1,0 +1,79 @@
+package touchline.app;
+
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.model.RobotSnapshot;
+import touchline.testing.RobotProcess;
+import touchline.transport.Envelope;
+import touchline.transport.UdpConfig;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.BooleanSupplier;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * Records a simulated team through the console, replays the file into a fresh console's
+ * Envelope stream, and gets back the same envelopes (order, bytes, timestamps); the replayed
+ * robots appear in the model as they did live.
+ */
+@Tag("integration")
+class RecordReplayIntegrationTest {
+
+    private static void await(String what, long millis, BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.nanoTime() + millis * 1_000_000;
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                fail("timed out after " + millis + " ms waiting for: " + what);
+            }
+            Thread.sleep(10);
+        }
+    }
+
+    private static ConsoleConfig loopback() {
+        return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+    }
+
+    @Test
+    void aRecordedTeamReplaysIntoTheSameStream(@TempDir Path dir) throws Exception {
+        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "robot-side binaries not built");
+        Path file = dir.resolve("match.mcap");
+        List<Envelope> live = new CopyOnWriteArrayList<>();
+        try (Console console = new Console(loopback()).start()) {
+            console.startRecording(file);
+            console.bus().subscribe(live::add);
+            int port = console.udp().localPort();
+            try (RobotProcess a = RobotProcess.robot(1, port).start(); RobotProcess b = RobotProcess.robot(2, port).start()) {
+                await("both option lists", 5000, () -> console.options().options(1).listReceived()
+                        && console.options().options(2).listReceived());
+                console.setOption(1, "demo.plotter", true);
+                await("plots arrive", 5000, () -> live.stream().anyMatch(e -> e.kind().equals("debugPlot")));
+                Thread.sleep(500);
+            }
+            console.stopRecording();
+        }
+        assertTrue(live.size() > 20, "recorded " + live.size());
+
+        List<Envelope> replayed = new CopyOnWriteArrayList<>();
+        try (Console console = new Console(loopback())) {
+            console.setLiveListening(false);
+            console.bus().subscribe(replayed::add);
+            Replay replay = console.openReplay(file);
+            assertEquals(List.of(), replay.problems());
+            replay.setSpeed(50);
+            replay.play();
+            await("replay finished", 20_000, () -> replay.state().finished());
+            assertEquals(live.size(), replayed.size());
+            for (int i = 0; i < live.size(); i++) {
+                assertEquals(live.get(i), replayed.get(i), "envelope " + i);
+            }
+            List<Integer> ids = new ArrayList<>(console.robots().robots().stream().map(RobotSnapshot::id).toList());
+            assertEquals(List.of(1, 2), ids, "the replayed robots are in the model");
+        }
+    }
+}

@@ -1,0 +1,76 @@
+package touchline.model.store;
+
+import org.junit.jupiter.api.Test;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+class PlotStoreTest {
+
+    private static final long T0 = 1_700_000_000_000_000L;
+
+    @Test
+    void xIsSecondsSinceTheOriginAndSeriesAreKeptApart() {
+        PlotStore store = new PlotStore(100, T0);
+        store.accept(StoreEnvelopes.plot(T0 + 1_000_000, 1, "p", "a", 1.0));
+        store.accept(StoreEnvelopes.plot(T0 + 2_500_000, 1, "p", "a", 2.0));
+        store.accept(StoreEnvelopes.plot(T0 + 2_500_000, 1, "p", "b", 7.0));
+        PlotStore.Snapshot s = store.snapshot(1, "p");
+        assertEquals(2, s.series().size());
+        PlotStore.SeriesData a = s.series().get(0);
+        assertEquals(2, a.count());
+        assertEquals(1.0, a.x()[0], 1e-9);
+        assertEquals(2.5, a.x()[1], 1e-9);
+        assertEquals(2.0, a.y()[1], 1e-9);
+        assertNull(store.snapshot(2, "p"));
+    }
+
+    @Test
+    void skipsAndCountsNonFiniteValues() {
+        PlotStore store = new PlotStore(100, T0);
+        store.accept(StoreEnvelopes.plot(T0 + 1, 1, "p", "a", Double.NaN));
+        store.accept(StoreEnvelopes.plot(T0 + 2, 1, "p", "a", 3.0));
+        store.accept(StoreEnvelopes.plot(T0 + 3, 1, "p", "a", Double.POSITIVE_INFINITY));
+        PlotStore.Snapshot s = store.snapshot(1, "p");
+        assertEquals(2, s.skippedNonFinite());
+        assertEquals(1, s.series().get(0).count());
+        assertEquals(3.0, s.series().get(0).y()[0]);
+    }
+
+    @Test
+    void decimatesABurstOfTenThousandPointsKeepingItsExtremes() {
+        PlotStore store = new PlotStore(4000, T0);
+        double[] burst = new double[10_000];
+        for (int i = 0; i < burst.length; i++) {
+            burst[i] = Math.sin(i / 100.0);
+        }
+        burst[4321] = 99.0; // a spike must survive decimation
+        store.accept(StoreEnvelopes.plot(T0 + 1_000_000, 1, "p", "a", burst));
+        PlotStore.Snapshot s = store.snapshot(1, "p");
+        PlotStore.SeriesData a = s.series().get(0);
+        assertEquals(PlotStore.BURST_LIMIT, a.count());
+        assertEquals(1, s.decimatedBursts());
+        double max = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < a.count(); i++) {
+            max = Math.max(max, a.y()[i]);
+            if (i > 0) {
+                assertTrue(a.x()[i] >= a.x()[i - 1], "x must not run backwards");
+            }
+        }
+        assertEquals(99.0, max);
+    }
+
+    @Test
+    void ringDropsTheOldestPoints() {
+        PlotStore store = new PlotStore(10, T0);
+        for (int i = 0; i < 25; i++) {
+            store.accept(StoreEnvelopes.plot(T0 + i * 1000L, 1, "p", "a", i));
+        }
+        PlotStore.SeriesData a = store.snapshot(1, "p").series().get(0);
+        assertEquals(10, a.count());
+        assertEquals(15.0, a.y()[0]);
+        assertEquals(24.0, a.y()[9]);
+        assertEquals(25, store.version(1, "p"));
+    }
+}

@@ -1,0 +1,171 @@
+package touchline.ui;
+
+import javafx.scene.control.TableView;
+import javafx.scene.control.TreeCell;
+import javafx.scene.input.KeyCode;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.model.RobotSnapshot;
+import touchline.testing.RobotProcess;
+import touchline.ui.layout.LayoutNode;
+import touchline.ui.views.OptionsView;
+import touchline.ui.views.PlotView;
+import touchline.ui.views.RegionOverlayView;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import java.util.stream.Collectors;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The real console window (headless) against the real simulated robot. */
+@Tag("ui")
+@Tag("integration")
+class ConsoleUiTest {
+
+    @TempDir
+    Path layouts;
+    private ConsoleWindowFixture ui;
+
+    @BeforeEach
+    void open() throws Exception {
+        ui = new ConsoleWindowFixture(layouts);
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        ui.close();
+    }
+
+    private static void assumeRobot() {
+        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"),
+                "touchline-robot not built in " + RobotProcess.binDir());
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void aRobotAppearsInTheRobotView() throws Exception {
+        assumeRobot();
+        try (RobotProcess robot = RobotProcess.robot(7, ui.port()).start()) {
+            ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE));
+            ui.await(15, () -> {
+                TableView<RobotSnapshot> table = ui.robot.lookup("#robot-table").queryAs(TableView.class);
+                return table.getItems().stream().anyMatch(r -> r.id() == 7 && r.online() && r.teamId() == 13);
+            });
+        }
+    }
+
+    @Test
+    void togglingAnOptionInTheTreeShowsItsDataInTheVisualisation() throws Exception {
+        assumeRobot();
+        try (RobotProcess robot = RobotProcess.robot(3, ui.port()).start()) {
+            ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
+            ui.await(15, () -> optionCell(3, "demo.plotter").isPresent());
+            ui.robot.clickOn(optionCell(3, "demo.plotter").orElseThrow());
+            ui.robot.type(KeyCode.SPACE);
+            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().streaming());
+            ui.robot.doubleClickOn(optionCell(3, "demo.plotter").orElseThrow());
+            ui.await(10, () -> ui.view(PlotView.class) != null);
+            PlotView plot = ui.view(PlotView.class);
+            assertEquals(new ViewSource(3, "demo.plotter"), ui.fx(plot::source));
+            ui.await(10, () -> plot.points() > 0);
+
+            // the same with the keyboard only: select, Space, Enter
+            ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
+            ui.robot.clickOn(optionCell(3, "havimo.region").orElseThrow());
+            ui.robot.type(KeyCode.SPACE);
+            ui.await(10, () -> ui.console.options().options(3).option("havimo.region").orElseThrow().streaming());
+            ui.robot.type(KeyCode.ENTER);
+            ui.await(10, () -> ui.view(RegionOverlayView.class) != null);
+            RegionOverlayView overlay = ui.view(RegionOverlayView.class);
+            ui.await(10, () -> ui.robot.from(overlay.node()).lookup(".source-status").queryLabeled().getText()
+                    .contains("regions"));
+        }
+    }
+
+    private Optional<TreeCell<OptionsView.Row>> optionCell(int robotId, String option) throws Exception {
+        return ui.fx(() -> ui.robot.lookup(".tree-cell").<TreeCell<OptionsView.Row>>queryAll().stream()
+                .filter(c -> c.getItem() != null && c.getItem().option() != null && c.getItem().robotId() == robotId
+                        && c.getItem().option().name().equals(option))
+                .findFirst());
+    }
+
+    @Test
+    void aLayoutIsSavedAndRestored() throws Exception {
+        ui.fxRun(() -> {
+            ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("robots", "")))));
+            ui.window.open("network", ViewSource.NONE);
+            ui.window.open("plot", new ViewSource(4, "demo.plotter"));
+            ui.window.open("regions", new ViewSource(5, "havimo.region"));
+        });
+        Set<String> before = openViews();
+        ui.fxRun(() -> {
+            try {
+                ui.window.saveLayout("match day");
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+            ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("field", "")))));
+        });
+        assertEquals(Set.of("field"), openViews());
+        assertTrue(ui.fx(() -> ui.window.loadLayout("match day")));
+        assertEquals(before, openViews());
+        assertTrue(before.contains("plot 4/demo.plotter"), before.toString());
+        assertTrue(ui.window.layouts().names().contains("match day"));
+    }
+
+    @Test
+    void aLayoutWithAMissingViewOrRobotStillOpens() throws Exception {
+        java.nio.file.Files.writeString(layouts.resolve("old.layout"), """
+                touchline-layout 1
+                window
+                 branch vertical 0.5
+                  leaf 0
+                   view view-from-the-future
+                   view plot 99/demo.plotter
+                  gadget 3
+                   view robots
+                  leaf 7
+                   view options
+                """);
+        assertTrue(ui.fx(() -> ui.window.loadLayout("old")));
+        assertEquals(Set.of("plot 99/demo.plotter", "options"), openViews());
+        PlotView plot = ui.view(PlotView.class);
+        ui.await(5, () -> ui.robot.from(plot.node()).lookup(".source-status").queryLabeled().getText()
+                .contains("waiting for data from robot 99"));
+    }
+
+    private Set<String> openViews() throws Exception {
+        return ui.fx(() -> ui.window.shell().openViews().stream().map(v -> {
+            ViewSource s = v.view().source();
+            return v.spec().id() + (s != null && s.isSet() ? " " + s.encode() : "");
+        }).collect(Collectors.toSet()));
+    }
+
+    @Test
+    void quickOpenListsEveryViewAndOpensTheChosenOne() throws Exception {
+        QuickOpen quick = new QuickOpen(ui.window.context());
+        List<String> labels = ui.fx(() -> quick.choices().stream().map(QuickOpen.Choice::label).toList());
+        for (ViewSpec spec : ui.window.registry().all()) {
+            if (!spec.id().equals(ViewRegistry.RAW)) {
+                assertTrue(labels.stream().anyMatch(l -> l.startsWith(spec.title() + " — ")), spec.id());
+            }
+        }
+        ui.fxRun(() -> ui.window.shell().restore(List.of()));
+        ui.fxRun(ui.window::quickOpen);
+        ui.robot.clickOn("#quick-open-filter");
+        ui.robot.write("network");
+        ui.robot.type(KeyCode.ENTER);
+        ui.await(5, () -> openViews().contains("network"));
+        assertNotNull(ui.robot.lookup("#network-table").query());
+    }
+}
