@@ -32,9 +32,6 @@ public final class GameState7 extends FixedSizeFormat {
         this.humanoid = humanoid;
     }
 
-
-
-
     @Override
     void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.playersPerTeam());

@@ -31,9 +31,6 @@ public final class GameState8 extends FixedSizeFormat {
         this.humanoid = humanoid;
     }
 
-
-
-
     @Override
     void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());

@@ -46,8 +46,6 @@ public final class HlGameState12 extends FixedSizeFormat {
         return new HlGameState12("gc.hl12-640", 0x80, false);
     }
 
-
-
     @Override
     void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());

@@ -28,9 +28,6 @@ public final class SplGameState18 extends FixedSizeFormat {
         super("gc.spl18", VERSION, 1, SIZE);
     }
 
-
-
-
     @Override
     void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
