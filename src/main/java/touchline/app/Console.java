@@ -6,7 +6,7 @@ import touchline.model.DebugOptionSession;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
-import touchline.transport.gamecontroller.GcListener;
+import touchline.transport.gamecontroller.GameStateWatch;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
 import touchline.model.TrafficMeter;
@@ -55,7 +55,7 @@ public final class Console implements AutoCloseable {
     private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
     private final MatchMode matchMode = new MatchMode(GameClock.system());
-    private GcListener gcWatch;
+    private GameStateWatch gcWatch;
     private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
@@ -82,7 +82,7 @@ public final class Console implements AutoCloseable {
         this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, modelClock);
         this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
-        bus.subscribe(new GameStateWatch(matchMode));
+        bus.subscribe(new ReportedGameState(matchMode));
         setGate(() -> matchMode.hold("console request") ? Optional.of(matchMode.notice()) : Optional.empty());
         if (withModel) {
             bus.subscribe(robots);
@@ -115,9 +115,8 @@ public final class Console implements AutoCloseable {
             return;
         }
         try {
-            gcWatch = new GcListener(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
-                    (data, from) -> live.accept(new Envelope(clock.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from,
-                            Envelope.NO_ROBOT, "gc", null, data, null)), "touchline-gc-watch");
+            gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
+                    live, matchMode);
         } catch (IOException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot listen for GameControllers on port {}: {} "
                     + "(match mode still follows the robots' reported game state)", config.gameControllerPort(), e.toString());
