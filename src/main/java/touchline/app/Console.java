@@ -7,6 +7,8 @@ import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.EnvelopeBus;
 import touchline.transport.MicrosClock;
+import touchline.transport.ReliableStreamHandler;
+import touchline.transport.SendGate;
 import touchline.transport.SendResult;
 import touchline.transport.UdpTransport;
 
@@ -30,6 +32,7 @@ public final class Console implements AutoCloseable {
     private final TrafficMeter traffic;
     private final DebugOptionSession options;
     private final UdpTransport udp;
+    private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
     private final touchline.model.store.ViewStores stores;
 
@@ -38,18 +41,26 @@ public final class Console implements AutoCloseable {
     }
 
     public Console(ConsoleConfig config, MicrosClock clock) {
+        this(config, clock, true);
+    }
+
+    /** @param withModel false leaves the model unsubscribed (benchmarks of the bare transport) */
+    public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
         this.robots = new RobotRegistry(clock);
         this.traffic = new TrafficMeter(clock);
-        this.udp = new UdpTransport(config.udp(), codec, bus, clock);
+        this.reliable = new ReliableStreamHandler(bus, clock);
+        this.udp = new UdpTransport(config.udp(), codec, bus, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, clock);
-        bus.subscribe(robots);
-        bus.subscribe(traffic);
-        bus.subscribe(options);
         this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
-        bus.subscribe(stores);
-        robots.addPresenceListener(options);
+        if (withModel) {
+            bus.subscribe(robots);
+            bus.subscribe(traffic);
+            bus.subscribe(options);
+            bus.subscribe(stores);
+            robots.addPresenceListener(options);
+        }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "touchline-tick");
             t.setDaemon(true);
@@ -82,6 +93,13 @@ public final class Console implements AutoCloseable {
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
     public UdpTransport udp() { return udp; }
+    public ReliableStreamHandler reliable() { return reliable; }
+
+    /** Match mode and the like: what may go to robots right now (GameController packets aside). */
+    public void setGate(SendGate gate) {
+        udp.setGate(gate);
+        reliable.setGate(gate);
+    }
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }

@@ -12,8 +12,15 @@ import picocli.CommandLine.Command;
         subcommands = {
                 ListenCommand.class,
                 OptionsCommand.class,
+                BenchCommand.class,
+                StreamCommand.class,
                 ConsoleCommand.class,
                 ScreenshotsCommand.class,
+                RecordCommand.class,
+                ReplayCommand.class,
+                ExportCommand.class,
+                GcCommand.class,
+                NaoCommand.class,
         })
 public final class Main implements Runnable {
 

@@ -65,7 +65,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
             onList(e.robotId(), m.getExtension(Fumanoid.debugOptionList));
             return;
         }
-        String option = optionNameOf(m);
+        String option = optionNameOf(e, m);
         if (option != null) {
             synchronized (this) {
                 robot(e.robotId()).lastData.put(option, e.timeMicros());
@@ -74,14 +74,15 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     }
 
     /** The {@code option} field every data message carries (teams' own types too, by convention). */
-    static String optionNameOf(Fumanoid.Message m) {
-        for (Map.Entry<FieldDescriptor, Object> f : m.getAllFields().entrySet()) {
-            if (f.getKey().isExtension() && f.getValue() instanceof Message data) {
-                FieldDescriptor name = data.getDescriptorForType().findFieldByName("option");
-                if (name != null && name.getType() == FieldDescriptor.Type.STRING && data.hasField(name)) {
-                    return (String) data.getField(name);
-                }
-            }
+    private String optionNameOf(Envelope e, Fumanoid.Message m) {
+        FieldDescriptor ext = codec.kinds().byName(e.kind()).orElse(null);
+        if (ext == null || ext.getJavaType() != FieldDescriptor.JavaType.MESSAGE || !m.hasField(ext)) {
+            return null;
+        }
+        Message data = (Message) m.getField(ext);
+        FieldDescriptor name = data.getDescriptorForType().findFieldByName("option");
+        if (name != null && name.getType() == FieldDescriptor.Type.STRING && data.hasField(name)) {
+            return (String) data.getField(name);
         }
         return null;
     }

@@ -1,10 +1,10 @@
 package touchline.protocol;
 
-import com.google.protobuf.Descriptors.FieldDescriptor;
+import com.google.protobuf.CodedInputStream;
 import com.google.protobuf.InvalidProtocolBufferException;
+import com.google.protobuf.WireFormat;
 import touchline.proto.Fumanoid;
 
-import java.util.Map;
 
 /**
  * Decodes FUmanoids {@code Message} payloads with the extension registry and builds the
@@ -38,21 +38,30 @@ public final class MessageCodec {
         } catch (RuntimeException e) {
             return new MessageResult.Malformed("protobuf: " + e.getClass().getSimpleName());
         }
-        int extension = 0;
-        for (Map.Entry<FieldDescriptor, Object> field : message.getAllFields().entrySet()) {
-            if (field.getKey().isExtension()) {
-                extension = field.getKey().getNumber();
-                break;
-            }
-        }
-        if (extension == 0) {
-            for (int number : message.getUnknownFields().asMap().keySet()) {
-                extension = number;
-                break;
-            }
-        }
+        int extension = firstExtension(payload);
         String kind = extension == 0 ? "empty" : kinds.kindOf(extension);
         return new MessageResult.Decoded(message, extension, kind);
+    }
+
+    /**
+     * The number of the first field after robotID: the extension the message carries. Read from
+     * the bytes because asking the parsed message for all its fields costs more than the parse.
+     */
+    static int firstExtension(byte[] payload) {
+        try {
+            CodedInputStream in = CodedInputStream.newInstance(payload);
+            while (!in.isAtEnd()) {
+                int tag = in.readTag();
+                int field = WireFormat.getTagFieldNumber(tag);
+                if (field != 1) {
+                    return field;
+                }
+                in.skipField(tag);
+            }
+        } catch (java.io.IOException e) {
+            return 0; // cannot happen for bytes that parsed; treated as "no extension"
+        }
+        return 0;
     }
 
     private static String firstLine(String s) {

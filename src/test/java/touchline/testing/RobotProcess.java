@@ -20,6 +20,7 @@ public final class RobotProcess implements AutoCloseable {
     private final List<String> command;
     private Process process;
     private int port;
+    private final StringBuilder stdout = new StringBuilder();
 
     private RobotProcess(List<String> command) {
         this.command = command;
@@ -67,8 +68,14 @@ public final class RobotProcess implements AutoCloseable {
             throw new IOException("robot process did not report its port: " + command);
         }
         Thread drain = new Thread(() -> {
+            char[] buf = new char[4096];
             try {
-                out.transferTo(java.io.Writer.nullWriter());
+                int n;
+                while ((n = out.read(buf)) > 0) {
+                    synchronized (stdout) {
+                        stdout.append(buf, 0, n);
+                    }
+                }
             } catch (IOException ignored) {
                 // the process ended
             }
@@ -76,6 +83,13 @@ public final class RobotProcess implements AutoCloseable {
         drain.setDaemon(true);
         drain.start();
         return this;
+    }
+
+    /** Everything the process printed on stdout after its port line. */
+    public String stdout() {
+        synchronized (stdout) {
+            return stdout.toString();
+        }
     }
 
     public int port() {

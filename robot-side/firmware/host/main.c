@@ -1,0 +1,298 @@
+/* touchline-robot: the small-robot firmware core on the host. The core talks either to
+ * plain UDP (default) or, with --wifi-sim, to a simulated GS1500M serial Wi-Fi module
+ * over a socketpair, exactly as it would talk to the module's UART on the board.
+ *
+ *   touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]
+ *                   [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]
+ *                   [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]
+ *                   [--reliable-peer HOST:PORT] [--seed S] [--rto MS]
+ *
+ * First line on stdout: "listening on port <port>". */
+#define _POSIX_C_SOURCE 200809L
+#include <arpa/inet.h>
+#include <errno.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "fw_mathe.h"
+#include "fw_robot.h"
+#include "host_udp.h"
+#include "host_wifi.h"
+#include "sim_world.h"
+
+static volatile sig_atomic_t g_stop;
+static int32_t g_robot_id;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    g_stop = 1;
+}
+
+void fw_log(const char *what, const char *detail, int32_t value)
+{
+    fprintf(stderr, "robot %ld: %s%s%s (%ld)\n", (long)g_robot_id, what, detail ? ": " : "", detail ? detail : "",
+            (long)value);
+}
+
+static uint32_t now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint32_t)((uint64_t)ts.tv_sec * 1000u + (uint64_t)ts.tv_nsec / 1000000u);
+}
+
+static void usage(const char *why)
+{
+    fprintf(stderr,
+            "touchline-robot: %s\n"
+            "usage: touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]\n"
+            "                       [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]\n"
+            "                       [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]\n"
+            "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n",
+            why);
+    exit(2);
+}
+
+/* The applications on the reliable stream: print what arrives ("Lorem ipsum" receiver),
+ * send a file ("Lorem ipsum" sender), and the Mathe game. */
+typedef struct {
+    bool print;
+    bool mathe_on;
+    bool mathe_reported;
+    mathe_game mathe;
+    uint8_t *send_data;
+    size_t send_len, send_off;
+    uint16_t send_chunk;
+    bool send_reported;
+} stream_apps;
+
+static void apps_receive(void *ctx, const uint8_t *p, uint16_t n)
+{
+    stream_apps *a = ctx;
+    if (a->mathe_on) {
+        mathe_receive(&a->mathe, p, n);
+        return;
+    }
+    if (a->print) {
+        fwrite(p, 1, n, stdout);
+        fflush(stdout);
+    }
+}
+
+static void apps_poll(void *ctx, rs_stream *s, uint32_t now)
+{
+    stream_apps *a = ctx;
+    if (a->mathe_on) {
+        mathe_poll(&a->mathe, s, now);
+        if (mathe_done(&a->mathe) && !a->mathe_reported) {
+            a->mathe_reported = true;
+            printf("MATHE sent count=%lu result=%lu\n", (unsigned long)a->mathe.sent, (unsigned long)a->mathe.sent_result);
+            printf("MATHE received count=%lu result=%lu peer-says count=%lu result=%lu\n",
+                   (unsigned long)a->mathe.recv_count, (unsigned long)a->mathe.recv_result,
+                   (unsigned long)a->mathe.peer_count, (unsigned long)a->mathe.peer_result);
+            printf("MATHE %s\n", mathe_agrees(&a->mathe) ? "OK" : "MISMATCH");
+            fflush(stdout);
+        }
+        return;
+    }
+    if (a->send_data != NULL && a->send_off < a->send_len && rs_can_send(s)) {
+        size_t n = a->send_len - a->send_off;
+        if (n > a->send_chunk) n = a->send_chunk;
+        if (rs_send(s, a->send_data + a->send_off, (uint16_t)n, now)) a->send_off += n;
+    }
+    if (a->send_data != NULL && a->send_off == a->send_len && rs_can_send(s) && !a->send_reported) {
+        a->send_reported = true;
+        fw_log("reliable send complete", 0, (int32_t)a->send_len);
+    }
+}
+
+static uint8_t *read_file(const char *path, size_t *len)
+{
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    uint8_t *buf = NULL;
+    size_t cap = 0, n = 0;
+    if (f == NULL) return NULL;
+    for (;;) {
+        size_t got;
+        if (n == cap) {
+            cap = cap ? cap * 2 : 65536;
+            buf = realloc(buf, cap); /* host side only: the core never allocates */
+            if (buf == NULL) exit(1);
+        }
+        got = fread(buf + n, 1, cap - n, f);
+        if (got == 0) break;
+        n += got;
+    }
+    if (f != stdin) fclose(f);
+    *len = n;
+    return buf;
+}
+
+int main(int argc, char **argv)
+{
+    static robot_config cfg;
+    static stream_apps apps;
+    static fw_stream_app app;
+    static host_udp udp;
+    static host_wifi wifi;
+    static wlan_peer peer;
+    struct sockaddr_in console, peer_addr;
+    const char *console_arg = NULL, *peer_arg = NULL, *send_path = NULL;
+    char name[32];
+    long port = 3838;
+    bool wifi_sim = false, have_id = false;
+    uint32_t seed = 0, baud = 0;
+    int i, fd, actual;
+    struct sigaction sa;
+
+    memset(&cfg, 0, sizeof cfg);
+    cfg.team_id = 13;
+    cfg.framing = FW_FRAMING_LEGACY;
+    cfg.rate_hz = 10;
+    cfg.reliable_modulus = RS_DEFAULT_MODULUS;
+    cfg.name = NULL;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+#define NEED_VALUE() do { if (v == NULL) usage("missing value"); i++; } while (0)
+        if (strcmp(a, "--id") == 0) { NEED_VALUE(); cfg.robot_id = (int32_t)strtol(v, NULL, 10); have_id = true; }
+        else if (strcmp(a, "--team") == 0) { NEED_VALUE(); cfg.team_id = (uint32_t)strtoul(v, NULL, 10); }
+        else if (strcmp(a, "--name") == 0) { NEED_VALUE(); cfg.name = v; }
+        else if (strcmp(a, "--console") == 0) { NEED_VALUE(); console_arg = v; }
+        else if (strcmp(a, "--port") == 0) { NEED_VALUE(); port = strtol(v, NULL, 10); }
+        else if (strcmp(a, "--framing") == 0) {
+            NEED_VALUE();
+            if (strcmp(v, "legacy") == 0) cfg.framing = FW_FRAMING_LEGACY;
+            else if (strcmp(v, "length") == 0) cfg.framing = FW_FRAMING_LENGTH;
+            else usage("--framing must be legacy or length");
+        }
+        else if (strcmp(a, "--wifi-sim") == 0) wifi_sim = true;
+        else if (strcmp(a, "--baud") == 0) { NEED_VALUE(); baud = (uint32_t)strtoul(v, NULL, 10); }
+        else if (strcmp(a, "--rate") == 0) {
+            long r;
+            NEED_VALUE();
+            r = strtol(v, NULL, 10);
+            if (r < 1 || r > 1000) usage("--rate must be 1..1000");
+            cfg.rate_hz = (uint16_t)r;
+        }
+        else if (strcmp(a, "--reliable") == 0) cfg.reliable_enabled = true;
+        else if (strcmp(a, "--reliable-print") == 0) { cfg.reliable_enabled = true; apps.print = true; }
+        else if (strcmp(a, "--reliable-send") == 0) { NEED_VALUE(); cfg.reliable_enabled = true; send_path = v; }
+        else if (strcmp(a, "--mathe") == 0) {
+            NEED_VALUE();
+            cfg.reliable_enabled = true;
+            apps.mathe_on = true;
+            mathe_init(&apps.mathe, (uint32_t)strtoul(v, NULL, 10), 0);
+        }
+        else if (strcmp(a, "--reliable-peer") == 0) { NEED_VALUE(); cfg.reliable_enabled = true; peer_arg = v; }
+        else if (strcmp(a, "--seed") == 0) { NEED_VALUE(); seed = (uint32_t)strtoul(v, NULL, 10); }
+        else if (strcmp(a, "--rto") == 0) { NEED_VALUE(); cfg.reliable_rto_ms = (uint32_t)strtoul(v, NULL, 10); }
+        else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) usage("help");
+        else usage("unknown argument");
+#undef NEED_VALUE
+    }
+    if (!have_id) usage("--id is required");
+    if (console_arg == NULL) usage("--console HOST:PORT is required");
+    if (port < 0 || port > 65535) usage("--port must be 0..65535");
+    if (host_parse_address(console_arg, &console) != 0) usage("cannot resolve --console address");
+    g_robot_id = cfg.robot_id;
+    if (cfg.name == NULL) {
+        snprintf(name, sizeof name, "robot-%ld", (long)cfg.robot_id);
+        cfg.name = name;
+    }
+    if (apps.mathe_on) mathe_init(&apps.mathe, apps.mathe.total, seed ? seed : (uint32_t)cfg.robot_id * 2654435761u + 1u);
+    if (send_path != NULL) {
+        apps.send_data = read_file(send_path, &apps.send_len);
+        if (apps.send_data == NULL) usage("cannot read --reliable-send file");
+        apps.send_chunk = 1000;
+    }
+    if (peer_arg != NULL) {
+        if (host_parse_address(peer_arg, &peer_addr) != 0) usage("cannot resolve --reliable-peer address");
+        memcpy(peer.ip, &peer_addr.sin_addr.s_addr, 4);
+        peer.port = ntohs(peer_addr.sin_port);
+        cfg.reliable_peer = &peer;
+    }
+    app.receive = apps_receive;
+    app.poll = apps_poll;
+    app.ctx = &apps;
+    cfg.stream_app = &app;
+
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+
+    fd = host_udp_bind((uint16_t)port);
+    if (fd < 0) {
+        fprintf(stderr, "touchline-robot: cannot bind UDP port %ld: %s\n", port, strerror(errno));
+        return 1;
+    }
+    {
+        struct sockaddr_in a;
+        socklen_t alen = sizeof a;
+        getsockname(fd, (struct sockaddr *)&a, &alen);
+        actual = ntohs(a.sin_port);
+    }
+
+    sim_world_init(cfg.robot_id);
+    cfg.options = sim_world_options(&cfg.option_count);
+    cfg.position = sim_world_position;
+
+    if (wifi_sim) {
+        if (host_wifi_open(&wifi, fd, &console, (uint16_t)actual, baud) != 0) {
+            fprintf(stderr, "touchline-robot: cannot start the simulated GS1500M\n");
+            return 1;
+        }
+        wlan_use(&wifi.driver);
+    } else {
+        host_udp_open(&udp, fd, &console);
+        wlan_use(&udp.driver);
+    }
+    printf("listening on port %d\n", actual);
+    fflush(stdout);
+    fprintf(stderr, "robot %ld: sending to %s every %u ms, %s framing, %s\n", (long)cfg.robot_id, console_arg,
+            FW_KEEPALIVE_MS, cfg.framing == FW_FRAMING_LEGACY ? "legacy" : "length",
+            wifi_sim ? "through the simulated GS1500M" : "direct UDP");
+
+    robot_init(&cfg, now_ms());
+    while (!g_stop) {
+        struct pollfd p;
+        robot_poll(now_ms());
+        p.fd = wifi_sim ? host_wifi_poll_fd(&wifi) : fd;
+        p.events = POLLIN;
+        p.revents = 0;
+        (void)poll(&p, 1, 2);
+    }
+    {
+        const robot_counters *c = robot_stats();
+        fprintf(stderr,
+                "robot %ld: stopping; in %lu, handled %lu, malformed %lu, unknown extensions %lu, gc %lu (rejected %lu), "
+                "reliable %lu, out %lu (%lu bytes, %lu failed)\n",
+                (long)cfg.robot_id, (unsigned long)c->datagrams_in, (unsigned long)c->messages_handled,
+                (unsigned long)c->malformed, (unsigned long)c->unknown_ext, (unsigned long)c->gc_packets,
+                (unsigned long)c->gc_rejected, (unsigned long)c->reliable_segments, (unsigned long)c->messages_out,
+                (unsigned long)c->bytes_out, (unsigned long)c->send_failures);
+    }
+    if (wifi_sim) {
+        gs_sim_stats ms;
+        const gs_parser_stats *ps = &wifi.gs.parser.stats;
+        host_wifi_close(&wifi, &ms);
+        fprintf(stderr,
+                "robot %ld: GS1500M: serial parser %lu datagrams, %lu lines, %lu garbage lines, %lu resyncs, "
+                "%lu oversize; module %lu udp in (%lu dropped), %lu out, %lu failed, %lu bytes lost in %lu overflows\n",
+                (long)cfg.robot_id, (unsigned long)ps->datagrams, (unsigned long)ps->lines,
+                (unsigned long)ps->garbage_lines, (unsigned long)ps->resyncs, (unsigned long)ps->oversize,
+                (unsigned long)ms.udp_in, (unsigned long)ms.udp_dropped, (unsigned long)ms.udp_out,
+                (unsigned long)ms.send_failed, (unsigned long)ms.overflow_bytes, (unsigned long)ms.overflow_events);
+    }
+    close(fd);
+    free(apps.send_data);
+    return 0;
+}

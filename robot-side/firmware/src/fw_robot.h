@@ -1,0 +1,100 @@
+/* The robot's communication core: one polled step (robot_poll) receives and dispatches
+ * every waiting datagram, sends the Status keep-alive every 200 ms and the data of every
+ * debug option that is switched on, and drives the reliable stream. Static memory only;
+ * the platform supplies the network driver (fw_wlan.h), the clock (passed in) and
+ * fw_log(). */
+#ifndef FW_ROBOT_H
+#define FW_ROBOT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "fumanoid.pb.h"
+#include "fw_framing.h"
+#include "fw_reliable.h"
+#include "fw_wlan.h"
+
+#define FW_KEEPALIVE_MS 200u
+#define FW_MAX_OPTIONS 16u
+
+/* One outgoing message: the extension type and its submessage. Only one message is
+ * encoded at a time, so all types share one static union. */
+typedef struct {
+    const pb_extension_type_t *type;
+    union {
+        fumanoid_Status status;
+        fumanoid_DebugOptionList option_list;
+        fumanoid_DebugText text;
+        fumanoid_DebugPlot plot;
+        fumanoid_DebugTable table;
+        fumanoid_RegionGrowing regions;
+        fumanoid_Grid grid;
+        fumanoid_RelativePositions relative;
+        fumanoid_DebugImage image;
+        fumanoid_FieldObjects field;
+    } m;
+} fw_outgoing;
+
+/* Fills out (type and message) with the option's next data; false = nothing to send. */
+typedef bool (*fw_produce_fn)(uint32_t now, fw_outgoing *out);
+
+typedef struct {
+    const char *name;
+    const char *description;
+    uint32_t kind; /* a fumanoid_DebugKind value */
+    fw_produce_fn produce;
+} fw_option_def;
+
+/* What the world (simulation or real sensors) tells the keep-alive. */
+typedef void (*fw_position_fn)(uint32_t now, fumanoid_Position *p);
+
+/* An application on the reliable stream (e.g. the Lorem and Mathe tests). */
+typedef struct {
+    void (*receive)(void *ctx, const uint8_t *payload, uint16_t n);
+    void (*poll)(void *ctx, rs_stream *s, uint32_t now);
+    void *ctx;
+} fw_stream_app;
+
+typedef struct {
+    int32_t robot_id;
+    uint32_t team_id;
+    const char *name;
+    fw_framing framing;
+    uint16_t rate_hz;                /* data messages per second per enabled option */
+    const fw_option_def *options;
+    uint8_t option_count;
+    fw_position_fn position;         /* may be NULL */
+    bool reliable_enabled;           /* else datagrams that look like segments are errors */
+    uint8_t reliable_modulus;
+    uint32_t reliable_rto_ms;
+    const wlan_peer *reliable_peer;  /* first peer of the stream; NULL = the console */
+    const fw_stream_app *stream_app; /* may be NULL */
+} robot_config;
+
+typedef struct {
+    uint32_t datagrams_in;
+    uint32_t messages_handled;
+    uint32_t malformed;        /* framing errors and undecodable protobuf */
+    uint32_t unknown_ext;
+    uint32_t gc_packets;
+    uint32_t gc_rejected;
+    uint32_t reliable_segments;
+    uint32_t messages_out;
+    uint32_t send_failures;
+    uint32_t bytes_out;
+} robot_counters;
+
+void robot_init(const robot_config *cfg, uint32_t now);
+void robot_poll(uint32_t now);
+/* Classifies one received datagram and hands it to processData, the GameController
+ * receiver or the reliable stream. Public for tests and fuzzing. */
+void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint32_t now);
+const robot_counters *robot_stats(void);
+const char *robot_game_state(void);
+bool robot_option_enabled(const char *name);
+bool robot_network_ready(void);
+rs_stream *robot_stream(void);
+
+/* Platform hook: one line of diagnostics (stderr on the host, a no-op on the board). */
+void fw_log(const char *what, const char *detail, int32_t value);
+
+#endif

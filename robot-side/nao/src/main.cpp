@@ -1,0 +1,92 @@
+// touchline-nao-sim: the NAO robot side (RPC module + camera server) against the
+// simulated NAOqi broker. Prints "rpc listening on port <p>" and "camera listening on
+// port <p>" on stdout once both are bound; stops cleanly on SIGTERM/SIGINT.
+#include <csignal>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "camera_server.h"
+#include "log.h"
+#include "rpc_server.h"
+#include "simulated_broker.h"
+
+namespace {
+
+void usage(std::ostream& out) {
+  out << "usage: touchline-nao-sim [--rpc-port 5555] [--cam-port 5556] [--workers 4]\n"
+         "                         [--bind 127.0.0.1]\n"
+         "  port 0 lets the OS choose; the chosen ports are printed on stdout.\n";
+}
+
+bool parseInt(const std::string& text, int min, int max, int& out) {
+  try {
+    std::size_t used = 0;
+    int v = std::stoi(text, &used);
+    if (used != text.size() || v < min || v > max) return false;
+    out = v;
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace touchline::nao;
+  RpcOptions rpc;
+  CameraOptions cam;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      usage(std::cout);
+      return 0;
+    }
+    if (i + 1 >= argc) {
+      std::cerr << "missing value for " << arg << "\n";
+      usage(std::cerr);
+      return 2;
+    }
+    std::string value = argv[++i];
+    bool ok = true;
+    if (arg == "--rpc-port") ok = parseInt(value, 0, 65535, rpc.port);
+    else if (arg == "--cam-port") ok = parseInt(value, 0, 65535, cam.port);
+    else if (arg == "--workers") ok = parseInt(value, 1, 256, rpc.workers);
+    else if (arg == "--bind") rpc.bind = cam.bind = value;
+    else {
+      std::cerr << "unknown option " << arg << "\n";
+      usage(std::cerr);
+      return 2;
+    }
+    if (!ok) {
+      std::cerr << "bad value '" << value << "' for " << arg << "\n";
+      return 2;
+    }
+  }
+
+  // Block the stop signals in every thread (threads inherit the mask); main waits for them.
+  sigset_t stopSignals;
+  sigemptyset(&stopSignals);
+  sigaddset(&stopSignals, SIGINT);
+  sigaddset(&stopSignals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
+
+  try {
+    RpcCounters counters;
+    SimulatedBroker broker(1.0, &counters);
+    RpcServer rpcServer(broker, counters, rpc);
+    CameraServer cameraServer(cam);
+    std::cout << "rpc listening on port " << rpcServer.port() << "\n"
+              << "camera listening on port " << cameraServer.port() << std::endl;
+    int signal = 0;
+    sigwait(&stopSignals, &signal);
+    logLine(std::string("stopping on ") + strsignal(signal));
+    rpcServer.stop();
+    cameraServer.stop();
+  } catch (const std::exception& e) {
+    std::cerr << "touchline-nao-sim: " << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,235 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "simulated_broker.h"
+
+using namespace touchline::nao;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+// Blocking durations run at 1/20 of robot time: a 3 s posture change takes 150 ms.
+constexpr double kScale = 0.05;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string errorOf(SimulatedBroker& broker, const std::string& module, const std::string& method,
+                    const Params& params = {}) {
+  try {
+    broker.call(module, method, params);
+  } catch (const CallError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<double> floats(const Value& v) {
+  std::vector<double> out;
+  for (const auto& item : v.array()) out.push_back(item.float_());
+  return out;
+}
+
+std::vector<std::string> strings(const Value& v) {
+  std::vector<std::string> out;
+  for (const auto& item : v.array()) out.push_back(item.string());
+  return out;
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& item) {
+  return std::find(list.begin(), list.end(), item) != list.end();
+}
+}  // namespace
+
+TEST(Broker, UnknownModuleAndMethodAreErrors) {
+  SimulatedBroker broker(kScale);
+  EXPECT_NE(errorOf(broker, "ALNope", "ping").find("unknown module 'ALNope'"), std::string::npos);
+  EXPECT_NE(errorOf(broker, "ALMotion", "fly").find("unknown method 'fly'"), std::string::npos);
+}
+
+TEST(Broker, WrongParameterTypesAndCountsAreErrors) {
+  SimulatedBroker broker(kScale);
+  std::string wrongType = errorOf(broker, "ALTextToSpeech", "setVolume", {stringValue("loud")});
+  EXPECT_NE(wrongType.find("parameter 1 (volume) must be float, got string"), std::string::npos)
+      << wrongType;
+  std::string wrongCount = errorOf(broker, "ALTextToSpeech", "setVolume", {});
+  EXPECT_NE(wrongCount.find("expected 1 parameters, got 0"), std::string::npos) << wrongCount;
+  std::string badNames = errorOf(broker, "ALMotion", "setStiffnesses",
+                                 {stringValue("Tail"), floatValue(1.0f)});
+  EXPECT_NE(badNames.find("unknown joint or chain 'Tail'"), std::string::npos);
+}
+
+TEST(Broker, VoidValueAndErrorReturns) {
+  SimulatedBroker broker(kScale);
+  EXPECT_FALSE(broker.call("ALTextToSpeech", "setVolume", {floatValue(0.25f)}).has_value());
+  auto volume = broker.call("ALTextToSpeech", "getVolume", {});
+  ASSERT_TRUE(volume);
+  EXPECT_FLOAT_EQ(volume->float_(), 0.25f);
+  EXPECT_NE(errorOf(broker, "ALTextToSpeech", "setVolume", {floatValue(2.0f)}).find("0..1"),
+            std::string::npos);
+  // An int is accepted where a float is expected (MixedValue has no signed int anyway).
+  EXPECT_FALSE(broker.call("ALTextToSpeech", "setVolume", {intValue(1)}).has_value());
+}
+
+TEST(Broker, EveryModuleAnswersDiscovery) {
+  SimulatedBroker broker(kScale);
+  auto modules = strings(*broker.call("Robot", "getModuleList", {}));
+  for (const char* m : {"ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory", "ALBattery",
+                        "ALVideoDevice", "Robot"}) {
+    ASSERT_TRUE(contains(modules, m)) << m;
+    auto methods = strings(*broker.call(m, "getMethodList", {}));
+    for (const char* common : {"getMethodList", "getMethodHelp", "getModuleHelp", "ping", "version"})
+      EXPECT_TRUE(contains(methods, common)) << m << "." << common;
+    EXPECT_TRUE(broker.call(m, "ping", {})->bool_());
+    EXPECT_EQ(broker.call(m, "getModuleHelp", {})->array(0).string(), m);
+  }
+  Value help = *broker.call("ALMotion", "getMethodHelp", {stringValue("setAngles")});
+  ASSERT_EQ(help.array_size(), 4);
+  EXPECT_EQ(help.array(0).string(), "setAngles");
+  EXPECT_EQ(help.array(2).array_size(), 3);  // names, angles, fractionMaxSpeed
+  EXPECT_EQ(help.array(2).array(0).array(0).string(), "names");
+  EXPECT_EQ(help.array(3).string(), "void");
+  EXPECT_NE(errorOf(broker, "ALMotion", "getMethodHelp", {stringValue("fly")}), "");
+}
+
+TEST(Broker, AngleCommandsOnLimpJointsAreIgnoredAndAnglesAreClamped) {
+  SimulatedBroker broker(kScale);
+  broker.call("ALMotion", "setAngles", {stringValue("HeadYaw"), floatValue(1.0f), floatValue(1.0f)});
+  auto angle = floats(*broker.call("ALMotion", "getAngles", {stringValue("HeadYaw"), boolValue(false)}));
+  EXPECT_FLOAT_EQ(angle.at(0), 0.0f) << "stiffness 0: the command must not move the joint";
+
+  broker.call("ALMotion", "setStiffnesses", {stringValue("Head"), floatValue(1.0f)});
+  broker.call("ALMotion", "setAngles", {stringValue("HeadYaw"), floatValue(5.0f), floatValue(1.0f)});
+  angle = floats(*broker.call("ALMotion", "getAngles", {stringValue("HeadYaw"), boolValue(false)}));
+  EXPECT_NEAR(angle.at(0), 2.0857, 1e-4) << "clamped to the HeadYaw limit";
+  auto stiff = floats(*broker.call("ALMotion", "getStiffnesses", {stringValue("Head")}));
+  EXPECT_EQ(stiff, (std::vector<double>{1.0, 1.0}));
+  // The memory keys follow the actuator.
+  auto key = broker.call("ALMemory", "getData",
+                         {stringValue("Device/SubDeviceList/HeadYaw/Position/Actuator/Value")});
+  EXPECT_NEAR(key->float_(), 2.0857, 1e-4);
+}
+
+TEST(Broker, PostureChangeBlocksForBaseTimeOverSpeed) {
+  SimulatedBroker broker(kScale);
+  EXPECT_EQ(broker.call("ALRobotPosture", "getPosture", {})->string(), "Crouch");
+  auto start = Clock::now();
+  EXPECT_TRUE(broker.call("ALRobotPosture", "goToPosture", {stringValue("Stand"), floatValue(1.0f)})
+                  ->bool_());
+  double full = secondsSince(start);
+  EXPECT_EQ(broker.call("ALRobotPosture", "getPosture", {})->string(), "Stand");
+  start = Clock::now();
+  broker.call("ALRobotPosture", "goToPosture", {stringValue("Sit"), floatValue(0.5f)});
+  double half = secondsSince(start);
+  EXPECT_EQ(broker.call("ALRobotPosture", "getPostureFamily", {})->string(), "Sitting");
+  EXPECT_GE(full, 3.0 * kScale);      // Crouch -> Stand: 3 s at speed 1.0
+  EXPECT_GE(half, 6.0 * kScale);      // Stand -> Sit at 0.5: 6 s
+  EXPECT_GT(half / full, 1.6);
+  EXPECT_LT(half / full, 2.6);
+  EXPECT_NE(errorOf(broker, "ALRobotPosture", "goToPosture", {stringValue("Handstand"), floatValue(1.0f)})
+                .find("unknown posture"),
+            std::string::npos);
+  EXPECT_NE(errorOf(broker, "ALRobotPosture", "goToPosture", {stringValue("Stand"), floatValue(0.0f)}),
+            "");
+}
+
+TEST(Broker, WalkingNeedsStandingAndMovesTheRobot) {
+  SimulatedBroker broker(kScale);
+  EXPECT_NE(errorOf(broker, "ALMotion", "moveTo", {floatValue(0.2f), intValue(0), intValue(0)})
+                .find("not standing"),
+            std::string::npos);
+  broker.call("ALRobotPosture", "goToPosture", {stringValue("Stand"), floatValue(1.0f)});
+  broker.call("ALMotion", "moveInit", {});
+  broker.call("ALMotion", "moveTo", {floatValue(0.2f), intValue(0), intValue(0)});
+  auto pos = floats(*broker.call("ALMotion", "getRobotPosition", {boolValue(true)}));
+  EXPECT_NEAR(pos.at(0), 0.2, 0.02);
+  EXPECT_NEAR(pos.at(1), 0.0, 0.01);
+  broker.call("ALMotion", "move", {floatValue(0.05f), intValue(0), intValue(0)});
+  EXPECT_TRUE(broker.call("ALMotion", "moveIsActive", {})->bool_());
+  broker.call("ALMotion", "stopMove", {});
+  EXPECT_FALSE(broker.call("ALMotion", "moveIsActive", {})->bool_());
+}
+
+TEST(Broker, MemoryStoresValuesAndListsKeys) {
+  SimulatedBroker broker(kScale);
+  broker.call("ALMemory", "insertData", {stringValue("Team/Role"), stringValue("striker")});
+  EXPECT_EQ(broker.call("ALMemory", "getData", {stringValue("Team/Role")})->string(), "striker");
+  auto keys = strings(*broker.call("ALMemory", "getDataList", {stringValue("Team/")}));
+  EXPECT_EQ(keys, std::vector<std::string>{"Team/Role"});
+  EXPECT_NE(errorOf(broker, "ALMemory", "getData", {stringValue("Nope")}).find("no key"),
+            std::string::npos);
+  EXPECT_NE(errorOf(broker, "ALMemory", "insertData",
+                    {stringValue("Device/SubDeviceList/HeadYaw/Position/Sensor/Value"), intValue(1)})
+                .find("read-only"),
+            std::string::npos);
+  auto charge = broker.call("ALBattery", "getBatteryCharge", {});
+  EXPECT_LE(charge->int_(), 100u);
+  EXPECT_GT(charge->int_(), 90u);
+}
+
+TEST(Broker, SayBlocksForTheLengthOfTheText) {
+  SimulatedBroker broker(1.0);
+  auto start = Clock::now();
+  broker.call("ALTextToSpeech", "say", {stringValue("hello")});  // 5 chars x 60 ms
+  double took = secondsSince(start);
+  EXPECT_GE(took, 0.29);
+  EXPECT_LT(took, 1.0);
+}
+
+TEST(Broker, CallLogRecordsExecutedCallsButNotRobotInfo) {
+  SimulatedBroker broker(kScale);
+  broker.call("ALTextToSpeech", "say", {stringValue("marker")});
+  broker.call("Robot", "getModuleList", {});
+  auto log = strings(*broker.call("Robot", "getCallLog", {}));
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_EQ(log[0], "1 ALTextToSpeech.say(\"marker\")");
+  EXPECT_EQ(strings(*broker.call("ALMemory", "getData", {stringValue("Touchline/CallLog")})).size(), 2u);  // getData logs itself
+}
+
+TEST(Broker, VideoDeviceDeliversRawImages) {
+  SimulatedBroker broker(kScale);
+  std::string id = broker.call("ALVideoDevice", "subscribeCamera",
+                               {stringValue("test"), intValue(0), intValue(0), intValue(11), intValue(5)})
+                       ->string();
+  Value image = *broker.call("ALVideoDevice", "getImageRemote", {stringValue(id)});
+  EXPECT_EQ(image.array(0).int_(), 160u);
+  EXPECT_EQ(image.array(1).int_(), 120u);
+  EXPECT_EQ(image.array(2).int_(), 3u);
+  EXPECT_EQ(image.array(6).binary().size(), 160u * 120u * 3u);
+  EXPECT_NE(errorOf(broker, "ALVideoDevice", "subscribe",
+                    {stringValue("x"), intValue(9), intValue(11), intValue(5)})
+                .find("unknown resolution"),
+            std::string::npos);
+}
+
+TEST(Broker, ShutdownWakesBlockingCalls) {
+  SimulatedBroker broker(1.0);
+  std::thread caller([&] { broker.call("ALTextToSpeech", "say", {stringValue(std::string(500, 'a'))}); });
+  broker.call("ALMemory", "insertData", {stringValue("k"), intValue(1)});
+  auto start = Clock::now();
+  while (strings(*broker.call("Robot", "getCallLog", {})).size() < 2 && secondsSince(start) < 5) {
+    std::this_thread::yield();
+  }
+  broker.shutdown();
+  caller.join();
+  EXPECT_LT(secondsSince(start), 5.0);  // the 30 s say was cut short
+}
+
+TEST(Broker, MemoryIsBounded) {
+  SimulatedBroker broker(kScale);
+  std::string chunk(15u << 20, 'x');
+  for (int i = 0; i < 4; ++i)
+    broker.call("ALMemory", "insertData", {stringValue("blob" + std::to_string(i)), binaryValue(chunk)});
+  EXPECT_NE(errorOf(broker, "ALMemory", "insertData", {stringValue("blob4"), binaryValue(chunk)})
+                .find("storage limit"),
+            std::string::npos);
+  // Replacing or removing frees room again.
+  broker.call("ALMemory", "removeData", {stringValue("blob0")});
+  broker.call("ALMemory", "insertData", {stringValue("blob4"), binaryValue(chunk)});
+  broker.call("ALMemory", "insertData", {stringValue("blob4"), binaryValue("small")});
+  EXPECT_EQ(broker.call("ALMemory", "getData", {stringValue("blob4")})->binary(), "small");
+}

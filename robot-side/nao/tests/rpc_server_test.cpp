@@ -1,0 +1,226 @@
+// The RPC module over real sockets on loopback, ports chosen by the OS.
+#include <gtest/gtest.h>
+
+#include <sys/socket.h>
+#include <netinet/in.h>
+#include <arpa/inet.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "rpc_client.h"
+#include "rpc_server.h"
+#include "simulated_broker.h"
+
+using namespace touchline::nao;
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+class RpcServerTest : public ::testing::Test {
+ protected:
+  explicit RpcServerTest(double timeScale = 0.05)
+      : broker_(timeScale, &counters_),
+        server_(broker_, counters_, RpcOptions{"127.0.0.1", 0, 4}),
+        client_(context_, loopback(server_.port())) {}
+
+  ::nao::HAWActorRPCResponse call(const std::string& module, const std::string& method,
+                                  const Params& params = {}) {
+    auto response = rpcCall(client_, module, method, params);
+    EXPECT_TRUE(response) << module << "." << method << " timed out";
+    return response.value_or(::nao::HAWActorRPCResponse());
+  }
+
+  std::vector<std::string> callLog() {
+    std::vector<std::string> out;
+    auto response = call("Robot", "getCallLog");  // keep it alive while iterating
+    for (const auto& v : response.returnval().array()) out.push_back(v.string());
+    return out;
+  }
+
+  RpcCounters counters_;
+  SimulatedBroker broker_;
+  RpcServer server_;
+  zmq::context_t context_;
+  DealerClient client_;
+};
+
+class RpcServerRealTimeTest : public RpcServerTest {
+ protected:
+  RpcServerRealTimeTest() : RpcServerTest(1.0) {}
+};
+
+std::uint64_t nowMillis() {
+  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+      std::chrono::system_clock::now().time_since_epoch()).count());
+}
+
+bool logHas(const std::vector<std::string>& log, const std::string& text) {
+  return std::any_of(log.begin(), log.end(),
+                     [&](const std::string& e) { return e.find(text) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_F(RpcServerTest, ValueVoidAndErrorReplies) {
+  auto value = call("ALTextToSpeech", "getLanguage");
+  EXPECT_TRUE(value.has_returnval());
+  EXPECT_FALSE(value.has_error());
+  EXPECT_EQ(value.returnval().string(), "English");
+
+  auto voidReply = call("ALTextToSpeech", "setLanguage", {stringValue("German")});
+  EXPECT_FALSE(voidReply.has_returnval());
+  EXPECT_FALSE(voidReply.has_error());
+
+  auto error = call("ALNope", "ping");
+  EXPECT_FALSE(error.has_returnval());
+  EXPECT_NE(error.error().find("unknown module"), std::string::npos);
+
+  auto wrongType = call("ALMotion", "getAngles", {intValue(3), boolValue(true)});
+  EXPECT_NE(wrongType.error().find("must be str or Vec<str>"), std::string::npos);
+}
+
+TEST_F(RpcServerTest, DiscoveryOverTheWire) {
+  auto modules = call("Robot", "getModuleList").returnval();
+  EXPECT_EQ(modules.array_size(), 7);
+  auto methods = call("ALMotion", "getMethodList").returnval();
+  bool hasSetAngles = false;
+  for (const auto& m : methods.array()) hasSetAngles |= m.string() == "setAngles";
+  EXPECT_TRUE(hasSetAngles);
+}
+
+TEST_F(RpcServerTest, LateRequestsAreAnsweredWithAnErrorAndNeverRun) {
+  auto late = client_.roundTrip(
+      encodeRequest("ALTextToSpeech", "say", {stringValue("late-marker")}, nowMillis() - 1000), 5s);
+  ASSERT_TRUE(late);
+  ::nao::HAWActorRPCResponse response;
+  ASSERT_TRUE(response.ParseFromString(*late));
+  EXPECT_NE(response.error().find("deadline passed"), std::string::npos);
+  auto onTime = client_.roundTrip(
+      encodeRequest("ALTextToSpeech", "say", {stringValue("ontime-marker")}, nowMillis() + 5000), 5s);
+  ASSERT_TRUE(onTime);
+  auto log = callLog();
+  EXPECT_FALSE(logHas(log, "late-marker"));
+  EXPECT_TRUE(logHas(log, "ontime-marker"));
+  EXPECT_EQ(counters_.deadlinePassed, 1u);
+}
+
+TEST_F(RpcServerTest, GarbagePayloadGetsAClearErrorAndServingContinues) {
+  auto reply = client_.roundTrip("\x08\xff\xff\xff garbage", 5s);
+  ASSERT_TRUE(reply);
+  ::nao::HAWActorRPCResponse response;
+  ASSERT_TRUE(response.ParseFromString(*reply));
+  EXPECT_NE(response.error().find("bad request"), std::string::npos);
+  EXPECT_FALSE(response.has_returnval());
+  EXPECT_TRUE(call("ALMotion", "ping").returnval().bool_());
+}
+
+TEST_F(RpcServerTest, WrongFrameCountsAreDroppedAndServingContinues) {
+  client_.sendFrames({"only-one-frame"});
+  client_.sendFrames({"id", "not-empty-delimiter", "payload"});
+  client_.sendFrames({"a", "b", "c", "d", "e"});
+  EXPECT_TRUE(call("ALMotion", "ping").returnval().bool_());
+  EXPECT_EQ(counters_.malformedEnvelopes, 3u);
+}
+
+TEST_F(RpcServerTest, RawTcpGarbageDoesNotHurtTheServer) {
+  int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(server_.port()));
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  std::string junk(4096, '\xAB');
+  EXPECT_GT(::write(fd, junk.data(), junk.size()), 0);
+  ::close(fd);
+  EXPECT_TRUE(call("ALMotion", "ping").returnval().bool_());
+}
+
+TEST_F(RpcServerTest, TooDeepNestingIsRejected) {
+  Value deep = intValue(1);
+  for (int i = 1; i < 40; ++i) deep = arrayValue({deep});
+  auto response = call("ALMemory", "insertData", {stringValue("deep"), deep});
+  EXPECT_NE(response.error().find("nested deeper than 32"), std::string::npos) << response.error();
+  EXPECT_TRUE(call("ALMotion", "ping").returnval().bool_());
+}
+
+TEST_F(RpcServerTest, FiftyMegabyteBinaryIsRejectedAndServingContinues) {
+  auto response = call("ALMemory", "insertData",
+                       {stringValue("big"), binaryValue(std::string(50u << 20, 'x'))});
+  EXPECT_NE(response.error().find("exceeds the limit"), std::string::npos) << response.error();
+  EXPECT_EQ(counters_.oversize, 1u);
+  EXPECT_TRUE(call("ALMotion", "ping").returnval().bool_());
+  EXPECT_NE(call("ALMemory", "getData", {stringValue("big")}).error(), "");
+}
+
+// Issue 6: a 3-second posture change runs while 20 short calls all answer within 100 ms.
+TEST_F(RpcServerRealTimeTest, ShortCallsAnswerWhileAPostureChangeRuns) {
+  auto start = Clock::now();
+  std::string postureId =
+      client_.send(encodeRequest("ALRobotPosture", "goToPosture", {stringValue("Stand"), floatValue(1.0f)}));
+  // Wait until a worker is executing it (the call log says so), then fire the short calls.
+  zmq::context_t otherContext;
+  DealerClient other(otherContext, loopback(server_.port()));
+  auto waitStart = Clock::now();
+  while (!logHas([&] {
+           std::vector<std::string> out;
+           auto r = rpcCall(other, "Robot", "getCallLog");
+           if (r) for (const auto& v : r->returnval().array()) out.push_back(v.string());
+           return out;
+         }(),
+                 "goToPosture")) {
+    ASSERT_LT(Clock::now() - waitStart, 2s);
+  }
+  for (int i = 0; i < 20; ++i) {
+    auto sent = Clock::now();
+    auto method = i % 2 ? "getPosture" : "ping";
+    auto module = i % 2 ? "ALRobotPosture" : "ALMotion";
+    auto reply = rpcCall(other, module, method, {}, 1000ms);
+    auto took = Clock::now() - sent;
+    ASSERT_TRUE(reply) << "short call " << i << " timed out";
+    EXPECT_FALSE(reply->has_error()) << reply->error();
+    EXPECT_LT(took, 100ms) << "short call " << i << " took "
+                           << std::chrono::duration_cast<std::chrono::milliseconds>(took).count() << " ms";
+  }
+  auto postureReply = client_.receive(5000ms);
+  ASSERT_TRUE(postureReply);
+  EXPECT_EQ(postureReply->first, postureId);
+  EXPECT_GE(Clock::now() - start, 2900ms);
+  ::nao::HAWActorRPCResponse response;
+  ASSERT_TRUE(response.ParseFromString(postureReply->second));
+  EXPECT_TRUE(response.returnval().bool_());
+}
+
+TEST_F(RpcServerTest, ManyCallsInFlightOnOneDealerAreMatchedById) {
+  std::vector<std::string> ids;
+  for (int i = 0; i < 10; ++i) {
+    ids.push_back(client_.send(encodeRequest("ALMemory", "insertData",
+                                             {stringValue("k" + std::to_string(i)), intValue(i)})));
+  }
+  std::vector<std::string> seen;
+  for (int i = 0; i < 10; ++i) {
+    auto reply = client_.receive(5000ms);
+    ASSERT_TRUE(reply);
+    seen.push_back(reply->first);
+  }
+  std::sort(ids.begin(), ids.end());
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(ids, seen);
+  EXPECT_EQ(call("ALMemory", "getData", {stringValue("k7")}).returnval().int_(), 7u);
+}
+
+TEST(RpcServerStop, StopJoinsWhileACallBlocks) {
+  RpcCounters counters;
+  SimulatedBroker broker(1.0, &counters);
+  auto server = std::make_unique<RpcServer>(broker, counters, RpcOptions{"127.0.0.1", 0, 2});
+  zmq::context_t context;
+  DealerClient client(context, loopback(server->port()));
+  client.send(encodeRequest("ALTextToSpeech", "say", {stringValue(std::string(300, 'a'))}));
+  while (broker.callLog().total() == 0) std::this_thread::yield();
+  auto start = Clock::now();
+  server.reset();
+  EXPECT_LT(Clock::now() - start, 2s);  // the 18 s say was interrupted
+}

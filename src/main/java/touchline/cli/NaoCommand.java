@@ -1,0 +1,230 @@
+package touchline.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import touchline.protocol.nao.ParamSyntax;
+import touchline.transport.nao.CallOutcome;
+import touchline.transport.nao.CameraFrame;
+import touchline.transport.nao.CameraSettings;
+import touchline.transport.nao.ConnectionState;
+import touchline.transport.nao.NaoCall;
+import touchline.transport.nao.NaoCameraStream;
+import touchline.transport.nao.NaoLink;
+import touchline.transport.nao.NaoLinkConfig;
+
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * {@code touchline nao ...}: drive a NAO (or the simulated one) from the command line over
+ * the same {@link NaoLink} and {@link NaoCameraStream} the console uses. {@code call} invokes
+ * any NAOqi method with typed parameters (see {@link ParamSyntax}), {@code methods} lists
+ * what each module offers, {@code cam} saves one camera frame. Exit code 0 on success, 1
+ * when the robot answered with an error or could not be reached, 2 on a usage error.
+ */
+@Command(name = "nao", mixinStandardHelpOptions = true,
+        description = "Call NAOqi methods and fetch camera frames from a NAO (RPC port 5555, camera 5556).",
+        subcommands = {NaoCommand.Call.class, NaoCommand.Methods.class, NaoCommand.Cam.class})
+public final class NaoCommand implements Runnable {
+
+    static final int RPC_PORT = 5555;
+    static final int CAM_PORT = 5556;
+    static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
+            "ALBattery", "ALVideoDevice");
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public void run() {
+        spec.commandLine().usage(spec.commandLine().getOut());
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new NaoCommand()).execute(args));
+    }
+
+    /** HOST or HOST:PORT. */
+    record Target(String host, int port) {
+        static Target parse(String text, int defaultPort) {
+            int colon = text.lastIndexOf(':');
+            if (colon < 0) {
+                return new Target(text, defaultPort);
+            }
+            try {
+                return new Target(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)));
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("bad port in '" + text + "'");
+            }
+        }
+    }
+
+    abstract static class LinkOptions {
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Option(names = "--config", description = "link rules (timeouts, intervals, idempotent methods), e.g. samples/nao.properties")
+        Path config;
+
+        @Option(names = "--connect-timeout", defaultValue = "3000", description = "ms to wait for the robot (default ${DEFAULT-VALUE})")
+        long connectTimeoutMs;
+
+        NaoLinkConfig loadConfig() {
+            if (config == null) {
+                return NaoLinkConfig.defaults();
+            }
+            NaoLinkConfig c = NaoLinkConfig.load(config);
+            for (String problem : c.problems()) {
+                err().println("warning: " + problem);
+            }
+            return c;
+        }
+
+        PrintWriter out() {
+            return spec.commandLine().getOut();
+        }
+
+        PrintWriter err() {
+            return spec.commandLine().getErr();
+        }
+
+        /** Null (after printing why) when the robot did not come online in time. */
+        NaoLink connect(Target t) throws InterruptedException {
+            NaoLink link = new NaoLink(t.host(), t.port(), loadConfig(), envelope -> { });
+            long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(connectTimeoutMs);
+            while (link.state() != ConnectionState.ONLINE && System.nanoTime() < end) {
+                Thread.sleep(10);
+            }
+            if (link.state() != ConnectionState.ONLINE) {
+                err().println("no NAO RPC module answering at " + t.host() + ":" + t.port()
+                        + " within " + connectTimeoutMs + " ms");
+                link.close();
+                return null;
+            }
+            return link;
+        }
+    }
+
+    @Command(name = "call", mixinStandardHelpOptions = true,
+            description = "Call Module.method with parameters: 42 int, 0.5 float, true, [a, 1], \"42\" string, other text string.")
+    static final class Call extends LinkOptions implements Callable<Integer> {
+        @Parameters(index = "0", paramLabel = "HOST[:PORT]")
+        String target;
+        @Parameters(index = "1", paramLabel = "Module.method")
+        String method;
+        @Parameters(index = "2..*", paramLabel = "PARAM")
+        List<String> params = new ArrayList<>();
+        @Option(names = "--timeout", description = "ms before the call counts as timed out (default: from the config)")
+        Long timeoutMs;
+
+        @Override
+        public Integer call() throws Exception {
+            NaoCall call;
+            try {
+                List<Object> values = new ArrayList<>();
+                for (String p : params) {
+                    values.add(ParamSyntax.parse(p));
+                }
+                call = NaoCall.parse(method, values);
+            } catch (IllegalArgumentException e) {
+                err().println(e.getMessage());
+                return 2;
+            }
+            try (NaoLink link = connect(Target.parse(target, RPC_PORT))) {
+                if (link == null) {
+                    return 1;
+                }
+                long timeout = timeoutMs != null ? timeoutMs : link.config().timeoutMillis(call);
+                CallOutcome outcome = link.call(call, timeout).get();
+                (outcome.ok() ? out() : err()).println(outcome.describe());
+                return outcome.ok() ? 0 : 1;
+            }
+        }
+    }
+
+    @Command(name = "methods", mixinStandardHelpOptions = true,
+            description = "List the methods of each module (getMethodList); default: the standard NAOqi modules.")
+    static final class Methods extends LinkOptions implements Callable<Integer> {
+        @Parameters(index = "0", paramLabel = "HOST[:PORT]")
+        String target;
+        @Parameters(index = "1..*", paramLabel = "MODULE")
+        List<String> modules = new ArrayList<>();
+
+        @Override
+        public Integer call() throws Exception {
+            try (NaoLink link = connect(Target.parse(target, RPC_PORT))) {
+                if (link == null) {
+                    return 1;
+                }
+                int failures = 0;
+                for (String module : modules.isEmpty() ? MODULES : modules) {
+                    CallOutcome outcome = link.call(module, "getMethodList").get();
+                    if (outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
+                        out().println(module + ": " + String.join(" ", names.stream().map(String::valueOf).toList()));
+                    } else {
+                        failures++;
+                        err().println(module + ": " + outcome.describe());
+                    }
+                }
+                return failures == 0 ? 0 : 1;
+            }
+        }
+    }
+
+    @Command(name = "cam", mixinStandardHelpOptions = true, description = "Configure the camera and save one JPEG frame.")
+    static final class Cam implements Callable<Integer> {
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+        @Parameters(index = "0", paramLabel = "HOST[:PORT]")
+        String target;
+        @Option(names = "--save", required = true, description = "where to write the JPEG")
+        Path save;
+        @Option(names = "--resolution", defaultValue = "2", description = "0 160x120, 1 320x240, 2 640x480, 3 1280x960 (default ${DEFAULT-VALUE})")
+        int resolution;
+        @Option(names = "--color-space", defaultValue = "11", description = "0 kYuv, 9 kYUV422, 10 kYUV, 11 kRGB, 12 kHSY, 13 kBGR (default ${DEFAULT-VALUE})")
+        int colorSpace;
+        @Option(names = "--fps", defaultValue = "15", description = "1..30 (default ${DEFAULT-VALUE})")
+        int fps;
+        @Option(names = "--timeout", defaultValue = "5000", description = "ms to wait for a frame (default ${DEFAULT-VALUE})")
+        long timeoutMs;
+
+        @Override
+        public Integer call() throws Exception {
+            CameraSettings settings;
+            Target t;
+            try {
+                settings = new CameraSettings(resolution, colorSpace, fps);
+                t = Target.parse(target, CAM_PORT);
+            } catch (IllegalArgumentException e) {
+                spec.commandLine().getErr().println(e.getMessage());
+                return 2;
+            }
+            try (NaoCameraStream stream = new NaoCameraStream(t.host(), t.port(), envelope -> { })) {
+                stream.configure(settings);
+                try (AutoCloseable viewer = stream.subscribe()) {
+                    long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+                    while (stream.latestFrame() == null && System.nanoTime() < end) {
+                        Thread.sleep(10);
+                    }
+                }
+                CameraFrame frame = stream.latestFrame();
+                if (frame == null) {
+                    spec.commandLine().getErr().println("no frame from " + t.host() + ":" + t.port() + " within "
+                            + timeoutMs + " ms" + (stream.lastError() == null ? "" : ": " + stream.lastError()));
+                    return 1;
+                }
+                Files.write(save, frame.jpeg());
+                spec.commandLine().getOut().println("saved " + save + ": " + frame.width() + "x" + frame.height()
+                        + ", " + frame.jpeg().length + " bytes");
+                return 0;
+            }
+        }
+    }
+}

@@ -1,0 +1,139 @@
+package touchline.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import com.google.protobuf.Descriptors.FileDescriptor;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.record.EnvelopeSource;
+import touchline.record.EnvelopeWriter;
+import touchline.record.Recorder;
+import touchline.record.RecorderStats;
+import touchline.record.RecordingException;
+import touchline.record.SchemaSet;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.function.BiFunction;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * {@code touchline record}: headless match-day recording of everything the console hears and
+ * sends to an MCAP file, until Ctrl+C (or {@code --seconds}). The traffic is the application
+ * core's Envelope stream ({@link Console}, as {@code listen} runs it), so the robots are
+ * greeted and asked for their options exactly as in the console.
+ */
+@Command(name = "record", mixinStandardHelpOptions = true,
+        description = "Record every datagram the console receives to an MCAP file (headless).")
+public final class RecordCommand implements Callable<Integer> {
+
+    @Option(names = "--out", description = "output file (default: touchline-<date>-<time>.mcap)")
+    Path out;
+
+    @CommandLine.Mixin
+    UdpOptions udp;
+
+    @Option(names = "--split-size", paramLabel = "MB", description = "start a new file after this many megabytes")
+    long splitMegabytes;
+
+    @Option(names = "--split-minutes", paramLabel = "N", description = "start a new file every N minutes")
+    long splitMinutes;
+
+    @Option(names = "--proto", paramLabel = "FILE",
+            description = "a team's protoc descriptor set (.desc/.pb) to embed in the recording")
+    Path proto;
+
+    @Option(names = "--camera-fps", paramLabel = "N", description = "record at most N camera frames a second per camera (default: all)")
+    double cameraFps;
+
+    @Option(names = "--seconds", description = "stop after this many seconds (default: until Ctrl+C)")
+    long seconds;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    private final BiFunction<ConsoleConfig, List<FileDescriptor>, EnvelopeSource> sources;
+
+    /** Records what the application core ({@link Console}: UDP transport and model) sees. */
+    public RecordCommand() {
+        this((config, teamFiles) -> sink -> {
+            Console console = new Console(config);
+            teamFiles.forEach(f -> console.kinds().add(f));
+            console.bus().subscribe(sink);
+            return console.start();
+        });
+    }
+
+    /** {@code sources} gives the live traffic for a configuration and the team's own types (tests pass a fake). */
+    public RecordCommand(BiFunction<ConsoleConfig, List<FileDescriptor>, EnvelopeSource> sources) {
+        this.sources = sources;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter stdout = spec.commandLine().getOut();
+        Path file = out != null ? out
+                : Path.of("touchline-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
+        EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults()
+                .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L).withCameraRate(cameraFps);
+        List<FileDescriptor> teamFiles = List.of();
+        if (proto != null) {
+            try {
+                SchemaSet schemas = new SchemaSet();
+                schemas.load(proto);
+                teamFiles = schemas.teamFiles();
+                options = options.withTeamFiles(teamFiles);
+            } catch (RecordingException e) {
+                err.println("touchline record: " + e.getMessage());
+                return 2;
+            }
+        }
+        Recorder recorder = new Recorder(file, options);
+        CountDownLatch stop = new CountDownLatch(1);
+        Thread hook = new Thread(stop::countDown, "touchline-record-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        AutoCloseable source;
+        try {
+            source = sources.apply(udp.config(), teamFiles).start(recorder);
+        } catch (Exception e) {
+            recorder.close();
+            err.println("touchline record: cannot listen on port " + udp.port + ": " + e.getMessage());
+            return 1;
+        }
+        int port = source instanceof Console c ? c.udp().localPort() : udp.port;
+        stdout.println("recording UDP port " + port + " to " + file.toAbsolutePath() + " (Ctrl+C to stop)");
+        stdout.flush();
+        long deadline = seconds > 0 ? System.nanoTime() + seconds * 1_000_000_000L : Long.MAX_VALUE;
+        while (!stop.await(Math.min(5_000_000_000L, Math.max(1, deadline - System.nanoTime())), TimeUnit.NANOSECONDS)) {
+            RecorderStats s = recorder.stats();
+            stdout.printf("%d envelopes, %.1f MB, %d dropped%s%n", s.written(), s.bytes() / 1e6, s.dropped(),
+                    s.failure() == null ? "" : " — " + s.failure());
+            stdout.flush();
+            if (System.nanoTime() >= deadline) {
+                break;
+            }
+        }
+        source.close();
+        recorder.close();
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException shuttingDown) {
+            // Ctrl+C: the JVM is exiting anyway, and the file is finished above
+        }
+        RecorderStats s = recorder.stats();
+        stdout.printf("recorded %d envelopes (%d dropped) to %s%n", s.written(), s.dropped(), s.files());
+        stdout.flush();
+        return s.failure() == null ? 0 : 1;
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new RecordCommand()).execute(args));
+    }
+}

@@ -1,0 +1,92 @@
+package touchline.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import touchline.record.PlaybackClock;
+import touchline.record.Player;
+import touchline.record.Recording;
+import touchline.record.RecordingException;
+import touchline.record.TimelineEvent;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+
+/**
+ * {@code touchline replay FILE}: plays a recording through the same Envelope stream as live
+ * traffic. Here, without a window, each envelope becomes one text line, as {@code listen}
+ * prints live traffic; {@code --headless} plays as fast as possible, otherwise at
+ * {@code --speed} times real time. Problems with the file are reported, what is readable plays.
+ */
+@Command(name = "replay", mixinStandardHelpOptions = true,
+        description = "Replay an MCAP recording, printing one line per envelope.")
+public final class ReplayCommand implements Callable<Integer> {
+
+    @Parameters(index = "0", paramLabel = "FILE", description = "the recording (.mcap)")
+    Path file;
+
+    @Option(names = "--speed", defaultValue = "1", description = "playback speed, 0.1 to 50 (default: ${DEFAULT-VALUE})")
+    double speed;
+
+    @Option(names = "--headless", description = "as fast as possible, no pacing")
+    boolean headless;
+
+    @Option(names = "--from", paramLabel = "SECONDS", description = "start this many seconds into the recording")
+    double from;
+
+    @Option(names = "--events", description = "list the timeline events (goals, state changes, robots lost) first")
+    boolean events;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Recording recording;
+        try {
+            recording = Recording.open(file);
+        } catch (RecordingException e) {
+            err.println("touchline replay: " + e.getMessage());
+            return 1;
+        }
+        try (recording) {
+            recording.problems().forEach(p -> err.println("note: " + p));
+            EnvelopeLine text = new EnvelopeLine();
+            if (events) {
+                for (TimelineEvent e : recording.events()) {
+                    out.printf("event %+.1f s %s %s%n", (e.timeMicros() - recording.startMicros()) / 1e6, e.type(), e.label());
+                }
+            }
+            Player player = new Player(recording, e -> out.println(text.format(e)), PlaybackClock.system());
+            player.seek(recording.startMicros() + (long) (from * 1e6));
+            long n;
+            if (headless) {
+                n = player.runToEnd();
+            } else {
+                player.setSpeed(speed);
+                player.play();
+                while (!player.snapshot().finished()) {
+                    long wait = player.pump();
+                    out.flush();
+                    if (wait > 0) {
+                        Thread.sleep(Math.max(1, Math.min(wait / 1_000_000L, 50)));
+                    }
+                }
+                n = player.snapshot().emitted();
+            }
+            out.flush();
+            int before = recording.mcap().problems().size();
+            recording.problems().stream().skip(before).forEach(p -> err.println("note: " + p));
+            err.printf("replayed %d envelopes, %.1f s of recording%n", n, recording.durationMicros() / 1e6);
+            return 0;
+        }
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new ReplayCommand()).execute(args));
+    }
+}

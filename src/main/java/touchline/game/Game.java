@@ -1,0 +1,152 @@
+package touchline.game;
+
+import touchline.protocol.gamecontroller.GameControlData;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+/**
+ * One refereed game: the {@link GameState}, the clock it is read against and the undo history.
+ * All access is serialised, so the UI thread, the CLI, the sender and the return-packet receiver
+ * may call it concurrently. Listeners hear about every change (action, undo, or a change that
+ * happened by itself in {@link #advance()}) so the sender can publish it at once.
+ */
+public final class Game {
+
+    /** How many actions can be undone. */
+    public static final int UNDO_DEPTH = 50;
+
+    private record Done(String description, GameState before) {
+    }
+
+    private final GameClock clock;
+    private final Deque<Done> history = new ArrayDeque<>();
+    private final List<Runnable> listeners = new CopyOnWriteArrayList<>();
+    private GameState state;
+
+    /**
+     * @param params  league rules
+     * @param teamA   team number on the left side in the first half (kicks off first)
+     * @param colourA its colour (0 blue, 1 red, ...)
+     * @param teamB   team number on the right side
+     * @param colourB its colour
+     * @param clock   the time source
+     */
+    public Game(LeagueParams params, int teamA, int colourA, int teamB, int colourB, GameClock clock) {
+        if (teamA == teamB) {
+            throw new IllegalArgumentException("the two teams need different numbers");
+        }
+        this.clock = clock;
+        this.state = new GameState(params, teamA, colourA, teamB, colourB, clock.millis());
+    }
+
+    public void addListener(Runnable onChange) {
+        listeners.add(onChange);
+    }
+
+    public long now() {
+        return clock.millis();
+    }
+
+    /** Lets time-driven changes happen (then checks legality), applies the action, notifies. */
+    public Outcome perform(Action action) {
+        Outcome outcome;
+        synchronized (this) {
+            long now = clock.millis();
+            state.advance(now);
+            if (!action.isLegal(state)) {
+                return new Outcome(false, "illegal now: " + action.describe() + " (state " + describeLocked(now) + ")");
+            }
+            history.push(new Done(action.describe(), state.copy()));
+            while (history.size() > UNDO_DEPTH) {
+                history.removeLast();
+            }
+            action.apply(state, now);
+            state.syncClock(now);
+            outcome = new Outcome(true, action.describe());
+        }
+        notifyListeners();
+        return outcome;
+    }
+
+    /** Applies changes that happen as time passes (penalties ending, half-time switch). */
+    public boolean advance() {
+        boolean changed;
+        synchronized (this) {
+            long now = clock.millis();
+            changed = state.advance(now);
+            state.syncClock(now);
+        }
+        if (changed) {
+            notifyListeners();
+        }
+        return changed;
+    }
+
+    /** Reverts the last applied action (timers keep running as if it had never happened). */
+    public Outcome undo() {
+        Done done;
+        synchronized (this) {
+            done = history.poll();
+            if (done == null) {
+                return new Outcome(false, "nothing to undo");
+            }
+            state = done.before;
+        }
+        notifyListeners();
+        return new Outcome(true, "undid " + done.description);
+    }
+
+    /** Descriptions of the undoable actions, most recent first. */
+    public synchronized List<String> undoList() {
+        List<String> out = new ArrayList<>();
+        history.forEach(d -> out.add(d.description));
+        return out;
+    }
+
+    public synchronized boolean isLegal(Action action) {
+        return action.isLegal(state);
+    }
+
+    /** A copy of the current state, safe to read on any thread. */
+    public synchronized GameState snapshot() {
+        return state.copy();
+    }
+
+    /** The packet content right now (packetNumber 0). */
+    public synchronized GameControlData controlData() {
+        return state.toControlData(clock.millis());
+    }
+
+    /** One line such as {@code PLAYING 1st half, 512 s, kick-off 7, 1:0}. */
+    public synchronized String describe() {
+        return describeLocked(clock.millis());
+    }
+
+    private String describeLocked(long now) {
+        GameState s = state;
+        StringBuilder b = new StringBuilder(s.state.name());
+        if (s.secondary != SecondaryState.NORMAL) {
+            b.append('/').append(s.secondary.name());
+            if (s.secondary.isSetPlay()) {
+                b.append(" team ").append(s.setPlayTeam).append(" mode ").append(s.setPlayMode);
+            }
+        }
+        b.append(s.firstHalf ? " 1st half" : " 2nd half");
+        b.append(", ").append(s.secsRemaining(now)).append(" s left");
+        b.append(", secondary ").append(s.secondaryTime(now)).append(" s");
+        b.append(", kick-off ").append(s.isDropBall() ? "dropped ball" : String.valueOf(s.kickOffTeam));
+        b.append(", ").append(s.teams[0].number).append(' ').append(s.teams[0].score).append(':')
+                .append(s.teams[1].score).append(' ').append(s.teams[1].number);
+        return b.toString();
+    }
+
+    private void notifyListeners() {
+        for (Runnable r : listeners) {
+            r.run();
+        }
+    }
+}

@@ -1,0 +1,257 @@
+package touchline.game;
+
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.RobotInfo;
+import touchline.protocol.gamecontroller.TeamInfo;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The complete referee state of one game, in the manner of GameController3: actions check
+ * legality against it and change it; timers are not stored as counters but derived from the
+ * moments things began, so any clock reading gives exact {@code secsRemaining},
+ * {@code secondaryTime} and {@code secsTillUnpenalised} (whole seconds, elapsed time floored
+ * like the Java GameController). {@code teams[0]} is the left side as the operator sees it;
+ * the teams swap sides at half time. Not thread-safe: {@link Game} serialises access.
+ */
+public final class GameState {
+
+    final LeagueParams params;
+    PlayState state = PlayState.INITIAL;
+    boolean firstHalf = true;
+    /** Team number of the kicking team, or {@link GameControlData#DROP_BALL}. */
+    int kickOffTeam;
+    int firstHalfKickOffTeam;
+    SecondaryState secondary = SecondaryState.NORMAL;
+    int setPlayTeam;
+    int setPlayMode;
+    long setPlayModeSinceMs;
+    int timeoutTeam;
+    TeamState[] teams = new TeamState[2];
+    long stateSinceMs;
+    /** Whether the first kick-off of this half happened (the half clock runs only after it). */
+    boolean halfStarted;
+    long halfElapsedMs;
+    long clockRunningSinceMs = -1;
+    long blockSinceMs;
+    int blockSeconds;
+
+    GameState(LeagueParams params, int teamA, int colourA, int teamB, int colourB, long nowMs) {
+        this.params = params;
+        teams[0] = new TeamState(teamA, colourA, params.playersPerTeam());
+        teams[1] = new TeamState(teamB, colourB, params.playersPerTeam());
+        kickOffTeam = teamA;
+        firstHalfKickOffTeam = teamA;
+        stateSinceMs = nowMs;
+    }
+
+    private GameState(GameState o) {
+        params = o.params;
+        state = o.state;
+        firstHalf = o.firstHalf;
+        kickOffTeam = o.kickOffTeam;
+        firstHalfKickOffTeam = o.firstHalfKickOffTeam;
+        secondary = o.secondary;
+        setPlayTeam = o.setPlayTeam;
+        setPlayMode = o.setPlayMode;
+        setPlayModeSinceMs = o.setPlayModeSinceMs;
+        timeoutTeam = o.timeoutTeam;
+        teams = new TeamState[]{o.teams[0].copy(), o.teams[1].copy()};
+        stateSinceMs = o.stateSinceMs;
+        halfStarted = o.halfStarted;
+        halfElapsedMs = o.halfElapsedMs;
+        clockRunningSinceMs = o.clockRunningSinceMs;
+        blockSinceMs = o.blockSinceMs;
+        blockSeconds = o.blockSeconds;
+    }
+
+    /** A deep copy (for undo and for readers outside the game's lock). */
+    public GameState copy() {
+        return new GameState(this);
+    }
+
+    /** {@code seconds} minus the whole seconds elapsed since {@code sinceMs} (may be negative). */
+    static int remaining(int seconds, long sinceMs, long nowMs) {
+        return seconds - (int) Math.floorDiv(nowMs - sinceMs, 1000L);
+    }
+
+    // ---- queries -------------------------------------------------------------------------
+
+    public LeagueParams params() {
+        return params;
+    }
+
+    public PlayState state() {
+        return state;
+    }
+
+    public boolean firstHalf() {
+        return firstHalf;
+    }
+
+    public int kickOffTeam() {
+        return kickOffTeam;
+    }
+
+    public boolean isDropBall() {
+        return kickOffTeam == GameControlData.DROP_BALL;
+    }
+
+    public SecondaryState secondary() {
+        return secondary;
+    }
+
+    public int setPlayTeam() {
+        return secondary.isSetPlay() ? setPlayTeam : 0;
+    }
+
+    public int setPlayMode() {
+        return secondary.isSetPlay() ? setPlayMode : 0;
+    }
+
+    public int timeoutTeam() {
+        return secondary == SecondaryState.TIMEOUT ? timeoutTeam : 0;
+    }
+
+    /** Team on side 0 (left) or 1 (right). */
+    public TeamState teamOnSide(int side) {
+        return teams[side];
+    }
+
+    /** The team with this number, or null. */
+    public TeamState team(int number) {
+        for (TeamState t : teams) {
+            if (t.number == number) {
+                return t;
+            }
+        }
+        return null;
+    }
+
+    public TeamState otherTeam(int number) {
+        return teams[0].number == number ? teams[1] : teams[0];
+    }
+
+    public boolean isClockRunning() {
+        return clockRunningSinceMs >= 0;
+    }
+
+    public int secsRemaining(long nowMs) {
+        long elapsed = halfElapsedMs + (isClockRunning() ? nowMs - clockRunningSinceMs : 0);
+        return params.halfSeconds() - (int) Math.floorDiv(elapsed, 1000L);
+    }
+
+    public int secondaryTime(long nowMs) {
+        switch (state) {
+            case INITIAL:
+                if (secondary == SecondaryState.TIMEOUT) {
+                    return remaining(params.timeoutSeconds(), stateSinceMs, nowMs);
+                }
+                // The half-time break counts down in the second half's INITIAL, and below zero after.
+                return firstHalf ? 0 : remaining(params.halfTimePauseSeconds(), stateSinceMs, nowMs);
+            case READY:
+                return Math.max(0, remaining(params.readySeconds(), stateSinceMs, nowMs));
+            case PLAYING:
+                if (secondary.isSetPlay()) {
+                    return setPlayMode == 1
+                            ? Math.max(0, remaining(params.setPlayPrepareSeconds(), setPlayModeSinceMs, nowMs)) : 0;
+                }
+                return blockSeconds > 0 ? Math.max(0, remaining(blockSeconds, blockSinceMs, nowMs)) : 0;
+            default:
+                return 0;
+        }
+    }
+
+    // ---- changes shared by actions -----------------------------------------------------
+
+    void enter(PlayState next, long nowMs) {
+        state = next;
+        stateSinceMs = nowMs;
+    }
+
+    void endSetPlay() {
+        secondary = SecondaryState.NORMAL;
+        setPlayTeam = 0;
+        setPlayMode = 0;
+    }
+
+    void block(int seconds, long nowMs) {
+        blockSeconds = seconds;
+        blockSinceMs = nowMs;
+    }
+
+    /** Starts or stops the half clock so that it runs exactly when the rules say it does. */
+    void syncClock(long nowMs) {
+        boolean run = halfStarted
+                && (state == PlayState.READY || state == PlayState.SET || state == PlayState.PLAYING)
+                && !secondary.isSetPlay() && secondary != SecondaryState.TIMEOUT;
+        if (run && !isClockRunning()) {
+            clockRunningSinceMs = nowMs;
+        } else if (!run && isClockRunning()) {
+            halfElapsedMs += nowMs - clockRunningSinceMs;
+            clockRunningSinceMs = -1;
+        }
+    }
+
+    /**
+     * Changes that happen by themselves as time passes: timed penalties end, and a finished
+     * first half turns into the second half (teams swap sides, the other team kicks off).
+     *
+     * @return whether anything changed
+     */
+    boolean advance(long nowMs) {
+        boolean changed = false;
+        for (TeamState t : teams) {
+            for (PlayerState p : t.players) {
+                if (p.penalty.timed() && remaining(p.penaltySeconds, p.penaltySinceMs, nowMs) <= 0) {
+                    p.unpenalise();
+                    changed = true;
+                }
+            }
+        }
+        if (state == PlayState.FINISHED && firstHalf) {
+            startSecondHalf(nowMs);
+            changed = true;
+        }
+        return changed;
+    }
+
+    private void startSecondHalf(long nowMs) {
+        firstHalf = false;
+        teams = new TeamState[]{teams[1], teams[0]};
+        kickOffTeam = otherTeam(firstHalfKickOffTeam).number;
+        endSetPlay();
+        enter(PlayState.INITIAL, nowMs);
+        halfStarted = false;
+        halfElapsedMs = 0;
+        clockRunningSinceMs = -1;
+        blockSeconds = 0;
+        for (TeamState t : teams) {
+            for (PlayerState p : t.players) {
+                if (p.isPenalised()) {
+                    p.unpenalise();
+                }
+            }
+        }
+    }
+
+    // ---- wire view -----------------------------------------------------------------------
+
+    /** The packet content at {@code nowMs} (packetNumber 0; the sender numbers packets). */
+    public GameControlData toControlData(long nowMs) {
+        List<TeamInfo> wireTeams = new ArrayList<>(2);
+        for (TeamState t : teams) {
+            List<RobotInfo> players = new ArrayList<>(LeagueParams.MAX_PLAYERS);
+            for (PlayerState p : t.players) {
+                players.add(new RobotInfo(p.penalty.code(), p.secsTillUnpenalised(nowMs), p.warnings, p.yellowCards,
+                        p.redCards, p.goalkeeper));
+            }
+            wireTeams.add(new TeamInfo(t.number, t.colour, 0, t.score, t.penaltyShot, t.singleShots, 0, 0,
+                    RobotInfo.EMPTY, players));
+        }
+        return new GameControlData(0, params.playersPerTeam(), params.gameType(), 0, state.code(), firstHalf,
+                kickOffTeam, secondary.code(), setPlayTeam(), setPlayMode(), 0, 0xFFFF, secsRemaining(nowMs),
+                secondaryTime(nowMs), wireTeams);
+    }
+}

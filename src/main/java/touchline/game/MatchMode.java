@@ -1,0 +1,179 @@
+package touchline.game;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import touchline.protocol.gamecontroller.GameControlData;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+
+/**
+ * The tournament rule "during play only the GameController talks to the robots": while any
+ * game state heard on the network (or sent by our own GameController) within the last
+ * {@link #STALE_MS} ms is READY, SET or PLAYING, {@link #mayConsoleSend()} is false and the
+ * console's outbound path must hold back debug requests, reliable-stream data and NAO
+ * commands (reporting each with {@link #hold}). When play stops, listeners hear
+ * {@code true} and held-back requests may resume. The referee-approved exception is an
+ * explicit override, which is logged with its reason.
+ */
+public final class MatchMode {
+
+    /** A source not heard for this long no longer counts (a GameController sends every 500 ms). */
+    public static final long STALE_MS = 5000;
+    /** How many held-back request descriptions are kept for the notice. */
+    public static final int HELD_LOG = 100;
+
+    private static final Logger LOG = LoggerFactory.getLogger(MatchMode.class);
+
+    private record Heard(int state, long atMs) {
+    }
+
+    /**
+     * One use of the override switch.
+     *
+     * @param atMs   clock time
+     * @param on     switched on or off
+     * @param reason what the operator gave as the reason
+     */
+    public record OverrideEntry(long atMs, boolean on, String reason) {
+    }
+
+    private final GameClock clock;
+    private final Map<String, Heard> heard = new HashMap<>();
+    private final Deque<String> held = new ArrayDeque<>();
+    private final List<OverrideEntry> overrideLog = new ArrayList<>();
+    private final List<Consumer<Boolean>> listeners = new CopyOnWriteArrayList<>();
+    private long heldCount;
+    private boolean override;
+    private boolean lastMaySend = true;
+
+    public MatchMode(GameClock clock) {
+        this.clock = clock;
+    }
+
+    /** Called with {@code true} when the console may send again, {@code false} when it must stop. */
+    public void addListener(Consumer<Boolean> onMayConsoleSendChanged) {
+        listeners.add(onMayConsoleSendChanged);
+    }
+
+    /** Records a game state byte (0 INITIAL ... 4 FINISHED) heard from, or sent by, {@code source}. */
+    public void observe(int gameState, String source) {
+        synchronized (this) {
+            heard.put(source, new Heard(gameState, clock.millis()));
+        }
+        refresh();
+    }
+
+    public boolean mayConsoleSend() {
+        refresh();
+        synchronized (this) {
+            return lastMaySend;
+        }
+    }
+
+    /** Whether play is on according to the network (regardless of the override). */
+    public synchronized boolean playIsOn() {
+        return playingSource() != null;
+    }
+
+    /**
+     * Reports a console request the outbound path wants to send.
+     *
+     * @return true when it must be held back (match mode active, no override)
+     */
+    public boolean hold(String what) {
+        if (mayConsoleSend()) {
+            return false;
+        }
+        synchronized (this) {
+            heldCount++;
+            held.addLast(what);
+            while (held.size() > HELD_LOG) {
+                held.removeFirst();
+            }
+        }
+        return true;
+    }
+
+    /** Requests held back since play last stopped, oldest first. */
+    public synchronized List<String> heldBack() {
+        return List.copyOf(held);
+    }
+
+    public synchronized long heldCount() {
+        return heldCount;
+    }
+
+    /** Switches the override on or off; every switch is logged with its reason. */
+    public void setOverride(boolean on, String reason) {
+        synchronized (this) {
+            override = on;
+            overrideLog.add(new OverrideEntry(clock.millis(), on, reason == null ? "" : reason));
+        }
+        LOG.warn("match mode override {} by operator: {}", on ? "ON" : "off", reason);
+        refresh();
+    }
+
+    public synchronized boolean isOverridden() {
+        return override;
+    }
+
+    public synchronized List<OverrideEntry> overrideLog() {
+        return List.copyOf(overrideLog);
+    }
+
+    /** The text to show, or "" when match mode is not holding anything back. */
+    public String notice() {
+        refresh();
+        synchronized (this) {
+            String source = playingSource();
+            if (source == null) {
+                return "";
+            }
+            String state = GameControlData.stateName(heard.get(source).state);
+            if (override) {
+                return "MATCH MODE OVERRIDDEN: game is " + state + " (" + source + ") but the console may send";
+            }
+            return "Match mode: game is " + state + " (" + source + "), console silent except GameController; "
+                    + heldCount + " request(s) held back";
+        }
+    }
+
+    /** Re-evaluates (sources go stale with time) and notifies listeners of a change. */
+    public void refresh() {
+        boolean now;
+        boolean changed;
+        synchronized (this) {
+            now = override || playingSource() == null;
+            changed = now != lastMaySend;
+            lastMaySend = now;
+            if (changed && now) {
+                held.clear();
+            }
+        }
+        if (changed) {
+            LOG.info("match mode: console {}", now ? "may send again" : "silenced during play");
+            for (Consumer<Boolean> l : listeners) {
+                l.accept(now);
+            }
+        }
+    }
+
+    private String playingSource() {
+        long now = clock.millis();
+        for (Map.Entry<String, Heard> e : heard.entrySet()) {
+            Heard h = e.getValue();
+            if (now - h.atMs <= STALE_MS && h.state >= GameControlData.STATE_READY
+                    && h.state <= GameControlData.STATE_PLAYING) {
+                return e.getKey();
+            }
+        }
+        return null;
+    }
+}

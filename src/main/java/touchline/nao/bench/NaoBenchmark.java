@@ -1,0 +1,273 @@
+package touchline.nao.bench;
+
+import org.zeromq.SocketType;
+import org.zeromq.ZContext;
+import org.zeromq.ZMQ;
+import touchline.proto.Nao.HAWActorRPCRequest;
+import touchline.transport.nao.CallOutcome;
+import touchline.transport.nao.CameraSettings;
+import touchline.transport.nao.ConnectionState;
+import touchline.transport.nao.NaoCall;
+import touchline.transport.nao.NaoCameraStream;
+import touchline.transport.nao.NaoLink;
+import touchline.transport.nao.NaoLinkConfig;
+import touchline.protocol.nao.CameraFormat;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Console-side NAO link benchmark: starts {@code touchline-nao-sim} on loopback and measures
+ * (1) the round trip of {@code ALMotion.ping} through {@link NaoLink} against two baselines
+ * measured call by call in the same run — a raw JeroMQ DEALER sending the same bytes to an
+ * in-process JeroMQ ROUTER echo (the simulator has no echo endpoint), and a raw DEALER
+ * sending them to the simulator; (2) short-call latency while long {@code say} calls occupy
+ * half the workers; (3) camera frames per second and bytes per frame delivered to a viewer
+ * at 640x480 and 1280x960. Prints a Markdown table for docs/benchmarks.md.
+ *
+ * <p>Usage: {@code NaoBenchmark [--bin robot-side/build/bin] [--seconds 4]}
+ */
+public final class NaoBenchmark {
+
+    private static final Pattern RPC = Pattern.compile("rpc listening on port (\\d+)");
+    private static final Pattern CAM = Pattern.compile("camera listening on port (\\d+)");
+
+    private final Path binary;
+    private final int seconds;
+
+    public NaoBenchmark(Path binary, int seconds) {
+        this.binary = binary;
+        this.seconds = seconds;
+    }
+
+    public static void main(String[] args) throws Exception {
+        String bin = System.getProperty("touchline.robotside.bin", "robot-side/build/bin");
+        int seconds = 4;
+        for (int i = 0; i < args.length - 1; i++) {
+            if (args[i].equals("--bin")) {
+                bin = args[i + 1];
+            } else if (args[i].equals("--seconds")) {
+                seconds = Integer.parseInt(args[i + 1]);
+            }
+        }
+        Path binary = Path.of(bin, "touchline-nao-sim");
+        if (!Files.isExecutable(binary)) {
+            System.err.println("touchline-nao-sim not found at " + binary + "; build the robot side first");
+            System.exit(1);
+        }
+        new NaoBenchmark(binary, seconds).run();
+        System.exit(0);
+    }
+
+    void run() throws Exception {
+        Process sim = new ProcessBuilder(binary.toString(), "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0",
+                "--workers", "4").redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            int[] ports = ports(sim);
+            System.out.println("| what | figure (console side, Java) | budget |");
+            System.out.println("| --- | --- | --- |");
+            roundTrip(ports[0]);
+            shortCallsUnderLoad(ports[0]);
+            camera(ports[1], 2);
+            camera(ports[1], 3);
+        } finally {
+            sim.destroy();
+            sim.waitFor(5, TimeUnit.SECONDS);
+        }
+    }
+
+    private static int[] ports(Process sim) throws Exception {
+        BufferedReader r = new BufferedReader(new InputStreamReader(sim.getInputStream(), StandardCharsets.UTF_8));
+        int rpc = -1;
+        int cam = -1;
+        String line;
+        while ((rpc < 0 || cam < 0) && (line = r.readLine()) != null) {
+            Matcher m = RPC.matcher(line);
+            if (m.find()) {
+                rpc = Integer.parseInt(m.group(1));
+            }
+            m = CAM.matcher(line);
+            if (m.find()) {
+                cam = Integer.parseInt(m.group(1));
+            }
+        }
+        if (rpc < 0 || cam < 0) {
+            throw new IllegalStateException("touchline-nao-sim did not report its ports");
+        }
+        return new int[] {rpc, cam};
+    }
+
+    private NaoLink link(int port) throws InterruptedException {
+        NaoLink link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), e -> { });
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        while (link.state() != ConnectionState.ONLINE && System.nanoTime() < end) {
+            Thread.sleep(5);
+        }
+        if (link.state() != ConnectionState.ONLINE) {
+            throw new IllegalStateException("NaoLink did not come online");
+        }
+        return link;
+    }
+
+    private void roundTrip(int rpcPort) throws Exception {
+        byte[] payload = HAWActorRPCRequest.newBuilder().setModule("ALMotion").setMethod("ping")
+                .setDeadlineMillis(System.currentTimeMillis() + 60_000).build().toByteArray();
+        try (ZContext zmq = new ZContext(1); NaoLink link = link(rpcPort)) {
+            ZMQ.Socket echo = zmq.createSocket(SocketType.ROUTER);
+            echo.bind("tcp://127.0.0.1:*");
+            String endpoint = echo.getLastEndpoint();
+            Thread echoThread = new Thread(() -> {
+                try {
+                    while (!Thread.currentThread().isInterrupted()) {
+                        ZMQ.Socket s = echo;
+                        byte[] id = s.recv(0);
+                        if (id == null) {
+                            return;
+                        }
+                        List<byte[]> frames = new ArrayList<>();
+                        while (s.hasReceiveMore()) {
+                            frames.add(s.recv(0));
+                        }
+                        s.send(id, ZMQ.SNDMORE);
+                        for (int i = 0; i < frames.size(); i++) {
+                            s.send(frames.get(i), i < frames.size() - 1 ? ZMQ.SNDMORE : 0);
+                        }
+                    }
+                } catch (RuntimeException closed) {
+                    // context closed at the end of the run
+                }
+            }, "bench-echo");
+            echoThread.setDaemon(true);
+            echoThread.start();
+            ZMQ.Socket toEcho = dealer(zmq, endpoint);
+            ZMQ.Socket toSim = dealer(zmq, "tcp://127.0.0.1:" + rpcPort);
+            NaoCall ping = NaoCall.of("ALMotion", "ping");
+            // warm-up (JIT, connections)
+            for (int i = 0; i < 2000; i++) {
+                rawRoundTrip(toEcho, payload, i);
+                rawRoundTrip(toSim, payload, i);
+                link.call(ping).get();
+            }
+            List<Long> echoNs = new ArrayList<>();
+            List<Long> rawSimNs = new ArrayList<>();
+            List<Long> linkNs = new ArrayList<>();
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+            long id = 1_000_000;
+            while (System.nanoTime() < end) {
+                echoNs.add(rawRoundTrip(toEcho, payload, id++));
+                rawSimNs.add(rawRoundTrip(toSim, payload, id++));
+                long t0 = System.nanoTime();
+                CallOutcome outcome = link.call(ping).get();
+                linkNs.add(System.nanoTime() - t0);
+                if (!outcome.ok()) {
+                    throw new IllegalStateException("ping failed: " + outcome.describe());
+                }
+            }
+            double[] e = percentiles(echoNs);
+            double[] r = percentiles(rawSimNs);
+            double[] l = percentiles(linkNs);
+            row("raw JeroMQ DEALER ↔ in-process JeroMQ ROUTER echo, same bytes, p50 / p99", e, echoNs.size());
+            row("raw JeroMQ DEALER ↔ touchline-nao-sim `ALMotion.ping`, p50 / p99", r, rawSimNs.size());
+            row("NaoLink `ALMotion.ping` (future completed), p50 / p99", l, linkNs.size());
+            System.out.printf("| ratio p50 NaoLink / echo | %.2f | ≤ 1.5 |%n", l[0] / e[0]);
+            System.out.printf("| ratio p50 NaoLink / raw DEALER to the simulator (NaoLink's own cost) | %.2f | — |%n", l[0] / r[0]);
+            echoThread.interrupt();
+        }
+    }
+
+    private static ZMQ.Socket dealer(ZContext zmq, String endpoint) {
+        ZMQ.Socket s = zmq.createSocket(SocketType.DEALER);
+        s.setImmediate(false);
+        s.setLinger(0);
+        s.connect(endpoint);
+        return s;
+    }
+
+    private static long rawRoundTrip(ZMQ.Socket dealer, byte[] payload, long id) {
+        byte[] idBytes = ByteBuffer.allocate(8).putLong(id).array();
+        long t0 = System.nanoTime();
+        dealer.send(idBytes, ZMQ.SNDMORE);
+        dealer.send(new byte[0], ZMQ.SNDMORE);
+        dealer.send(payload, 0);
+        dealer.recv(0);
+        while (dealer.hasReceiveMore()) {
+            dealer.recv(0);
+        }
+        return System.nanoTime() - t0;
+    }
+
+    private void shortCallsUnderLoad(int rpcPort) throws Exception {
+        try (NaoLink link = link(rpcPort)) {
+            String text = "This sentence keeps a worker busy for a long time. ".repeat(20);
+            NaoCall say = NaoCall.of("ALTextToSpeech", "say", text);
+            NaoCall ping = NaoCall.of("ALMotion", "ping");
+            List<CompletableFuture<CallOutcome>> longCalls = new ArrayList<>();
+            longCalls.add(link.call(say, 120_000));
+            longCalls.add(link.call(NaoCall.of("ALMotion", "angleInterpolation", "HeadYaw", 1.0f,
+                    (float) (seconds + 30), true), 120_000));
+            Thread.sleep(200); // let the long calls reach their workers
+            List<Long> ns = new ArrayList<>();
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+            int failures = 0;
+            while (System.nanoTime() < end) {
+                long t0 = System.nanoTime();
+                if (!link.call(ping).get().ok()) {
+                    failures++;
+                }
+                ns.add(System.nanoTime() - t0);
+            }
+            long stillRunning = longCalls.stream().filter(f -> !f.isDone()).count();
+            double[] p = percentiles(ns);
+            System.out.printf("| short calls while %d of 4 workers run long calls (say, angleInterpolation): p50 / p99 / max | %.3f ms / %.2f ms / %.1f ms (%d calls, %d failed) | p99 ≤ 50 ms |%n",
+                    stillRunning, p[0] / 1e6, p[1] / 1e6, p[2] / 1e6, ns.size(), failures);
+            link.call(NaoCall.of("ALTextToSpeech", "stopAll")).get();
+            link.call(NaoCall.of("ALMotion", "killMove")).get();
+        }
+    }
+
+    private void camera(int camPort, int resolution) throws Exception {
+        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camPort, e -> { })) {
+            stream.configure(new CameraSettings(resolution, 11, 30));
+            try (AutoCloseable viewer = stream.subscribe()) {
+                long warm = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+                while (stream.framesReceived() < 5 && System.nanoTime() < warm) {
+                    Thread.sleep(10);
+                }
+                long startFrames = stream.framesReceived();
+                long t0 = System.nanoTime();
+                Thread.sleep(TimeUnit.SECONDS.toMillis(seconds));
+                long frames = stream.framesReceived() - startFrames;
+                double elapsed = (System.nanoTime() - t0) / 1e9;
+                double bytes = stream.bytesPerFrame();
+                long raw = CameraFormat.rawRgbBytes(resolution);
+                String size = CameraFormat.width(resolution) + "×" + CameraFormat.height(resolution);
+                System.out.printf("| camera %s at 30 fps configured, frames/s to one NaoCameraStream viewer | %.1f | %s |%n",
+                        size, frames / elapsed, resolution == 2 ? "≥ 30 fps" : "≥ 15 fps");
+                System.out.printf("| bytes per frame %s | %.0f B = 1/%.0f of raw RGB (%d B) | ≤ 1/15 |%n",
+                        size, bytes, raw / Math.max(1, bytes), raw);
+            }
+        }
+    }
+
+    private static void row(String what, double[] p, int n) {
+        System.out.printf("| %s | %.3f ms / %.3f ms (%d calls) | — |%n", what, p[0] / 1e6, p[1] / 1e6, n);
+    }
+
+    /** p50, p99, max in nanoseconds. */
+    private static double[] percentiles(List<Long> values) {
+        long[] a = values.stream().mapToLong(Long::longValue).toArray();
+        Arrays.sort(a);
+        return new double[] {a[a.length / 2], a[Math.min(a.length - 1, (int) (a.length * 0.99))], a[a.length - 1]};
+    }
+}

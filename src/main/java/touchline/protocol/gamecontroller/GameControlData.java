@@ -1,0 +1,77 @@
+package touchline.protocol.gamecontroller;
+
+import java.util.List;
+
+/**
+ * The content of one game-state ("RGme") datagram in format-neutral form, in the code space of
+ * the Humanoid League v12 packet (the default format). Serializers for other versions translate
+ * states, set plays, kick-off sentinel and penalties to their own encoding; fields a format
+ * lacks are dropped on encode and come back as defaults on decode.
+ *
+ * @param packetNumber       wrapping packet counter (0..255)
+ * @param playersPerTeam     players on the field per team
+ * @param gameType           HL byte 8 (round robin / playoff / drop-in); SPL competitionPhase
+ * @param competitionType    SPL competitionType (0 normal)
+ * @param state              0 INITIAL 1 READY 2 SET 3 PLAYING 4 FINISHED (5 STANDBY, SPL)
+ * @param firstHalf          whether the first half is being played
+ * @param kickOffTeam        team number of the kicking team, or {@link #DROP_BALL}
+ * @param secondaryState     HL STATE2_* code: 0 NORMAL 1 PENALTYSHOOT 2 OVERTIME 3 TIMEOUT
+ *                           4 DIRECT_FREEKICK 5 INDIRECT_FREEKICK 6 PENALTYKICK 7 CORNER_KICK
+ *                           8 GOAL_KICK 9 THROW_IN
+ * @param setPlayTeam        secondaryStateInfo[0]: team number executing the set play
+ * @param setPlayMode        secondaryStateInfo[1]: 0 stay still, 1 may position, 2 prepare
+ * @param dropInTeam         legacy drop-in team byte
+ * @param dropInTime         legacy drop-in time (0xFFFF = none yet)
+ * @param secsRemaining      seconds left in the half (signed)
+ * @param secondaryTime      secondary countdown (signed)
+ * @param teams              exactly two teams, in wire order
+ */
+public record GameControlData(int packetNumber, int playersPerTeam, int gameType, int competitionType, int state,
+                              boolean firstHalf, int kickOffTeam, int secondaryState, int setPlayTeam,
+                              int setPlayMode, int dropInTeam, int dropInTime, int secsRemaining,
+                              int secondaryTime, List<TeamInfo> teams) {
+
+    /** Neutral marker for "dropped ball, no kicking team" (wire: 0x80 / 255 / 2 by format). */
+    public static final int DROP_BALL = -1;
+
+    public static final int STATE_INITIAL = 0;
+    public static final int STATE_READY = 1;
+    public static final int STATE_SET = 2;
+    public static final int STATE_PLAYING = 3;
+    public static final int STATE_FINISHED = 4;
+
+    public GameControlData {
+        teams = List.copyOf(teams);
+        if (teams.size() != 2) {
+            throw new IllegalArgumentException("a game has two teams, got " + teams.size());
+        }
+    }
+
+    public GameControlData withPacketNumber(int number) {
+        return new GameControlData(number & 0xFF, playersPerTeam, gameType, competitionType, state, firstHalf,
+                kickOffTeam, secondaryState, setPlayTeam, setPlayMode, dropInTeam, dropInTime, secsRemaining,
+                secondaryTime, teams);
+    }
+
+    /** The team with this number, or null. */
+    public TeamInfo team(int teamNumber) {
+        for (TeamInfo t : teams) {
+            if (t.teamNumber() == teamNumber) {
+                return t;
+            }
+        }
+        return null;
+    }
+
+    public static String stateName(int state) {
+        return switch (state) {
+            case 0 -> "INITIAL";
+            case 1 -> "READY";
+            case 2 -> "SET";
+            case 3 -> "PLAYING";
+            case 4 -> "FINISHED";
+            case 5 -> "STANDBY";
+            default -> "STATE" + state;
+        };
+    }
+}

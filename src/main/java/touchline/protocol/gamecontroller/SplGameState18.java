@@ -1,0 +1,163 @@
+package touchline.protocol.gamecontroller;
+
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * SPL RoboCupGameControlData version 18, 118 bytes (GameController3 v3.0.0 … v5.0.0,
+ * {@code game_controller_msgs/headers/RoboCupGameControlData.h}). SPL splits the HL
+ * secondary state into gamePhase (penalty shoot-out, overtime, timeout) and setPlay, names the
+ * kicking team (255 = none) instead of a set-play team, and has 20 two-byte player entries.
+ * HL penalties are translated to their nearest SPL code on encode (ball manipulation → illegal
+ * ball contact, physical contact → pushing, illegal attack/defence → illegal position,
+ * pickup/service → request for pickup); SPL codes are read back unchanged.
+ */
+public final class SplGameState18 implements GameStateFormat {
+
+    public static final int SIZE = 118;
+    public static final int VERSION = 18;
+    public static final int MAX_PLAYERS = 20;
+    public static final int KICKING_TEAM_NONE = 255;
+
+    @Override
+    public String kind() {
+        return "gc.spl18";
+    }
+
+    @Override
+    public int version() {
+        return VERSION;
+    }
+
+    @Override
+    public int size() {
+        return SIZE;
+    }
+
+    @Override
+    public byte[] encode(GameControlData d) {
+        ByteBuffer b = WireChecks.writer(SIZE);
+        b.put(WireChecks.GAME_STATE_MAGIC);
+        b.put((byte) VERSION);
+        b.put((byte) d.packetNumber());
+        b.put((byte) d.playersPerTeam());
+        b.put((byte) d.gameType());
+        b.put((byte) d.competitionType());
+        int secondary = d.secondaryState();
+        b.put((byte) (secondary >= 1 && secondary <= 3 ? secondary : 0));
+        b.put((byte) d.state());
+        int setPlay = setPlayCode(secondary);
+        b.put((byte) setPlay);
+        b.put((byte) (d.firstHalf() ? 1 : 0));
+        int kicking = setPlay != 0 ? d.setPlayTeam() : d.kickOffTeam();
+        b.put((byte) (kicking == GameControlData.DROP_BALL ? KICKING_TEAM_NONE : kicking));
+        b.putShort((short) d.secsRemaining());
+        b.putShort((short) d.secondaryTime());
+        for (TeamInfo t : d.teams()) {
+            b.put((byte) t.teamNumber());
+            b.put((byte) t.colour());
+            b.put((byte) t.goalkeeperColour());
+            b.put((byte) goalkeeperNumber(t));
+            b.put((byte) t.score());
+            b.put((byte) t.penaltyShot());
+            b.putShort((short) t.singleShots());
+            b.putShort((short) t.messageBudget());
+            for (int p = 1; p <= MAX_PLAYERS; p++) {
+                RobotInfo r = t.player(p);
+                b.put((byte) splPenalty(r.penalty()));
+                b.put((byte) r.secsTillUnpenalised());
+            }
+        }
+        return WireChecks.finish(b, SIZE);
+    }
+
+    private static int goalkeeperNumber(TeamInfo t) {
+        for (int p = 1; p <= Math.min(MAX_PLAYERS, t.players().size()); p++) {
+            if (t.player(p).goalkeeper()) {
+                return p;
+            }
+        }
+        return 0;
+    }
+
+    static int setPlayCode(int secondaryState) {
+        return switch (secondaryState) {
+            case 8 -> 1;       // goal kick
+            case 4, 5 -> 2;    // direct/indirect free kick -> pushing free kick
+            case 7 -> 3;       // corner kick
+            case 9 -> 4;       // throw-in -> kick-in
+            case 6 -> 5;       // penalty kick
+            default -> 0;
+        };
+    }
+
+    static int secondaryFromSetPlay(int setPlay) {
+        return switch (setPlay) {
+            case 1 -> 8;
+            case 2 -> 4;
+            case 3 -> 7;
+            case 4 -> 9;
+            case 5 -> 6;
+            default -> 0;
+        };
+    }
+
+    static int splPenalty(int hlPenalty) {
+        return switch (hlPenalty) {
+            case 30 -> 1;
+            case 31 -> 2;
+            case 32, 33 -> 5;
+            case 34, 35 -> 7;
+            default -> hlPenalty;
+        };
+    }
+
+    @Override
+    public Decoded<GameControlData> decode(byte[] datagram) {
+        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
+        if (bad != null) {
+            return bad;
+        }
+        ByteBuffer b = WireChecks.reader(datagram);
+        b.position(4);
+        int version = WireChecks.u8(b);
+        if (version != VERSION) {
+            return WireChecks.wrongVersion(VERSION, version);
+        }
+        int packetNumber = WireChecks.u8(b);
+        int playersPerTeam = WireChecks.u8(b);
+        int phase = WireChecks.u8(b);
+        int competitionType = WireChecks.u8(b);
+        int gamePhase = WireChecks.u8(b);
+        int state = WireChecks.u8(b);
+        int setPlay = WireChecks.u8(b);
+        boolean firstHalf = WireChecks.u8(b) != 0;
+        int kicking = WireChecks.u8(b);
+        int kickOff = kicking == KICKING_TEAM_NONE ? GameControlData.DROP_BALL : kicking;
+        int secsRemaining = b.getShort();
+        int secondaryTime = b.getShort();
+        // The neutral form has one secondary state: a running set play wins over the game phase.
+        int secondary = setPlay != 0 ? secondaryFromSetPlay(setPlay) : gamePhase;
+        int setPlayTeam = setPlay != 0 ? kicking : 0;
+        List<TeamInfo> teams = new ArrayList<>(2);
+        for (int t = 0; t < 2; t++) {
+            int number = WireChecks.u8(b);
+            int colour = WireChecks.u8(b);
+            int goalkeeperColour = WireChecks.u8(b);
+            int goalkeeper = WireChecks.u8(b);
+            int score = WireChecks.u8(b);
+            int penaltyShot = WireChecks.u8(b);
+            int singleShots = WireChecks.u16(b);
+            int budget = WireChecks.u16(b);
+            List<RobotInfo> players = new ArrayList<>(MAX_PLAYERS);
+            for (int p = 1; p <= MAX_PLAYERS; p++) {
+                players.add(new RobotInfo(WireChecks.u8(b), WireChecks.u8(b), 0, 0, 0, p == goalkeeper));
+            }
+            teams.add(new TeamInfo(number, colour, goalkeeperColour, score, penaltyShot, singleShots, 0, budget,
+                    RobotInfo.EMPTY, players));
+        }
+        return Decoded.ok(new GameControlData(packetNumber, playersPerTeam, phase, competitionType, state, firstHalf,
+                kickOff, secondary, setPlayTeam, 0, 0, 0, secsRemaining, secondaryTime, teams));
+    }
+}

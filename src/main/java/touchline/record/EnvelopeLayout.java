@@ -1,0 +1,205 @@
+package touchline.record;
+
+import touchline.protocol.FrameCodec;
+import touchline.protocol.Framing;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.UnknownHostException;
+import java.nio.charset.StandardCharsets;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * How an {@link Envelope} maps onto MCAP channels and message bytes, both ways. Everything
+ * that is the same for many envelopes (direction, wire channel, peer, robot, kind, framing)
+ * lives in the MCAP channel's metadata, one channel per distinct combination; the message
+ * holds only what varies:
+ * <ul>
+ * <li>{@link #PAYLOAD}: a well-framed FUmanoids datagram. The data is the protobuf
+ *     {@code fumanoid.Message} behind the header (encoding {@code protobuf}, so other MCAP
+ *     tools decode it); the header is rebuilt from the channel's framing on replay.</li>
+ * <li>{@link #RAW}: anything else that decoded or needs no decoding (GameController packets,
+ *     NAO calls, camera JPEGs, link events): the exact bytes, encoding
+ *     {@value #RAW_ENCODING}, no schema.</li>
+ * <li>{@link #MALFORMED}: bytes that did not decode. The data is a uint16 little-endian
+ *     length, the UTF-8 error text, then the exact bytes (encoding {@value #MALFORMED_ENCODING}).</li>
+ * </ul>
+ */
+final class EnvelopeLayout {
+
+    static final String PAYLOAD = "payload";
+    static final String RAW = "raw";
+    static final String MALFORMED = "malformed";
+
+    static final String RAW_ENCODING = "application/octet-stream";
+    static final String MALFORMED_ENCODING = "application/x-touchline-malformed";
+
+    static final String KEY_DIRECTION = "touchline.direction";
+    static final String KEY_CHANNEL = "touchline.channel";
+    static final String KEY_PEER = "touchline.peer";
+    static final String KEY_ROBOT = "touchline.robot";
+    static final String KEY_KIND = "touchline.kind";
+    static final String KEY_LAYOUT = "touchline.layout";
+    static final String KEY_FRAMING = "touchline.framing";
+
+    /** The per-channel facts of an envelope: the key its MCAP channel is found by. */
+    record Key(Direction direction, Channel channel, InetSocketAddress peer, int robotId, String kind,
+               String layout, Framing framing) {
+
+        Map<String, String> metadata() {
+            Map<String, String> m = new LinkedHashMap<>();
+            m.put(KEY_DIRECTION, direction.name());
+            m.put(KEY_CHANNEL, channel.name());
+            if (peer != null) {
+                m.put(KEY_PEER, formatPeer(peer));
+            }
+            m.put(KEY_ROBOT, Integer.toString(robotId));
+            m.put(KEY_KIND, kind);
+            m.put(KEY_LAYOUT, layout);
+            if (framing != null) {
+                m.put(KEY_FRAMING, framing.name());
+            }
+            return m;
+        }
+
+        /** e.g. /robot/3/status, /robot/3/out/debugOptionRequest, /gc/out/hl12, /nao/rpc, /robot/2/malformed. */
+        String topic() {
+            String robot = robotId == Envelope.NO_ROBOT ? "unknown" : Integer.toString(robotId);
+            String dir = direction == Direction.OUT ? "/out" : "";
+            String[] parts = switch (channel) {
+                case FUMANOID -> new String[]{"/robot/" + robot, ""};
+                case RELIABLE_STREAM -> new String[]{"/robot/" + robot, "/stream"};
+                case GAMECONTROLLER -> new String[]{"/gc", ""};
+                case NAO_RPC -> new String[]{"/nao", "/rpc"};
+                case NAO_CAMERA -> new String[]{"/nao", "/camera"};
+                case LINK_EVENT -> new String[]{"/link", ""};
+            };
+            String name = kind.replaceAll("[^A-Za-z0-9_#.\\-]", "_");
+            String topic = parts[0] + dir + parts[1];
+            if (!parts[1].equals("/" + name)) {
+                topic += "/" + name;
+            }
+            if (layout.equals(MALFORMED) && !name.contains("malformed")) {
+                topic += "/malformed";
+            }
+            return topic;
+        }
+
+        String encoding() {
+            return switch (layout) {
+                case PAYLOAD -> "protobuf";
+                case MALFORMED -> MALFORMED_ENCODING;
+                default -> RAW_ENCODING;
+            };
+        }
+
+        static Key fromMetadata(Map<String, String> m) {
+            String framing = m.get(KEY_FRAMING);
+            return new Key(Direction.valueOf(m.get(KEY_DIRECTION)), Channel.valueOf(m.get(KEY_CHANNEL)),
+                    parsePeer(m.get(KEY_PEER)), Integer.parseInt(m.get(KEY_ROBOT)), m.get(KEY_KIND),
+                    m.getOrDefault(KEY_LAYOUT, RAW), framing == null ? null : Framing.valueOf(framing));
+        }
+    }
+
+    // No size limit on replay: the recorder kept whatever the transport accepted.
+    private final FrameCodec frames = new FrameCodec(Integer.MAX_VALUE);
+
+    /**
+     * The channel key of {@code e}. PAYLOAD needs a header {@link FrameCodec} accepts and would
+     * write identically (legacy flags and reserved bytes zero), so replay rebuilds it byte for
+     * byte; the payload then starts at {@code key.framing().headerSize()}. Checked in place,
+     * without copying, because this runs for every recorded datagram.
+     */
+    Key keyOf(Envelope e) {
+        if (e.error() != null) {
+            return key(e, MALFORMED, null);
+        }
+        if (e.channel() == Channel.FUMANOID && e.message() != null) {
+            Framing framing = exactFraming(e.raw());
+            if (framing != null) {
+                return key(e, PAYLOAD, framing);
+            }
+        }
+        return key(e, RAW, null);
+    }
+
+    static Framing exactFraming(byte[] raw) {
+        if (raw.length >= 2 && raw[0] == 0 && raw[1] == Framing.MESSAGE_TYPE) {
+            if (raw.length < 12 || lengthField(raw, 8) != raw.length - 12) {
+                return null;
+            }
+            for (int i = 2; i < 8; i++) {
+                if (raw[i] != 0) {
+                    return null;
+                }
+            }
+            return Framing.LEGACY;
+        }
+        return raw.length >= 4 && lengthField(raw, 0) == raw.length - 4 ? Framing.LENGTH_PREFIX : null;
+    }
+
+    private static long lengthField(byte[] d, int at) {
+        return ((long) (d[at] & 0xFF) << 24) | ((d[at + 1] & 0xFF) << 16) | ((d[at + 2] & 0xFF) << 8) | (d[at + 3] & 0xFF);
+    }
+
+    private static Key key(Envelope e, String layout, Framing framing) {
+        return new Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(), layout, framing);
+    }
+
+    static byte[] malformedData(String error, byte[] raw) {
+        byte[] text = error.getBytes(StandardCharsets.UTF_8);
+        int n = Math.min(text.length, 0xFFFF);
+        byte[] out = new byte[2 + n + raw.length];
+        out[0] = (byte) n;
+        out[1] = (byte) (n >>> 8);
+        System.arraycopy(text, 0, out, 2, n);
+        System.arraycopy(raw, 0, out, 2 + n, raw.length);
+        return out;
+    }
+
+    /** Splits MALFORMED data into {error, raw}; null when the data is too short to be one. */
+    static Object[] parseMalformed(byte[] data) {
+        if (data.length < 2) {
+            return null;
+        }
+        int n = (data[0] & 0xFF) | (data[1] & 0xFF) << 8;
+        if (2 + n > data.length) {
+            return null;
+        }
+        byte[] raw = new byte[data.length - 2 - n];
+        System.arraycopy(data, 2 + n, raw, 0, raw.length);
+        return new Object[]{new String(data, 2, n, StandardCharsets.UTF_8), raw};
+    }
+
+    byte[] frame(Framing framing, byte[] payload) {
+        return frames.encode(framing, payload);
+    }
+
+    static String formatPeer(InetSocketAddress peer) {
+        if (peer.isUnresolved()) {
+            return "unresolved:" + peer.getHostString() + ":" + peer.getPort();
+        }
+        return peer.getAddress().getHostAddress() + ":" + peer.getPort();
+    }
+
+    static InetSocketAddress parsePeer(String s) {
+        if (s == null) {
+            return null;
+        }
+        int colon = s.lastIndexOf(':');
+        int port = Integer.parseInt(s.substring(colon + 1));
+        if (s.startsWith("unresolved:")) {
+            return InetSocketAddress.createUnresolved(s.substring("unresolved:".length(), colon), port);
+        }
+        try {
+            // an IP literal: no name lookup happens
+            return new InetSocketAddress(InetAddress.getByName(s.substring(0, colon)), port);
+        } catch (UnknownHostException e) {
+            return InetSocketAddress.createUnresolved(s.substring(0, colon), port);
+        }
+    }
+}

@@ -1,0 +1,223 @@
+package touchline.record;
+
+import com.google.protobuf.Descriptors.FieldDescriptor;
+import com.google.protobuf.Descriptors.FileDescriptor;
+import com.google.protobuf.Message;
+import touchline.proto.Fumanoid;
+import touchline.transport.Envelope;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+
+/**
+ * Writes Envelopes to MCAP files (layout: {@link EnvelopeLayout}), starting a new file when
+ * the current one exceeds the size or time limit. Log time = the envelope's time in ns;
+ * publish time = the robot's own {@code timestamp} field (milliseconds, converted to ns)
+ * where the message has one, else the log time. Protobuf channels carry the descriptor set
+ * of {@code fumanoid.proto} plus every team file the message's extension comes from plus
+ * the files given at construction. Single-threaded: {@link Recorder} owns one on its thread.
+ */
+public final class EnvelopeWriter implements Closeable {
+
+    /**
+     * Limits and tuning; 0 disables a split limit. {@code cameraIntervalMicros} thins camera
+     * frames (NAO_CAMERA) to at most one per interval per channel; 0 keeps every frame.
+     */
+    public record Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles,
+                          long cameraIntervalMicros) {
+
+        public Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles) {
+            this(splitBytes, splitMicros, chunkBytes, teamFiles, 0);
+        }
+
+        public static Options defaults() {
+            return new Options(0, 0, 512 * 1024, List.of(), 0);
+        }
+
+        public Options withSplit(long bytes, long micros) {
+            return new Options(bytes, micros, chunkBytes, teamFiles, cameraIntervalMicros);
+        }
+
+        public Options withTeamFiles(List<FileDescriptor> files) {
+            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files), cameraIntervalMicros);
+        }
+
+        /** Camera frames at most {@code fps} per second per camera channel (0 = all). */
+        public Options withCameraRate(double fps) {
+            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, fps <= 0 ? 0 : (long) (1e6 / fps));
+        }
+    }
+
+    /** The channel id in the current file, plus what finding the robot's timestamp needs. */
+    private static final class ChannelState {
+        final int id;
+        long nextFrameMicros = Long.MIN_VALUE;
+        FieldDescriptor extension;
+        FieldDescriptor timestamp;
+        boolean timestampResolved;
+
+        ChannelState(int id) {
+            this.id = id;
+        }
+    }
+
+    private final Path base;
+    private final Options options;
+    private final EnvelopeLayout layout = new EnvelopeLayout();
+    private final List<Path> files = new ArrayList<>();
+    private final Map<EnvelopeLayout.Key, ChannelState> channels = new HashMap<>();
+    private final Map<Set<String>, Integer> schemaIds = new HashMap<>();
+    private McapWriter writer;
+    private long fileStartMicros;
+    private long bytesOfClosedFiles;
+    private long thinnedFrames;
+
+    public EnvelopeWriter(Path file, Options options) throws IOException {
+        this.base = file;
+        this.options = options;
+        openNext();
+    }
+
+    private void openNext() throws IOException {
+        if (writer != null) {
+            bytesOfClosedFiles += writer.size();
+            writer.close();
+        }
+        Path next = files.isEmpty() ? base : numbered(base, files.size());
+        writer = new McapWriter(next, options.chunkBytes());
+        files.add(next);
+        channels.clear();
+        schemaIds.clear();
+        fileStartMicros = Long.MIN_VALUE;
+    }
+
+    static Path numbered(Path base, int n) {
+        String name = base.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String stem = dot < 0 ? name : name.substring(0, dot);
+        String ext = dot < 0 ? "" : name.substring(dot);
+        return base.resolveSibling(String.format("%s-%03d%s", stem, n, ext));
+    }
+
+    public void write(Envelope e) throws IOException {
+        if (fileStartMicros == Long.MIN_VALUE) {
+            fileStartMicros = e.timeMicros();
+        } else if ((options.splitBytes() > 0 && writer.size() >= options.splitBytes())
+                || (options.splitMicros() > 0 && e.timeMicros() - fileStartMicros >= options.splitMicros())) {
+            openNext();
+            fileStartMicros = e.timeMicros();
+        }
+        EnvelopeLayout.Key key = layout.keyOf(e);
+        ChannelState channel = channels.get(key);
+        if (channel == null) {
+            channel = addChannel(key, e.message());
+        }
+        if (options.cameraIntervalMicros() > 0 && key.channel() == touchline.transport.Channel.NAO_CAMERA
+                && !key.layout().equals(EnvelopeLayout.MALFORMED)) {
+            // one frame per interval slot, slots counted from the first frame, so 30 fps thinned
+            // to 5 fps gives 5 frames a second rather than whatever divides 30 evenly
+            long interval = options.cameraIntervalMicros();
+            if (channel.nextFrameMicros != Long.MIN_VALUE && e.timeMicros() < channel.nextFrameMicros) {
+                thinnedFrames++;
+                return;
+            }
+            channel.nextFrameMicros = channel.nextFrameMicros == Long.MIN_VALUE
+                    || channel.nextFrameMicros + interval <= e.timeMicros()
+                    ? e.timeMicros() + interval : channel.nextFrameMicros + interval;
+        }
+        long logTime = e.timeMicros() * 1000;
+        switch (key.layout()) {
+            case EnvelopeLayout.PAYLOAD -> {
+                int header = key.framing().headerSize();
+                writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), logTime),
+                        e.raw(), header, e.raw().length - header);
+            }
+            case EnvelopeLayout.MALFORMED -> writer.addMessage(channel.id, logTime, logTime,
+                    EnvelopeLayout.malformedData(e.error(), e.raw()));
+            default -> writer.addMessage(channel.id, logTime, logTime, e.raw());
+        }
+    }
+
+    private ChannelState addChannel(EnvelopeLayout.Key key, Message message) {
+        int schemaId = 0;
+        if (key.layout().equals(EnvelopeLayout.PAYLOAD)) {
+            Set<FileDescriptor> roots = new LinkedHashSet<>();
+            roots.add(Fumanoid.getDescriptor());
+            roots.addAll(options.teamFiles());
+            for (FieldDescriptor f : message.getAllFields().keySet()) {
+                roots.add(f.getFile());
+            }
+            Set<String> names = new TreeSet<>();
+            roots.forEach(r -> names.add(r.getName()));
+            schemaId = schemaIds.computeIfAbsent(names, n -> writer.addSchema(
+                    Fumanoid.Message.getDescriptor().getFullName(), "protobuf",
+                    SchemaSet.descriptorSet(roots).toByteArray()));
+        }
+        ChannelState state = new ChannelState(writer.addChannel(schemaId, key.topic(), key.encoding(), key.metadata()));
+        channels.put(key, state);
+        return state;
+    }
+
+    /** The robot's own timestamp (ms) of the extension the message carries, in ns; else {@code fallback}. */
+    private static long robotTime(ChannelState c, Message message, long fallback) {
+        if (!c.timestampResolved) {
+            c.timestampResolved = true;
+            for (FieldDescriptor f : message.getAllFields().keySet()) {
+                if (f.isExtension() && f.getJavaType() == FieldDescriptor.JavaType.MESSAGE) {
+                    FieldDescriptor ts = f.getMessageType().findFieldByName("timestamp");
+                    if (ts != null && ts.getJavaType() == FieldDescriptor.JavaType.LONG && !ts.isRepeated()) {
+                        c.extension = f;
+                        c.timestamp = ts;
+                    }
+                    break;
+                }
+            }
+        }
+        if (c.timestamp == null || !message.hasField(c.extension)) {
+            return fallback;
+        }
+        Message inner = (Message) message.getField(c.extension);
+        return inner.hasField(c.timestamp) ? (Long) inner.getField(c.timestamp) * 1_000_000L : fallback;
+    }
+
+    void metadataForTest(String name, Map<String, String> values) throws IOException {
+        writer.addMetadata(name, values);
+    }
+
+    /** Writes the open chunk when it is older than {@code maxAgeNanos} (crash safety). */
+    public void flushIfOlderThan(long maxAgeNanos) throws IOException {
+        writer.flushIfOlderThan(maxAgeNanos);
+    }
+
+    public void flush() throws IOException {
+        writer.flushChunk();
+    }
+
+    /** Bytes written to all files so far (including the open chunk). */
+    public long bytes() {
+        return writer.size() + bytesOfClosedFiles;
+    }
+
+    /** Camera frames left out by the camera rate limit. */
+    public long thinnedFrames() {
+        return thinnedFrames;
+    }
+
+    public List<Path> files() {
+        return Collections.unmodifiableList(files);
+    }
+
+    @Override
+    public void close() throws IOException {
+        writer.close();
+    }
+}

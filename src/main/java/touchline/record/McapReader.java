@@ -1,0 +1,505 @@
+package touchline.record;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.nio.BufferUnderflowException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.channels.FileChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.zip.CRC32;
+
+/**
+ * A small MCAP reader (https://mcap.dev/spec). With an intact summary it reads schemas,
+ * channels and chunk indexes from it; without one (a recorder that was killed, a file cut
+ * short) it scans the data section linearly up to the cut. Chunks whose CRC does not match,
+ * compressed chunks (this reader knows none) and records it cannot parse are skipped and
+ * described in {@link #problems()}: bad input becomes a message, never an exception, once
+ * the file is known to be MCAP at all. Cursors may be used from one thread each.
+ */
+public final class McapReader implements Closeable {
+
+    /** A schema record: for protobuf, name = full message name, data = a FileDescriptorSet. */
+    public record Schema(int id, String name, String encoding, byte[] data) { }
+
+    /** A channel record; schemaId 0 = no schema. */
+    public record ChannelInfo(int id, int schemaId, String topic, String messageEncoding,
+                              Map<String, String> metadata) { }
+
+    /** One message record; times in nanoseconds. */
+    public record McapMessage(int channelId, long sequence, long logTime, long publishTime, byte[] data) { }
+
+    /** A chunk (or, for {@code loose}, a single message record outside any chunk) in file order. */
+    record Block(long offset, long length, long startTime, long endTime, boolean loose) { }
+
+    private final Path file;
+    private final FileChannel in;
+    private final long fileSize;
+    private final Map<Integer, Schema> schemas = new ConcurrentHashMap<>();
+    private final Map<Integer, ChannelInfo> channels = new ConcurrentHashMap<>();
+    private final Map<String, Map<String, String>> metadata = new ConcurrentHashMap<>();
+    private final CopyOnWriteArrayList<String> problems = new CopyOnWriteArrayList<>();
+    private final List<Block> blocks = new ArrayList<>();
+    private boolean indexed;
+    private long messageCount = -1;
+    private long startTime = Long.MAX_VALUE;
+    private long endTime = Long.MIN_VALUE;
+
+    private McapReader(Path file) throws IOException {
+        this.file = file;
+        this.in = FileChannel.open(file, StandardOpenOption.READ);
+        this.fileSize = in.size();
+    }
+
+    /**
+     * Opens {@code file}. Throws {@link RecordingException} with a user-facing message when it
+     * cannot be read or is not MCAP; everything else is reported through {@link #problems()}.
+     */
+    public static McapReader open(Path file) throws RecordingException {
+        McapReader reader;
+        try {
+            reader = new McapReader(file);
+        } catch (IOException e) {
+            throw new RecordingException("cannot open " + file + ": " + e.getMessage());
+        }
+        try {
+            reader.load();
+            return reader;
+        } catch (IOException e) {
+            reader.closeQuietly();
+            throw new RecordingException("cannot read " + file + ": " + e.getMessage());
+        } catch (RecordingException e) {
+            reader.closeQuietly();
+            throw e;
+        }
+    }
+
+    private void load() throws IOException, RecordingException {
+        byte[] head = read(0, (int) Math.min(8, fileSize));
+        if (!Arrays.equals(head, McapRecords.MAGIC)) {
+            throw new RecordingException(file.getFileName() + " is not an MCAP recording (it starts with "
+                    + hex(head) + ", an MCAP file starts with 89 4D 43 41 50 30 0D 0A)");
+        }
+        if (!loadSummary()) {
+            scanLinearly();
+        }
+        Map<String, String> format = metadata.get(McapWriter.FORMAT_METADATA);
+        if (format != null) {
+            try {
+                int version = Integer.parseInt(format.getOrDefault("version", "1"));
+                if (version > McapWriter.FORMAT_VERSION) {
+                    problems.addIfAbsent("recorded by a newer Touchline (format " + version + ", this one reads "
+                            + McapWriter.FORMAT_VERSION + "); playing what this version understands");
+                }
+            } catch (NumberFormatException e) {
+                problems.addIfAbsent("unreadable format version '" + format.get("version") + "'");
+            }
+        }
+    }
+
+    private boolean loadSummary() throws IOException {
+        int tail = 1 + 8 + 20 + 8;
+        if (fileSize < 8 + tail) {
+            problems.addIfAbsent(cutMessage("no footer"));
+            return false;
+        }
+        ByteBuffer t = ByteBuffer.wrap(read(fileSize - tail, tail)).order(ByteOrder.LITTLE_ENDIAN);
+        byte[] magic = Arrays.copyOfRange(t.array(), tail - 8, tail);
+        if (t.get() != McapRecords.FOOTER || t.getLong() != 20 || !Arrays.equals(magic, McapRecords.MAGIC)) {
+            problems.addIfAbsent(cutMessage("no footer"));
+            return false;
+        }
+        long summaryStart = t.getLong();
+        long summaryOffsetStart = t.getLong();
+        if (summaryStart == 0) {
+            return false;
+        }
+        long summaryEnd = summaryOffsetStart != 0 ? summaryOffsetStart : fileSize - tail;
+        if (summaryStart < 8 || summaryEnd > fileSize - tail || summaryStart > summaryEnd) {
+            problems.addIfAbsent("the summary offsets in the footer point outside the file; scanning the data instead");
+            return false;
+        }
+        ByteBuffer s = ByteBuffer.wrap(read(summaryStart, (int) (summaryEnd - summaryStart)))
+                .order(ByteOrder.LITTLE_ENDIAN);
+        try {
+            while (s.remaining() >= 9) {
+                int op = s.get() & 0xFF;
+                long len = s.getLong();
+                if (len > s.remaining()) {
+                    throw new BufferUnderflowException();
+                }
+                ByteBuffer r = s.slice(s.position(), (int) len).order(ByteOrder.LITTLE_ENDIAN);
+                s.position(s.position() + (int) len);
+                switch (op) {
+                    case McapRecords.SCHEMA -> addSchema(r);
+                    case McapRecords.CHANNEL -> addChannel(r);
+                    case McapRecords.CHUNK_INDEX -> {
+                        long start = r.getLong();
+                        long end = r.getLong();
+                        long offset = r.getLong();
+                        long length = r.getLong();
+                        blocks.add(new Block(offset, length, start, end, false));
+                    }
+                    case McapRecords.STATISTICS -> {
+                        messageCount = r.getLong();
+                        r.position(r.position() + 2 + 4 + 4 + 4 + 4);
+                        long start = r.getLong();
+                        long end = r.getLong();
+                        if (messageCount > 0) {
+                            startTime = start;
+                            endTime = end;
+                        }
+                    }
+                    case McapRecords.METADATA_INDEX -> {
+                        long offset = r.getLong();
+                        long length = r.getLong();
+                        readMetadataAt(offset, length);
+                    }
+                    default -> { }
+                }
+            }
+        } catch (BufferUnderflowException | IllegalArgumentException | IndexOutOfBoundsException e) {
+            problems.addIfAbsent("the summary section is damaged; scanning the data instead");
+            schemas.clear();
+            channels.clear();
+            blocks.clear();
+            return false;
+        }
+        if (startTime == Long.MAX_VALUE) {
+            for (Block b : blocks) {
+                startTime = Math.min(startTime, b.startTime());
+                endTime = Math.max(endTime, b.endTime());
+            }
+        }
+        indexed = true;
+        return true;
+    }
+
+    private void readMetadataAt(long offset, long length) throws IOException {
+        if (offset < 8 || length < 9 || offset + length > fileSize) {
+            return;
+        }
+        ByteBuffer b = ByteBuffer.wrap(read(offset + 9, (int) length - 9)).order(ByteOrder.LITTLE_ENDIAN);
+        String name = string(b);
+        metadata.put(name, map(b));
+    }
+
+    private String cutMessage(String what) {
+        return "the recording has " + what + " (the recorder did not finish, e.g. it was killed or the file was cut); "
+                + "recovering by scanning " + fileSize + " bytes";
+    }
+
+    private void scanLinearly() throws IOException {
+        long pos = 8;
+        ByteBuffer header = ByteBuffer.allocate(9).order(ByteOrder.LITTLE_ENDIAN);
+        while (pos < fileSize) {
+            if (fileSize - pos < 9) {
+                problems.addIfAbsent("the recording is cut off at byte " + fileSize + " inside a record header; "
+                        + "everything before it plays");
+                break;
+            }
+            header.clear();
+            readFully(header, pos);
+            header.flip();
+            int op = header.get() & 0xFF;
+            long len = header.getLong();
+            if (len < 0 || pos + 9 + len > fileSize) {
+                if (op == McapRecords.CHUNK && len > 0) {
+                    blocks.add(new Block(pos, fileSize - pos, Long.MIN_VALUE, Long.MAX_VALUE, false));
+                    problems.addIfAbsent("the recording is cut off at byte " + fileSize + " inside its last chunk; "
+                            + "the messages complete before the cut play (without CRC check)");
+                } else {
+                    problems.addIfAbsent("the recording is cut off at byte " + fileSize + " (a record of " + len
+                            + " bytes starts at byte " + pos + "); everything before it plays");
+                }
+                break;
+            }
+            if (op == McapRecords.DATA_END || op == McapRecords.FOOTER) {
+                break;
+            }
+            switch (op) {
+                case McapRecords.SCHEMA, McapRecords.CHANNEL, McapRecords.METADATA -> {
+                    ByteBuffer r = ByteBuffer.wrap(read(pos + 9, (int) len)).order(ByteOrder.LITTLE_ENDIAN);
+                    try {
+                        if (op == McapRecords.SCHEMA) {
+                            addSchema(r);
+                        } else if (op == McapRecords.CHANNEL) {
+                            addChannel(r);
+                        } else {
+                            metadata.put(string(r), map(r));
+                        }
+                    } catch (BufferUnderflowException | IllegalArgumentException e) {
+                        problems.addIfAbsent("unreadable record at byte " + pos + " skipped");
+                    }
+                }
+                case McapRecords.CHUNK -> {
+                    ByteBuffer r = ByteBuffer.wrap(read(pos + 9, 16)).order(ByteOrder.LITTLE_ENDIAN);
+                    blocks.add(new Block(pos, 9 + len, r.getLong(), r.getLong(), false));
+                }
+                case McapRecords.MESSAGE -> {
+                    ByteBuffer r = ByteBuffer.wrap(read(pos + 9 + 6, 8)).order(ByteOrder.LITTLE_ENDIAN);
+                    long t = r.getLong();
+                    blocks.add(new Block(pos, 9 + len, t, t, true));
+                }
+                default -> { }
+            }
+            pos += 9 + len;
+        }
+        for (Block b : blocks) {
+            if (b.startTime() != Long.MIN_VALUE) {
+                startTime = Math.min(startTime, b.startTime());
+                endTime = Math.max(endTime, b.endTime());
+            }
+        }
+    }
+
+    private void addSchema(ByteBuffer r) {
+        int id = r.getShort() & 0xFFFF;
+        String name = string(r);
+        String encoding = string(r);
+        byte[] data = bytes(r, r.getInt());
+        schemas.put(id, new Schema(id, name, encoding, data));
+    }
+
+    private void addChannel(ByteBuffer r) {
+        int id = r.getShort() & 0xFFFF;
+        int schemaId = r.getShort() & 0xFFFF;
+        String topic = string(r);
+        String encoding = string(r);
+        channels.put(id, new ChannelInfo(id, schemaId, topic, encoding, map(r)));
+    }
+
+    private static String string(ByteBuffer r) {
+        return new String(bytes(r, r.getInt()), StandardCharsets.UTF_8);
+    }
+
+    private static byte[] bytes(ByteBuffer r, long n) {
+        if (n < 0 || n > r.remaining()) {
+            throw new IllegalArgumentException("length " + n + " exceeds the record");
+        }
+        byte[] b = new byte[(int) n];
+        r.get(b);
+        return b;
+    }
+
+    private static Map<String, String> map(ByteBuffer r) {
+        int n = r.getInt();
+        if (n < 0 || n > r.remaining()) {
+            throw new IllegalArgumentException("map length " + n + " exceeds the record");
+        }
+        ByteBuffer m = r.slice(r.position(), n).order(ByteOrder.LITTLE_ENDIAN);
+        r.position(r.position() + n);
+        Map<String, String> out = new LinkedHashMap<>();
+        while (m.hasRemaining()) {
+            out.put(string(m), string(m));
+        }
+        return Collections.unmodifiableMap(out);
+    }
+
+    private byte[] read(long pos, int n) throws IOException {
+        ByteBuffer b = ByteBuffer.allocate(n);
+        readFully(b, pos);
+        return b.array();
+    }
+
+    private void readFully(ByteBuffer b, long pos) throws IOException {
+        while (b.hasRemaining()) {
+            int r = in.read(b, pos + b.position());
+            if (r < 0) {
+                throw new IOException("unexpected end of file at byte " + (pos + b.position()));
+            }
+        }
+    }
+
+    public Map<Integer, Schema> schemas() {
+        return Collections.unmodifiableMap(schemas);
+    }
+
+    public Map<Integer, ChannelInfo> channels() {
+        return Collections.unmodifiableMap(channels);
+    }
+
+    /** Metadata records by name (from the summary's metadata index, or found while scanning). */
+    public Map<String, Map<String, String>> metadata() {
+        return Collections.unmodifiableMap(metadata);
+    }
+
+    /** What could not be read, one user-facing sentence each; grows while cursors read chunks. */
+    public List<String> problems() {
+        return Collections.unmodifiableList(problems);
+    }
+
+    /** True when schemas, channels and chunks came from the summary (the file was closed cleanly). */
+    public boolean indexed() {
+        return indexed;
+    }
+
+    /** Messages in the file according to its statistics, or -1 when it has none. */
+    public long messageCount() {
+        return messageCount;
+    }
+
+    /** Log time of the first message (ns), or 0 when the file has none. */
+    public long startTime() {
+        return startTime == Long.MAX_VALUE ? 0 : startTime;
+    }
+
+    /** Log time of the last message (ns), or 0 when the file has none. */
+    public long endTime() {
+        return endTime == Long.MIN_VALUE ? 0 : endTime;
+    }
+
+    List<Block> blocksForTest() {
+        return List.copyOf(blocks);
+    }
+
+    public long chunkCount() {
+        return blocks.stream().filter(b -> !b.loose()).count();
+    }
+
+    /** A cursor over messages in file order, starting at the first with log time >= {@code fromLogTime}. */
+    public Cursor cursor(long fromLogTime) {
+        int first = 0;
+        while (first < blocks.size() && blocks.get(first).endTime() < fromLogTime) {
+            first++;
+        }
+        return new Cursor(first, fromLogTime);
+    }
+
+    /** Reads messages block by block; {@link #next()} returns null at the end. */
+    public final class Cursor {
+        private int block;
+        private final long from;
+        private ByteBuffer records;
+        private long recordsOffset;
+
+        private Cursor(int block, long from) {
+            this.block = block;
+            this.from = from;
+        }
+
+        public McapMessage next() {
+            while (true) {
+                if (records == null || !records.hasRemaining()) {
+                    if (block >= blocks.size()) {
+                        return null;
+                    }
+                    records = load(blocks.get(block++));
+                    continue;
+                }
+                McapMessage m = nextRecord();
+                if (m != null && Long.compareUnsigned(m.logTime(), from) >= 0) {
+                    return m;
+                }
+            }
+        }
+
+        private McapMessage nextRecord() {
+            ByteBuffer r = records;
+            int start = r.position();
+            if (r.remaining() < 9) {
+                r.position(r.limit());
+                return null;
+            }
+            int op = r.get() & 0xFF;
+            long len = r.getLong();
+            if (len < 0 || len > r.remaining()) {
+                problems.addIfAbsent("chunk at byte " + recordsOffset + ": a record at offset " + start
+                        + " runs past the chunk's end; the rest of that chunk is skipped");
+                r.position(r.limit());
+                return null;
+            }
+            ByteBuffer rec = r.slice(r.position(), (int) len).order(ByteOrder.LITTLE_ENDIAN);
+            r.position(r.position() + (int) len);
+            try {
+                switch (op) {
+                    case McapRecords.MESSAGE -> {
+                        int channel = rec.getShort() & 0xFFFF;
+                        long seq = rec.getInt() & 0xFFFFFFFFL;
+                        long logTime = rec.getLong();
+                        long publishTime = rec.getLong();
+                        byte[] data = new byte[rec.remaining()];
+                        rec.get(data);
+                        return new McapMessage(channel, seq, logTime, publishTime, data);
+                    }
+                    case McapRecords.SCHEMA -> addSchema(rec);
+                    case McapRecords.CHANNEL -> addChannel(rec);
+                    default -> { }
+                }
+            } catch (BufferUnderflowException | IllegalArgumentException e) {
+                problems.addIfAbsent("chunk at byte " + recordsOffset + ": unreadable record at offset " + start + " skipped");
+            }
+            return null;
+        }
+
+        private ByteBuffer load(Block b) {
+            recordsOffset = b.offset();
+            try {
+                int n = (int) Math.min(b.length(), fileSize - b.offset());
+                ByteBuffer whole = ByteBuffer.wrap(read(b.offset(), n)).order(ByteOrder.LITTLE_ENDIAN);
+                if (b.loose()) {
+                    return whole;
+                }
+                whole.position(9);
+                whole.getLong();
+                whole.getLong();
+                long uncompressedSize = whole.getLong();
+                long crc = whole.getInt() & 0xFFFFFFFFL;
+                String compression = string(whole);
+                long recordsLength = whole.getLong();
+                if (!compression.isEmpty()) {
+                    problems.addIfAbsent("chunk at byte " + b.offset() + " is compressed with " + compression
+                            + ", which this reader does not support; its messages are skipped");
+                    return null;
+                }
+                boolean cut = recordsLength > whole.remaining();
+                ByteBuffer records = whole.slice(whole.position(), (int) Math.min(recordsLength, whole.remaining()))
+                        .order(ByteOrder.LITTLE_ENDIAN);
+                if (!cut && crc != 0) {
+                    CRC32 check = new CRC32();
+                    check.update(records.duplicate());
+                    if (check.getValue() != crc || uncompressedSize != recordsLength) {
+                        problems.addIfAbsent("chunk at byte " + b.offset() + " is corrupt (CRC " + Long.toHexString(check.getValue())
+                                + ", expected " + Long.toHexString(crc) + "); its messages are skipped, the rest plays");
+                        return null;
+                    }
+                }
+                return records;
+            } catch (IOException | BufferUnderflowException | IllegalArgumentException e) {
+                problems.addIfAbsent("chunk at byte " + b.offset() + " could not be read (" + e.getMessage() + "); skipped");
+                return null;
+            }
+        }
+    }
+
+    private static String hex(byte[] b) {
+        StringBuilder s = new StringBuilder();
+        for (byte x : b) {
+            s.append(String.format("%02X ", x));
+        }
+        return s.toString().trim();
+    }
+
+    private void closeQuietly() {
+        try {
+            in.close();
+        } catch (IOException ignored) {
+            // nothing more to tell the user than the error already reported
+        }
+    }
+
+    @Override
+    public void close() {
+        closeQuietly();
+    }
+}

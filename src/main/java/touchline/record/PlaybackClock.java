@@ -1,0 +1,14 @@
+package touchline.record;
+
+/**
+ * The wall clock a {@link Player} paces itself by; tests pass a clock they advance by hand,
+ * so speed and pause are checked without sleeping.
+ */
+@FunctionalInterface
+public interface PlaybackClock {
+    long nanoTime();
+
+    static PlaybackClock system() {
+        return System::nanoTime;
+    }
+}

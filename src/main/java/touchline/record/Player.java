@@ -1,0 +1,288 @@
+package touchline.record;
+
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * Feeds a {@link Recording} into an {@link EnvelopeSink} (normally the application's
+ * {@code EnvelopeBus}) paced by a clock: play, pause, speed 0.1x to 50x, seek by time or to
+ * an event, loop a range, or everything as fast as possible ({@link #runToEnd()}). Controls
+ * are thread-safe and may be called from the UI thread; envelopes are delivered on the
+ * player's own thread ({@link #start()}) or on whichever thread calls {@link #pump()}.
+ * The position advances with the clock: recording time = anchor + wall time elapsed x speed.
+ */
+public final class Player implements AutoCloseable {
+
+    public static final double MIN_SPEED = 0.1;
+    public static final double MAX_SPEED = 50;
+    /** Envelopes delivered per pump at most, so controls never wait long for the lock. */
+    private static final int BATCH = 20_000;
+    private static final long MAX_WAIT_NANOS = 20_000_000L;
+    /** A loop over a range with no envelopes must not spin forever inside one pump. */
+    private static final int MAX_LAPS_PER_PUMP = 1000;
+
+    private final Recording recording;
+    private final EnvelopeSink sink;
+    private final PlaybackClock clock;
+    private Recording.Cursor cursor;
+    private Envelope pending;
+    private long position;
+    private long anchorRecording;
+    private long anchorWall;
+    private boolean playing;
+    private boolean finished;
+    private double speed = 1;
+    private long loopFrom = -1;
+    private long loopTo = -1;
+    private long emitted;
+    private boolean closed;
+    private Thread thread;
+
+    public Player(Recording recording, EnvelopeSink sink, PlaybackClock clock) {
+        this.recording = recording;
+        this.sink = sink;
+        this.clock = clock;
+        this.position = recording.startMicros();
+        this.cursor = recording.cursor(position);
+    }
+
+    /** Starts the delivery thread (not needed when the caller pumps, e.g. in tests or headless). */
+    public synchronized void start() {
+        if (thread == null) {
+            thread = new Thread(this::loop, "touchline-replay");
+            thread.setDaemon(true);
+            thread.start();
+        }
+    }
+
+    private void loop() {
+        synchronized (this) {
+            while (!closed) {
+                long waitNanos = pump();
+                try {
+                    long w = playing ? Math.max(1_000_000L, Math.min(waitNanos, MAX_WAIT_NANOS)) : 0;
+                    if (w == 0) {
+                        wait();
+                    } else {
+                        wait(w / 1_000_000L, (int) (w % 1_000_000L));
+                    }
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }
+    }
+
+    /**
+     * Delivers every envelope due by now. Returns the wall time in ns until the next one is
+     * due (Long.MAX_VALUE when paused or finished).
+     */
+    public synchronized long pump() {
+        if (!playing) {
+            return Long.MAX_VALUE;
+        }
+        long target = targetPosition();
+        int delivered = 0;
+        int laps = 0;
+        while (delivered < BATCH && laps < MAX_LAPS_PER_PUMP) {
+            if (pending == null) {
+                pending = cursor.next();
+                if (pending == null) {
+                    if (loopFrom >= 0) {
+                        target = wrap(target, Math.min(loopTo, recording.endMicros()));
+                        laps++;
+                        continue;
+                    }
+                    position = Math.max(position, recording.endMicros());
+                    playing = false;
+                    finished = true;
+                    return Long.MAX_VALUE;
+                }
+            }
+            if (loopTo >= 0 && pending.timeMicros() > loopTo && target >= loopTo) {
+                target = wrap(target, loopTo);
+                laps++;
+                continue;
+            }
+            if (pending.timeMicros() > target) {
+                break;
+            }
+            deliver(pending);
+            pending = null;
+            delivered++;
+        }
+        position = Math.max(position, Math.min(target, recording.endMicros()));
+        if (delivered >= BATCH || pending == null) {
+            return 0;
+        }
+        return (long) ((pending.timeMicros() - target) * 1000 / speed);
+    }
+
+    /** Jumps back to the loop start, carrying over the time played past {@code end}; returns the new target. */
+    private long wrap(long target, long end) {
+        long excess = Math.max(0, target - end);
+        reposition(loopFrom);
+        anchorWall -= (long) (excess * 1000 / speed);
+        return loopFrom + excess;
+    }
+
+    private void deliver(Envelope e) {
+        emitted++;
+        try {
+            sink.accept(e);
+        } catch (RuntimeException ignored) {
+            // a failing consumer must not stop the replay; the bus reports its own subscribers
+        }
+    }
+
+    private long targetPosition() {
+        return anchorRecording + (long) ((clock.nanoTime() - anchorWall) / 1000.0 * speed);
+    }
+
+    private void reanchor() {
+        anchorRecording = position;
+        anchorWall = clock.nanoTime();
+    }
+
+    private void reposition(long micros) {
+        position = Math.max(recording.startMicros(), Math.min(micros, recording.endMicros()));
+        cursor = recording.cursor(position);
+        pending = null;
+        reanchor();
+    }
+
+    public synchronized void play() {
+        if (finished) {
+            reposition(loopFrom >= 0 ? loopFrom : recording.startMicros());
+            finished = false;
+        }
+        if (!playing) {
+            playing = true;
+            reanchor();
+            notifyAll();
+        }
+    }
+
+    public synchronized void pause() {
+        if (playing) {
+            position = Math.max(position, Math.min(targetPosition(), recording.endMicros()));
+            playing = false;
+            notifyAll();
+        }
+    }
+
+    /** Jumps to {@code timeMicros} (clamped to the recording); playing continues from there. */
+    public synchronized void seek(long timeMicros) {
+        reposition(timeMicros);
+        finished = false;
+        notifyAll();
+    }
+
+    /** Seeks to the first event of {@code type} after the current position, if there is one. */
+    public synchronized Optional<TimelineEvent> seekToNext(TimelineEvent.Type type) {
+        long now = position;
+        Optional<TimelineEvent> next = events().stream()
+                .filter(e -> e.type() == type && e.timeMicros() > now).findFirst();
+        next.ifPresent(e -> seek(e.timeMicros()));
+        return next;
+    }
+
+    /** Sets the speed, clamped to 0.1..50; returns the speed in effect. */
+    public synchronized double setSpeed(double factor) {
+        if (playing) {
+            position = Math.max(position, targetPosition());
+        }
+        speed = Double.isNaN(factor) ? 1 : Math.max(MIN_SPEED, Math.min(MAX_SPEED, factor));
+        reanchor();
+        notifyAll();
+        return speed;
+    }
+
+    /** Loops [fromMicros, toMicros] until {@link #clearLoop()}; jumps into the range if outside. */
+    public synchronized void setLoop(long fromMicros, long toMicros) {
+        if (toMicros <= fromMicros) {
+            throw new IllegalArgumentException("a loop needs from < to");
+        }
+        loopFrom = fromMicros;
+        loopTo = toMicros;
+        if (position < fromMicros || position > toMicros) {
+            reposition(fromMicros);
+        }
+        notifyAll();
+    }
+
+    public synchronized void clearLoop() {
+        loopFrom = -1;
+        loopTo = -1;
+    }
+
+    /** Delivers everything from the position to the end on the calling thread, unpaced. */
+    public long runToEnd() {
+        return runFor(Long.MAX_VALUE);
+    }
+
+    /** Delivers up to {@code max} envelopes from the position on the calling thread, unpaced. */
+    public long runFor(long max) {
+        long n = 0;
+        while (true) {
+            synchronized (this) {
+                int batch = 0;
+                if (pending != null) {
+                    deliver(pending);
+                    pending = null;
+                    n++;
+                }
+                int limit = (int) Math.min(BATCH, max - n);
+                for (Envelope e = null; batch < limit && (e = cursor.next()) != null; batch++) {
+                    deliver(e);
+                    position = e.timeMicros();
+                }
+                n += batch;
+                if (n >= max) {
+                    return n;
+                }
+                if (batch < limit) {
+                    finished = true;
+                    playing = false;
+                    position = recording.endMicros();
+                    return n;
+                }
+            }
+        }
+    }
+
+    public synchronized PlayerState snapshot() {
+        long pos = playing ? Math.max(position, Math.min(targetPosition(), recording.endMicros())) : position;
+        return new PlayerState(pos, recording.startMicros(), recording.endMicros(), playing, finished, speed,
+                loopFrom, loopTo, emitted, recording.problems());
+    }
+
+    public List<TimelineEvent> events() {
+        return recording.events();
+    }
+
+    public Recording recording() {
+        return recording;
+    }
+
+    @Override
+    public void close() {
+        Thread t;
+        synchronized (this) {
+            closed = true;
+            playing = false;
+            notifyAll();
+            t = thread;
+        }
+        if (t != null) {
+            try {
+                t.join(1000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+}

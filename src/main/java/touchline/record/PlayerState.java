@@ -1,0 +1,15 @@
+package touchline.record;
+
+import java.util.List;
+
+/**
+ * What a timeline shows about a {@link Player} at one instant. Times are microseconds
+ * since the epoch, like Envelope times; loop bounds are -1 when no loop is set.
+ */
+public record PlayerState(long positionMicros, long startMicros, long endMicros, boolean playing, boolean finished,
+                          double speed, long loopFromMicros, long loopToMicros, long emitted, List<String> problems) {
+
+    public long durationMicros() {
+        return endMicros - startMicros;
+    }
+}

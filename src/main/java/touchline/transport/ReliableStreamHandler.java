@@ -1,0 +1,99 @@
+package touchline.transport;
+
+import io.netty.buffer.Unpooled;
+import io.netty.channel.ChannelHandler;
+import io.netty.channel.ChannelHandlerContext;
+import io.netty.channel.ChannelInboundHandlerAdapter;
+import io.netty.channel.socket.DatagramPacket;
+import io.netty.util.concurrent.ScheduledFuture;
+import touchline.protocol.DatagramClass;
+
+import java.net.InetSocketAddress;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The reliable stream in the UDP pipeline: takes the segments of peers the console opened a
+ * session with, runs their stop-and-wait machines on the event loop (retransmissions and acks
+ * every 10 ms), and publishes every segment in and out as an Envelope. Segments from peers
+ * without a session pass on and are reported as malformed frames by the FUmanoids decoder.
+ * While the send gate holds (match mode) nothing goes out; the peer retransmits later.
+ */
+@ChannelHandler.Sharable
+public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
+
+    private final Map<InetSocketAddress, ReliableSession> sessions = new ConcurrentHashMap<>();
+    private final EnvelopeSink sink;
+    private final MicrosClock clock;
+    private volatile SendGate gate = SendGate.open();
+    private volatile ChannelHandlerContext ctx;
+    private ScheduledFuture<?> poller;
+
+    public ReliableStreamHandler(EnvelopeSink sink, MicrosClock clock) {
+        this.sink = sink;
+        this.clock = clock;
+    }
+
+    public void setGate(SendGate gate) {
+        this.gate = gate;
+    }
+
+    /** Opens (or returns) the session with {@code peer}. */
+    public ReliableSession open(InetSocketAddress peer) {
+        return sessions.computeIfAbsent(peer, p -> new ReliableSession(p, d -> write(p, d), millis()));
+    }
+
+    public Optional<ReliableSession> session(InetSocketAddress peer) {
+        return Optional.ofNullable(sessions.get(peer));
+    }
+
+    private long millis() {
+        return clock.nowMicros() / 1000;
+    }
+
+    @Override
+    public void handlerAdded(ChannelHandlerContext ctx) {
+        this.ctx = ctx;
+        poller = ctx.executor().scheduleAtFixedRate(this::pumpAll, 10, 10, TimeUnit.MILLISECONDS);
+    }
+
+    @Override
+    public void handlerRemoved(ChannelHandlerContext ctx) {
+        if (poller != null) {
+            poller.cancel(false);
+        }
+    }
+
+    private void pumpAll() {
+        long now = millis();
+        for (ReliableSession s : sessions.values()) {
+            s.pump(now);
+        }
+    }
+
+    @Override
+    public void channelRead(ChannelHandlerContext ctx, Object msg) {
+        if (msg instanceof ReceivedDatagram d && d.datagramClass() == DatagramClass.RELIABLE_STREAM) {
+            ReliableSession s = sessions.get(d.sender());
+            if (s != null) {
+                sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
+                        Envelope.NO_ROBOT, d.bytes().length == 2 ? "reliable.ack" : "reliable.data", null, d.bytes(), null));
+                s.input(d.bytes(), d.timeMicros() / 1000);
+                return;
+            }
+        }
+        ctx.fireChannelRead(msg);
+    }
+
+    private void write(InetSocketAddress peer, byte[] datagram) {
+        ChannelHandlerContext c = ctx;
+        if (c == null || gate.holdReason().isPresent()) {
+            return; // held: the stop-and-wait machine retransmits once the gate opens
+        }
+        c.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(datagram), peer));
+        sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, Channel.RELIABLE_STREAM, peer, Envelope.NO_ROBOT,
+                datagram.length == 2 ? "reliable.ack" : "reliable.data", null, datagram, null));
+    }
+}

@@ -1,0 +1,251 @@
+package touchline.transport.gamecontroller;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import touchline.game.Action;
+import touchline.game.Game;
+import touchline.game.MatchMode;
+import touchline.game.Outcome;
+import touchline.protocol.gamecontroller.Decoded;
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.GameState7;
+import touchline.protocol.gamecontroller.GameState8;
+import touchline.protocol.gamecontroller.GameStateFormat;
+import touchline.protocol.gamecontroller.HlGameState12;
+import touchline.protocol.gamecontroller.ReturnPacket;
+import touchline.protocol.gamecontroller.ReturnPacketDecoder;
+import touchline.protocol.gamecontroller.SplGameState18;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.NetworkInterface;
+import java.net.SocketException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+
+/**
+ * The GameController running inside the console: a {@link Game} published by a
+ * {@link GcSender}, return packets received and turned into liveness and (edge-triggered)
+ * manual penalties, and a watch for other GameControllers on the game-state port. Every
+ * datagram in or out is published as a GAMECONTROLLER envelope; our own packets heard back on
+ * a shared port are recognised by source and ignored. Bad return packets are counted per
+ * source and never applied. Notable events (rival heard, first bad packet of a source, robot
+ * requests) go to event listeners as text.
+ */
+public final class EmbeddedGameController implements AutoCloseable {
+
+    private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
+    private static final String OWN_SOURCE = "this console's GameController";
+
+    private final Game game;
+    private final GcConfig config;
+    private final EnvelopeSink sink;
+    private final MatchMode matchMode;
+    private final ReturnPacketDecoder returnDecoder = new ReturnPacketDecoder();
+    private final List<GameStateFormat> knownFormats = List.of(new HlGameState12(), new SplGameState18(),
+            new GameState8(), new GameState7());
+    private final RobotLiveness liveness = new RobotLiveness();
+    private final BadPackets badPackets = new BadPackets();
+    private final RivalGameControllers rivals = new RivalGameControllers();
+    private final ManualPenaltyRequests manualRequests = new ManualPenaltyRequests();
+    private final List<Consumer<String>> eventListeners = new CopyOnWriteArrayList<>();
+    private final GcSender sender;
+    private final List<GcListener> listeners = new ArrayList<>();
+    private final int senderPort;
+
+    /**
+     * @param game      the game to referee
+     * @param config    formats, addresses and ports
+     * @param sink      receives every GameController envelope (IN and OUT)
+     * @param matchMode told the state we send and the states we hear (may be null)
+     */
+    public EmbeddedGameController(Game game, GcConfig config, EnvelopeSink sink, MatchMode matchMode)
+            throws IOException {
+        this.game = game;
+        this.config = config;
+        this.sink = sink;
+        this.matchMode = matchMode;
+        List<GameStateFormat> formats = new ArrayList<>();
+        formats.add(config.profile().format());
+        if (config.v7Compat() && config.profile() != GcProfile.V7) {
+            formats.add(new GameState7());
+        }
+        sender = new GcSender(this::nextState, formats, config.destinations(), config.senderBind(), sink,
+                config.intervalMs());
+        senderPort = sender.localAddress().getPort();
+        try {
+            listeners.add(new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns"));
+            if (config.rivalBind() != null) {
+                listeners.add(new GcListener(config.rivalBind(), this::onGameStatePortDatagram, "gc-rivals"));
+            }
+        } catch (IOException e) {
+            close();
+            throw e;
+        }
+        game.addListener(sender::sendNow);
+    }
+
+    public void start() {
+        sender.start();
+    }
+
+    public Game game() {
+        return game;
+    }
+
+    public GcConfig config() {
+        return config;
+    }
+
+    public RobotLiveness liveness() {
+        return liveness;
+    }
+
+    public BadPackets badPackets() {
+        return badPackets;
+    }
+
+    public RivalGameControllers rivals() {
+        return rivals;
+    }
+
+    public GcSender sender() {
+        return sender;
+    }
+
+    /** The bound return-packet address (useful when port 0 was configured). */
+    public InetSocketAddress returnAddress() throws IOException {
+        return listeners.get(0).localAddress();
+    }
+
+    /** The bound rival-watch address, or null when not listening separately. */
+    public InetSocketAddress rivalAddress() throws IOException {
+        return listeners.size() > 1 ? listeners.get(1).localAddress() : null;
+    }
+
+    public void addEventListener(Consumer<String> onEvent) {
+        eventListeners.add(onEvent);
+    }
+
+    /** "" or the loud warning that another GameController is sending. */
+    public String rivalWarning() {
+        return rivals.warning(game.now());
+    }
+
+    private GameControlData nextState(boolean periodic) {
+        if (periodic) {
+            game.advance();
+        }
+        GameControlData data = game.controlData();
+        if (matchMode != null) {
+            matchMode.observe(data.state(), OWN_SOURCE);
+        }
+        return data;
+    }
+
+    private void onReturnPortDatagram(byte[] data, InetSocketAddress from) {
+        if (isGameState(data)) {
+            onGameStatePortDatagram(data, from);
+            return;
+        }
+        Decoded<ReturnPacket> decoded = returnDecoder.decode(data);
+        if (!decoded.isOk()) {
+            rejectReturn(data, from, decoded.failure() + ": " + decoded.detail());
+            return;
+        }
+        ReturnPacket p = decoded.value();
+        if (game.snapshot().team(p.team()) == null) {
+            rejectReturn(data, from, "team " + p.team() + " is not playing in this game");
+            return;
+        }
+        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+                p.kind(), null, data, null));
+        liveness.heard(p.team(), p.player(), game.now());
+        Action requested = manualRequests.onMessage(p.team(), p.player(), p.message());
+        if (requested != null) {
+            Outcome o = game.perform(requested);
+            emit("robot " + p.team() + "/" + p.player() + " asked for " + requested.describe() + ": "
+                    + (o.applied() ? "applied" : o.message()));
+        }
+    }
+
+    private void rejectReturn(byte[] data, InetSocketAddress from, String reason) {
+        boolean first = badPackets.bySource().keySet().stream().noneMatch(k -> k.equals(sourceKey(from)));
+        badPackets.count(from, reason);
+        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+                "gc.return.malformed", null, data, reason));
+        if (first) {
+            emit("bad return packet from " + sourceKey(from) + ": " + reason + " (counted, not applied)");
+        }
+    }
+
+    private void onGameStatePortDatagram(byte[] data, InetSocketAddress from) {
+        if (!isGameState(data)) {
+            return; // robots' own broadcasts or team traffic on the shared port are not ours to judge
+        }
+        if (from.getPort() == senderPort && isLocal(from.getAddress())) {
+            return; // our own packet, heard back
+        }
+        GameStateFormat format = null;
+        GameControlData decoded = null;
+        for (GameStateFormat f : knownFormats) {
+            Decoded<GameControlData> d = f.decode(data);
+            if (d.isOk()) {
+                format = f;
+                decoded = d.value();
+                break;
+            }
+        }
+        String kind = format == null ? "gc.unknown" : format.kind();
+        boolean wasActive = rivals.active(game.now()).containsKey(sourceKey(from));
+        rivals.heard(from, kind, decoded, game.now());
+        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
+                null, data, format == null ? "game-state packet in no known format" : null));
+        if (matchMode != null && decoded != null) {
+            matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));
+        }
+        if (!wasActive) {
+            String warning = rivals.warning(game.now());
+            LOG.warn(warning);
+            emit(warning);
+        }
+    }
+
+    private static boolean isGameState(byte[] data) {
+        return data.length >= 4 && data[0] == 'R' && data[1] == 'G' && data[2] == 'm' && data[3] == 'e';
+    }
+
+    private static String sourceKey(InetSocketAddress from) {
+        return from.getAddress().getHostAddress() + ":" + from.getPort();
+    }
+
+    private static boolean isLocal(InetAddress a) {
+        if (a.isLoopbackAddress() || a.isAnyLocalAddress()) {
+            return true;
+        }
+        try {
+            return NetworkInterface.getByInetAddress(a) != null;
+        } catch (SocketException e) {
+            return false;
+        }
+    }
+
+    private void emit(String event) {
+        for (Consumer<String> l : eventListeners) {
+            l.accept(event);
+        }
+    }
+
+    @Override
+    public void close() {
+        sender.close();
+        listeners.forEach(GcListener::close);
+    }
+}

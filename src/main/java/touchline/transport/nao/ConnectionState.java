@@ -1,0 +1,13 @@
+package touchline.transport.nao;
+
+/** What the console knows about its link to a NAO, as the UI shows it. */
+public enum ConnectionState {
+    /** Connecting for the first time; calls wait (within their timeout) for the link to come up. */
+    CONNECTING,
+    /** The ZMTP handshake completed: a live peer answered (a bare TCP connect does not count). */
+    ONLINE,
+    /** Disconnected or heartbeat timeout; calls fail at once as {@link CallOutcome.Lost} until ONLINE again. */
+    LOST,
+    /** The link was closed by the console. */
+    CLOSED
+}

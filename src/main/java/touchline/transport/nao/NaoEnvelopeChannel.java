@@ -1,0 +1,73 @@
+package touchline.transport.nao;
+
+import io.netty.channel.ChannelHandler;
+import io.netty.channel.ChannelHandlerContext;
+import io.netty.channel.ChannelPipeline;
+import io.netty.channel.SimpleChannelInboundHandler;
+import io.netty.channel.embedded.EmbeddedChannel;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+/**
+ * The Netty pipeline NAO traffic passes through on its way into the console's Envelope
+ * stream. JeroMQ owns its sockets and threads, so there is no Netty socket channel to read
+ * from; instead the JeroMQ threads (RPC and camera) write each {@link Envelope} into an
+ * {@link EmbeddedChannel}, whose handlers run synchronously on the writing thread. The last
+ * handler, named {@value #PUBLISHER}, hands the envelope to the {@link EnvelopeSink}. The
+ * same accounting or decoding handlers used for the UDP traffic can therefore be attached
+ * with {@code pipeline().addBefore(PUBLISHER, name, handler)}. Writes are serialised because
+ * an EmbeddedChannel is not thread-safe and two JeroMQ threads feed it.
+ */
+public final class NaoEnvelopeChannel implements AutoCloseable {
+
+    public static final String PUBLISHER = "publish";
+
+    private final EmbeddedChannel channel;
+
+    public NaoEnvelopeChannel(EnvelopeSink sink) {
+        channel = new EmbeddedChannel();
+        channel.pipeline().addLast(PUBLISHER, new Publisher(sink));
+    }
+
+    /** For attaching shared handlers before {@link #PUBLISHER}. */
+    public ChannelPipeline pipeline() {
+        return channel.pipeline();
+    }
+
+    public synchronized void publish(Envelope envelope) {
+        if (channel.isOpen()) {
+            channel.writeInbound(envelope);
+        }
+    }
+
+    /** Envelope time stamps: wall clock, microseconds since the epoch. */
+    static long nowMicros() {
+        java.time.Instant now = java.time.Instant.now();
+        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1000;
+    }
+
+    @Override
+    public synchronized void close() {
+        channel.finishAndReleaseAll();
+    }
+
+    @ChannelHandler.Sharable
+    private static final class Publisher extends SimpleChannelInboundHandler<Envelope> {
+        private final EnvelopeSink sink;
+
+        Publisher(EnvelopeSink sink) {
+            this.sink = sink;
+        }
+
+        @Override
+        protected void channelRead0(ChannelHandlerContext ctx, Envelope envelope) {
+            sink.accept(envelope);
+        }
+
+        @Override
+        public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
+            // A failing sink must not stop NAO traffic; the EnvelopeBus already counts its subscribers' failures.
+            org.slf4j.LoggerFactory.getLogger(NaoEnvelopeChannel.class).warn("envelope sink failed: {}", cause.toString());
+        }
+    }
+}

@@ -1,0 +1,68 @@
+package touchline.game;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+class MatchModeTest {
+
+    private final ManualClock clock = new ManualClock(0);
+    private final MatchMode mode = new MatchMode(clock);
+
+    @Test
+    void allowsInInitialAndBlocksADebugRequestDuringPlaying() {
+        mode.observe(0, "gc");
+        assertTrue(mode.mayConsoleSend());
+        assertFalse(mode.hold("debug option vision.ball"));
+        assertEquals("", mode.notice());
+        mode.observe(3, "gc");
+        assertFalse(mode.mayConsoleSend());
+        assertTrue(mode.hold("debug option vision.ball"));
+        assertEquals(List.of("debug option vision.ball"), mode.heldBack());
+        assertTrue(mode.notice().contains("PLAYING"), mode.notice());
+        assertTrue(mode.notice().contains("1 request(s) held back"), mode.notice());
+    }
+
+    @Test
+    void readyAndSetBlockToo_FinishedReleasesAndListenersHearIt() {
+        List<Boolean> heard = new ArrayList<>();
+        mode.addListener(heard::add);
+        mode.observe(1, "gc");
+        assertFalse(mode.mayConsoleSend());
+        mode.observe(2, "gc");
+        assertFalse(mode.mayConsoleSend());
+        mode.hold("nao command");
+        mode.observe(4, "gc");
+        assertTrue(mode.mayConsoleSend());
+        assertEquals(List.of(false, true), heard);
+        assertTrue(mode.heldBack().isEmpty(), "held-back list is cleared when they may resume");
+    }
+
+    @Test
+    void anyPlayingSourceBlocksAndSilentSourcesExpire() {
+        mode.observe(0, "ours");
+        mode.observe(3, "other");
+        assertFalse(mode.mayConsoleSend());
+        clock.advance(MatchMode.STALE_MS + 1);
+        mode.observe(0, "ours");
+        assertTrue(mode.mayConsoleSend(), "a GameController not heard for 5 s no longer counts");
+    }
+
+    @Test
+    void overrideIsExplicitAndLogged() {
+        mode.observe(3, "gc");
+        mode.setOverride(true, "referee allowed a config fix");
+        assertTrue(mode.mayConsoleSend());
+        assertTrue(mode.notice().startsWith("MATCH MODE OVERRIDDEN"), mode.notice());
+        mode.setOverride(false, "done");
+        assertFalse(mode.mayConsoleSend());
+        assertEquals(2, mode.overrideLog().size());
+        assertEquals("referee allowed a config fix", mode.overrideLog().get(0).reason());
+        assertTrue(mode.overrideLog().get(0).on());
+    }
+}

@@ -1,0 +1,170 @@
+package touchline.model;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import touchline.proto.Fumanoid;
+import touchline.protocol.MessageCodec;
+import touchline.protocol.MessageKinds;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.SendResult;
+
+import java.net.InetSocketAddress;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+class DebugOptionSessionTest {
+
+    private final long[] now = {1_000_000_000L};
+    private final List<String> sent = new ArrayList<>();
+    private Optional<String> hold = Optional.empty();
+    private RobotRegistry registry;
+    private DebugOptionSession session;
+    private final MessageCodec codec = new MessageCodec(new MessageKinds());
+
+    @BeforeEach
+    void setUp() {
+        session = new DebugOptionSession((id, m) -> {
+            if (hold.isPresent()) {
+                return SendResult.held(hold.get());
+            }
+            sent.add(id + ":" + describe(m));
+            return SendResult.sent();
+        }, codec, () -> now[0]);
+        registry = new RobotRegistry(() -> now[0]);
+        registry.addPresenceListener(session);
+    }
+
+    private static String describe(Fumanoid.Message m) {
+        if (m.hasExtension(Fumanoid.debugOptionListRequest)) {
+            return "list?";
+        }
+        Fumanoid.DebugOptionRequest r = m.getExtension(Fumanoid.debugOptionRequest);
+        return (r.getEnable() ? "on " : "off ") + r.getName();
+    }
+
+    private void receive(int robot, Fumanoid.Message.Builder m) {
+        Fumanoid.Message built = m.setRobotID(robot).build();
+        String kind = ((touchline.protocol.MessageResult.Decoded) codec.decode(built.toByteArray())).kind();
+        Envelope e = new Envelope(now[0], Direction.IN, Channel.FUMANOID, new InetSocketAddress("127.0.0.1", 4000 + robot),
+                robot, kind, built, new byte[10], null);
+        registry.accept(e);
+        session.accept(e);
+    }
+
+    private void keepAlive(int robot) {
+        receive(robot, Fumanoid.Message.newBuilder().setExtension(Fumanoid.status, Fumanoid.Status.getDefaultInstance()));
+    }
+
+    private void list(int robot, String... names) {
+        Fumanoid.DebugOptionList.Builder l = Fumanoid.DebugOptionList.newBuilder();
+        for (String n : names) {
+            l.addOptions(Fumanoid.DebugOption.newBuilder().setName(n).setKind(Fumanoid.DebugKind.TEXT_VALUE));
+        }
+        receive(robot, Fumanoid.Message.newBuilder().setExtension(Fumanoid.debugOptionList, l.build()));
+    }
+
+    private void text(int robot, String option) {
+        receive(robot, Fumanoid.Message.newBuilder().setExtension(Fumanoid.debugText,
+                Fumanoid.DebugText.newBuilder().setOption(option).setText("hi").build()));
+    }
+
+    private void advance(long micros) {
+        now[0] += micros;
+        registry.tick();
+        session.tick();
+    }
+
+    @Test
+    void asksNewRobotForItsListUntilItArrives() {
+        keepAlive(3);
+        assertEquals(List.of("3:list?"), sent);
+        advance(300_000);
+        assertEquals(1, sent.size(), "no retry before 500 ms");
+        advance(300_000);
+        assertEquals(List.of("3:list?", "3:list?"), sent);
+        list(3, "demo.text");
+        sent.clear();
+        advance(600_000);
+        assertEquals(List.of(), sent, "no more requests once the list arrived");
+        assertTrue(session.options(3).listReceived());
+        assertEquals(2, session.options(3).listRequests());
+    }
+
+    @Test
+    void secondListReplacesFirst() {
+        keepAlive(3);
+        list(3, "a", "b");
+        list(3, "c");
+        assertEquals(List.of("c"), session.options(3).options().stream().map(OptionState::name).toList());
+    }
+
+    @Test
+    void reEnablesWhatWasOnWhenRobotComesBack() {
+        keepAlive(3);
+        list(3, "demo.text", "demo.plotter");
+        session.setWanted(3, "demo.text", true);
+        text(3, "demo.text");
+        assertTrue(session.options(3).option("demo.text").orElseThrow().streaming());
+        sent.clear();
+
+        advance(1_500_000); // keep-alives stop: offline
+        assertFalse(registry.robot(3).orElseThrow().online());
+        assertTrue(sent.isEmpty(), "nothing is sent to an offline robot");
+
+        keepAlive(3); // back
+        assertEquals(List.of("3:list?", "3:on demo.text"), sent);
+    }
+
+    @Test
+    void retriesWantedOptionUntilDataArrivesAndOffUntilDataStops() {
+        keepAlive(3);
+        list(3, "demo.text");
+        sent.clear();
+        session.setWanted(3, "demo.text", true);
+        assertEquals(List.of("3:on demo.text"), sent);
+        advance(1_000_000);
+        keepAlive(3);
+        assertEquals(List.of("3:on demo.text", "3:on demo.text"), sent, "retried: no data yet");
+        text(3, "demo.text");
+        advance(1_000_000);
+        assertEquals(2, sent.size(), "data arrived: no more retries");
+
+        session.setWanted(3, "demo.text", false);
+        text(3, "demo.text");
+        advance(1_000_000);
+        assertEquals("3:off demo.text", sent.get(sent.size() - 1));
+        long offs = sent.stream().filter(s -> s.equals("3:off demo.text")).count();
+        assertEquals(2, offs, "switched off again while data kept coming");
+    }
+
+    @Test
+    void heldCommandIsReportedAndResumedLater() {
+        keepAlive(3);
+        list(3, "demo.text");
+        hold = Optional.of("match mode: game is PLAYING");
+        SendResult r = session.setWanted(3, "demo.text", true);
+        assertEquals(SendResult.Outcome.HELD, r.outcome());
+        assertEquals("match mode: game is PLAYING", session.options(3).lastHoldReason());
+        hold = Optional.empty();
+        sent.clear();
+        advance(1_000_000);
+        keepAlive(3);
+        assertEquals(List.of("3:on demo.text"), sent);
+        assertEquals("", session.options(3).lastHoldReason());
+    }
+
+    @Test
+    void unknownKindIsKeptAndNamed() {
+        keepAlive(5);
+        receive(5, Fumanoid.Message.newBuilder().setExtension(Fumanoid.debugOptionList, Fumanoid.DebugOptionList.newBuilder()
+                .addOptions(Fumanoid.DebugOption.newBuilder().setName("team.magic").setKind(77)).build()));
+        OptionState o = session.options(5).option("team.magic").orElseThrow();
+        assertFalse(o.knownKind());
+        assertEquals("unknown kind 77", o.kindName());
+    }
+}

@@ -1,0 +1,165 @@
+package touchline.record;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.transport.Envelope;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicLong;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** Player semantics against a clock the test advances by hand: no sleeping. */
+class PlayerTest {
+
+    @TempDir
+    Path dir;
+
+    private final AtomicLong now = new AtomicLong(1_000_000_000L);
+    private final List<Envelope> got = new CopyOnWriteArrayList<>();
+    private List<Envelope> sent;
+    private Recording recording;
+    private Player player;
+
+    @BeforeEach
+    void open() throws Exception {
+        sent = RecordingFixture.team(3, 60);
+        Path file = dir.resolve("p.mcap");
+        RecordingFixture.write(file, sent, new EnvelopeWriter.Options(0, 0, 16 * 1024, List.of()));
+        recording = Recording.open(file);
+        player = new Player(recording, got::add, now::get);
+    }
+
+    @AfterEach
+    void close() {
+        player.close();
+        recording.close();
+    }
+
+    private void advanceMillis(long ms) {
+        now.addAndGet(ms * 1_000_000L);
+        player.pump();
+    }
+
+    private List<Envelope> sentUpTo(long micros) {
+        return sent.stream().filter(e -> e.timeMicros() <= micros).toList();
+    }
+
+    @Test
+    void playsInRealTimeAndPauseStopsTheClock() {
+        long start = recording.startMicros();
+        assertEquals(RecordingFixture.START + 17, start);
+        player.play();
+        advanceMillis(2_000);
+        assertEquals(sentUpTo(start + 2_000_000), got);
+        assertEquals(start + 2_000_000, player.snapshot().positionMicros());
+
+        player.pause();
+        advanceMillis(10_000);
+        assertEquals(sentUpTo(start + 2_000_000), got, "nothing while paused");
+        assertFalse(player.snapshot().playing());
+
+        player.play();
+        advanceMillis(1_000);
+        assertEquals(sentUpTo(start + 3_000_000), got);
+    }
+
+    @Test
+    void speedScalesRecordingTimePerWallTimeAndIsClamped() {
+        long start = recording.startMicros();
+        assertEquals(10, player.setSpeed(10));
+        player.play();
+        advanceMillis(500);
+        assertEquals(sentUpTo(start + 5_000_000), got);
+        assertEquals(0.1, player.setSpeed(0.01));
+        advanceMillis(1_000);
+        assertEquals(sentUpTo(start + 5_100_000), got);
+        assertEquals(50, player.setSpeed(400));
+        assertEquals(50, player.snapshot().speed());
+    }
+
+    @Test
+    void seekLandsOnTheRightTimeAndPlaysOnFromThere() {
+        long target = recording.startMicros() + 30_000_000L;
+        player.seek(target);
+        assertEquals(target, player.snapshot().positionMicros());
+        player.play();
+        advanceMillis(1_000);
+        List<Envelope> expected = sent.stream()
+                .filter(e -> e.timeMicros() >= target && e.timeMicros() <= target + 1_000_000).toList();
+        assertEquals(expected, got);
+        assertTrue(got.get(0).timeMicros() - target < 100_000, "the first envelope after the seek is right there");
+
+        got.clear();
+        player.seek(recording.startMicros() - 5_000_000L);
+        assertEquals(recording.startMicros(), player.snapshot().positionMicros(), "clamped to the start");
+    }
+
+    @Test
+    void findsGoalStateChangesAndALostRobotAndSeeksToThem() {
+        List<TimelineEvent> events = player.events();
+        List<TimelineEvent.Type> types = new ArrayList<>(events.stream().map(TimelineEvent::type).toList());
+        assertTrue(types.contains(TimelineEvent.Type.GOAL), events.toString());
+        assertEquals(4, types.stream().filter(t -> t == TimelineEvent.Type.STATE_CHANGE).count(), events.toString());
+        TimelineEvent lost = events.stream().filter(e -> e.type() == TimelineEvent.Type.ROBOT_LOST).findFirst().orElseThrow();
+        assertEquals(2, lost.robotId());
+
+        TimelineEvent goal = player.seekToNext(TimelineEvent.Type.GOAL).orElseThrow();
+        assertEquals(RecordingFixture.START + 40_000_000L + 17, goal.timeMicros(), "the first packet with the new score");
+        assertTrue(goal.label().contains("1:0"), goal.label());
+        assertEquals(goal.timeMicros(), player.snapshot().positionMicros());
+        assertTrue(player.seekToNext(TimelineEvent.Type.GOAL).isEmpty());
+    }
+
+    @Test
+    void loopsARangeAndFinishesAtTheEndOtherwise() {
+        long from = recording.startMicros() + 10_000_000L;
+        long to = from + 2_000_000L;
+        player.setLoop(from, to);
+        player.setSpeed(50);
+        player.play();
+        advanceMillis(100); // 5 s of recording: two and a half laps
+        assertTrue(got.stream().allMatch(e -> e.timeMicros() >= from && e.timeMicros() <= to));
+        long firstLap = sent.stream().filter(e -> e.timeMicros() >= from && e.timeMicros() <= to).count();
+        assertTrue(got.size() > 2 * firstLap, got.size() + " vs a lap of " + firstLap);
+
+        player.clearLoop();
+        got.clear();
+        advanceMillis(10_000);
+        assertTrue(player.snapshot().finished());
+        assertEquals(recording.endMicros(), player.snapshot().positionMicros());
+        assertEquals(sent.get(sent.size() - 1), got.get(got.size() - 1));
+    }
+
+    @Test
+    void headlessRunDeliversEverythingInOrder() {
+        assertEquals(sent.size(), player.runToEnd());
+        assertEquals(sent, got);
+        assertTrue(player.snapshot().finished());
+    }
+
+    @Test
+    void theDeliveryThreadPlaysWithoutPumping() throws Exception {
+        Player threaded = new Player(recording, got::add, PlaybackClock.system());
+        try {
+            threaded.setSpeed(50);
+            threaded.start();
+            threaded.play();
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (got.size() < 100 && System.nanoTime() < deadline) {
+                Thread.onSpinWait();
+            }
+            assertTrue(got.size() >= 100);
+            assertEquals(sent.subList(0, 100), got.subList(0, 100));
+        } finally {
+            threaded.close();
+        }
+    }
+}

@@ -1,0 +1,140 @@
+package touchline.record;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.proto.Fumanoid;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+
+import java.net.InetSocketAddress;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Collectors;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+class RecordingRoundTripTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void everyEnvelopeComesBackEqualInOrderWithItsTime() throws Exception {
+        List<Envelope> sent = RecordingFixture.team(3, 40);
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.RELIABLE_STREAM,
+                InetSocketAddress.createUnresolved("robot4.local", 4000), 4, "segment", null, new byte[]{1, 2, 3}, null));
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.OUT, Channel.NAO_CAMERA,
+                null, Envelope.NO_ROBOT, "jpeg", null, new byte[]{(byte) 0xFF, (byte) 0xD8, 0, 0}, null));
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.FUMANOID,
+                null, Envelope.NO_ROBOT, "malformed", null, new byte[0], "empty datagram"));
+        byte[] flagged = sent.stream().filter(e -> e.kind().equals("status") && e.robotId() == 1).findFirst()
+                .orElseThrow().raw().clone();
+        flagged[2] = 1; // legacy header with a flag set: kept as raw bytes, still replayed exactly
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.FUMANOID, null, 1,
+                "status", Fumanoid.Message.getDefaultInstance(), flagged, null));
+        Set<Channel> channels = sent.stream().map(Envelope::channel).collect(Collectors.toCollection(() -> EnumSet.noneOf(Channel.class)));
+        assertEquals(EnumSet.allOf(Channel.class), channels, "the fixture covers every wire channel");
+
+        Path file = dir.resolve("s.mcap");
+        RecordingFixture.write(file, sent, EnvelopeWriter.Options.defaults().withSplit(0, 0));
+        try (Recording r = Recording.open(file)) {
+            List<Envelope> back = RecordingFixture.readAll(r);
+            assertEquals(sent.size(), back.size());
+            for (int i = 0; i < sent.size(); i++) {
+                assertEquals(sent.get(i), back.get(i), "envelope " + i);
+            }
+            assertTrue(r.problems().isEmpty(), r.problems().toString());
+            assertTrue(r.mcap().indexed());
+            assertEquals(sent.size(), r.mcap().messageCount());
+            assertEquals(sent.get(0).timeMicros(), r.startMicros());
+            assertEquals(sent.get(sent.size() - 1).timeMicros(), r.endMicros());
+        }
+    }
+
+    @Test
+    void decodedMessagesComeBackAndTheRobotTimestampIsThePublishTime() throws Exception {
+        List<Envelope> sent = RecordingFixture.team(1, 2);
+        Path file = dir.resolve("m.mcap");
+        RecordingFixture.write(file, sent, EnvelopeWriter.Options.defaults());
+        try (Recording r = Recording.open(file)) {
+            Envelope status = RecordingFixture.readAll(r).stream().filter(e -> e.kind().equals("status")).findFirst().orElseThrow();
+            Fumanoid.Message m = assertInstanceOf(Fumanoid.Message.class, status.message());
+            long robotMillis = m.getExtension(Fumanoid.status).getTimestamp();
+            McapReader.Cursor c = r.mcap().cursor(0);
+            McapReader.McapMessage first = c.next();
+            while (!r.mcap().channels().get(first.channelId()).topic().equals("/robot/1/status")) {
+                first = c.next();
+            }
+            assertEquals(robotMillis * 1_000_000L, first.publishTime());
+            assertEquals(status.timeMicros() * 1000, first.logTime());
+        }
+        Envelope malformed = sent.stream().filter(Envelope::isMalformed).findFirst().orElse(null);
+        assertNull(malformed, "a 2-second fixture has no malformed datagram (they come at second 7)");
+    }
+
+    @Test
+    void splitsBySizeAndByTimeIntoFilesThatTogetherHoldEverything() throws Exception {
+        List<Envelope> sent = RecordingFixture.team(3, 30);
+        Path file = dir.resolve("split.mcap");
+        List<Path> files;
+        try (EnvelopeWriter w = new EnvelopeWriter(file, new EnvelopeWriter.Options(0, 10_000_000L, 64 * 1024, List.of()))) {
+            for (Envelope e : sent) {
+                w.write(e);
+            }
+            files = w.files();
+        }
+        assertEquals(List.of(file, dir.resolve("split-001.mcap"), dir.resolve("split-002.mcap")), files);
+        int total = 0;
+        for (Path f : files) {
+            try (Recording r = Recording.open(f)) {
+                List<Envelope> part = RecordingFixture.readAll(r);
+                assertEquals(sent.subList(total, total + part.size()), part);
+                assertTrue(r.durationMicros() < 10_000_000L);
+                total += part.size();
+            }
+        }
+        assertEquals(sent.size(), total);
+
+        Path bySize = dir.resolve("size.mcap");
+        try (EnvelopeWriter w = new EnvelopeWriter(bySize, new EnvelopeWriter.Options(50_000, 0, 8 * 1024, List.of()))) {
+            for (Envelope e : sent) {
+                w.write(e);
+            }
+            files = w.files();
+        }
+        assertTrue(files.size() > 2, "several files of about 50 kB");
+        for (Path f : files) {
+            assertTrue(Files.size(f) < 80_000, f + " is " + Files.size(f));
+        }
+    }
+
+    @Test
+    void cameraFramesAreThinnedToTheConfiguredRate() throws Exception {
+        List<Envelope> frames = new java.util.ArrayList<>();
+        for (int i = 0; i < 300; i++) { // 30 frames a second for ten seconds
+            frames.add(new Envelope(1_000_000L + i * 33_333L, Direction.IN, Channel.NAO_CAMERA, null, Envelope.NO_ROBOT,
+                    "jpeg", null, new byte[]{(byte) 0xFF, (byte) 0xD8, (byte) i}, null));
+        }
+        Path file = dir.resolve("camera.mcap");
+        long thinned;
+        try (EnvelopeWriter w = new EnvelopeWriter(file, EnvelopeWriter.Options.defaults().withCameraRate(5))) {
+            for (Envelope e : frames) {
+                w.write(e);
+            }
+            thinned = w.thinnedFrames();
+        }
+        try (Recording r = Recording.open(file)) {
+            List<Envelope> back = RecordingFixture.readAll(r);
+            assertEquals(50, back.size(), "five frames a second");
+            assertEquals(250, thinned);
+            assertEquals(frames.get(0), back.get(0));
+        }
+    }
+}

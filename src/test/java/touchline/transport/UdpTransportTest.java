@@ -1,0 +1,131 @@
+package touchline.transport;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import touchline.proto.Fumanoid;
+import touchline.protocol.FrameCodec;
+import touchline.protocol.Framing;
+import touchline.protocol.MessageCodec;
+import touchline.protocol.MessageKinds;
+
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.util.HexFormat;
+import java.util.Optional;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** The real Netty pipeline on loopback, fed by a plain UDP socket standing in for a robot. */
+class UdpTransportTest {
+
+    private final LinkedBlockingQueue<Envelope> received = new LinkedBlockingQueue<>();
+    private final FrameCodec frames = new FrameCodec();
+    private UdpTransport transport;
+    private DatagramSocket robot;
+
+    @BeforeEach
+    void start() throws Exception {
+        transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
+                new MessageCodec(new MessageKinds()), received::add, MicrosClock.system()).start();
+        robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+        robot.setSoTimeout(5000);
+    }
+
+    @AfterEach
+    void stop() {
+        transport.close();
+        robot.close();
+    }
+
+    private void send(byte[] bytes) throws Exception {
+        robot.send(new DatagramPacket(bytes, bytes.length, InetAddress.getLoopbackAddress(), transport.localPort()));
+    }
+
+    private Envelope next() throws InterruptedException {
+        Envelope e = received.poll(5, TimeUnit.SECONDS);
+        assertNotNull(e, "no envelope within 5 s");
+        return e;
+    }
+
+    private byte[] status(int id, Framing framing) {
+        return frames.encode(framing, Fumanoid.Message.newBuilder().setRobotID(id)
+                .setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTeamID(13).build()).build().toByteArray());
+    }
+
+    @Test
+    void eachBadDatagramIsReportedAndTheNextGoodOneDecodes() throws Exception {
+        byte[][] bad = {
+                HexFormat.of().parseHex("002a0000"),                          // truncated legacy header
+                HexFormat.of().parseHex("002a000000000000000000ff0801"),        // length disagrees
+                new byte[1401],                                               // over 1400 bytes
+                frames.encode(Framing.LENGTH_PREFIX, new byte[]{(byte) 0xff, (byte) 0xff, (byte) 0xff}), // protobuf garbage
+        };
+        for (byte[] b : bad) {
+            send(b);
+            Envelope e = next();
+            assertTrue(e.isMalformed(), e.toString());
+            assertEquals("malformed", e.kind());
+            send(status(7, Framing.LEGACY));
+            Envelope good = next();
+            assertFalse(good.isMalformed(), good.toString());
+            assertEquals(7, good.robotId());
+            assertEquals("status", good.kind());
+        }
+        assertEquals(bad.length, transport.counters().malformedIn());
+    }
+
+    @Test
+    void unknownExtensionArrivesAsItsOwnKind() throws Exception {
+        byte[] payload = HexFormat.of().parseHex("0803" + "c23e020801"); // robotID 3, field 1000 { 1: 1 }
+        send(frames.encode(Framing.LENGTH_PREFIX, payload));
+        Envelope e = next();
+        assertEquals("ext#1000", e.kind());
+        assertEquals(3, e.robotId());
+        assertEquals(1, e.message().getUnknownFields().asMap().size());
+    }
+
+    @Test
+    void answersARobotInTheFramingItUses() throws Exception {
+        send(status(4, Framing.LENGTH_PREFIX));
+        next();
+        MessageCodec codec = new MessageCodec(new MessageKinds());
+        assertTrue(transport.send(4, codec.optionListRequest()).isSent());
+        DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
+        robot.receive(p);
+        byte[] got = java.util.Arrays.copyOf(p.getData(), p.getLength());
+        assertEquals(got.length - 4, ((got[2] & 0xff) << 8) | (got[3] & 0xff), "4-byte length header");
+        Envelope out = next();
+        assertEquals(Direction.OUT, out.direction());
+        assertEquals("debugOptionListRequest", out.kind());
+
+        send(status(4, Framing.LEGACY));
+        next();
+        transport.send(4, codec.optionListRequest());
+        robot.receive(p);
+        assertEquals(0x2a, p.getData()[1], "now the legacy header");
+    }
+
+    @Test
+    void gateHoldsCommandsBack() throws Exception {
+        send(status(4, Framing.LEGACY));
+        next();
+        transport.setGate(() -> Optional.of("match mode: PLAYING"));
+        SendResult r = transport.send(4, new MessageCodec(new MessageKinds()).optionListRequest());
+        assertEquals(SendResult.Outcome.HELD, r.outcome());
+        assertEquals("match mode: PLAYING", r.reason());
+        assertEquals(1, transport.counters().held());
+        assertEquals(0, transport.counters().datagramsOut());
+    }
+
+    @Test
+    void unseenRobotCannotBeAddressed() {
+        SendResult r = transport.send(99, new MessageCodec(new MessageKinds()).optionListRequest());
+        assertEquals(SendResult.Outcome.FAILED, r.outcome());
+        assertTrue(r.reason().contains("not been seen"));
+    }
+}

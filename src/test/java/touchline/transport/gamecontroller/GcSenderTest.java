@@ -1,0 +1,114 @@
+package touchline.transport.gamecontroller;
+
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import touchline.game.Game;
+import touchline.game.GameClock;
+import touchline.game.LeagueParams;
+import touchline.game.ToReady;
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.GameState7;
+import touchline.protocol.gamecontroller.GameState8;
+import touchline.protocol.gamecontroller.HlGameState12;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+class GcSenderTest {
+
+    private static Game game() {
+        return new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+    }
+
+    @Test
+    @Tag("integration")
+    void sendsEvery500msAndAStateChangeAtOnce() throws Exception {
+        Game game = game();
+        HlGameState12 format = new HlGameState12();
+        try (LoopbackReceiver robot = new LoopbackReceiver();
+             GcSender sender = new GcSender(p -> game.controlData(), List.of(format), List.of(robot.address()),
+                     null, e -> { }, 500)) {
+            game.addListener(sender::sendNow);
+            sender.start();
+            List<LoopbackReceiver.Received> got = new ArrayList<>();
+            for (int i = 0; i < 6; i++) {
+                LoopbackReceiver.Received r = robot.receive(2000);
+                assertNotNull(r, "packet " + i);
+                got.add(r);
+            }
+            for (int i = 1; i < got.size(); i++) {
+                double ms = (got.get(i).nanos() - got.get(i - 1).nanos()) / 1e6;
+                assertTrue(Math.abs(ms - 500) < 40, "interval " + i + " was " + ms + " ms");
+                assertEquals((got.get(i - 1).data()[6] + 1) & 0xFF, got.get(i).data()[6] & 0xFF, "packetNumber");
+            }
+            // Change the state ~100 ms after a periodic packet: it must arrive long before the next slot.
+            Thread.sleep(100);
+            long changed = System.nanoTime();
+            game.perform(new ToReady());
+            LoopbackReceiver.Received r = robot.receive(1000);
+            assertNotNull(r);
+            double delayMs = (r.nanos() - changed) / 1e6;
+            assertEquals(GameControlData.STATE_READY, format.decode(r.data()).value().state());
+            assertTrue(delayMs < 50, "state change sent after " + delayMs + " ms");
+            // The grid is not shifted by the extra packet: the next periodic one follows ~400 ms later.
+            LoopbackReceiver.Received next = robot.receive(1000);
+            double gapMs = (next.nanos() - got.get(got.size() - 1).nanos()) / 1e6;
+            assertTrue(Math.abs(gapMs - 500) < 40, "periodic packet after the change came " + gapMs + " ms after the last one");
+        }
+    }
+
+    @Test
+    void packetNumberWrapsFrom255To0AndEveryDatagramIsAnEnvelope() throws Exception {
+        Game game = game();
+        List<Envelope> envelopes = new CopyOnWriteArrayList<>();
+        try (LoopbackReceiver robot = new LoopbackReceiver();
+             GcSender sender = new GcSender(p -> game.controlData(), List.of(new GameState8(), new GameState7()),
+                     List.of(robot.address()), null, envelopes::add, 1)) {
+            sender.start();
+            int[] numbers = new int[300];
+            int v7 = 0;
+            int v8 = 0;
+            while (v8 < numbers.length) {
+                LoopbackReceiver.Received r = robot.receive(2000);
+                assertNotNull(r);
+                if (r.data().length == GameState8.SIZE) {
+                    numbers[v8++] = r.data()[5] & 0xFF;
+                } else {
+                    assertEquals(GameState7.SIZE, r.data().length);
+                    v7++;
+                }
+            }
+            assertTrue(v7 >= v8 - 1, "a v7 compatibility packet follows every v8 packet");
+            int wrapAt = -1;
+            for (int i = 1; i < numbers.length; i++) {
+                if (numbers[i] != ((numbers[i - 1] + 1) & 0xFF)) {
+                    // the receiver may lose a datagram under load; only the wrap itself matters here
+                    continue;
+                }
+                if (numbers[i - 1] == 255) {
+                    wrapAt = i;
+                }
+            }
+            assertEquals(0, numbers[0]);
+            assertTrue(wrapAt > 0 && numbers[wrapAt] == 0, "255 is followed by 0: " + Arrays.toString(numbers));
+            Await.until(() -> envelopes.size() >= 2 * numbers.length, 2000, "envelopes");
+            Envelope e = envelopes.get(0);
+            assertEquals(Direction.OUT, e.direction());
+            assertEquals(Channel.GAMECONTROLLER, e.channel());
+            assertEquals("gc.v8", e.kind());
+            assertEquals(robot.address(), e.peer());
+            assertEquals("gc.v7", envelopes.get(1).kind());
+            assertArrayEquals(new GameState8().encode(game.controlData()), e.raw());
+        }
+    }
+}

@@ -1,0 +1,75 @@
+package touchline.transport.nao;
+
+import org.junit.jupiter.api.Test;
+import touchline.transport.Channel;
+import touchline.transport.Envelope;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The camera stream against the in-test camera stand-in (the real server: NaoLinkRobotSideIT). */
+class NaoCameraStreamTest {
+
+    @Test
+    void fetchesOnlyWhileSubscribedSharesOneFrameAndReconfigures() throws Exception {
+        List<Envelope> envelopes = new CopyOnWriteArrayList<>();
+        try (FakeNaoCamera camera = new FakeNaoCamera();
+             NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add)) {
+            stream.configure(new CameraSettings(1, 11, 30));
+            Thread.sleep(300); // nothing to await: we check that nothing is fetched without a viewer
+            assertEquals(0, camera.fetches.get());
+            assertNull(stream.latestFrame());
+
+            AutoCloseable first = stream.subscribe();
+            AutoCloseable second = stream.subscribe();
+            assertTrue(Poll.until(() -> stream.framesReceived() >= 10, Duration.ofSeconds(5)));
+            CameraFrame frame = stream.latestFrame();
+            assertEquals(320, frame.width());
+            assertEquals(240, frame.height());
+            assertTrue(stream.measuredFps() > 5, "fps " + stream.measuredFps());
+            assertTrue(stream.bytesPerFrame() > 100);
+
+            stream.configure(new CameraSettings(0, 11, 30));
+            assertTrue(Poll.until(() -> stream.latestFrame().width() == 160, Duration.ofSeconds(5)));
+            assertEquals(2, camera.configures.get());
+
+            first.close();
+            first.close(); // closing twice must not count twice
+            assertEquals(1, stream.subscribers());
+            second.close();
+            assertEquals(0, stream.subscribers());
+            Thread.sleep(150); // let an in-progress fetch finish
+            int after = camera.fetches.get();
+            Thread.sleep(400);
+            assertEquals(after, camera.fetches.get(), "no fetches without viewers");
+            assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_CAMERA && e.kind().equals("frame")));
+            assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_CAMERA && e.kind().equals("configure")));
+        }
+    }
+
+    @Test
+    void anAbsentServerIsAnErrorNotACrash() throws Exception {
+        int port;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
+            port = s.getLocalPort();
+        }
+        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", port, e -> { })) {
+            AutoCloseable viewer = stream.subscribe();
+            assertTrue(Poll.until(() -> stream.lastError() != null, Duration.ofSeconds(5)));
+            viewer.close();
+        }
+    }
+
+    @Test
+    void unknownSettingsAreRejectedBeforeTheyTravel() {
+        assertThrows(IllegalArgumentException.class, () -> new CameraSettings(9, 11, 15));
+        assertThrows(IllegalArgumentException.class, () -> new CameraSettings(2, 5, 15));
+        assertThrows(IllegalArgumentException.class, () -> new CameraSettings(2, 11, 0));
+    }
+}

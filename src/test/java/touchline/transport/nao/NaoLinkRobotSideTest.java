@@ -1,0 +1,112 @@
+package touchline.transport.nao;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import touchline.transport.Envelope;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * NaoLink and the camera stream against the real C++ {@code touchline-nao-sim} on loopback
+ * (OS-chosen ports). Skipped when the robot side is not built.
+ */
+@Tag("integration")
+class NaoLinkRobotSideTest {
+
+    private final List<Envelope> envelopes = new CopyOnWriteArrayList<>();
+
+    @BeforeAll
+    static void needsBinary() {
+        RobotSideProcess.assumeBuilt();
+    }
+
+    private static CallOutcome get(CompletableFuture<CallOutcome> f) throws Exception {
+        return f.get(20, TimeUnit.SECONDS);
+    }
+
+    private NaoLink online(RobotSideProcess sim) throws Exception {
+        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add);
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        return link;
+    }
+
+    @Test
+    void valuesVoidErrorsAndDiscovery() throws Exception {
+        try (RobotSideProcess sim = new RobotSideProcess(0, 0); NaoLink link = online(sim)) {
+            assertEquals(new CallOutcome.Done(), get(link.call("ALTextToSpeech", "setVolume", 0.25f)));
+            CallOutcome volume = get(link.call("ALTextToSpeech", "getVolume"));
+            assertEquals(new CallOutcome.Value(0.25f), volume);
+            assertEquals(new CallOutcome.Done(), get(link.call("ALMemory", "insertData", "Touchline/test", "hello")));
+            assertEquals(new CallOutcome.Value("hello"), get(link.call("ALMemory", "getData", "Touchline/test")));
+            assertInstanceOf(CallOutcome.Failed.class, get(link.call("NoSuchModule", "ping")));
+            assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMotion", "noSuchMethod")));
+            for (String module : List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory", "ALBattery")) {
+                CallOutcome methods = get(link.call(module, "getMethodList"));
+                assertInstanceOf(CallOutcome.Value.class, methods, module);
+                Object list = ((CallOutcome.Value) methods).value();
+                assertTrue(list instanceof List<?> l && l.contains("getMethodList"), module + ": " + list);
+            }
+            SequenceOutcome stand = new NaoMoves(link).stand().get(30, TimeUnit.SECONDS);
+            assertTrue(stand.ok(), stand.describe());
+            assertEquals(new CallOutcome.Value("Standing"), get(link.call("ALRobotPosture", "getPostureFamily")));
+            SequenceOutcome bad = link.sequence(List.of(NaoCall.of("ALRobotPosture", "goToPosture", "NoSuchPosture", 1.0f),
+                    NaoCall.of("ALMemory", "insertData", "Touchline/after", 1))).get(30, TimeUnit.SECONDS);
+            assertEquals(0, bad.failedIndex(), bad.describe());
+            assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "Touchline/after")),
+                    "the step after the failure must not have run");
+        }
+    }
+
+    @Test
+    void aKilledServerIsLostWithin3sAndNothingRunsLateAfterItRestarts() throws Exception {
+        RobotSideProcess sim = new RobotSideProcess(0, 0);
+        int port = sim.rpcPort;
+        try (NaoLink link = online(sim)) {
+            CompletableFuture<CallOutcome> inFlight = link.call(NaoCall.of("ALRobotPosture", "goToPosture", "Sit", 0.2f));
+            sim.kill();
+            long killed = System.nanoTime();
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost within 3 s");
+            assertTrue(System.nanoTime() - killed < TimeUnit.SECONDS.toNanos(3));
+            assertInstanceOf(CallOutcome.Lost.class, get(inFlight));
+            assertInstanceOf(CallOutcome.Lost.class, get(link.call("ALMemory", "insertData", "Touchline/late", 1)));
+
+            sim = new RobotSideProcess(port, 0);
+            RobotSideProcess restarted = sim;
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "back online");
+            Thread.sleep(500); // nothing to await: a late delivery would arrive now if anything were queued
+            assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "Touchline/late")),
+                    "the call made while the robot was down must not run after it restarts");
+            assertEquals(port, restarted.rpcPort);
+            CallOutcome log = get(link.call("Robot", "getCallLog"));
+            assertInstanceOf(CallOutcome.Value.class, log);
+            assertTrue(((List<?>) ((CallOutcome.Value) log).value()).stream()
+                    .noneMatch(entry -> String.valueOf(entry).contains("insertData")), "call log: " + log.describe());
+        } finally {
+            sim.close();
+        }
+    }
+
+    @Test
+    void cameraConfigureAndFetch() throws Exception {
+        try (RobotSideProcess sim = new RobotSideProcess(0, 0);
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add)) {
+            camera.configure(new CameraSettings(2, 11, 30));
+            try (AutoCloseable viewer = camera.subscribe()) {
+                assertTrue(Poll.until(() -> camera.framesReceived() >= 5, Duration.ofSeconds(10)), "" + camera.lastError());
+                assertEquals(640, camera.latestFrame().width());
+                assertEquals(480, camera.latestFrame().height());
+                camera.configure(new CameraSettings(1, 11, 30));
+                assertTrue(Poll.until(() -> camera.latestFrame().width() == 320, Duration.ofSeconds(5)));
+            }
+        }
+    }
+}

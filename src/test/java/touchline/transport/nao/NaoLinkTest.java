@@ -1,0 +1,194 @@
+package touchline.transport.nao;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+
+import java.net.ServerSocket;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** NaoLink against the in-test ROUTER stand-in on loopback (the real robot side: NaoLinkRobotSideIT). */
+class NaoLinkTest {
+
+    private final List<Envelope> envelopes = new CopyOnWriteArrayList<>();
+    private FakeNaoRobot robot;
+    private NaoLink link;
+
+    private NaoLink connect(NaoLinkConfig config) throws Exception {
+        robot = new FakeNaoRobot(0);
+        link = new NaoLink("127.0.0.1", robot.port(), config, envelopes::add);
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        return link;
+    }
+
+    private static CallOutcome get(CompletableFuture<CallOutcome> f) throws Exception {
+        return f.get(10, TimeUnit.SECONDS);
+    }
+
+    @AfterEach
+    void tearDown() throws Exception {
+        if (link != null) {
+            link.close();
+        }
+        if (robot != null) {
+            robot.close();
+        }
+    }
+
+    @Test
+    void valueVoidErrorAndUnknownMethod() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        assertEquals(new CallOutcome.Value(List.of("a", 7L, 0.5f)), get(link.call("Test", "echo", List.of("a", 7, 0.5f))));
+        assertEquals(new CallOutcome.Done(), get(link.call("Test", "void")));
+        assertEquals(new CallOutcome.Failed("Test.fail: failed on purpose"), get(link.call("Test", "fail")));
+        assertInstanceOf(CallOutcome.Failed.class, get(link.call("Nope", "nothing")));
+        assertEquals(new CallOutcome.Value(List.of("echo", "void", "fail", "sleep")), get(link.call("Test", "getMethodList")));
+    }
+
+    @Test
+    void manyCallsInFlightAnswerOutOfOrder() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        CompletableFuture<CallOutcome> slow = link.call("Test", "sleep", 400);
+        CompletableFuture<CallOutcome> fast = link.call("Test", "echo", "quick");
+        assertEquals(new CallOutcome.Value("quick"), get(fast));
+        assertFalse(slow.isDone(), "the slow call must still be running when the fast one answered");
+        assertEquals(new CallOutcome.Value(400L), get(slow));
+    }
+
+    @Test
+    void timeoutGivesTypedOutcomeAndTheLateReplyIsDroppedById() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        CallOutcome outcome = get(link.call(NaoCall.of("Test", "sleep", 600), 150));
+        assertInstanceOf(CallOutcome.TimedOut.class, outcome);
+        assertTrue(Poll.until(() -> link.stats().stray() == 1, Duration.ofSeconds(3)), "late reply counted as stray");
+        assertEquals(new CallOutcome.Value("next"), get(link.call("Test", "echo", "next")));
+    }
+
+    @Test
+    void onlyIdempotentCallsAreRetried() throws Exception {
+        connect(NaoLinkConfig.parse("retries=2\nidempotent=Test.sleep\n", "test"));
+        assertInstanceOf(CallOutcome.TimedOut.class, get(link.call(NaoCall.of("Test", "sleep", 500), 100)));
+        assertTrue(Poll.until(() -> count("Test.sleep") == 3, Duration.ofSeconds(3)));
+        robot.executed.clear();
+        link.close();
+        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.parse("retries=2\n", "test"), envelopes::add);
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)));
+        assertInstanceOf(CallOutcome.TimedOut.class, get(link.call(NaoCall.of("Test", "sleep", 500), 100)));
+        Thread.sleep(600); // nothing to await: we check that no second attempt arrives
+        assertEquals(1, count("Test.sleep"));
+    }
+
+    private long count(String prefix) {
+        return robot.executedNames().stream().filter(n -> n.startsWith(prefix)).count();
+    }
+
+    @Test
+    void killedServerIsLostAndQueuedCallsNeverRunLate() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        int port = robot.port();
+        CompletableFuture<CallOutcome> inFlight = link.call("Test", "sleep", 2000);
+        robot.close();
+        long killed = System.nanoTime();
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost within 3 s");
+        assertTrue(System.nanoTime() - killed < TimeUnit.SECONDS.toNanos(3));
+        assertInstanceOf(CallOutcome.Lost.class, get(inFlight));
+        CallOutcome whileDown = get(link.call("ALMemory", "insertData", "late", 1));
+        assertInstanceOf(CallOutcome.Lost.class, whileDown);
+
+        robot = new FakeNaoRobot(port);
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "back online");
+        assertEquals(new CallOutcome.Value("x"), get(link.call("Test", "echo", "x")));
+        assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "late")),
+                "the call made while the robot was down must not have run after it came back");
+        assertTrue(robot.executedNames().stream().noneMatch(n -> n.startsWith("ALMemory.insertData")));
+        assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.LINK_EVENT && e.kind().equals("nao.lost")));
+    }
+
+    @Test
+    void callsToAnAbsentRobotEndAsLostAfterTheirTimeout() throws Exception {
+        int port;
+        try (ServerSocket s = new ServerSocket(0)) {
+            port = s.getLocalPort();
+        }
+        link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), envelopes::add);
+        CallOutcome outcome = get(link.call(NaoCall.of("Test", "echo", 1), 200));
+        assertInstanceOf(CallOutcome.Lost.class, outcome);
+        assertEquals(ConnectionState.CONNECTING, link.state());
+    }
+
+    @Test
+    void minimumIntervalCoalescesToTheNewestCall() throws Exception {
+        connect(NaoLinkConfig.parse("interval.ALMotion.setAngles=200\n", "test"));
+        CompletableFuture<CallOutcome> first = link.call("ALMotion", "setAngles", "HeadYaw", 0.1f, 0.5f);
+        assertEquals(new CallOutcome.Done(), get(first));
+        long firstDone = System.nanoTime();
+        CompletableFuture<CallOutcome> second = link.call("ALMotion", "setAngles", "HeadYaw", 0.2f, 0.5f);
+        CompletableFuture<CallOutcome> third = link.call("ALMotion", "setAngles", "HeadYaw", 0.3f, 0.5f);
+        assertEquals(new CallOutcome.Superseded(), get(second));
+        assertEquals(new CallOutcome.Done(), get(third));
+        assertTrue(System.nanoTime() - firstDone >= TimeUnit.MILLISECONDS.toNanos(150), "third waited for the interval");
+        List<String> angles = robot.executedNames().stream().filter(n -> n.startsWith("ALMotion.setAngles")).toList();
+        assertEquals(List.of("ALMotion.setAngles[HeadYaw, 0.1, 0.5]", "ALMotion.setAngles[HeadYaw, 0.3, 0.5]"), angles);
+    }
+
+    @Test
+    void sequenceStopsAtTheFirstFailure() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        SequenceOutcome outcome = link.sequence(List.of(
+                NaoCall.of("ALMemory", "insertData", "step", 1),
+                NaoCall.of("ALRobotPosture", "goToPosture", "Fly", 1.0f),
+                NaoCall.of("ALMemory", "insertData", "after", 1))).get(10, TimeUnit.SECONDS);
+        assertFalse(outcome.ok());
+        assertEquals(1, outcome.failedIndex());
+        assertEquals(2, outcome.outcomes().size());
+        assertTrue(robot.memory.containsKey("step"));
+        assertFalse(robot.memory.containsKey("after"));
+        assertTrue(new NaoMoves(link).stand().get(10, TimeUnit.SECONDS).ok());
+    }
+
+    @Test
+    void sendGateHoldsBackCommandsButNotReads() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        link.setSendGate(() -> false, () -> "match in progress");
+        assertEquals(new CallOutcome.HeldBack("match in progress"), get(link.call("ALMemory", "insertData", "k", 1)));
+        assertFalse(robot.memory.containsKey("k"));
+        assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "k")), "a read still reaches the robot");
+        link.setSendGate(() -> true, () -> "");
+        assertEquals(new CallOutcome.Done(), get(link.call("ALMemory", "insertData", "k", 1)));
+    }
+
+    @Test
+    void badRepliesAndUnsendableParametersAreTypedFailuresAndTheLinkGoesOn() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        assertInstanceOf(CallOutcome.Failed.class, get(link.call("Test", "garbage")));
+        assertEquals(1, link.stats().malformed());
+        CallOutcome negative = get(link.call("Test", "echo", -1));
+        assertInstanceOf(CallOutcome.Failed.class, negative);
+        assertTrue(negative.describe().contains("unsigned"), negative.describe());
+        assertEquals(new CallOutcome.Value(true), get(link.call("Test", "echo", true)));
+    }
+
+    @Test
+    void requestsRepliesAndConnectionEventsEnterTheEnvelopeStream() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        get(link.call("Test", "echo", "hi"));
+        assertTrue(Poll.until(() -> envelopes.size() >= 3, Duration.ofSeconds(2)));
+        assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.LINK_EVENT && e.kind().equals("nao.online")
+                && new String(e.raw()).contains("online")));
+        assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.direction() == Direction.OUT
+                && e.kind().equals("Test.echo")));
+        assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.direction() == Direction.IN
+                && e.kind().equals("Test.echo") && e.message() != null));
+    }
+}
