@@ -80,6 +80,10 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                         List.of(new LayoutNode.Entry(s.getKey(), source))))));
                 Thread.sleep(1500);
+                if (s.getKey().equals("network")) {
+                    FxThread.run(() -> selectNewestStatus(window));
+                    Thread.sleep(300);
+                }
                 shoot(window, s.getKey());
             }
             FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
@@ -97,6 +101,20 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             FxThread.run(() -> javafx.application.Platform.exit());
         }
         return 0;
+    }
+
+    /** Shows a keep-alive decoded and as hex in the network console's detail panes. */
+    @SuppressWarnings("unchecked")
+    private static void selectNewestStatus(ConsoleWindow window) {
+        javafx.scene.control.TableView<touchline.transport.Envelope> table =
+                (javafx.scene.control.TableView<touchline.transport.Envelope>) window.scene().lookup("#network-table");
+        for (int i = table.getItems().size() - 1; i >= 0; i--) {
+            if (table.getItems().get(i).kind().equals("status")) {
+                table.getSelectionModel().select(i);
+                table.scrollTo(Math.max(0, i - 10));
+                return;
+            }
+        }
     }
 
     private void shoot(ConsoleWindow window, String name) throws Exception {
