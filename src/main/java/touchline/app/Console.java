@@ -6,7 +6,10 @@ import touchline.model.DebugOptionSession;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.game.Game;
+import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GameStateWatch;
+import touchline.transport.gamecontroller.GcConfig;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
 import touchline.model.TrafficMeter;
@@ -56,6 +59,7 @@ public final class Console implements AutoCloseable {
     private final ScheduledExecutorService ticker;
     private final MatchMode matchMode = new MatchMode(GameClock.system());
     private GameStateWatch gcWatch;
+    private EmbeddedGameController gameController;
     private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
@@ -195,6 +199,35 @@ public final class Console implements AutoCloseable {
         }
     }
 
+    /**
+     * Starts refereeing: the embedded GameController sends {@code game}'s state to {@code config}'s
+     * destinations, publishes its packets into the Envelope stream and tells match mode what it
+     * sends. One at a time; a running one is stopped first.
+     */
+    public synchronized EmbeddedGameController startGameController(Game game, GcConfig gcConfig) throws IOException {
+        stopGameController();
+        EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode);
+        try {
+            gc.start();
+        } catch (RuntimeException e) {
+            gc.close();
+            throw new IOException(e.getMessage(), e);
+        }
+        gameController = gc;
+        return gc;
+    }
+
+    public synchronized Optional<EmbeddedGameController> gameController() {
+        return Optional.ofNullable(gameController);
+    }
+
+    public synchronized void stopGameController() {
+        if (gameController != null) {
+            gameController.close();
+            gameController = null;
+        }
+    }
+
     /** Live listening on or paused (a replay may run beside live traffic or alone). */
     public void setLiveListening(boolean on) {
         live.setLive(on);
@@ -216,6 +249,7 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        stopGameController();
         closeReplay();
         try {
             stopRecording();
