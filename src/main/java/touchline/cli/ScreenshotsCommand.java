@@ -86,6 +86,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 }
                 shoot(window, s.getKey());
             }
+            shootGameController(console, window);
             FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                     List.of(new LayoutNode.Entry("robots", ""))))));
             FxThread.run(() -> window.quickOpen());
@@ -101,6 +102,28 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             FxThread.run(() -> javafx.application.Platform.exit());
         }
         return 0;
+    }
+
+    /** Referees the simulated team for a moment (the robots follow) and shows the GameController tab. */
+    private void shootGameController(Console console, ConsoleWindow window) throws Exception {
+        List<java.net.InetSocketAddress> robots = console.robots().robots().stream()
+                .map(touchline.model.RobotSnapshot::address).filter(java.util.Objects::nonNull).toList();
+        touchline.transport.gamecontroller.GcConfig defaults = touchline.transport.gamecontroller.GcConfig.defaults(
+                touchline.transport.gamecontroller.GcProfile.HL12);
+        touchline.transport.gamecontroller.GcConfig config = new touchline.transport.gamecontroller.GcConfig(
+                touchline.transport.gamecontroller.GcProfile.HL12, false, robots, null,
+                new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), false);
+        touchline.game.Game game = new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0,
+                touchline.game.GameClock.system());
+        console.startGameController(game, config);
+        game.perform(new touchline.game.ToReady());
+        game.perform(new touchline.game.ToSet());
+        game.perform(new touchline.game.ToPlaying());
+        FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                List.of(new LayoutNode.Entry("gamecontroller", ""))))));
+        Thread.sleep(2500); // the robots hear PLAYING and report it; match mode shows its notice
+        shoot(window, "gamecontroller");
+        console.stopGameController();
     }
 
     /** Shows a keep-alive decoded and as hex in the network console's detail panes. */

@@ -52,6 +52,7 @@ public final class GameControllerTab implements View {
     private final TextField overrideReason = new TextField();
     private final VBox setup;
     private GameControllerView referee;
+    private EmbeddedGameController shown;
 
     public GameControllerTab(ViewContext context, ViewSource source) {
         this.console = context.console();
@@ -110,14 +111,7 @@ public final class GameControllerTab implements View {
             GcConfig config = new GcConfig(profile, false, dests, null, new InetSocketAddress("0.0.0.0", returns),
                     defaults.rivalBind(), GcConfig.INTERVAL_MS, false);
             Game game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
-            EmbeddedGameController gc = console.startGameController(game, config);
-            referee = new GameControllerView(game, gc);
-            Button stop = new Button("Stop GameController");
-            stop.setId("gc-stop");
-            stop.setOnAction(e -> stop());
-            VBox running = new VBox(6, new Label(profile.cliName() + " to " + dests), stop, referee.node());
-            running.setPadding(new Insets(4));
-            root.setCenter(running);
+            show(console.startGameController(game, config));
         } catch (NumberFormatException e) {
             setupMessage.setText("team numbers and ports are whole numbers: " + e.getMessage());
         } catch (IOException | RuntimeException e) {
@@ -125,9 +119,23 @@ public final class GameControllerTab implements View {
         }
     }
 
+    /** Shows the referee controls of a running GameController (started here or elsewhere). */
+    private void show(EmbeddedGameController gc) {
+        shown = gc;
+        referee = new GameControllerView(gc.game(), gc);
+        Button stop = new Button("Stop GameController");
+        stop.setId("gc-stop");
+        stop.setOnAction(e -> stop());
+        VBox running = new VBox(6, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
+                stop, referee.node());
+        running.setPadding(new Insets(4));
+        root.setCenter(running);
+    }
+
     private void stop() {
         console.stopGameController();
         referee = null;
+        shown = null;
         root.setCenter(setup);
         setupMessage.setText("stopped");
     }
@@ -155,6 +163,16 @@ public final class GameControllerTab implements View {
 
     @Override
     public void refresh(FrameContext frame) {
+        EmbeddedGameController running = console.gameController().orElse(null);
+        if (running != shown) {
+            if (running == null) {
+                referee = null;
+                shown = null;
+                root.setCenter(setup);
+            } else {
+                show(running);
+            }
+        }
         if (referee != null) {
             referee.refresh(frame);
         }
