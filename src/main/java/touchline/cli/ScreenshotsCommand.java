@@ -86,6 +86,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 }
                 shoot(window, s.getKey());
             }
+            shootNao(window);
             shootGameController(console, window);
             FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                     List.of(new LayoutNode.Entry("robots", ""))))));
@@ -102,6 +103,47 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             FxThread.run(() -> javafx.application.Platform.exit());
         }
         return 0;
+    }
+
+    /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
+    private void shootNao(ConsoleWindow window) throws Exception {
+        java.nio.file.Path sim = SimulatedTeam.binary().resolveSibling("touchline-nao-sim");
+        if (!Files.isExecutable(sim)) {
+            System.err.println("no NAO screenshot: " + sim + " is missing");
+            return;
+        }
+        Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0").redirectErrorStream(true).start();
+        try {
+            java.io.BufferedReader lines = new java.io.BufferedReader(new java.io.InputStreamReader(nao.getInputStream()));
+            String rpc = lines.readLine().replaceAll("\\D+", "");
+            String cam = lines.readLine().replaceAll("\\D+", "");
+            FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                    List.of(new LayoutNode.Entry("nao", ""))))));
+            Thread.sleep(800);
+            FxThread.run(() -> {
+                javafx.scene.Scene scene = window.scene();
+                ((javafx.scene.control.TextField) scene.lookup("#nao-rpc-port")).setText(rpc);
+                ((javafx.scene.control.TextField) scene.lookup("#nao-cam-port")).setText(cam);
+                ((javafx.scene.control.ToggleButton) scene.lookup("#nao-connect")).fire();
+            });
+            Thread.sleep(1500);
+            FxThread.run(() -> {
+                javafx.scene.Scene scene = window.scene();
+                javafx.scene.Node discover = scene.lookup("#nao-discover");
+                if (discover instanceof javafx.scene.control.Button b) {
+                    b.fire();
+                }
+                javafx.scene.control.ToggleButton camera = (javafx.scene.control.ToggleButton) scene.lookup("#nao-camera");
+                if (!camera.isSelected()) {
+                    camera.fire();
+                }
+            });
+            Thread.sleep(2500);
+            shoot(window, "nao");
+            FxThread.run(() -> ((javafx.scene.control.ToggleButton) window.scene().lookup("#nao-connect")).fire());
+        } finally {
+            nao.destroy();
+        }
     }
 
     /** Referees the simulated team for a moment (the robots follow) and shows the GameController tab. */
@@ -123,6 +165,8 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 List.of(new LayoutNode.Entry("gamecontroller", ""))))));
         Thread.sleep(2500); // the robots hear PLAYING and report it; match mode shows its notice
         shoot(window, "gamecontroller");
+        game.perform(new touchline.game.ToFinished()); // robots hear FINISHED: the console may talk again
+        Thread.sleep(1500);
         console.stopGameController();
     }
 
