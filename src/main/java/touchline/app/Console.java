@@ -1,6 +1,16 @@
 package touchline.app;
 
+import touchline.game.GameClock;
+import touchline.game.MatchMode;
 import touchline.model.DebugOptionSession;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.game.Game;
+import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.transport.gamecontroller.GameStateWatch;
+import touchline.transport.gamecontroller.GcConfig;
+import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
 import touchline.model.TrafficMeter;
 import touchline.protocol.MessageCodec;
@@ -47,6 +57,9 @@ public final class Console implements AutoCloseable {
     private final UdpTransport udp;
     private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
+    private final MatchMode matchMode = new MatchMode(GameClock.system());
+    private GameStateWatch gcWatch;
+    private EmbeddedGameController gameController;
     private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
@@ -73,6 +86,8 @@ public final class Console implements AutoCloseable {
         this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, modelClock);
         this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
+        bus.subscribe(new ReportedGameState(matchMode));
+        setGate(() -> matchMode.hold("console request") ? Optional.of(matchMode.notice()) : Optional.empty());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);
@@ -90,8 +105,26 @@ public final class Console implements AutoCloseable {
     /** Binds the UDP port and starts the model's clock; returns this for chaining. */
     public Console start() throws InterruptedException {
         udp.start();
+        watchGameController();
         ticker.scheduleAtFixedRate(this::tick, config.tickMillis(), config.tickMillis(), TimeUnit.MILLISECONDS);
         return this;
+    }
+
+    /**
+     * Listens on the GameController port (3838, shared with SO_REUSEADDR) so match mode hears
+     * the referee box; a port that cannot be opened is reported and the console runs on.
+     */
+    private void watchGameController() {
+        if (config.gameControllerPort() <= 0) {
+            return;
+        }
+        try {
+            gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
+                    live, matchMode);
+        } catch (IOException e) {
+            org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot listen for GameControllers on port {}: {} "
+                    + "(match mode still follows the robots' reported game state)", config.gameControllerPort(), e.toString());
+        }
     }
 
     private void tick() {
@@ -122,6 +155,7 @@ public final class Console implements AutoCloseable {
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+    public MatchMode matchMode() { return matchMode; }
     /** The bounded stores the UI's views pull from once per frame. */
     public touchline.model.store.ViewStores stores() { return stores; }
 
@@ -165,6 +199,35 @@ public final class Console implements AutoCloseable {
         }
     }
 
+    /**
+     * Starts refereeing: the embedded GameController sends {@code game}'s state to {@code config}'s
+     * destinations, publishes its packets into the Envelope stream and tells match mode what it
+     * sends. One at a time; a running one is stopped first.
+     */
+    public synchronized EmbeddedGameController startGameController(Game game, GcConfig gcConfig) throws IOException {
+        stopGameController();
+        EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode);
+        try {
+            gc.start();
+        } catch (RuntimeException e) {
+            gc.close();
+            throw new IOException(e.getMessage(), e);
+        }
+        gameController = gc;
+        return gc;
+    }
+
+    public synchronized Optional<EmbeddedGameController> gameController() {
+        return Optional.ofNullable(gameController);
+    }
+
+    public synchronized void stopGameController() {
+        if (gameController != null) {
+            gameController.close();
+            gameController = null;
+        }
+    }
+
     /** Live listening on or paused (a replay may run beside live traffic or alone). */
     public void setLiveListening(boolean on) {
         live.setLive(on);
@@ -186,6 +249,7 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        stopGameController();
         closeReplay();
         try {
             stopRecording();
@@ -193,6 +257,9 @@ public final class Console implements AutoCloseable {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("closing the recording: {}", e.toString());
         }
         ticker.shutdownNow();
+        if (gcWatch != null) {
+            gcWatch.close();
+        }
         udp.close();
     }
 }

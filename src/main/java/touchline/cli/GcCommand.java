@@ -15,6 +15,7 @@ import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.RobotLiveness;
 
 import java.io.BufferedReader;
+import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.net.InetSocketAddress;
@@ -36,8 +37,8 @@ import java.util.concurrent.Callable;
 public final class GcCommand implements Callable<Integer> {
 
     @Option(names = "--format", defaultValue = "hl12",
-            description = "wire format: hl12 (HL v12, 688 B), spl18 (SPL v18, 118 B), v8 (2014, 158 B), "
-                    + "v7 (2013, 116 B). Default: ${DEFAULT-VALUE}")
+            description = "wire format: hl12 (HL v12, 688 B), hl12-640 (HL v12 2017-2021, 640 B), spl18 "
+                    + "(SPL v18, 118 B), v8 (2014, 158 B), v7 (2013, 116 B). Default: ${DEFAULT-VALUE}")
     String format;
 
     @Option(names = "--team-a", required = true, description = "team number on the left, kicks off first")
@@ -76,16 +77,22 @@ public final class GcCommand implements Callable<Integer> {
     @Option(names = "--half", defaultValue = "600", description = "half length in seconds. Default: ${DEFAULT-VALUE}")
     int halfSeconds;
 
+    @Option(names = "--realtime", description = "ask for real-time scheduling of the sender thread "
+            + "(Linux, needs root or CAP_SYS_NICE): keeps the 500 ms cadence on a busy laptop")
+    boolean realtime;
+
     @Option(names = "--interval-ms", defaultValue = "500", hidden = true)
     long intervalMs;
 
+    private final InputStream input;
     private final PrintStream out;
 
     public GcCommand() {
-        this(System.out);
+        this(System.in, System.out);
     }
 
-    GcCommand(PrintStream out) {
+    GcCommand(InputStream input, PrintStream out) {
+        this.input = input;
         this.out = out;
     }
 
@@ -93,14 +100,11 @@ public final class GcCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         GcProfile profile = GcProfile.parse(format);
         if (profile == null) {
-            out.println("error: unknown format '" + format + "' (hl12, spl18, v8, v7)");
+            out.println("error: unknown format '" + format + "' (hl12, hl12-640, spl18, v8, v7)");
             return 2;
         }
         GcConfig config = config(profile);
-        LeagueParams base = LeagueParams.hlSimulationKidSize();
-        LeagueParams params = new LeagueParams(players, halfSeconds, base.readySeconds(), base.kickOffBlockSeconds(),
-                base.setPlayPrepareSeconds(), base.afterSetPlayBlockSeconds(), base.penaltySeconds(),
-                base.halfTimePauseSeconds(), base.timeoutSeconds(), base.timeoutsPerTeam(), base.gameType());
+        LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(players, halfSeconds);
         Game game = new Game(params, teamA, colourA, teamB, colourB, GameClock.system());
         MatchMode matchMode = new MatchMode(GameClock.system());
         try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode)) {
@@ -116,9 +120,15 @@ public final class GcCommand implements Callable<Integer> {
             gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
+            if (realtime) {
+                // the sender thread reports the outcome once it has started
+                Thread.sleep(200);
+                String why = gc.sender().realtimeOutcome();
+                print(why.isEmpty() ? "sender runs with real-time priority" : "! no real-time priority: " + why);
+            }
             print("state: " + game.describe());
             ActionSyntax syntax = new ActionSyntax();
-            BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+            BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
             for (String line = in.readLine(); line != null; line = in.readLine()) {
                 String cmd = line.trim();
                 if (cmd.isEmpty() || cmd.startsWith("#")) {
@@ -182,11 +192,12 @@ public final class GcCommand implements Callable<Integer> {
         int returns = returnPort != null ? returnPort : profile.defaultReturnPort();
         InetSocketAddress rivals = null;
         int rival = rivalPort != null ? rivalPort : GcProfile.GAME_STATE_PORT;
-        if (rival >= 0 && rival != returns) {
+        // In the 2014 profiles the return socket is the game-state port and hears rivals itself.
+        if (rival >= 0 && rival != returns && !profile.returnsOnGameStatePort()) {
             rivals = new InetSocketAddress(bind, rival);
         }
         return new GcConfig(profile, v7Compat, dests, null, new InetSocketAddress(bind, returns), rivals,
-                intervalMs);
+                intervalMs, realtime);
     }
 
     static InetSocketAddress parseAddress(String text, int defaultPort) {

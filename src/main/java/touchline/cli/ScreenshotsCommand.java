@@ -80,8 +80,14 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                         List.of(new LayoutNode.Entry(s.getKey(), source))))));
                 Thread.sleep(1500);
+                if (s.getKey().equals("network")) {
+                    FxThread.run(() -> selectNewestStatus(window));
+                    Thread.sleep(300);
+                }
                 shoot(window, s.getKey());
             }
+            shootNao(window);
+            shootGameController(console, window);
             FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                     List.of(new LayoutNode.Entry("robots", ""))))));
             FxThread.run(() -> window.quickOpen());
@@ -97,6 +103,85 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             FxThread.run(() -> javafx.application.Platform.exit());
         }
         return 0;
+    }
+
+    /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
+    private void shootNao(ConsoleWindow window) throws Exception {
+        java.nio.file.Path sim = SimulatedTeam.binary().resolveSibling("touchline-nao-sim");
+        if (!Files.isExecutable(sim)) {
+            System.err.println("no NAO screenshot: " + sim + " is missing");
+            return;
+        }
+        Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0").redirectErrorStream(true).start();
+        try {
+            java.io.BufferedReader lines = new java.io.BufferedReader(new java.io.InputStreamReader(nao.getInputStream()));
+            String rpc = lines.readLine().replaceAll("\\D+", "");
+            String cam = lines.readLine().replaceAll("\\D+", "");
+            FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                    List.of(new LayoutNode.Entry("nao", ""))))));
+            Thread.sleep(800);
+            FxThread.run(() -> {
+                javafx.scene.Scene scene = window.scene();
+                ((javafx.scene.control.TextField) scene.lookup("#nao-rpc-port")).setText(rpc);
+                ((javafx.scene.control.TextField) scene.lookup("#nao-cam-port")).setText(cam);
+                ((javafx.scene.control.ToggleButton) scene.lookup("#nao-connect")).fire();
+            });
+            Thread.sleep(1500);
+            FxThread.run(() -> {
+                javafx.scene.Scene scene = window.scene();
+                javafx.scene.Node discover = scene.lookup("#nao-discover");
+                if (discover instanceof javafx.scene.control.Button b) {
+                    b.fire();
+                }
+                javafx.scene.control.ToggleButton camera = (javafx.scene.control.ToggleButton) scene.lookup("#nao-camera");
+                if (!camera.isSelected()) {
+                    camera.fire();
+                }
+            });
+            Thread.sleep(2500);
+            shoot(window, "nao");
+            FxThread.run(() -> ((javafx.scene.control.ToggleButton) window.scene().lookup("#nao-connect")).fire());
+        } finally {
+            nao.destroy();
+        }
+    }
+
+    /** Referees the simulated team for a moment (the robots follow) and shows the GameController tab. */
+    private void shootGameController(Console console, ConsoleWindow window) throws Exception {
+        List<java.net.InetSocketAddress> robots = console.robots().robots().stream()
+                .map(touchline.model.RobotSnapshot::address).filter(java.util.Objects::nonNull).toList();
+        touchline.transport.gamecontroller.GcConfig defaults = touchline.transport.gamecontroller.GcConfig.defaults(
+                touchline.transport.gamecontroller.GcProfile.HL12);
+        touchline.transport.gamecontroller.GcConfig config = new touchline.transport.gamecontroller.GcConfig(
+                touchline.transport.gamecontroller.GcProfile.HL12, false, robots, null,
+                new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), false);
+        touchline.game.Game game = new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0,
+                touchline.game.GameClock.system());
+        console.startGameController(game, config);
+        game.perform(new touchline.game.ToReady());
+        game.perform(new touchline.game.ToSet());
+        game.perform(new touchline.game.ToPlaying());
+        FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                List.of(new LayoutNode.Entry("gamecontroller", ""))))));
+        Thread.sleep(2500); // the robots hear PLAYING and report it; match mode shows its notice
+        shoot(window, "gamecontroller");
+        game.perform(new touchline.game.ToFinished()); // robots hear FINISHED: the console may talk again
+        Thread.sleep(1500);
+        console.stopGameController();
+    }
+
+    /** Shows a keep-alive decoded and as hex in the network console's detail panes. */
+    @SuppressWarnings("unchecked")
+    private static void selectNewestStatus(ConsoleWindow window) {
+        javafx.scene.control.TableView<touchline.transport.Envelope> table =
+                (javafx.scene.control.TableView<touchline.transport.Envelope>) window.scene().lookup("#network-table");
+        for (int i = table.getItems().size() - 1; i >= 0; i--) {
+            if (table.getItems().get(i).kind().equals("status")) {
+                table.getSelectionModel().select(i);
+                table.scrollTo(Math.max(0, i - 10));
+                return;
+            }
+        }
     }
 
     private void shoot(ConsoleWindow window, String name) throws Exception {

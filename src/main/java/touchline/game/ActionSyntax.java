@@ -3,23 +3,10 @@ package touchline.game;
 import java.util.Locale;
 
 /**
- * The text form of referee actions, shared by the CLI and scripts (one command per line):
- * <pre>
- *   ready | set | play | finish              state changes ("ready" during a set play = set-play READY)
- *   goal TEAM                                goal for TEAM
- *   kickoff TEAM                             team kicking off the game (before the first kick-off)
- *   penalty TEAM PLAYER KIND                 KIND: physical_contact, ball_manipulation, illegal_attack,
- *                                            illegal_defense, pickup_or_incapable, service, manual
- *   unpenalise TEAM PLAYER
- *   card TEAM PLAYER warning|yellow|red
- *   substitute TEAM OUT IN                   substitute IN replaces OUT
- *   goalkeeper TEAM PLAYER
- *   freekick TEAM direct|indirect, penaltykick TEAM, corner TEAM, goalkick TEAM, throwin TEAM
- *   prepare | execute | abort                set-play steps (and "setplay ready")
- *   dropball
- *   timeout TEAM                             ("ready" ends it)
- * </pre>
- * {@code undo} and {@code status} are handled by the caller, since they are not actions.
+ * The text form of referee actions, shared by the CLI and scripts (one command per line); the
+ * commands are listed in {@link #HELP}, e.g. {@code goal 13}, {@code penalty 7 2 physical_contact},
+ * {@code freekick 13 direct}. {@code undo}, {@code status} and {@code quit} are handled by the
+ * caller, since they are not actions.
  */
 public final class ActionSyntax {
 
@@ -35,20 +22,26 @@ public final class ActionSyntax {
         }
     }
 
+    /** Help text, lines under 80 columns (the CLI prints it as is). */
     public static final String HELP = """
-            ready | set | play | finish      state changes ("ready" during a set play = set-play READY)
-            goal TEAM                        goal for TEAM (team number)
-            kickoff TEAM                     team that kicks off the game (before the first kick-off)
-            penalty TEAM PLAYER KIND         KIND: physical_contact ball_manipulation illegal_attack
-                                             illegal_defense pickup_or_incapable service manual
+            ready | set | play | finish   state changes (during a set play "ready" is
+                                          the set-play READY)
+            goal TEAM                     goal for TEAM (team number)
+            kickoff TEAM                  who kicks off (before the first kick-off)
+            penalty TEAM PLAYER KIND      KIND: physical_contact ball_manipulation
+                                          illegal_attack illegal_defense
+                                          pickup_or_incapable service manual
             unpenalise TEAM PLAYER
-            card TEAM PLAYER warning|yellow|red
-            substitute TEAM OUT IN           substitute IN replaces player OUT
+            card TEAM PLAYER KIND         KIND: warning yellow red
+            substitute TEAM OUT IN        substitute IN replaces player OUT
             goalkeeper TEAM PLAYER
-            freekick TEAM direct|indirect    penaltykick TEAM   corner TEAM   goalkick TEAM   throwin TEAM
-            prepare | execute | abort        set-play steps (also "setplay ready")
+            freekick TEAM direct|indirect
+            penaltykick|corner|goalkick|throwin TEAM
+            prepare | execute | abort     set-play steps (also "setplay ready")
             dropball
-            timeout TEAM                     ("ready" ends the timeout)
+            timeout TEAM                  "ready" ends the timeout
+            penaltyshootout               after a drawn 2nd half; per kick: set,
+                                          play, then goal TEAM or finish
             undo | status | quit""";
 
     /** Parses one line against the current state (which decides what "ready" means). */
@@ -84,6 +77,7 @@ public final class ActionSyntax {
                 case "abort" -> args(w, 0, new SetPlayStep(SetPlayStep.Step.ABORT));
                 case "dropball", "droppedball" -> args(w, 0, new DropBall());
                 case "timeout" -> args(w, 1, new Timeout(num(w[1])));
+                case "penaltyshootout", "pso" -> args(w, 0, new StartPenaltyShootout());
                 default -> Parsed.error("unknown command '" + w[0] + "'");
             };
         } catch (ArrayIndexOutOfBoundsException e) {

@@ -6,7 +6,7 @@ import touchline.protocol.gamecontroller.GameControlData;
 public record DropBall() implements Action {
     @Override
     public boolean isLegal(GameState s) {
-        return s.state == PlayState.PLAYING;
+        return s.state == PlayState.PLAYING && !s.isPenaltyShootout();
     }
 
     @Override

@@ -94,6 +94,10 @@ public final class GameState {
         return kickOffTeam;
     }
 
+    public boolean isPenaltyShootout() {
+        return secondary == SecondaryState.PENALTYSHOOT;
+    }
+
     public boolean isDropBall() {
         return kickOffTeam == GameControlData.DROP_BALL;
     }
@@ -145,6 +149,9 @@ public final class GameState {
     public int secondaryTime(long nowMs) {
         switch (state) {
             case INITIAL:
+                if (secondary == SecondaryState.PENALTYSHOOT) {
+                    return 0;
+                }
                 if (secondary == SecondaryState.TIMEOUT) {
                     return remaining(params.timeoutSeconds(), stateSinceMs, nowMs);
                 }
@@ -153,6 +160,9 @@ public final class GameState {
             case READY:
                 return Math.max(0, remaining(params.readySeconds(), stateSinceMs, nowMs));
             case PLAYING:
+                if (secondary == SecondaryState.PENALTYSHOOT) {
+                    return Math.max(0, remaining(params.penaltyShotSeconds(), stateSinceMs, nowMs));
+                }
                 if (secondary.isSetPlay()) {
                     return setPlayMode == 1
                             ? Math.max(0, remaining(params.setPlayPrepareSeconds(), setPlayModeSinceMs, nowMs)) : 0;
@@ -222,6 +232,11 @@ public final class GameState {
         teams = new TeamState[]{teams[1], teams[0]};
         kickOffTeam = otherTeam(firstHalfKickOffTeam).number;
         endSetPlay();
+        restartClock(nowMs);
+    }
+
+    /** A new period (second half, penalty shoot-out): INITIAL, clock reset, penalties lifted. */
+    void restartClock(long nowMs) {
         enter(PlayState.INITIAL, nowMs);
         halfStarted = false;
         halfElapsedMs = 0;

@@ -14,11 +14,11 @@ public final class ManualClock implements GameClock {
         return millis;
     }
 
-    public void set(long millis) {
+    public synchronized void set(long millis) {
         this.millis = millis;
     }
 
-    public void advance(long deltaMillis) {
+    public synchronized void advance(long deltaMillis) {
         this.millis += deltaMillis;
     }
 }

@@ -57,7 +57,11 @@ public final class MatchMode {
         this.clock = clock;
     }
 
-    /** Called with {@code true} when the console may send again, {@code false} when it must stop. */
+    /**
+     * Called with {@code true} when the console may send again (flush what was held back),
+     * {@code false} when it must stop. Runs on the thread that noticed the change (often the
+     * GameController sender or receiver), so it must not block.
+     */
     public void addListener(Consumer<Boolean> onMayConsoleSendChanged) {
         listeners.add(onMayConsoleSendChanged);
     }

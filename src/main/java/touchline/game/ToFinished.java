@@ -12,6 +12,10 @@ public record ToFinished() implements Action {
 
     @Override
     public void apply(GameState s, long nowMs) {
+        if (s.isPenaltyShootout()) {
+            s.enter(PlayState.FINISHED, nowMs); // this kick is over (missed)
+            return;
+        }
         s.endSetPlay();
         s.block(0, nowMs);
         s.enter(PlayState.FINISHED, nowMs);

@@ -13,6 +13,9 @@ public record ToPlaying() implements Action {
     @Override
     public void apply(GameState s, long nowMs) {
         s.enter(PlayState.PLAYING, nowMs);
+        if (s.isPenaltyShootout()) {
+            return; // the kick's own countdown runs, not the half clock
+        }
         s.halfStarted = true;
         s.block(s.isDropBall() ? 0 : s.params.kickOffBlockSeconds(), nowMs);
     }

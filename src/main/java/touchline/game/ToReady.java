@@ -4,6 +4,7 @@ package touchline.game;
 public record ToReady() implements Action {
     @Override
     public boolean isLegal(GameState s) {
+        // A penalty shoot-out goes from INITIAL straight to SET.
         return s.state == PlayState.INITIAL
                 && (s.secondary == SecondaryState.NORMAL || s.secondary == SecondaryState.TIMEOUT);
     }

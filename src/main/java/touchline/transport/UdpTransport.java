@@ -56,7 +56,9 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
 
     public UdpTransport start() throws InterruptedException {
         // Linux's epoll transport reads datagrams with far less overhead than NIO; NIO elsewhere.
-        boolean epoll = io.netty.channel.epoll.Epoll.isAvailable();
+        String mode = System.getProperty("touchline.udp", "epoll");
+        boolean epoll = !mode.equals("nio") && io.netty.channel.epoll.Epoll.isAvailable();
+        boolean mmsg = epoll && mode.equals("epoll-mmsg");
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
                 : NioIoHandler.newFactory());
         Bootstrap bootstrap = new Bootstrap()
@@ -65,9 +67,9 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                 .option(ChannelOption.SO_RCVBUF, config.receiveBuffer())
                 .option(ChannelOption.SO_BROADCAST, true)
                 // Read many datagrams per wake-up: a datagram never fills the buffer, so Netty's
-                // "maybe more data" guess would otherwise stop after one. With epoll, a buffer of
-                // 32 datagrams lets one recvmmsg() call fetch a whole burst.
-                .option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(epoll ? 2048 * 32 : 2048)
+                // "maybe more data" guess would otherwise stop after one. (recvmmsg batching,
+                // -Dtouchline.udp=epoll-mmsg, measured slower here: docs/benchmarks.md.)
+                .option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(mmsg ? 2048 * 32 : 2048)
                         .respectMaybeMoreData(false).maxMessagesPerRead(64))
                 .handler(new ChannelInitializer<DatagramChannel>() {
                     @Override
@@ -81,7 +83,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                         ch.pipeline().addLast("publish", new EnvelopePublisher(sink));
                     }
                 });
-        if (epoll) {
+        if (mmsg) {
             bootstrap.option(io.netty.channel.epoll.EpollChannelOption.MAX_DATAGRAM_PAYLOAD_SIZE, 2048);
         }
         channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();

@@ -71,7 +71,7 @@ public final class ConsoleWindow {
         javafx.geometry.Rectangle2D screen = javafx.stage.Screen.getPrimary().getVisualBounds();
         Scene scene = new Scene(root, Math.min(1400, screen.getWidth()), Math.min(900, screen.getHeight()));
         scene.getStylesheets().add(ConsoleWindow.class.getResource("touchline.css").toExternalForm());
-        scene.getStylesheets().add(software.coley.bentofx.Bento.class.getResource("/bento.css").toExternalForm());
+        scene.getStylesheets().add(ConsoleWindow.class.getResource("bento-themed.css").toExternalForm());
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
         stage.setTitle("Touchline — UDP port " + console.udp().localPort());

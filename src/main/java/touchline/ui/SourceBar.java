@@ -38,7 +38,10 @@ public final class SourceBar extends HBox {
             choice.getSelectionModel().select(initial);
         }
         status.getStyleClass().add("source-status");
-        getChildren().addAll(new Label("Source"), choice, status);
+        Label label = new Label("Source");
+        label.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
+        choice.setMinWidth(160);
+        getChildren().addAll(label, choice, status);
         setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
     }
 

@@ -52,6 +52,11 @@ public final class ViewRegistry {
             new ViewSpec("image", "Image", "An option's image (GRAY8, RGB888, colour classes, JPEG, PNG); images "
                     + "that do not decode are marked.", Set.of(DebugKind.IMAGE_VALUE), ImageDataView::new),
             new ViewSpec("text", "Text", "An option's text lines.", Set.of(DebugKind.TEXT_VALUE), TextView::new),
+            new ViewSpec("gamecontroller", "GameController", "Referee a practice game: format, teams, destinations; "
+                    + "state, clock, set plays, penalties, cards and robots' liveness; match mode and its override.",
+                    Set.of(), touchline.ui.gamecontroller.GameControllerTab::new),
+            new ViewSpec("nao", "NAO", "Connect to a NAO: connection state, method browser with typed parameters, "
+                    + "stand/sit/turn head/say, walk with W A S D Q E, camera.", Set.of(), touchline.ui.nao.NaoView::new),
             new ViewSpec("replay", "Record & replay", "Record the session to MCAP; open a recording, play, seek by timeline or event, loop, speed; live listening; load team schemas.", Set.of(), (c, s) -> new ReplayView(c)),
             new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
                     + "text.", Set.of(), RawDataView::new));

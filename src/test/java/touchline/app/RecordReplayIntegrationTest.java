@@ -52,12 +52,12 @@ class RecordReplayIntegrationTest {
                 await("both option lists", 5000, () -> console.options().options(1).listReceived()
                         && console.options().options(2).listReceived());
                 console.setOption(1, "demo.plotter", true);
-                await("plots arrive", 5000, () -> live.stream().anyMatch(e -> e.kind().equals("debugPlot")));
-                Thread.sleep(500);
+                await("plots arrive", 5000, () -> live.stream().filter(e -> e.kind().equals("debugPlot")).count() >= 5);
+                await("a good stretch of traffic", 10_000, () -> live.size() > 40);
             }
             console.stopRecording();
         }
-        assertTrue(live.size() > 20, "recorded " + live.size());
+        assertTrue(live.size() > 40, "recorded " + live.size());
 
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback())) {

@@ -329,4 +329,62 @@ class GameTest {
         assertTrue(game.advance());
         assertEquals(4, changes.get());
     }
+
+    private void playBothHalves() {
+        kickOff();
+        ok(new ToFinished());
+        game.advance();
+        kickOff();
+        ok(new ToFinished());
+    }
+
+    @Test
+    void penaltyShootoutAlternatesKicksAndRecordsSingleShots() {
+        refused(new StartPenaltyShootout());
+        playBothHalves();
+        ok(new StartPenaltyShootout());
+        refused(new StartPenaltyShootout());
+        GameControlData d = wire();
+        assertEquals(SecondaryState.PENALTYSHOOT.code(), d.secondaryState());
+        assertEquals(PlayState.INITIAL.code(), d.state());
+        assertEquals(13, d.kickOffTeam(), "the team that kicked off the game shoots first");
+        refused(new ToReady());
+        ok(new ToSet());
+        assertEquals(1, wire().team(13).penaltyShot());
+        ok(new ToPlaying());
+        assertEquals(60, wire().secondaryTime());
+        secs(20);
+        assertEquals(40, wire().secondaryTime());
+        refused(new Goal(7));
+        refused(new DropBall());
+        refused(new StartSetPlay(13, SecondaryState.CORNER_KICK));
+        ok(new Goal(13));
+        d = wire();
+        assertEquals(PlayState.FINISHED.code(), d.state());
+        assertEquals(1, d.team(13).score());
+        assertEquals(1, d.team(13).singleShots());
+        assertFalse(game.advance(), "no half-time switch in a shoot-out");
+        ok(new ToSet());
+        assertEquals(7, wire().kickOffTeam());
+        assertEquals(1, wire().team(7).penaltyShot());
+        ok(new ToPlaying());
+        ok(new ToFinished()); // missed
+        assertEquals(0, wire().team(7).singleShots());
+        ok(new ToSet());
+        ok(new ToPlaying());
+        ok(new Goal(13));
+        assertEquals(0b11, wire().team(13).singleShots());
+        assertEquals(2, wire().team(13).penaltyShot());
+    }
+
+    @Test
+    void noShootoutAfterAWin() {
+        kickOff();
+        ok(new Goal(7));
+        ok(new ToFinished());
+        game.advance();
+        kickOff();
+        ok(new ToFinished());
+        refused(new StartPenaltyShootout());
+    }
 }

@@ -1,7 +1,6 @@
 package touchline.ui;
 
 import javafx.scene.control.TableView;
-import javafx.scene.control.TreeCell;
 import javafx.scene.input.KeyCode;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assumptions;
@@ -12,13 +11,11 @@ import org.junit.jupiter.api.io.TempDir;
 import touchline.model.RobotSnapshot;
 import touchline.testing.RobotProcess;
 import touchline.ui.layout.LayoutNode;
-import touchline.ui.views.OptionsView;
 import touchline.ui.views.PlotView;
 import touchline.ui.views.RegionOverlayView;
 
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
 
@@ -68,12 +65,11 @@ class ConsoleUiTest {
         assumeRobot();
         try (RobotProcess robot = RobotProcess.robot(3, ui.port()).start()) {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
-            ui.await(15, () -> optionCell(3, "demo.plotter").isPresent());
-            ui.robot.clickOn(optionCell(3, "demo.plotter").orElseThrow());
+            ui.selectOption(3, "demo.plotter");
             ui.robot.type(KeyCode.SPACE);
             ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().wanted());
             ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().streaming());
-            ui.robot.doubleClickOn(optionCell(3, "demo.plotter").orElseThrow());
+            ui.robot.doubleClickOn(ui.fx(() -> ui.optionCell(3, "demo.plotter")));
             ui.await(10, () -> ui.view(PlotView.class) != null);
             PlotView plot = ui.view(PlotView.class);
             assertEquals(new ViewSource(3, "demo.plotter"), ui.fx(plot::source));
@@ -81,7 +77,7 @@ class ConsoleUiTest {
 
             // the same with the keyboard only: select, Space, Enter
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
-            ui.robot.clickOn(optionCell(3, "havimo.region").orElseThrow());
+            ui.selectOption(3, "havimo.region");
             ui.robot.type(KeyCode.SPACE);
             ui.await(10, () -> ui.console.options().options(3).option("havimo.region").orElseThrow().streaming());
             ui.robot.type(KeyCode.ENTER);
@@ -90,13 +86,6 @@ class ConsoleUiTest {
             ui.await(10, () -> ui.robot.from(overlay.node()).lookup(".source-status").queryLabeled().getText()
                     .contains("regions"));
         }
-    }
-
-    private Optional<TreeCell<OptionsView.Row>> optionCell(int robotId, String option) throws Exception {
-        return ui.fx(() -> ui.robot.lookup(".tree-cell").<TreeCell<OptionsView.Row>>queryAll().stream()
-                .filter(c -> c.getItem() != null && c.getItem().option() != null && c.getItem().robotId() == robotId
-                        && c.getItem().option().name().equals(option))
-                .findFirst());
     }
 
     @Test

@@ -28,6 +28,10 @@ final class ConsoleWindowFixture implements AutoCloseable {
         Stage stage = FxToolkit.registerPrimaryStage();
         window = WaitForAsyncUtils.asyncFx(() -> new ConsoleWindow(console, new UiSettings(layoutDir, true, false))
                 .show(stage)).get(30, TimeUnit.SECONDS);
+        WaitForAsyncUtils.asyncFx(() -> {
+            stage.toFront();
+            stage.requestFocus();
+        }).get(10, TimeUnit.SECONDS);
     }
 
     int port() {
@@ -48,6 +52,30 @@ final class ConsoleWindowFixture implements AutoCloseable {
     /** Waits (polling on the FX thread) until the condition holds, failing after {@code seconds}. */
     void await(int seconds, Callable<Boolean> condition) throws Exception {
         WaitForAsyncUtils.waitFor(seconds, TimeUnit.SECONDS, () -> fx(condition));
+    }
+
+    /** The options tree's cell for one option, or null while it is not shown. */
+    javafx.scene.control.TreeCell<touchline.ui.views.OptionsView.Row> optionCell(int robotId, String option) {
+        return robot.lookup(".tree-cell").<javafx.scene.control.TreeCell<touchline.ui.views.OptionsView.Row>>queryAll()
+                .stream().filter(c -> c.getItem() != null && c.getItem().option() != null
+                        && (robotId < 0 || c.getItem().robotId() == robotId)
+                        && c.getItem().option().name().equals(option)).findFirst().orElse(null);
+    }
+
+    /** Clicks an option in the tree and waits until it is selected and the tree has the keyboard. */
+    void selectOption(int robotId, String option) throws Exception {
+        await(15, () -> optionCell(robotId, option) != null);
+        fxRun(() -> {
+            window.scene().getWindow().requestFocus();
+            robot.lookup("#options-tree").query().requestFocus();
+        });
+        robot.clickOn(fx(() -> optionCell(robotId, option)));
+        await(10, () -> {
+            var tree = robot.lookup("#options-tree").queryAs(javafx.scene.control.TreeView.class);
+            var item = (javafx.scene.control.TreeItem<?>) tree.getSelectionModel().getSelectedItem();
+            return item != null && item.getValue() instanceof touchline.ui.views.OptionsView.Row r && r.option() != null
+                    && r.option().name().equals(option);
+        });
     }
 
     <V extends View> V view(Class<V> type) throws Exception {

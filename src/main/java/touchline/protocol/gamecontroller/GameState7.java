@@ -12,7 +12,7 @@ import java.util.List;
  * 0–2, u32 secsRemaining, no secondary time, teams ordered by colour (blue first) with goal
  * colour always 1 and u16 penalty / u16 secsTillUnpenalised per player.
  */
-public final class GameState7 implements GameStateFormat {
+public final class GameState7 extends FixedSizeFormat {
 
     public static final int SIZE = 116;
     public static final int VERSION = 7;
@@ -28,29 +28,12 @@ public final class GameState7 implements GameStateFormat {
 
     /** @param humanoid translate HL penalties to the legacy HL codes 1..6 (false: SPL codes unchanged) */
     public GameState7(boolean humanoid) {
+        super("gc.v7", VERSION, 4, SIZE);
         this.humanoid = humanoid;
     }
 
     @Override
-    public String kind() {
-        return "gc.v7";
-    }
-
-    @Override
-    public int version() {
-        return VERSION;
-    }
-
-    @Override
-    public int size() {
-        return SIZE;
-    }
-
-    @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.putInt(VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.state());
         b.put((byte) (d.firstHalf() ? 1 : 0));
@@ -72,21 +55,10 @@ public final class GameState7 implements GameStateFormat {
                 b.putShort((short) r.secsTillUnpenalised());
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        long version = b.getInt() & 0xFFFFFFFFL;
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int playersPerTeam = WireChecks.u8(b);
         int state = WireChecks.u8(b);
         boolean firstHalf = WireChecks.u8(b) != 0;

@@ -11,7 +11,7 @@ import java.util.List;
  * 40-byte coach message, 2-byte RobotInfo × 11. In humanoid mode HL penalties 30..35 are
  * written as the 2014 HL codes 1..6.
  */
-public final class GameState8 implements GameStateFormat {
+public final class GameState8 extends FixedSizeFormat {
 
     public static final int SIZE = 158;
     public static final int VERSION = 8;
@@ -27,29 +27,12 @@ public final class GameState8 implements GameStateFormat {
 
     /** @param humanoid translate HL penalties to the 2014 HL codes 1..6 (false: SPL codes unchanged) */
     public GameState8(boolean humanoid) {
+        super("gc.v8", VERSION, 1, SIZE);
         this.humanoid = humanoid;
     }
 
     @Override
-    public String kind() {
-        return "gc.v8";
-    }
-
-    @Override
-    public int version() {
-        return VERSION;
-    }
-
-    @Override
-    public int size() {
-        return SIZE;
-    }
-
-    @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.put((byte) VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.state());
@@ -72,7 +55,6 @@ public final class GameState8 implements GameStateFormat {
                 putRobot(b, t.player(p));
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     private void putRobot(ByteBuffer b, RobotInfo r) {
@@ -81,17 +63,7 @@ public final class GameState8 implements GameStateFormat {
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        int version = WireChecks.u8(b);
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int packetNumber = WireChecks.u8(b);
         int playersPerTeam = WireChecks.u8(b);
         int state = WireChecks.u8(b);

@@ -9,17 +9,21 @@ import java.util.List;
  * RoboCup-Humanoid-TC/GameController v2024.1 {@code RoboCupGameControlData.h}): u16 version,
  * 332-byte TeamInfo with a 253-byte coach message, 6-byte RobotInfo × 11. A dropped ball is
  * written as {@code 0x80} like the Java GameController 2017–2024 (configurable to 255, the
- * value of the header and of the 2025 Rust GameController).
+ * value of the header and of the 2025 Rust GameController). {@link #legacy640()} is the layout
+ * that carried the same version number from 2017-06 to 2021-04: 4-byte RobotInfo without
+ * warnings and goalkeeper flag, 640 bytes.
  */
-public final class HlGameState12 implements GameStateFormat {
+public final class HlGameState12 extends FixedSizeFormat {
 
     public static final int SIZE = 688;
     public static final int VERSION = 12;
     public static final int MAX_PLAYERS = 11;
     static final int COACH_MESSAGE_SIZE = 253;
     static final int TEAM_SIZE = 332;
+    public static final int LEGACY_SIZE = 640;
 
     private final int dropBallByte;
+    private final boolean sixByteRobotInfo;
 
     /** The Java GameController's encoding (dropped ball = 0x80). */
     public HlGameState12() {
@@ -28,29 +32,22 @@ public final class HlGameState12 implements GameStateFormat {
 
     /** @param dropBallByte kickOffTeam byte for a dropped ball: 0x80 (Java GC) or 255 (header, Rust GC) */
     public HlGameState12(int dropBallByte) {
+        this("gc.hl12", dropBallByte, true);
+    }
+
+    private HlGameState12(String kind, int dropBallByte, boolean sixByteRobotInfo) {
+        super(kind, VERSION, 2, sixByteRobotInfo ? SIZE : LEGACY_SIZE);
         this.dropBallByte = dropBallByte & 0xFF;
+        this.sixByteRobotInfo = sixByteRobotInfo;
+    }
+
+    /** HL v12 as sent 2017-06 … 2021-04: 640 bytes, RobotInfo = penalty, secs, yellow, red. */
+    public static HlGameState12 legacy640() {
+        return new HlGameState12("gc.hl12-640", 0x80, false);
     }
 
     @Override
-    public String kind() {
-        return "gc.hl12";
-    }
-
-    @Override
-    public int version() {
-        return VERSION;
-    }
-
-    @Override
-    public int size() {
-        return SIZE;
-    }
-
-    @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.putShort((short) VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.gameType());
@@ -79,30 +76,23 @@ public final class HlGameState12 implements GameStateFormat {
                 putRobot(b, t.player(p));
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
-    private static void putRobot(ByteBuffer b, RobotInfo r) {
+    private void putRobot(ByteBuffer b, RobotInfo r) {
         b.put((byte) r.penalty());
         b.put((byte) r.secsTillUnpenalised());
-        b.put((byte) r.warnings());
+        if (sixByteRobotInfo) {
+            b.put((byte) r.warnings());
+        }
         b.put((byte) r.yellowCards());
         b.put((byte) r.redCards());
-        b.put((byte) (r.goalkeeper() ? 1 : 0));
+        if (sixByteRobotInfo) {
+            b.put((byte) (r.goalkeeper() ? 1 : 0));
+        }
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        int version = WireChecks.u16(b);
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int packetNumber = WireChecks.u8(b);
         int playersPerTeam = WireChecks.u8(b);
         int gameType = WireChecks.u8(b);
@@ -142,7 +132,12 @@ public final class HlGameState12 implements GameStateFormat {
                 teams));
     }
 
-    private static RobotInfo getRobot(ByteBuffer b) {
+    private RobotInfo getRobot(ByteBuffer b) {
+        if (!sixByteRobotInfo) {
+            int penalty = WireChecks.u8(b);
+            int secs = WireChecks.u8(b);
+            return new RobotInfo(penalty, secs, 0, WireChecks.u8(b), WireChecks.u8(b), false);
+        }
         return new RobotInfo(WireChecks.u8(b), WireChecks.u8(b), WireChecks.u8(b), WireChecks.u8(b),
                 WireChecks.u8(b), WireChecks.u8(b) != 0);
     }

@@ -13,33 +13,23 @@ import java.util.List;
  * ball contact, physical contact → pushing, illegal attack/defence → illegal position,
  * pickup/service → request for pickup); SPL codes are read back unchanged.
  */
-public final class SplGameState18 implements GameStateFormat {
+public final class SplGameState18 extends FixedSizeFormat {
 
     public static final int SIZE = 118;
     public static final int VERSION = 18;
     public static final int MAX_PLAYERS = 20;
     public static final int KICKING_TEAM_NONE = 255;
+    /** SPL setPlay code for each HL secondary state (0–3 are game phases, not set plays). */
+    private static final int[] SET_PLAY_OF_SECONDARY = {0, 0, 0, 0, 2, 2, 5, 3, 1, 4};
+    /** HL secondary state for each SPL setPlay code (pushing free kick reads back as direct). */
+    private static final int[] SECONDARY_OF_SET_PLAY = {0, 8, 4, 7, 9, 6};
 
-    @Override
-    public String kind() {
-        return "gc.spl18";
+    public SplGameState18() {
+        super("gc.spl18", VERSION, 1, SIZE);
     }
 
     @Override
-    public int version() {
-        return VERSION;
-    }
-
-    @Override
-    public int size() {
-        return SIZE;
-    }
-
-    @Override
-    public byte[] encode(GameControlData d) {
-        ByteBuffer b = WireChecks.writer(SIZE);
-        b.put(WireChecks.GAME_STATE_MAGIC);
-        b.put((byte) VERSION);
+    void encodeBody(GameControlData d, ByteBuffer b) {
         b.put((byte) d.packetNumber());
         b.put((byte) d.playersPerTeam());
         b.put((byte) d.gameType());
@@ -69,7 +59,6 @@ public final class SplGameState18 implements GameStateFormat {
                 b.put((byte) r.secsTillUnpenalised());
             }
         }
-        return WireChecks.finish(b, SIZE);
     }
 
     private static int goalkeeperNumber(TeamInfo t) {
@@ -82,25 +71,12 @@ public final class SplGameState18 implements GameStateFormat {
     }
 
     static int setPlayCode(int secondaryState) {
-        return switch (secondaryState) {
-            case 8 -> 1;       // goal kick
-            case 4, 5 -> 2;    // direct/indirect free kick -> pushing free kick
-            case 7 -> 3;       // corner kick
-            case 9 -> 4;       // throw-in -> kick-in
-            case 6 -> 5;       // penalty kick
-            default -> 0;
-        };
+        return secondaryState >= 0 && secondaryState < SET_PLAY_OF_SECONDARY.length
+                ? SET_PLAY_OF_SECONDARY[secondaryState] : 0;
     }
 
     static int secondaryFromSetPlay(int setPlay) {
-        return switch (setPlay) {
-            case 1 -> 8;
-            case 2 -> 4;
-            case 3 -> 7;
-            case 4 -> 9;
-            case 5 -> 6;
-            default -> 0;
-        };
+        return setPlay >= 0 && setPlay < SECONDARY_OF_SET_PLAY.length ? SECONDARY_OF_SET_PLAY[setPlay] : 0;
     }
 
     static int splPenalty(int hlPenalty) {
@@ -114,17 +90,7 @@ public final class SplGameState18 implements GameStateFormat {
     }
 
     @Override
-    public Decoded<GameControlData> decode(byte[] datagram) {
-        Decoded<GameControlData> bad = WireChecks.checkFrame(datagram, SIZE, WireChecks.GAME_STATE_MAGIC);
-        if (bad != null) {
-            return bad;
-        }
-        ByteBuffer b = WireChecks.reader(datagram);
-        b.position(4);
-        int version = WireChecks.u8(b);
-        if (version != VERSION) {
-            return WireChecks.wrongVersion(VERSION, version);
-        }
+    Decoded<GameControlData> decodeBody(ByteBuffer b) {
         int packetNumber = WireChecks.u8(b);
         int playersPerTeam = WireChecks.u8(b);
         int phase = WireChecks.u8(b);
@@ -138,8 +104,9 @@ public final class SplGameState18 implements GameStateFormat {
         int secsRemaining = b.getShort();
         int secondaryTime = b.getShort();
         // The neutral form has one secondary state: a running set play wins over the game phase.
-        int secondary = setPlay != 0 ? secondaryFromSetPlay(setPlay) : gamePhase;
-        int setPlayTeam = setPlay != 0 ? kicking : 0;
+        int fromSetPlay = secondaryFromSetPlay(setPlay);
+        int secondary = fromSetPlay != 0 ? fromSetPlay : gamePhase;
+        int setPlayTeam = fromSetPlay != 0 ? kicking : 0;
         List<TeamInfo> teams = new ArrayList<>(2);
         for (int t = 0; t < 2; t++) {
             int number = WireChecks.u8(b);

@@ -7,14 +7,12 @@ import touchline.game.Game;
 import touchline.game.MatchMode;
 import touchline.game.Outcome;
 import touchline.protocol.gamecontroller.Decoded;
+import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.GameState7;
-import touchline.protocol.gamecontroller.GameState8;
 import touchline.protocol.gamecontroller.GameStateFormat;
-import touchline.protocol.gamecontroller.HlGameState12;
 import touchline.protocol.gamecontroller.ReturnPacket;
 import touchline.protocol.gamecontroller.ReturnPacketDecoder;
-import touchline.protocol.gamecontroller.SplGameState18;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -49,8 +47,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     private final EnvelopeSink sink;
     private final MatchMode matchMode;
     private final ReturnPacketDecoder returnDecoder = new ReturnPacketDecoder();
-    private final List<GameStateFormat> knownFormats = List.of(new HlGameState12(), new SplGameState18(),
-            new GameState8(), new GameState7());
+    private final KnownGameStateFormats knownFormats = new KnownGameStateFormats();
     private final RobotLiveness liveness = new RobotLiveness();
     private final BadPackets badPackets = new BadPackets();
     private final RivalGameControllers rivals = new RivalGameControllers();
@@ -80,6 +77,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         sender = new GcSender(this::nextState, formats, config.destinations(), config.senderBind(), sink,
                 config.intervalMs());
         senderPort = sender.localAddress().getPort();
+        sender.useRealtimePriority(config.realtime());
         try {
             listeners.add(new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns"));
             if (config.rivalBind() != null) {
@@ -151,7 +149,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     }
 
     private void onReturnPortDatagram(byte[] data, InetSocketAddress from) {
-        if (isGameState(data)) {
+        if (KnownGameStateFormats.isGameState(data)) {
             onGameStatePortDatagram(data, from);
             return;
         }
@@ -187,22 +185,15 @@ public final class EmbeddedGameController implements AutoCloseable {
     }
 
     private void onGameStatePortDatagram(byte[] data, InetSocketAddress from) {
-        if (!isGameState(data)) {
+        if (!KnownGameStateFormats.isGameState(data)) {
             return; // robots' own broadcasts or team traffic on the shared port are not ours to judge
         }
         if (from.getPort() == senderPort && isLocal(from.getAddress())) {
             return; // our own packet, heard back
         }
-        GameStateFormat format = null;
-        GameControlData decoded = null;
-        for (GameStateFormat f : knownFormats) {
-            Decoded<GameControlData> d = f.decode(data);
-            if (d.isOk()) {
-                format = f;
-                decoded = d.value();
-                break;
-            }
-        }
+        KnownGameStateFormats.Match match = knownFormats.decode(data);
+        GameStateFormat format = match == null ? null : match.format();
+        GameControlData decoded = match == null ? null : match.data();
         String kind = format == null ? "gc.unknown" : format.kind();
         boolean wasActive = rivals.active(game.now()).containsKey(sourceKey(from));
         rivals.heard(from, kind, decoded, game.now());
@@ -216,10 +207,6 @@ public final class EmbeddedGameController implements AutoCloseable {
             LOG.warn(warning);
             emit(warning);
         }
-    }
-
-    private static boolean isGameState(byte[] data) {
-        return data.length >= 4 && data[0] == 'R' && data[1] == 'G' && data[2] == 'm' && data[3] == 'e';
     }
 
     private static String sourceKey(InetSocketAddress from) {

@@ -15,10 +15,11 @@ import java.util.List;
  * @param rivalBind    where other GameControllers are listened for (0.0.0.0:3838); null to
  *                     not listen, or when {@code returnBind} is already the game-state port
  * @param intervalMs   send period
+ * @param realtime     ask for real-time scheduling of the sender thread (Linux, CAP_SYS_NICE)
  */
 public record GcConfig(GcProfile profile, boolean v7Compat, List<InetSocketAddress> destinations,
                        InetSocketAddress senderBind, InetSocketAddress returnBind, InetSocketAddress rivalBind,
-                       long intervalMs) {
+                       long intervalMs, boolean realtime) {
 
     public static final String DEFAULT_BROADCAST = "255.255.255.255";
     public static final long INTERVAL_MS = 500;
@@ -34,6 +35,6 @@ public record GcConfig(GcProfile profile, boolean v7Compat, List<InetSocketAddre
                 : new InetSocketAddress(GcProfile.GAME_STATE_PORT);
         return new GcConfig(profile, false,
                 List.of(new InetSocketAddress(DEFAULT_BROADCAST, GcProfile.GAME_STATE_PORT)), null, returns, rivals,
-                INTERVAL_MS);
+                INTERVAL_MS, false);
     }
 }

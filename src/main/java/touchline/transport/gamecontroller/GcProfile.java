@@ -16,6 +16,8 @@ import java.util.function.Supplier;
  */
 public enum GcProfile {
     HL12("hl12", HlGameState12::new, 3939),
+    /** HL v12 in its 640-byte layout of 2017-06 … 2021-04 (same version number). */
+    HL12_640("hl12-640", HlGameState12::legacy640, 3939),
     SPL18("spl18", SplGameState18::new, 3939),
     V8("v8", GameState8::new, 3838),
     V7("v7", GameState7::new, 3838);

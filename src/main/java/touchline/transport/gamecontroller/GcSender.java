@@ -49,6 +49,8 @@ public final class GcSender implements AutoCloseable {
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong sendErrors = new AtomicLong();
     private volatile boolean running;
+    private volatile boolean realtime;
+    private volatile String realtimeOutcome = "not requested";
     private volatile Thread thread;
     private int packetNumber;
     private String lastError;
@@ -80,6 +82,16 @@ public final class GcSender implements AutoCloseable {
         return (InetSocketAddress) channel.getLocalAddress();
     }
 
+    /** Asks for SCHED_RR on the sender thread when it starts (Linux, needs CAP_SYS_NICE). */
+    public void useRealtimePriority(boolean on) {
+        realtime = on;
+    }
+
+    /** "" when the sender thread got real-time priority, else why not (or "not requested"). */
+    public String realtimeOutcome() {
+        return realtimeOutcome;
+    }
+
     public synchronized void start() {
         if (thread != null) {
             return;
@@ -109,6 +121,9 @@ public final class GcSender implements AutoCloseable {
     }
 
     private void loop() {
+        if (realtime) {
+            realtimeOutcome = new RealtimePriority(10).applyToCurrentThread();
+        }
         long next = System.nanoTime();
         while (running) {
             long now = System.nanoTime();

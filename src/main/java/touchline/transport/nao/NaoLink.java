@@ -57,8 +57,9 @@ import java.util.function.Supplier;
  * inside the interval waits for its end, and a newer call of the same method replaces it
  * (the older ends as {@link CallOutcome.Superseded}). Coalescing rather than rejecting keeps
  * the robot's last target the user's last input: a "stop walking" right after a "walk" must
- * not be dropped. A send gate ({@link #setSendGate}, match mode) holds back every call that
- * is not idempotent with {@link CallOutcome.HeldBack}.
+ * not be dropped. A send gate ({@link #setSendGate}, match mode) holds back every call, reads
+ * included ("during play only the GameController talks to the robots"), with
+ * {@link CallOutcome.HeldBack}; nothing held back is queued for later.
  *
  * <p>Each request (OUT), reply (IN) and connection event ({@link Channel#LINK_EVENT}) is
  * published through a {@link NaoEnvelopeChannel} into the Envelope stream.
@@ -160,8 +161,9 @@ public final class NaoLink implements AutoCloseable {
     }
 
     /**
-     * Match mode hook: while {@code mayRobotBeCommanded} is false, every call that is not
-     * idempotent (configuration) ends as {@link CallOutcome.HeldBack} with {@code reason}.
+     * Match mode hook: while {@code mayRobotBeCommanded} is false, every call ends at once as
+     * {@link CallOutcome.HeldBack} with {@code reason} and nothing is sent. Checked on the
+     * caller's thread when the call is made.
      */
     public void setSendGate(BooleanSupplier mayRobotBeCommanded, Supplier<String> reason) {
         this.mayCommand = mayRobotBeCommanded;
@@ -187,7 +189,7 @@ public final class NaoLink implements AutoCloseable {
             future.complete(new CallOutcome.Lost("link closed"));
             return future;
         }
-        if (!idempotent && !mayCommand.getAsBoolean()) {
+        if (!mayCommand.getAsBoolean()) {
             future.complete(new CallOutcome.HeldBack(gateReason.get()));
             return future;
         }
@@ -325,7 +327,7 @@ public final class NaoLink implements AutoCloseable {
                 }
                 runTimers(System.nanoTime());
             }
-        } catch (RuntimeException | IOException | Error e) {
+        } catch (RuntimeException | IOException e) {
             LOG.error("NAO link thread for {}:{} failed", host, port, e);
         } finally {
             failAll(new CallOutcome.Lost("link closed"));

@@ -17,7 +17,7 @@ import java.util.Set;
 /**
  * Per-method rules of a {@link NaoLink}, loaded from a Java properties file (see
  * {@code samples/nao.properties}): default and per-method timeouts, minimum intervals between
- * calls of one method, which methods are idempotent (safe to retry, allowed during a match),
+ * calls of one method, which methods are idempotent (read-only, safe to retry),
  * and the retry count. Method names are {@code Module.method} or {@code *.method} for every
  * module. A broken entry never stops the console: it is skipped, reported in
  * {@link #problems()}, and the default stays in force.
@@ -68,11 +68,10 @@ public final class NaoLinkConfig {
         try (Reader r = new StringReader(text)) {
             props.load(r);
         } catch (IOException | IllegalArgumentException e) {
-            problems.add(source + ": not a properties file (" + e.getMessage() + "); using the built-in defaults");
-            if (text != DEFAULT_TEXT) {
-                NaoLinkConfig d = defaults();
-                return new NaoLinkConfig(d.defaultTimeoutMs, d.retries, d.timeouts, d.intervals, d.idempotent, problems);
-            }
+            // e.g. a malformed unicode escape. The built-in text always loads, so this cannot recurse.
+            NaoLinkConfig d = defaults();
+            return new NaoLinkConfig(d.defaultTimeoutMs, d.retries, d.timeouts, d.intervals, d.idempotent,
+                    List.of(source + ": not a readable properties file (" + e.getMessage() + "); using the built-in defaults"));
         }
         long defaultTimeout = DEFAULT_TIMEOUT_MS;
         int retries = DEFAULT_RETRIES;

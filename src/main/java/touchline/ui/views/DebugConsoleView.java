@@ -61,6 +61,10 @@ public final class DebugConsoleView implements View {
         clear.setOnAction(e -> {
             lines.getItems().clear();
         });
+        for (javafx.scene.control.Control c : List.of(pause, copy, clear, robot)) {
+            c.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
+        }
+        search.setPrefColumnCount(10);
         HBox bar = new HBox(8, new Label("Robot"), robot, search, pause, copy, clear, count);
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
@@ -96,12 +100,14 @@ public final class DebugConsoleView implements View {
             seenSeq = 0;
             reload = false;
         }
-        if (context.stores().text().version() == seenSeq) {
+        long v = context.stores().text().version();
+        if (v == seenSeq) {
             return;
         }
         String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);
         List<SequencedRing.Entry<TextLine>> fresh = context.stores().text().since(seenSeq, robot.robotId(), SHOWN);
-        seenSeq = context.stores().text().version();
+        fresh.removeIf(e -> e.seq() > v); // read up to v only: later lines come next frame, once
+        seenSeq = v;
         if (fresh.isEmpty()) {
             return;
         }

@@ -81,6 +81,7 @@ public final class NetworkView implements View {
         SplitPane split = new SplitPane(table, detail);
         split.setOrientation(Orientation.VERTICAL);
         split.setDividerPositions(0.6);
+        pause.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
         HBox bar = new HBox(8, new Label("Robot"), robot, direction, kind, pause, count);
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
@@ -141,7 +142,10 @@ public final class NetworkView implements View {
         if (v == seenSeq) {
             return;
         }
-        List<SequencedRing.Entry<Envelope>> fresh = context.stores().network().since(seenSeq, SHOWN, filter());
+        // up to v only: what arrives while we read is next frame's, not read twice
+        Predicate<Envelope> f = filter();
+        List<SequencedRing.Entry<Envelope>> fresh = context.stores().network().since(seenSeq, SHOWN, f);
+        fresh.removeIf(e -> e.seq() > v);
         seenSeq = v;
         if (fresh.isEmpty()) {
             return;
@@ -151,10 +155,14 @@ public final class NetworkView implements View {
             add.add(e.value());
         }
         frame.shown(add.get(add.size() - 1).timeMicros());
+        boolean follow = table.getSelectionModel().isEmpty();
         table.getItems().addAll(add);
         int over = table.getItems().size() - SHOWN;
         if (over > 0) {
             table.getItems().remove(0, over);
+        }
+        if (follow) {
+            table.scrollTo(table.getItems().size() - 1); // follow the newest until the user picks a row
         }
         count.setText(table.getItems().size() + " shown of " + context.stores().network().size() + " kept");
     }

@@ -22,15 +22,20 @@ import java.util.Set;
 public final class PlotView extends SourcedView {
 
     private final XYChart chart;
+    private final DefaultNumericAxis xAxis;
+    private final DefaultNumericAxis yAxis;
     private final Map<String, DoubleDataSet> series = new LinkedHashMap<>();
     private int points;
 
     public PlotView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.PLOT_VALUE), source);
-        DefaultNumericAxis x = new DefaultNumericAxis("time", "s");
-        DefaultNumericAxis y = new DefaultNumericAxis("value");
-        x.setAutoRangeRounding(false);
-        chart = new XYChart(x, y);
+        xAxis = new DefaultNumericAxis("time", "s");
+        yAxis = new DefaultNumericAxis("value");
+        // ranges are set from the data each frame: ChartFX's auto-range stuck on a first frame
+        // with a single point (zero width) and never widened again
+        xAxis.setAutoRanging(false);
+        yAxis.setAutoRanging(false);
+        chart = new XYChart(xAxis, yAxis);
         chart.setId("plot-chart");
         chart.setLegendVisible(true);
         // markers on thousands of points cost more than the lines; the lines show the shape
@@ -58,7 +63,17 @@ public final class PlotView extends SourcedView {
             return "no plot data";
         }
         int total = 0;
+        double minX = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY;
+        double minY = Double.POSITIVE_INFINITY;
+        double maxY = Double.NEGATIVE_INFINITY;
         for (PlotStore.SeriesData d : s.series()) {
+            for (int i = 0; i < d.count(); i++) {
+                minX = Math.min(minX, d.x()[i]);
+                maxX = Math.max(maxX, d.x()[i]);
+                minY = Math.min(minY, d.y()[i]);
+                maxY = Math.max(maxY, d.y()[i]);
+            }
             DoubleDataSet ds = series.get(d.name());
             if (ds == null) {
                 ds = new DoubleDataSet(d.name(), context.stores().plots().pointsPerSeries());
@@ -67,6 +82,11 @@ public final class PlotView extends SourcedView {
             }
             ds.set(d.x(), d.y(), d.count(), true);
             total += d.count();
+        }
+        if (total > 0) {
+            double padY = Math.max(1e-3, (maxY - minY) * 0.05);
+            xAxis.set(minX, maxX > minX ? maxX : minX + 1);
+            yAxis.set(minY - padY, maxY + padY);
         }
         points = total;
         StringBuilder out = new StringBuilder(s.series().size() + " series · " + total + " points");

@@ -46,12 +46,13 @@ public final class TextView extends SourcedView {
             lines.getItems().clear();
         }
         List<String> add = new ArrayList<>();
+        long v = context.stores().text().version();
         for (SequencedRing.Entry<TextLine> e : context.stores().text().since(seenSeq, s.robotId(), LINES)) {
-            if (e.value().option().equals(s.option())) {
+            if (e.seq() <= v && e.value().option().equals(s.option())) {
                 add.add(DebugConsoleView.format(e.value()));
             }
         }
-        seenSeq = context.stores().text().version();
+        seenSeq = v;
         if (!add.isEmpty()) {
             lines.getItems().addAll(add);
             int over = lines.getItems().size() - LINES;

@@ -80,4 +80,35 @@ class HlGameState12Test {
         assertEquals(DecodeFailure.WRONG_LENGTH, format.decode(new GameState8().encode(
                 Fixtures.game(11, 13, 0, 0, 0, false))).failure());
     }
+
+    @Test
+    void legacy640LayoutHasFourByteRobotInfo() {
+        HlGameState12 legacy = HlGameState12.legacy640();
+        GameControlData d = Fixtures.game(11, 7, 0, 0, 0, true);
+        byte[] bytes = legacy.encode(d);
+        assertEquals(640, bytes.length);
+        assertEquals(640, legacy.size());
+        assertEquals("gc.hl12-640", legacy.kind());
+        ByteBuffer b = ByteBuffer.wrap(bytes).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        assertEquals(12, b.getShort(4));
+        int t0 = 24;
+        assertEquals(13, b.get(t0));
+        int p1 = t0 + 264; // coach at 260 (4 bytes), players at 264
+        assertEquals(31, b.get(p1));
+        assertEquals(17, b.get(p1 + 1));
+        assertEquals(2, b.get(p1 + 2), "yellow cards follow secsTillUnpenalised directly");
+        assertEquals(3, b.get(p1 + 3));
+        int t1 = 24 + 308;
+        assertEquals((byte) 200, b.get(t1));
+        int q11 = t1 + 264 + 4 * 10;
+        assertEquals(34, b.get(q11));
+        assertEquals((byte) 250, b.get(q11 + 1));
+        assertEquals(1, b.get(q11 + 3));
+        Decoded<GameControlData> back = legacy.decode(bytes);
+        assertTrue(back.isOk(), back.toString());
+        assertEquals(2, back.value().team(13).player(1).yellowCards());
+        assertEquals(0, back.value().team(13).player(1).warnings(), "no warnings in the 640-byte layout");
+        assertEquals(DecodeFailure.WRONG_LENGTH, legacy.decode(expected(7)).failure());
+        assertEquals(DecodeFailure.WRONG_LENGTH, format.decode(bytes).failure());
+    }
 }

@@ -48,9 +48,14 @@ class GcSenderTest {
             }
             for (int i = 1; i < got.size(); i++) {
                 double ms = (got.get(i).nanos() - got.get(i - 1).nanos()) / 1e6;
-                assertTrue(Math.abs(ms - 500) < 40, "interval " + i + " was " + ms + " ms");
+                // each interval: no packet lost or doubled (the machine may be loaded; precision is
+                // measured by the benchmark, not here)
+                assertTrue(Math.abs(ms - 500) < 250, "interval " + i + " was " + ms + " ms");
                 assertEquals((got.get(i - 1).data()[6] + 1) & 0xFF, got.get(i).data()[6] & 0xFF, "packetNumber");
             }
+            // On a fixed grid late packets do not accumulate: 5 intervals span 2500 ms.
+            double spanMs = (got.get(5).nanos() - got.get(0).nanos()) / 1e6;
+            assertTrue(Math.abs(spanMs - 2500) < 60, "5 intervals took " + spanMs + " ms");
             // Change the state ~100 ms after a periodic packet: it must arrive long before the next slot.
             Thread.sleep(100);
             long changed = System.nanoTime();
@@ -59,11 +64,13 @@ class GcSenderTest {
             assertNotNull(r);
             double delayMs = (r.nanos() - changed) / 1e6;
             assertEquals(GameControlData.STATE_READY, format.decode(r.data()).value().state());
-            assertTrue(delayMs < 50, "state change sent after " + delayMs + " ms");
+            // at once, not at the next slot ~400 ms later
+            assertTrue(delayMs < 200, "state change sent after " + delayMs + " ms");
             // The grid is not shifted by the extra packet: the next periodic one follows ~400 ms later.
             LoopbackReceiver.Received next = robot.receive(1000);
             double gapMs = (next.nanos() - got.get(got.size() - 1).nanos()) / 1e6;
-            assertTrue(Math.abs(gapMs - 500) < 40, "periodic packet after the change came " + gapMs + " ms after the last one");
+            assertTrue(Math.abs(gapMs - 500) < 150,
+                    "periodic packet after the change came " + gapMs + " ms after the last periodic one");
         }
     }
 

@@ -49,6 +49,14 @@ class NaoLinkConfigTest {
     }
 
     @Test
+    void anUnreadableFileGivesTheBuiltInDefaults() {
+        NaoLinkConfig c = NaoLinkConfig.parse("interval.ALMotion.setAngles=\\uZZZZ\n", "bad.properties");
+        assertEquals(1, c.problems().size(), c.problems().toString());
+        assertTrue(c.problems().get(0).contains("built-in defaults"));
+        assertEquals(200, c.minIntervalMillis(NaoCall.of("ALMotion", "setAngles")));
+    }
+
+    @Test
     void aMissingFileGivesDefaultsAndOneClearProblem() throws Exception {
         Path dir = Files.createTempDirectory("naocfg");
         NaoLinkConfig c = NaoLinkConfig.load(dir.resolve("absent.properties"));

@@ -96,6 +96,41 @@ class NaoLinkRobotSideTest {
     }
 
     @Test
+    void aFrozenServerIsLostByHeartbeatAndItsLateCallIsNotRunWhenItThaws() throws Exception {
+        try (RobotSideProcess sim = new RobotSideProcess(0, 0); NaoLink link = online(sim)) {
+            sim.signal("STOP");
+            long frozen = System.nanoTime();
+            // Sent into the frozen robot's socket buffer: only its deadline keeps it from running later.
+            CompletableFuture<CallOutcome> intoTheFreeze = link.call(NaoCall.of("ALMemory", "insertData", "Touchline/frozen", 1), 1000);
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost within 3 s");
+            long detectedMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - frozen);
+            CallOutcome outcome = get(intoTheFreeze);
+            assertTrue(outcome instanceof CallOutcome.Lost || outcome instanceof CallOutcome.TimedOut, outcome.describe());
+            Thread.sleep(1200); // nothing to await: let the call's deadline pass before the robot thaws
+            sim.signal("CONT");
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "back online");
+            assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "Touchline/frozen")),
+                    "a call stuck in a frozen robot must not run after its deadline (detected after " + detectedMs + " ms)");
+        }
+    }
+
+    @Test
+    void hugeAndDeepParametersAreClearErrorsAndTheLinkGoesOn() throws Exception {
+        try (RobotSideProcess sim = new RobotSideProcess(0, 0); NaoLink link = online(sim)) {
+            CallOutcome huge = get(link.call(NaoCall.of("ALMemory", "insertData", "Touchline/big", new byte[50_000_000]), 20_000));
+            assertInstanceOf(CallOutcome.Failed.class, huge);
+            Object deep = "x";
+            for (int i = 0; i < 40; i++) {
+                deep = List.of(deep);
+            }
+            CallOutcome tooDeep = get(link.call("ALMemory", "insertData", "Touchline/deep", deep));
+            assertInstanceOf(CallOutcome.Failed.class, tooDeep);
+            assertTrue(tooDeep.describe().contains("deeper"), tooDeep.describe());
+            assertEquals(new CallOutcome.Value(true), get(link.call("ALMotion", "ping")));
+        }
+    }
+
+    @Test
     void cameraConfigureAndFetch() throws Exception {
         try (RobotSideProcess sim = new RobotSideProcess(0, 0);
              NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add)) {

@@ -129,7 +129,8 @@ class NaoLinkTest {
 
     @Test
     void minimumIntervalCoalescesToTheNewestCall() throws Exception {
-        connect(NaoLinkConfig.parse("interval.ALMotion.setAngles=200\n", "test"));
+        // 1 s rather than 200 ms so a loaded machine cannot stretch the gap between the calls past it
+        connect(NaoLinkConfig.parse("interval.ALMotion.setAngles=1000\n", "test"));
         CompletableFuture<CallOutcome> first = link.call("ALMotion", "setAngles", "HeadYaw", 0.1f, 0.5f);
         assertEquals(new CallOutcome.Done(), get(first));
         long firstDone = System.nanoTime();
@@ -137,7 +138,7 @@ class NaoLinkTest {
         CompletableFuture<CallOutcome> third = link.call("ALMotion", "setAngles", "HeadYaw", 0.3f, 0.5f);
         assertEquals(new CallOutcome.Superseded(), get(second));
         assertEquals(new CallOutcome.Done(), get(third));
-        assertTrue(System.nanoTime() - firstDone >= TimeUnit.MILLISECONDS.toNanos(150), "third waited for the interval");
+        assertTrue(System.nanoTime() - firstDone >= TimeUnit.MILLISECONDS.toNanos(700), "third waited for the interval");
         List<String> angles = robot.executedNames().stream().filter(n -> n.startsWith("ALMotion.setAngles")).toList();
         assertEquals(List.of("ALMotion.setAngles[HeadYaw, 0.1, 0.5]", "ALMotion.setAngles[HeadYaw, 0.3, 0.5]"), angles);
     }
@@ -158,12 +159,12 @@ class NaoLinkTest {
     }
 
     @Test
-    void sendGateHoldsBackCommandsButNotReads() throws Exception {
+    void sendGateHoldsBackEveryCallDuringAMatch() throws Exception {
         connect(NaoLinkConfig.defaults());
         link.setSendGate(() -> false, () -> "match in progress");
         assertEquals(new CallOutcome.HeldBack("match in progress"), get(link.call("ALMemory", "insertData", "k", 1)));
-        assertFalse(robot.memory.containsKey("k"));
-        assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "k")), "a read still reaches the robot");
+        assertEquals(new CallOutcome.HeldBack("match in progress"), get(link.call("ALMemory", "getData", "k")));
+        assertEquals(List.of(), robot.executedNames(), "nothing reached the robot");
         link.setSendGate(() -> true, () -> "");
         assertEquals(new CallOutcome.Done(), get(link.call("ALMemory", "insertData", "k", 1)));
     }

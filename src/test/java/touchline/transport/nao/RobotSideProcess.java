@@ -82,13 +82,19 @@ final class RobotSideProcess implements AutoCloseable {
         this.camPort = p[1];
     }
 
-    void kill() throws InterruptedException {
+    /** SIGSTOP / SIGCONT: a frozen robot whose kernel still holds the TCP connection open. */
+    void signal(String name) throws Exception {
+        new ProcessBuilder("kill", "-" + name, Long.toString(process.pid())).inheritIO().start().waitFor();
+    }
+
+    void kill() throws Exception {
+        signal("CONT");
         process.destroyForcibly();
         process.waitFor(5, TimeUnit.SECONDS);
     }
 
     @Override
-    public void close() throws InterruptedException {
+    public void close() throws Exception {
         kill();
     }
 }

@@ -1,0 +1,35 @@
+package touchline.app;
+
+import touchline.game.MatchMode;
+import touchline.proto.Fumanoid;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+import java.util.List;
+
+/**
+ * Feeds match mode with the game state each robot reports in its keep-alive (what it last
+ * heard from the referee's GameController), so the console stays silent during play even when
+ * it cannot hear the GameController itself (the port watch covers the case where it can).
+ */
+final class ReportedGameState implements EnvelopeSink {
+
+    private static final List<String> STATES = List.of("INITIAL", "READY", "SET", "PLAYING", "FINISHED");
+
+    private final MatchMode matchMode;
+
+    ReportedGameState(MatchMode matchMode) {
+        this.matchMode = matchMode;
+    }
+
+    @Override
+    public void accept(Envelope e) {
+        if (e.direction() == Direction.IN && e.message() instanceof Fumanoid.Message m && m.hasExtension(Fumanoid.status)) {
+            int state = STATES.indexOf(m.getExtension(Fumanoid.status).getGameState());
+            if (state >= 0) {
+                matchMode.observe(state, "robot " + e.robotId());
+            }
+        }
+    }
+}

@@ -1,0 +1,188 @@
+package touchline.ui.gamecontroller;
+
+import javafx.geometry.Insets;
+import javafx.scene.Node;
+import javafx.scene.control.Button;
+import javafx.scene.control.CheckBox;
+import javafx.scene.control.ComboBox;
+import javafx.scene.control.Label;
+import javafx.scene.control.TextField;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.FlowPane;
+import javafx.scene.layout.VBox;
+import touchline.app.Console;
+import touchline.game.Game;
+import touchline.game.GameClock;
+import touchline.game.LeagueParams;
+import touchline.game.MatchMode;
+import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.transport.gamecontroller.GcConfig;
+import touchline.transport.gamecontroller.GcProfile;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+import touchline.ui.ViewSource;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The GameController tab: set up a practice game (format, teams, where to send), start the
+ * console's embedded GameController and referee it with {@link GameControllerView}; and, always,
+ * match mode's state with its explicit, logged override switch.
+ */
+public final class GameControllerTab implements View {
+
+    /** Default destinations, e.g. the demo team's robot ports; else the official broadcast. */
+    public static final String DESTINATIONS_PROPERTY = "touchline.gc.dest";
+
+    private final Console console;
+    private final BorderPane root = new BorderPane();
+    private final ComboBox<String> format = new ComboBox<>();
+    private final TextField teamA = new TextField("13");
+    private final TextField teamB = new TextField("7");
+    private final TextField destinations = new TextField(System.getProperty(DESTINATIONS_PROPERTY,
+            GcConfig.DEFAULT_BROADCAST + ":" + GcProfile.GAME_STATE_PORT));
+    private final TextField returnPort = new TextField("");
+    private final Label setupMessage = new Label();
+    private final Label matchNotice = new Label();
+    private final CheckBox override = new CheckBox("Override match mode (logged)");
+    private final TextField overrideReason = new TextField();
+    private final VBox setup;
+    private GameControllerView referee;
+    private EmbeddedGameController shown;
+
+    public GameControllerTab(ViewContext context, ViewSource source) {
+        this.console = context.console();
+        root.setId("gamecontroller-tab");
+        for (GcProfile p : GcProfile.values()) {
+            format.getItems().add(p.cliName());
+        }
+        format.setValue(GcProfile.HL12.cliName());
+        format.setId("gc-format");
+        teamA.setId("gc-team-a");
+        teamB.setId("gc-team-b");
+        destinations.setId("gc-dest");
+        destinations.setPrefColumnCount(36);
+        returnPort.setPromptText("default");
+        returnPort.setPrefColumnCount(6);
+        teamA.setPrefColumnCount(4);
+        teamB.setPrefColumnCount(4);
+        Button start = new Button("Start GameController");
+        start.setId("gc-start");
+        start.setDefaultButton(true);
+        start.setOnAction(e -> start());
+        setup = new VBox(8,
+                new FlowPane(8, 8, new Label("Format"), format, new Label("Team A"), teamA, new Label("Team B"), teamB),
+                new FlowPane(8, 8, new Label("Send to (host:port, comma separated)"), destinations,
+                        new Label("Return port"), returnPort),
+                start, setupMessage);
+        setup.setPadding(new Insets(8));
+        overrideReason.setPromptText("reason (required to override)");
+        override.setId("gc-override");
+        override.setOnAction(e -> toggleOverride());
+        matchNotice.setId("match-notice");
+        matchNotice.setWrapText(true);
+        VBox bottom = new VBox(4, matchNotice, new FlowPane(8, 8, override, overrideReason));
+        bottom.setPadding(new Insets(8));
+        root.setCenter(setup);
+        root.setBottom(bottom);
+    }
+
+    private void start() {
+        try {
+            GcProfile profile = GcProfile.parse(format.getValue());
+            List<InetSocketAddress> dests = new ArrayList<>();
+            for (String d : destinations.getText().split(",")) {
+                if (!d.isBlank()) {
+                    dests.add(address(d.strip()));
+                }
+            }
+            if (dests.isEmpty()) {
+                setupMessage.setText("give at least one destination");
+                return;
+            }
+            int a = Integer.parseInt(teamA.getText().strip());
+            int b = Integer.parseInt(teamB.getText().strip());
+            GcConfig defaults = GcConfig.defaults(profile);
+            int returns = returnPort.getText().isBlank() ? profile.defaultReturnPort() : Integer.parseInt(returnPort.getText().strip());
+            GcConfig config = new GcConfig(profile, false, dests, null, new InetSocketAddress("0.0.0.0", returns),
+                    defaults.rivalBind(), GcConfig.INTERVAL_MS, false);
+            Game game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
+            show(console.startGameController(game, config));
+        } catch (NumberFormatException e) {
+            setupMessage.setText("team numbers and ports are whole numbers: " + e.getMessage());
+        } catch (IOException | RuntimeException e) {
+            setupMessage.setText("cannot start: " + e.getMessage());
+        }
+    }
+
+    /** Shows the referee controls of a running GameController (started here or elsewhere). */
+    private void show(EmbeddedGameController gc) {
+        shown = gc;
+        referee = new GameControllerView(gc.game(), gc);
+        Button stop = new Button("Stop GameController");
+        stop.setId("gc-stop");
+        stop.setOnAction(e -> stop());
+        VBox running = new VBox(6, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
+                stop, referee.node());
+        running.setPadding(new Insets(4));
+        root.setCenter(running);
+    }
+
+    private void stop() {
+        console.stopGameController();
+        referee = null;
+        shown = null;
+        root.setCenter(setup);
+        setupMessage.setText("stopped");
+    }
+
+    private static InetSocketAddress address(String text) {
+        int colon = text.lastIndexOf(':');
+        return colon > 0 ? new InetSocketAddress(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)))
+                : new InetSocketAddress(text, GcProfile.GAME_STATE_PORT);
+    }
+
+    private void toggleOverride() {
+        MatchMode mm = console.matchMode();
+        if (override.isSelected() && overrideReason.getText().isBlank()) {
+            override.setSelected(false);
+            matchNotice.setText("An override needs a reason; it is logged.");
+            return;
+        }
+        mm.setOverride(override.isSelected(), overrideReason.getText().strip());
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        EmbeddedGameController running = console.gameController().orElse(null);
+        if (running != shown) {
+            if (running == null) {
+                referee = null;
+                shown = null;
+                root.setCenter(setup);
+            } else {
+                show(running);
+            }
+        }
+        if (referee != null) {
+            referee.refresh(frame);
+        }
+        String notice = console.matchMode().notice();
+        matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);
+        matchNotice.setStyle(notice.isEmpty() ? "" : "-fx-text-fill: #e0a000; -fx-font-weight: bold;");
+    }
+
+    @Override
+    public void close() {
+        // The GameController keeps running when its tab closes; the console owns it.
+    }
+}

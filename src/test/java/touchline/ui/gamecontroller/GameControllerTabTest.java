@@ -1,0 +1,103 @@
+package touchline.ui.gamecontroller;
+
+import javafx.scene.Scene;
+import javafx.scene.control.Button;
+import javafx.scene.control.TextField;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.testfx.api.FxToolkit;
+import org.testfx.util.WaitForAsyncUtils;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.UdpConfig;
+import touchline.ui.ViewContext;
+import touchline.ui.ViewRegistry;
+
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetSocketAddress;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * The GameController tab on a headless stage against a real UDP receiver standing in for a
+ * robot: starting sends HL v12 packets, Play is sent at once and switches match mode on.
+ */
+@Tag("ui")
+class GameControllerTabTest {
+
+    @BeforeAll
+    static void toolkit() throws Exception {
+        FxToolkit.registerPrimaryStage();
+    }
+
+    private static <T> T fx(Callable<T> step) throws Exception {
+        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
+    }
+
+    private static byte[] receive(DatagramSocket robot) throws Exception {
+        DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
+        robot.receive(p);
+        return java.util.Arrays.copyOf(p.getData(), p.getLength());
+    }
+
+    @Test
+    void refereesAGameFromTheTab() throws Exception {
+        ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+        try (Console console = new Console(config).start(); DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            robot.setSoTimeout(5000);
+            AtomicBoolean published = new AtomicBoolean();
+            console.bus().subscribe(e -> {
+                if (e.channel() == Channel.GAMECONTROLLER && e.direction() == Direction.OUT) {
+                    published.set(true);
+                }
+            });
+            ViewContext context = new ViewContext(console, console.stores(), new ViewRegistry(), (s, src) -> { });
+            GameControllerTab tab = fx(() -> {
+                GameControllerTab t = new GameControllerTab(context, null);
+                new Scene((javafx.scene.Parent) t.node());
+                ((TextField) t.node().lookup("#gc-dest")).setText("127.0.0.1:" + robot.getLocalPort());
+                return t;
+            });
+            fx(() -> {
+                // return packets on an OS-chosen port: tests never bind the fixed 3939
+                ((TextField) ((javafx.scene.Parent) tab.node()).lookupAll(".text-field").stream()
+                        .filter(n -> "default".equals(((TextField) n).getPromptText())).findFirst().orElseThrow()).setText("0");
+                ((Button) tab.node().lookup("#gc-start")).fire();
+                return null;
+            });
+            byte[] first = receive(robot);
+            assertEquals(688, first.length, "HL v12 by default");
+            assertEquals('R', first[0]);
+            assertEquals(0, first[9], "INITIAL");
+            assertTrue(console.gameController().isPresent());
+
+            fx(() -> {
+                ((Button) tab.node().lookup("#gc-ready")).fire();
+                ((Button) tab.node().lookup("#gc-set")).fire();
+                ((Button) tab.node().lookup("#gc-play")).fire();
+                return null;
+            });
+            byte[] p;
+            do {
+                p = receive(robot);
+            } while (p[9] != 3);
+            assertTrue(console.matchMode().playIsOn(), "our own GameController's PLAYING silences the console");
+            assertTrue(published.get(), "sent packets appear in the Envelope stream");
+
+            fx(() -> {
+                tab.refresh(null);
+                assertTrue(((javafx.scene.control.Label) tab.node().lookup("#match-notice")).getText().contains("PLAYING"));
+                ((Button) tab.node().lookup("#gc-stop")).fire();
+                return null;
+            });
+            assertTrue(console.gameController().isEmpty());
+        }
+    }
+}
