@@ -21,10 +21,15 @@ public final class Replay implements AutoCloseable {
     private final Player player;
     private final Thread pump;
     private volatile boolean running = true;
+    /** The player's state as last seen, and when (System.nanoTime()): see {@link #state()}. */
+    private volatile Seen seen;
+
+    private record Seen(PlayerState state, long nanos) { }
 
     Replay(Recording recording, EnvelopeSink sink) {
         this.recording = recording;
         this.player = new Player(recording, sink, PlaybackClock.system());
+        remember();
         this.pump = new Thread(this::loop, "touchline-replay");
         pump.setDaemon(true);
         pump.start();
@@ -35,6 +40,7 @@ public final class Replay implements AutoCloseable {
             long waitNanos;
             try {
                 waitNanos = player.pump();
+                remember();
             } catch (RuntimeException e) {
                 org.slf4j.LoggerFactory.getLogger(Replay.class).warn("replay stopped: {}", e.toString());
                 return;
@@ -47,14 +53,47 @@ public final class Replay implements AutoCloseable {
         }
     }
 
-    public void play() { player.play(); }
-    public void pause() { player.pause(); }
-    public void seek(long timeMicros) { player.seek(timeMicros); }
-    public Optional<TimelineEvent> seekToNext(TimelineEvent.Type type) { return player.seekToNext(type); }
-    public double setSpeed(double factor) { return player.setSpeed(factor); }
-    public void setLoop(long fromMicros, long toMicros) { player.setLoop(fromMicros, toMicros); }
-    public void clearLoop() { player.clearLoop(); }
-    public PlayerState state() { return player.snapshot(); }
+    public void play() { player.play(); remember(); }
+    public void pause() { player.pause(); remember(); }
+    public void seek(long timeMicros) { player.seek(timeMicros); remember(); }
+    public Optional<TimelineEvent> seekToNext(TimelineEvent.Type type) {
+        Optional<TimelineEvent> e = player.seekToNext(type);
+        remember();
+        return e;
+    }
+    public double setSpeed(double factor) {
+        double s = player.setSpeed(factor);
+        remember();
+        return s;
+    }
+    public void setLoop(long fromMicros, long toMicros) { player.setLoop(fromMicros, toMicros); remember(); }
+    public void clearLoop() { player.clearLoop(); remember(); }
+
+    /**
+     * The player's state now, without taking the player's lock: the model's clock reads this
+     * while holding model locks, and the player holds its lock while delivering into the model,
+     * so waiting for the player here would deadlock. The state is refreshed by the pump thread
+     * (every 20 ms at most) and by every control; while playing, the position is extrapolated
+     * from the last refresh at the current speed.
+     */
+    public PlayerState state() {
+        Seen s = seen;
+        PlayerState p = s.state();
+        if (!p.playing()) {
+            return p;
+        }
+        long end = p.loopToMicros() >= 0 ? p.loopToMicros() : p.endMicros();
+        long pos = Math.min(end, p.positionMicros() + (long) ((System.nanoTime() - s.nanos()) / 1000 * p.speed()));
+        return new PlayerState(Math.max(p.positionMicros(), pos), p.startMicros(), p.endMicros(), true, false,
+                p.speed(), p.loopFromMicros(), p.loopToMicros(), p.emitted(), p.problems());
+    }
+
+    /** Takes a fresh snapshot; serialised so an older snapshot never replaces a newer one. */
+    private synchronized void remember() {
+        PlayerState p = player.snapshot();
+        seen = new Seen(p, System.nanoTime());
+    }
+
     public List<TimelineEvent> events() { return player.events(); }
     /** What could not be read from the file (a cut-off end, a corrupt chunk, a schema that does not parse). */
     public List<String> problems() { return recording.problems(); }

@@ -67,6 +67,8 @@ class ReplayViewTest {
             return window.shell().openViews().stream().map(Shell.OpenView::view)
                     .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
         });
+        // the view sits in a scroll pane, whose content joins the scene with its skin (next pulse)
+        await(10, () -> robot.lookup("#record-path").tryQuery().isPresent());
     }
 
     @AfterEach
