@@ -47,6 +47,7 @@ final class RecordPanel {
         failure.setId("record-failure");
         failure.setStyle("-fx-text-fill: #cf222e;");
         failure.setWrapText(true);
+        failure.managedProperty().bind(failure.textProperty().isNotEmpty());
         Button browse = new Button("Browse…");
         browse.setOnAction(e -> browse());
         toggle.setOnAction(e -> toggle());

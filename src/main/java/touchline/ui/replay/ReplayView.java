@@ -399,7 +399,7 @@ public final class ReplayView implements View {
         if (!text.equals(position.getText())) {
             position.setText(text);
         }
-        String label = state != null && state.playing() ? "⏸ Pause" : "▶ Play";
+        String label = state != null && state.playing() ? "❚❚ Pause" : "▶ Play";
         if (!label.equals(play.getText())) {
             play.setText(label);
         }

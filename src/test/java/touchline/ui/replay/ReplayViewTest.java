@@ -67,8 +67,7 @@ class ReplayViewTest {
             return window.shell().openViews().stream().map(Shell.OpenView::view)
                     .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
         });
-        // the view sits in a scroll pane, whose content joins the scene with its skin (next pulse)
-        await(10, () -> robot.lookup("#record-path").tryQuery().isPresent());
+        awaitShown();
     }
 
     @AfterEach
@@ -216,20 +215,41 @@ class ReplayViewTest {
                     .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
             return null;
         });
+        awaitShown();
         robot.clickOn("#replay-live");
-        openFile(SAMPLE);
+        openFile(Path.of("samples/demo-team.mcap")); // relative, as a user would type it
         await(20, () -> !view.shownEvents().isEmpty());
         chooseSpeed(50.0);
         robot.clickOn("#replay-play");
-        await(20, () -> state().positionMicros() - state().startMicros() > 100_000_000L);
-        robot.clickOn("#replay-speed");
+        await(20, () -> state().positionMicros() - state().startMicros() > 60_000_000L);
         robot.clickOn("#replay-play");
+        await(5, () -> !state().playing());
+        // a loop around the goal, then play on at normal speed from just before it
+        long goal = fx(() -> view.shownEvents().stream().filter(e -> e.type() == TimelineEvent.Type.GOAL)
+                .findFirst().orElseThrow().timeMicros());
+        clickTimeline(goal - 20_000_000);
+        robot.clickOn("#replay-loop-a");
+        clickTimeline(goal + 15_000_000);
+        robot.clickOn("#replay-loop-b");
+        clickTimeline(goal - 8_000_000);
+        chooseSpeed(1.0);
         robot.clickOn("#replay-play");
         robot.moveTo("#replay-next-goal");
         Thread.sleep(500); // let the robot table's half-second refresh catch up before the picture
         Path png = Path.of(target);
         Files.createDirectories(png.toAbsolutePath().getParent());
         fx(() -> ImageIO.write(SwingFXUtils.fromFXImage(window.scene().snapshot(null), null), "png", png.toFile()));
+    }
+
+    /** The view sits in a scroll pane, whose content joins the scene with its skin (a pulse later). */
+    private void awaitShown() throws Exception {
+        await(10, () -> robot.lookup("#replay-live").tryQuery().map(n -> n.getScene() != null).orElse(false));
+    }
+
+    private void clickTimeline(long micros) throws Exception {
+        Point2D p = fx(() -> view.timeline().node().localToScreen(view.timeline().xOf(micros),
+                view.timeline().node().getLayoutBounds().getHeight() / 2));
+        robot.clickOn(p);
     }
 
     private void openFile(Path file) throws Exception {
