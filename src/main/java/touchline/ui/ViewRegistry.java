@@ -57,7 +57,8 @@ public final class ViewRegistry {
                     Set.of(), touchline.ui.gamecontroller.GameControllerTab::new),
             new ViewSpec("nao", "NAO", "Connect to a NAO: connection state, method browser with typed parameters, "
                     + "stand/sit/turn head/say, walk with W A S D Q E, camera.", Set.of(), touchline.ui.nao.NaoView::new),
-            new ViewSpec("replay", "Record & replay", "Record the session to MCAP; open a recording, play, seek by timeline or event, loop, speed; live listening; load team schemas.", Set.of(), (c, s) -> new ReplayView(c)),
+            new ViewSpec("replay", "Record & replay", "Record the session to MCAP; open a recording, play, seek by "
+                    + "timeline or event, loop, speed; live listening; load team schemas.", Set.of(), (c, s) -> new ReplayView(c)),
             new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
                     + "text.", Set.of(), RawDataView::new));
 
