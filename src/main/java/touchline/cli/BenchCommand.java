@@ -11,6 +11,7 @@ import picocli.CommandLine.Command;
                 UiBenchCommand.class,
                 touchline.record.bench.RecordBenchmark.class,
                 NaoBenchCommand.class,
+                GcBenchCommand.class,
         })
 final class BenchCommand implements Runnable {
 

@@ -121,7 +121,7 @@ final class IngestBenchCommand implements Callable<Integer> {
         try (Console console = transportOnly ? new Console(config, touchline.transport.MicrosClock.system(), false)
                 : new Console(config)) {
             console.bus().subscribe(e -> {
-                if (!e.isMalformed()) {
+                if (!e.isMalformed() && e.direction() == touchline.transport.Direction.IN) {
                     decoded.increment();
                 }
             });

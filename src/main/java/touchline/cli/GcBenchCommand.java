@@ -1,0 +1,24 @@
+package touchline.cli;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Unmatched;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+
+/** {@code bench gc}: the GameController's send intervals on loopback against a sleep-after-send baseline. */
+@Command(name = "gc", mixinStandardHelpOptions = true,
+        description = "GameController send intervals vs 500 ms (options: --seconds N, --load-threads N, --warmup N, "
+                + "--realtime).")
+final class GcBenchCommand implements Callable<Integer> {
+
+    @Unmatched
+    List<String> args = new ArrayList<>();
+
+    @Override
+    public Integer call() throws Exception {
+        touchline.transport.gamecontroller.GcIntervalBenchmark.main(args.toArray(String[]::new));
+        return 0;
+    }
+}
