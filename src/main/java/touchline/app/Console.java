@@ -44,6 +44,7 @@ public final class Console implements AutoCloseable {
 
     private final ConsoleConfig config;
     private final MicrosClock clock;
+    private final MicrosClock modelClock;
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
     private final EnvelopeBus bus = new EnvelopeBus();
@@ -76,7 +77,7 @@ public final class Console implements AutoCloseable {
         this.clock = clock;
         // The model's "now" follows a replay while one plays with live listening paused, so
         // robots in a recording are online exactly as long as they were during the match.
-        MicrosClock modelClock = () -> {
+        modelClock = () -> {
             Replay r = replay;
             return r != null && !live.isLive() ? r.state().positionMicros() : clock.nowMicros();
         };
@@ -155,6 +156,9 @@ public final class Console implements AutoCloseable {
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+
+    /** The model's "now": wall time, or the replay position while a replay plays with live listening paused. */
+    public MicrosClock modelClock() { return modelClock; }
     public MatchMode matchMode() { return matchMode; }
     /** The bounded stores the UI's views pull from once per frame. */
     public touchline.model.store.ViewStores stores() { return stores; }
