@@ -3,12 +3,13 @@ package touchline.transport;
 import io.netty.channel.ChannelHandlerContext;
 import io.netty.channel.SimpleChannelInboundHandler;
 
-/** The end of the inbound pipeline: hands each Envelope to the stream. */
-final class EnvelopePublisher extends SimpleChannelInboundHandler<Envelope> {
+/** The end of an inbound pipeline (UDP, or the NAO link's embedded channel): hands each Envelope to the stream. */
+@io.netty.channel.ChannelHandler.Sharable
+public final class EnvelopePublisher extends SimpleChannelInboundHandler<Envelope> {
 
     private final EnvelopeSink sink;
 
-    EnvelopePublisher(EnvelopeSink sink) {
+    public EnvelopePublisher(EnvelopeSink sink) {
         this.sink = sink;
     }
 
@@ -19,7 +20,7 @@ final class EnvelopePublisher extends SimpleChannelInboundHandler<Envelope> {
 
     @Override
     public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
-        // A handler bug must not close the console's socket; the datagram is lost, the next one is not.
+        // A handler or sink failure must not close the channel; this envelope is lost, the next one is not.
         org.slf4j.LoggerFactory.getLogger(EnvelopePublisher.class).warn("inbound pipeline: {}", cause.toString());
     }
 }

@@ -1,9 +1,6 @@
 package touchline.transport.nao;
 
-import io.netty.channel.ChannelHandler;
-import io.netty.channel.ChannelHandlerContext;
 import io.netty.channel.ChannelPipeline;
-import io.netty.channel.SimpleChannelInboundHandler;
 import io.netty.channel.embedded.EmbeddedChannel;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
@@ -26,7 +23,7 @@ public final class NaoEnvelopeChannel implements AutoCloseable {
 
     public NaoEnvelopeChannel(EnvelopeSink sink) {
         channel = new EmbeddedChannel();
-        channel.pipeline().addLast(PUBLISHER, new Publisher(sink));
+        channel.pipeline().addLast(PUBLISHER, new touchline.transport.EnvelopePublisher(sink));
     }
 
     /** For attaching shared handlers before {@link #PUBLISHER}. */
@@ -49,25 +46,5 @@ public final class NaoEnvelopeChannel implements AutoCloseable {
     @Override
     public synchronized void close() {
         channel.finishAndReleaseAll();
-    }
-
-    @ChannelHandler.Sharable
-    private static final class Publisher extends SimpleChannelInboundHandler<Envelope> {
-        private final EnvelopeSink sink;
-
-        Publisher(EnvelopeSink sink) {
-            this.sink = sink;
-        }
-
-        @Override
-        protected void channelRead0(ChannelHandlerContext ctx, Envelope envelope) {
-            sink.accept(envelope);
-        }
-
-        @Override
-        public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
-            // A failing sink must not stop NAO traffic; the EnvelopeBus already counts its subscribers' failures.
-            org.slf4j.LoggerFactory.getLogger(NaoEnvelopeChannel.class).warn("envelope sink failed: {}", cause.toString());
-        }
     }
 }
