@@ -27,6 +27,9 @@ public final class PlotView extends SourcedView {
     private final Map<String, DoubleDataSet> series = new LinkedHashMap<>();
     private int points;
 
+    /** Seconds of history drawn. */
+    static final double WINDOW_SECONDS = 10;
+
     public PlotView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.PLOT_VALUE), source);
         xAxis = new DefaultNumericAxis("time", "s");
@@ -67,12 +70,28 @@ public final class PlotView extends SourcedView {
         double maxX = Double.NEGATIVE_INFINITY;
         double minY = Double.POSITIVE_INFINITY;
         double maxY = Double.NEGATIVE_INFINITY;
+        double newest = Double.NEGATIVE_INFINITY;
         for (PlotStore.SeriesData d : s.series()) {
-            for (int i = 0; i < d.count(); i++) {
-                minX = Math.min(minX, d.x()[i]);
-                maxX = Math.max(maxX, d.x()[i]);
-                minY = Math.min(minY, d.y()[i]);
-                maxY = Math.max(maxY, d.y()[i]);
+            if (d.count() > 0) {
+                newest = Math.max(newest, d.x()[d.count() - 1]);
+            }
+        }
+        // Draw the last WINDOW_SECONDS: what a person reads off a live plot, and a tenth of the
+        // points the software renderer would otherwise redraw every frame.
+        double from = newest - WINDOW_SECONDS;
+        for (PlotStore.SeriesData d : s.series()) {
+            int start = 0;
+            while (start < d.count() && d.x()[start] < from) {
+                start++;
+            }
+            int n = d.count() - start;
+            double[] x = java.util.Arrays.copyOfRange(d.x(), start, d.count());
+            double[] y = java.util.Arrays.copyOfRange(d.y(), start, d.count());
+            for (int i = 0; i < n; i++) {
+                minX = Math.min(minX, x[i]);
+                maxX = Math.max(maxX, x[i]);
+                minY = Math.min(minY, y[i]);
+                maxY = Math.max(maxY, y[i]);
             }
             DoubleDataSet ds = series.get(d.name());
             if (ds == null) {
@@ -80,8 +99,8 @@ public final class PlotView extends SourcedView {
                 series.put(d.name(), ds);
                 chart.getDatasets().add(ds);
             }
-            ds.set(d.x(), d.y(), d.count(), true);
-            total += d.count();
+            ds.set(x, y, n, false);
+            total += n;
         }
         if (total > 0) {
             double padY = Math.max(1e-3, (maxY - minY) * 0.05);
