@@ -108,4 +108,20 @@ class SimulatedRobotIntegrationTest {
             }
         }
     }
+
+    /** The demo's configuration: the firmware core behind the simulated GS1500M serial Wi-Fi module. */
+    @Test
+    void firmwareBehindTheSimulatedWifiModuleStreamsAnOption() throws Exception {
+        ConsoleConfig config = ConsoleConfig.defaults()
+                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+        try (Console console = new Console(config).start()) {
+            console.bus().subscribe(seen::add);
+            try (RobotProcess robot = RobotProcess.robot(9, console.udp().localPort(), "--wifi-sim").start()) {
+                await("robot 9 and its option list", 10_000, () -> console.options().options(9).listReceived());
+                assertTrue(console.setOption(9, "demo.text", true).isSent());
+                await("demo.text data through the serial module", 10_000, () -> dataFrom(9, "demo.text") > 0);
+                assertEquals(0, console.udp().counters().malformedIn());
+            }
+        }
+    }
 }
