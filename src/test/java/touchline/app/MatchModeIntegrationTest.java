@@ -1,5 +1,6 @@
 package touchline.app;
 
+import touchline.testing.Await;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -15,7 +16,6 @@ import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.function.BooleanSupplier;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -27,15 +27,6 @@ import static org.junit.jupiter.api.Assertions.*;
 @Tag("integration")
 class MatchModeIntegrationTest {
 
-    private static void await(String what, long millis, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.nanoTime() + millis * 1_000_000;
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("timed out after " + millis + " ms waiting for: " + what);
-            }
-            Thread.sleep(10);
-        }
-    }
 
     private static byte[] golden(String name) throws Exception {
         try (var in = MatchModeIntegrationTest.class.getResourceAsStream("/golden/gamecontroller/hl12/" + name)) {
@@ -57,11 +48,11 @@ class MatchModeIntegrationTest {
                     out.add(e);
                 }
             });
-            await("option list", 5000, () -> console.options().options(8).listReceived());
+            Await.until("option list", 5000, () -> console.options().options(8).listReceived());
 
             byte[] playing = golden("04-playing.bin");
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), robot.port()));
-            await("the robot reports PLAYING", 5000, () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
+            Await.until("the robot reports PLAYING", 5000, () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
             assertTrue(console.matchMode().playIsOn());
 
             out.clear();
@@ -74,8 +65,8 @@ class MatchModeIntegrationTest {
 
             byte[] initial = golden("00-initial.bin");
             gc.send(new DatagramPacket(initial, initial.length, InetAddress.getLoopbackAddress(), robot.port()));
-            await("the robot reports INITIAL", 5000, () -> console.robots().robot(8).orElseThrow().gameState().equals("INITIAL"));
-            await("the held request went out and data streams", 5000, () ->
+            Await.until("the robot reports INITIAL", 5000, () -> console.robots().robot(8).orElseThrow().gameState().equals("INITIAL"));
+            Await.until("the held request went out and data streams", 5000, () ->
                     console.options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false));
             assertTrue(out.stream().anyMatch(e -> e.message() instanceof Fumanoid.Message m
                     && m.hasExtension(Fumanoid.debugOptionRequest)));

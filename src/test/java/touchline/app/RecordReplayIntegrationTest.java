@@ -1,5 +1,6 @@
 package touchline.app;
 
+import touchline.testing.Await;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -13,7 +14,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.function.BooleanSupplier;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -25,15 +25,6 @@ import static org.junit.jupiter.api.Assertions.*;
 @Tag("integration")
 class RecordReplayIntegrationTest {
 
-    private static void await(String what, long millis, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.nanoTime() + millis * 1_000_000;
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("timed out after " + millis + " ms waiting for: " + what);
-            }
-            Thread.sleep(10);
-        }
-    }
 
     private static ConsoleConfig loopback() {
         return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
@@ -49,11 +40,11 @@ class RecordReplayIntegrationTest {
             console.bus().subscribe(live::add);
             int port = console.udp().localPort();
             try (RobotProcess a = RobotProcess.robot(1, port).start(); RobotProcess b = RobotProcess.robot(2, port).start()) {
-                await("both option lists", 5000, () -> console.options().options(1).listReceived()
+                Await.until("both option lists", 5000, () -> console.options().options(1).listReceived()
                         && console.options().options(2).listReceived());
                 console.setOption(1, "demo.plotter", true);
-                await("plots arrive", 5000, () -> live.stream().filter(e -> e.kind().equals("debugPlot")).count() >= 5);
-                await("a good stretch of traffic", 10_000, () -> live.size() > 40);
+                Await.until("plots arrive", 5000, () -> live.stream().filter(e -> e.kind().equals("debugPlot")).count() >= 5);
+                Await.until("a good stretch of traffic", 10_000, () -> live.size() > 40);
             }
             console.stopRecording();
         }
@@ -67,7 +58,7 @@ class RecordReplayIntegrationTest {
             assertEquals(List.of(), replay.problems());
             replay.setSpeed(50);
             replay.play();
-            await("replay finished", 20_000, () -> replay.state().finished());
+            Await.until("replay finished", 20_000, () -> replay.state().finished());
             assertEquals(live.size(), replayed.size());
             for (int i = 0; i < live.size(); i++) {
                 assertEquals(live.get(i), replayed.get(i), "envelope " + i);

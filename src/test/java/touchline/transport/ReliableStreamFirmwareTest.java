@@ -1,5 +1,6 @@
 package touchline.transport;
 
+import touchline.testing.Await;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
@@ -14,7 +15,6 @@ import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.function.BooleanSupplier;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -34,15 +34,6 @@ class ReliableStreamFirmwareTest {
         Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "robot-side binaries not built");
     }
 
-    private static void await(String what, long millis, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.nanoTime() + millis * 1_000_000;
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("timed out after " + millis + " ms waiting for: " + what);
-            }
-            Thread.sleep(20);
-        }
-    }
 
     private Console console() throws InterruptedException {
         return new Console(ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
@@ -58,7 +49,7 @@ class ReliableStreamFirmwareTest {
                 for (int off = 0; off < text.length; off += 300) {
                     session.offer(java.util.Arrays.copyOfRange(text, off, Math.min(text.length, off + 300)));
                 }
-                await("the robot printed the whole text", 60_000, () -> robot.stdout().contains(LOREM));
+                Await.until("the robot printed the whole text", 60_000, () -> robot.stdout().contains(LOREM));
                 assertTrue(robot.stdout().contains(LOREM), "whole and in order");
                 assertTrue(session.stats().retransmissions() > 0, "the link lost segments");
                 assertTrue(link.impaired() >= 0.2 * link.forwarded(), "impairment " + link.impaired() + " of " + link.forwarded());
@@ -79,7 +70,7 @@ class ReliableStreamFirmwareTest {
                 }
             });
             try (RobotProcess robot = RobotProcess.robot(5, link.robotSide().getPort(), "--reliable-send", file.toString()).start()) {
-                await("the console received the whole text", 60_000, () -> {
+                Await.until("the console received the whole text", 60_000, () -> {
                     synchronized (got) {
                         return got.size() >= LOREM.length();
                     }
@@ -110,12 +101,12 @@ class ReliableStreamFirmwareTest {
                 }
             }
             try (RobotProcess robot = RobotProcess.robot(6, link.robotSide().getPort(), "--mathe", Integer.toString(operands)).start()) {
-                await("both sides finished", 90_000, () -> {
+                Await.until("both sides finished", 90_000, () -> {
                     synchronized (mathe) {
                         return mathe.peerEnded() && session.idle() && robot.stdout().contains("MATHE ");
                     }
                 });
-                await("the robot's verdict", 10_000, () -> robot.stdout().contains("MATHE OK") || robot.stdout().contains("MISMATCH"));
+                Await.until("the robot's verdict", 10_000, () -> robot.stdout().contains("MATHE OK") || robot.stdout().contains("MISMATCH"));
                 synchronized (mathe) {
                     assertTrue(mathe.agrees(), mathe.summary());
                 }
