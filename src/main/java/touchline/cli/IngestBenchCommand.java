@@ -42,9 +42,6 @@ final class IngestBenchCommand implements Callable<Integer> {
     @Option(names = "--transport-only", description = "measure the transport without the model subscribed")
     boolean transportOnly;
 
-    @Option(names = "--record", description = "also record everything to a temporary MCAP file (recording overhead)")
-    boolean record;
-
     @Option(names = "--compare-recording", description = "each round also runs the pipeline with the recorder attached")
     boolean compareRecording;
 
@@ -87,16 +84,14 @@ final class IngestBenchCommand implements Callable<Integer> {
                 datagrams.stream().mapToInt(d -> d.length).max().orElse(0), Runtime.getRuntime().availableProcessors());
         // Warm-up (not counted): the JIT compiles both receive paths before anything is measured.
         baseline(2);
-        pipeline(2, 0);
+        pipeline(2, 0, false);
         double bestBaseline = 0;
         double bestPipeline = 0;
         for (int round = 1; round <= rounds; round++) {
             double baseline = baseline(seconds);
-            double pipeline = pipeline(seconds, 0).perSecond;
+            double pipeline = pipeline(seconds, 0, false).perSecond;
             if (compareRecording) {
-                record = true;
-                double recorded = pipeline(seconds, 0).perSecond;
-                record = false;
+                double recorded = pipeline(seconds, 0, true).perSecond;
                 System.out.printf("round %d: pipeline recording %,.0f msg/s, %.2f of the pipeline without%n", round,
                         recorded, recorded / pipeline);
             }
@@ -107,7 +102,7 @@ final class IngestBenchCommand implements Callable<Integer> {
         }
         System.out.printf("best: baseline %,.0f msg/s, pipeline %,.0f msg/s, ratio %.2f (target >= 0.80)%n",
                 bestBaseline, bestPipeline, bestPipeline / bestBaseline);
-        Result paced = pipeline(seconds, rate);
+        Result paced = pipeline(seconds, rate, false);
         System.out.printf("fixed rate %,d msg/s for %d s: sent %,d, decoded %,d, lost %,d (%.4f%%)%n", rate, seconds,
                 paced.sent, paced.received, paced.sent - paced.received, 100.0 * (paced.sent - paced.received) / paced.sent);
         return 0;
@@ -115,7 +110,7 @@ final class IngestBenchCommand implements Callable<Integer> {
 
     private record Result(long sent, long received, double perSecond) { }
 
-    private Result pipeline(int secs, int pacedRate) throws Exception {
+    private Result pipeline(int secs, int pacedRate, boolean record) throws Exception {
         LongAdder decoded = new LongAdder();
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = transportOnly ? new Console(config, touchline.transport.MicrosClock.system(), false)
