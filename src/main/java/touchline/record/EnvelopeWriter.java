@@ -61,8 +61,7 @@ public final class EnvelopeWriter implements Closeable {
     private static final class ChannelState {
         final int id;
         long nextFrameMicros = Long.MIN_VALUE;
-        FieldDescriptor extension;
-        FieldDescriptor timestamp;
+        RobotTimestamp timestamp;
         boolean timestampResolved;
 
         ChannelState(int id) {
@@ -138,8 +137,9 @@ public final class EnvelopeWriter implements Closeable {
         switch (key.layout()) {
             case EnvelopeLayout.PAYLOAD -> {
                 int header = key.framing().headerSize();
-                writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), logTime),
-                        e.raw(), header, e.raw().length - header);
+                int length = e.raw().length - header;
+                writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), e.raw(), header, length, logTime),
+                        e.raw(), header, length);
             }
             case EnvelopeLayout.MALFORMED -> writer.addMessage(channel.id, logTime, logTime,
                     EnvelopeLayout.malformedData(e.error(), e.raw()));
@@ -168,25 +168,12 @@ public final class EnvelopeWriter implements Closeable {
     }
 
     /** The robot's own timestamp (ms) of the extension the message carries, in ns; else {@code fallback}. */
-    private static long robotTime(ChannelState c, Message message, long fallback) {
+    private static long robotTime(ChannelState c, Message message, byte[] raw, int off, int len, long fallback) {
         if (!c.timestampResolved) {
             c.timestampResolved = true;
-            for (FieldDescriptor f : message.getAllFields().keySet()) {
-                if (f.isExtension() && f.getJavaType() == FieldDescriptor.JavaType.MESSAGE) {
-                    FieldDescriptor ts = f.getMessageType().findFieldByName("timestamp");
-                    if (ts != null && ts.getJavaType() == FieldDescriptor.JavaType.LONG && !ts.isRepeated()) {
-                        c.extension = f;
-                        c.timestamp = ts;
-                    }
-                    break;
-                }
-            }
+            c.timestamp = RobotTimestamp.of(message);
         }
-        if (c.timestamp == null || !message.hasField(c.extension)) {
-            return fallback;
-        }
-        Message inner = (Message) message.getField(c.extension);
-        return inner.hasField(c.timestamp) ? (Long) inner.getField(c.timestamp) * 1_000_000L : fallback;
+        return c.timestamp == null ? fallback : c.timestamp.nanos(raw, off, len, fallback);
     }
 
     void metadataForTest(String name, Map<String, String> values) throws IOException {

@@ -7,16 +7,13 @@ import touchline.transport.EnvelopeSink;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * An {@link EnvelopeSink} that records everything it is given to MCAP. The network thread
- * only puts the envelope in a bounded queue (never blocks; a full queue drops and counts);
+ * only puts the envelope in a bounded ring ({@link EnvelopeRing}: never blocks, never
+ * allocates; a full ring drops and counts);
  * one writer thread drains it into an {@link EnvelopeWriter} and writes the open chunk at
  * least every {@link #MAX_CHUNK_AGE_NANOS} plus one poll, so a killed process loses at
  * most about a second. Subscribe it to the {@code EnvelopeBus}; close it to finish the file.
@@ -27,16 +24,14 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     private static final long IDLE_PARK_NANOS = 2_000_000L;
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
 
-    // Lock-free hand-off: the network thread does one CAS to count and one to enqueue, never
-    // takes a lock the writer holds and never wakes it (the writer parks and polls).
-    private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
-    private final AtomicInteger queued = new AtomicInteger();
-    private final int capacity;
+    // Lock-free hand-off: the network thread does one CAS to enqueue, never takes a lock the
+    // writer holds and never wakes it (the writer parks and polls).
+    private final EnvelopeRing ring;
     private final EnvelopeWriter writer;
     private final Thread thread;
-    private final AtomicLong received = new AtomicLong();
-    private final AtomicLong written = new AtomicLong();
-    private final AtomicLong dropped = new AtomicLong();
+    private volatile long written;
+    private final AtomicLong refused = new AtomicLong();   // not taken: full ring, stopping, failed
+    private volatile long discarded;                        // taken but never written (raced with close)
     private volatile boolean stopping;
     private volatile String failure;
     private volatile long bytes;
@@ -46,7 +41,7 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     }
 
     public Recorder(Path file, EnvelopeWriter.Options options, int queueCapacity) throws IOException {
-        this.capacity = queueCapacity;
+        this.ring = new EnvelopeRing(queueCapacity);
         this.writer = new EnvelopeWriter(file, options);
         this.thread = new Thread(this::run, "touchline-recorder");
         thread.setDaemon(true);
@@ -55,31 +50,24 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     @Override
     public void accept(Envelope envelope) {
-        received.incrementAndGet();
-        if (failure != null || stopping || queued.get() >= capacity) {
-            dropped.incrementAndGet();
-            return;
+        if (failure != null || stopping || !ring.offer(envelope)) {
+            refused.incrementAndGet();
         }
-        queued.incrementAndGet();
-        queue.offer(envelope);
     }
 
     private void run() {
-        List<Envelope> batch = new ArrayList<>(4096);
+        long count = 0;
         try {
             while (true) {
                 // Polling, not a blocking take: a waiting consumer would make every offer() on the
                 // network thread signal it (a futex wake per datagram); parked, it costs nothing there.
-                for (Envelope e; batch.size() < 4096 && (e = queue.poll()) != null; ) {
-                    batch.add(e);
+                long before = count;
+                for (Envelope e; count - before < 4096 && (e = ring.poll()) != null; count++) {
+                    writer.write(e);
                 }
-                queued.addAndGet(-batch.size());
-                if (!batch.isEmpty()) {
-                    for (Envelope e : batch) {
-                        writer.write(e);
-                    }
-                    written.addAndGet(batch.size());
-                    batch.clear();
+                ring.release();
+                if (count > before) {
+                    written = count;
                 } else if (stopping) {
                     break;
                 } else {
@@ -89,13 +77,16 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
                 bytes = writer.bytes();
             }
         } catch (IOException | RuntimeException e) {
+            written = count;
             failure = "recording stopped: " + e.getMessage();
-            LOG.error("{} ({} envelopes written to {})", failure, written.get(), writer.files());
+            LOG.error("{} ({} envelopes written to {})", failure, count, writer.files());
         }
     }
 
     public RecorderStats stats() {
-        return new RecorderStats(received.get(), written.get(), dropped.get(), bytes, writer.files(), failure);
+        long notTaken = refused.get();
+        return new RecorderStats(ring.offered() + notTaken, written, notTaken + discarded, bytes, writer.files(),
+                failure);
     }
 
     /** Writes everything queued so far, the summary and the footer; waits for the writer thread. */
@@ -108,9 +99,11 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
             Thread.currentThread().interrupt();
         }
         // envelopes that raced with stopping were accepted but never written: they count as dropped
-        for (Envelope e; (e = queue.poll()) != null; ) {
-            dropped.incrementAndGet();
+        long left = 0;
+        for (Envelope e; (e = ring.poll()) != null; ) {
+            left++;
         }
+        discarded = left;
         writer.close();
         bytes = writer.bytes();
     }
