@@ -69,8 +69,15 @@ public final class EnvelopeWriter implements Closeable {
         }
     }
 
+    /** Opens the stream a file is written through (the recorder's is asynchronous). */
+    @FunctionalInterface
+    public interface FileOpener {
+        java.io.OutputStream open(Path file) throws IOException;
+    }
+
     private final Path base;
     private final Options options;
+    private final FileOpener opener;
     private final EnvelopeLayout layout = new EnvelopeLayout();
     private final List<Path> files = new ArrayList<>();
     private final Map<EnvelopeLayout.Key, ChannelState> channels = new HashMap<>();
@@ -81,8 +88,13 @@ public final class EnvelopeWriter implements Closeable {
     private long thinnedFrames;
 
     public EnvelopeWriter(Path file, Options options) throws IOException {
+        this(file, options, java.nio.file.Files::newOutputStream);
+    }
+
+    public EnvelopeWriter(Path file, Options options, FileOpener opener) throws IOException {
         this.base = file;
         this.options = options;
+        this.opener = opener;
         openNext();
     }
 
@@ -92,7 +104,7 @@ public final class EnvelopeWriter implements Closeable {
             writer.close();
         }
         Path next = files.isEmpty() ? base : numbered(base, files.size());
-        writer = new McapWriter(next, options.chunkBytes());
+        writer = new McapWriter(opener.open(next), options.chunkBytes());
         files.add(next);
         channels.clear();
         schemaIds.clear();
