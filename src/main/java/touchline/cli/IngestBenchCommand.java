@@ -85,15 +85,24 @@ final class IngestBenchCommand implements Callable<Integer> {
         // Warm-up (not counted): the JIT compiles both receive paths before anything is measured.
         baseline(2);
         pipeline(2, 0, false);
+        if (compareRecording) {
+            pipeline(2, 0, true);
+        }
         double bestBaseline = 0;
         double bestPipeline = 0;
         for (int round = 1; round <= rounds; round++) {
-            double baseline = baseline(seconds);
-            double pipeline = pipeline(seconds, 0, false).perSecond;
+            Result base = baseline(seconds);
+            double baseline = base.perSecond;
+            Result pipe = pipeline(seconds, 0, false);
+            double pipeline = pipe.perSecond;
+            System.out.printf("  (took %.0f%% of what was sent in the baseline, %.0f%% in the pipeline)%n",
+                    100.0 * base.received / base.sent, 100.0 * pipe.received / pipe.sent);
             if (compareRecording) {
-                double recorded = pipeline(seconds, 0, true).perSecond;
-                System.out.printf("round %d: pipeline recording %,.0f msg/s, %.2f of the pipeline without%n", round,
-                        recorded, recorded / pipeline);
+                Result rec = pipeline(seconds, 0, true);
+                double recorded = rec.perSecond;
+                System.out.printf("round %d: pipeline recording %,.0f msg/s, %.2f of the pipeline without"
+                        + " (took %.0f%% of what was sent)%n", round, recorded, recorded / pipeline,
+                        100.0 * rec.received / rec.sent);
             }
             bestBaseline = Math.max(bestBaseline, baseline);
             bestPipeline = Math.max(bestPipeline, pipeline);
@@ -137,7 +146,7 @@ final class IngestBenchCommand implements Callable<Integer> {
         }
     }
 
-    private double baseline(int secs) throws Exception {
+    private Result baseline(int secs) throws Exception {
         LongAdder decoded = new LongAdder();
         AtomicBoolean running = new AtomicBoolean(true);
         MessageKinds kinds = new MessageKinds();
@@ -171,7 +180,7 @@ final class IngestBenchCommand implements Callable<Integer> {
             running.set(false);
             channel.close();
             receiver.join(2000);
-            return r.perSecond;
+            return r;
         }
     }
 

@@ -6,7 +6,6 @@ import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
-import java.util.Arrays;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -26,7 +25,7 @@ final class BackgroundFiles implements AutoCloseable {
 
     private sealed interface Job permits Write, CloseFile, Hold, Stop { }
 
-    private record Write(FileChannel file, byte[] bytes) implements Job { }
+    private record Write(FileChannel file, ByteBuffer bytes) implements Job { }
 
     private record CloseFile(FileChannel file) implements Job { }
 
@@ -34,7 +33,12 @@ final class BackgroundFiles implements AutoCloseable {
 
     private record Stop() implements Job { }
 
+    private static final int POOLED_BUFFERS = 16;
+
     private final BlockingQueue<Job> jobs = new LinkedBlockingQueue<>();
+    // Direct buffers, reused: the copy into one is the only copy before the kernel's (a heap
+    // array would be copied once more into a temporary direct buffer by the channel)
+    private final BlockingQueue<ByteBuffer> free = new java.util.concurrent.ArrayBlockingQueue<>(POOLED_BUFFERS);
     private final AtomicLong pending = new AtomicLong();
     private final Runnable tick;
     private final Thread thread;
@@ -64,7 +68,9 @@ final class BackgroundFiles implements AutoCloseable {
                     return;
                 }
                 pending.addAndGet(len);
-                jobs.add(new Write(channel, Arrays.copyOfRange(b, off, off + len)));
+                ByteBuffer copy = buffer(len);
+                copy.put(b, off, len).flip();
+                jobs.add(new Write(channel, copy));
             }
 
             @Override
@@ -77,6 +83,20 @@ final class BackgroundFiles implements AutoCloseable {
     /** Test hook: the thread stops at this point of the queue until {@code release} opens. */
     void hold(java.util.concurrent.CountDownLatch release) {
         jobs.add(new Hold(release));
+    }
+
+    private ByteBuffer buffer(int len) {
+        for (int i = free.size(); i > 0; i--) {
+            ByteBuffer b = free.poll();
+            if (b == null) {
+                break;
+            }
+            if (b.capacity() >= len) {
+                return b.clear();
+            }
+            free.offer(b); // too small for this one; keep it for the small writes
+        }
+        return ByteBuffer.allocateDirect(Math.max(64 * 1024, Integer.highestOneBit(Math.max(1, len - 1)) << 1));
     }
 
     /** Bytes handed over but not yet written. */
@@ -118,15 +138,16 @@ final class BackgroundFiles implements AutoCloseable {
     private void perform(Job job) {
         try {
             if (job instanceof Write w) {
+                int length = w.bytes().remaining();
                 try {
                     if (failure == null) {
-                        ByteBuffer buf = ByteBuffer.wrap(w.bytes());
-                        while (buf.hasRemaining()) {
-                            w.file().write(buf);
+                        while (w.bytes().hasRemaining()) {
+                            w.file().write(w.bytes());
                         }
                     }
                 } finally {
-                    pending.addAndGet(-w.bytes().length);
+                    pending.addAndGet(-length);
+                    free.offer(w.bytes()); // a full pool lets it go
                 }
             } else if (job instanceof CloseFile c) {
                 c.file().close();

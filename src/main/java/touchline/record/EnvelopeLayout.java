@@ -133,16 +133,19 @@ final class EnvelopeLayout {
      * without copying, because this runs for every recorded datagram.
      */
     Key keyOf(Envelope e) {
+        String layout = layoutOf(e);
+        return key(e, layout, layout == PAYLOAD ? exactFraming(e.raw()) : null);
+    }
+
+    /** {@link #PAYLOAD}, {@link #RAW} or {@link #MALFORMED} (the constants themselves, comparable with ==). */
+    static String layoutOf(Envelope e) {
         if (e.error() != null) {
-            return key(e, MALFORMED, null);
+            return MALFORMED;
         }
-        if (e.channel() == Channel.FUMANOID && e.message() != null) {
-            Framing framing = exactFraming(e.raw());
-            if (framing != null) {
-                return key(e, PAYLOAD, framing);
-            }
+        if (e.channel() == Channel.FUMANOID && e.message() != null && exactFraming(e.raw()) != null) {
+            return PAYLOAD;
         }
-        return key(e, RAW, null);
+        return RAW;
     }
 
     static Framing exactFraming(byte[] raw) {

@@ -4,6 +4,7 @@ import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Descriptors.FileDescriptor;
 import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
+import touchline.protocol.Framing;
 import touchline.transport.Envelope;
 
 import java.io.Closeable;
@@ -57,6 +58,51 @@ public final class EnvelopeWriter implements Closeable {
         }
     }
 
+    /**
+     * A small direct-mapped cache in front of {@code channels}: finds an envelope's channel by
+     * comparing its fields in place, without building and hashing a {@link EnvelopeLayout.Key}
+     * (which, for every recorded datagram, cost more than writing it).
+     */
+    private static final class RecentChannels {
+        private static final int SIZE = 256;
+        private final String[] kinds = new String[SIZE];
+        private final int[] robots = new int[SIZE];
+        private final int[] codes = new int[SIZE];
+        private final java.net.InetSocketAddress[] peers = new java.net.InetSocketAddress[SIZE];
+        private final ChannelState[] states = new ChannelState[SIZE];
+
+        private static int code(Envelope e, String layout, Framing framing) {
+            int l = layout == EnvelopeLayout.PAYLOAD ? 1 : layout == EnvelopeLayout.MALFORMED ? 2 : 3;
+            return ((e.direction().ordinal() * 16 + e.channel().ordinal()) * 4 + l) * 4
+                    + (framing == null ? 0 : framing.ordinal() + 1);
+        }
+
+        private static int slot(Envelope e) {
+            int port = e.peer() == null ? 0 : e.peer().getPort();
+            return (System.identityHashCode(e.kind()) * 31 + e.robotId() * 7 + port) & (SIZE - 1);
+        }
+
+        ChannelState find(Envelope e, String layout, Framing framing) {
+            int i = slot(e);
+            ChannelState s = states[i];
+            return s != null && kinds[i] == e.kind() && robots[i] == e.robotId() && codes[i] == code(e, layout, framing)
+                    && java.util.Objects.equals(peers[i], e.peer()) ? s : null;
+        }
+
+        void remember(Envelope e, String layout, Framing framing, ChannelState state) {
+            int i = slot(e);
+            kinds[i] = e.kind();
+            robots[i] = e.robotId();
+            codes[i] = code(e, layout, framing);
+            peers[i] = e.peer();
+            states[i] = state;
+        }
+
+        void clear() {
+            java.util.Arrays.fill(states, null);
+        }
+    }
+
     /** The channel id in the current file, plus what finding the robot's timestamp needs. */
     private static final class ChannelState {
         final int id;
@@ -78,9 +124,9 @@ public final class EnvelopeWriter implements Closeable {
     private final Path base;
     private final Options options;
     private final FileOpener opener;
-    private final EnvelopeLayout layout = new EnvelopeLayout();
     private final List<Path> files = new ArrayList<>();
     private final Map<EnvelopeLayout.Key, ChannelState> channels = new HashMap<>();
+    private final RecentChannels recent = new RecentChannels();
     private final Map<Set<String>, Integer> schemaIds = new HashMap<>();
     private McapWriter writer;
     private long fileStartMicros;
@@ -107,6 +153,7 @@ public final class EnvelopeWriter implements Closeable {
         writer = new McapWriter(opener.open(next), options.chunkBytes());
         files.add(next);
         channels.clear();
+        recent.clear();
         schemaIds.clear();
         fileStartMicros = Long.MIN_VALUE;
     }
@@ -127,13 +174,20 @@ public final class EnvelopeWriter implements Closeable {
             openNext();
             fileStartMicros = e.timeMicros();
         }
-        EnvelopeLayout.Key key = layout.keyOf(e);
-        ChannelState channel = channels.get(key);
+        String kindOfLayout = EnvelopeLayout.layoutOf(e);
+        Framing framing = kindOfLayout == EnvelopeLayout.PAYLOAD ? EnvelopeLayout.exactFraming(e.raw()) : null;
+        ChannelState channel = recent.find(e, kindOfLayout, framing);
         if (channel == null) {
-            channel = addChannel(key, e.message());
+            EnvelopeLayout.Key key = new EnvelopeLayout.Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(),
+                    kindOfLayout, framing);
+            channel = channels.get(key);
+            if (channel == null) {
+                channel = addChannel(key, e.message());
+            }
+            recent.remember(e, kindOfLayout, framing, channel);
         }
-        if (options.cameraIntervalMicros() > 0 && key.channel() == touchline.transport.Channel.NAO_CAMERA
-                && !key.layout().equals(EnvelopeLayout.MALFORMED)) {
+        if (options.cameraIntervalMicros() > 0 && e.channel() == touchline.transport.Channel.NAO_CAMERA
+                && kindOfLayout != EnvelopeLayout.MALFORMED) {
             // one frame per interval slot, slots counted from the first frame, so 30 fps thinned
             // to 5 fps gives 5 frames a second rather than whatever divides 30 evenly
             long interval = options.cameraIntervalMicros();
@@ -146,9 +200,9 @@ public final class EnvelopeWriter implements Closeable {
                     ? e.timeMicros() + interval : channel.nextFrameMicros + interval;
         }
         long logTime = e.timeMicros() * 1000;
-        switch (key.layout()) {
+        switch (kindOfLayout) {
             case EnvelopeLayout.PAYLOAD -> {
-                int header = key.framing().headerSize();
+                int header = framing.headerSize();
                 int length = e.raw().length - header;
                 writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), e.raw(), header, length, logTime),
                         e.raw(), header, length);

@@ -33,6 +33,14 @@ final class McapRecords {
 
     /** A growable little-endian buffer; records are built in place to avoid copies. */
     static final class Bytes {
+        // one store per field instead of a loop of byte stores: this runs several times per recorded message
+        private static final java.lang.invoke.VarHandle U16 = java.lang.invoke.MethodHandles.byteArrayViewVarHandle(
+                short[].class, java.nio.ByteOrder.LITTLE_ENDIAN);
+        private static final java.lang.invoke.VarHandle U32 = java.lang.invoke.MethodHandles.byteArrayViewVarHandle(
+                int[].class, java.nio.ByteOrder.LITTLE_ENDIAN);
+        private static final java.lang.invoke.VarHandle U64 = java.lang.invoke.MethodHandles.byteArrayViewVarHandle(
+                long[].class, java.nio.ByteOrder.LITTLE_ENDIAN);
+
         byte[] buf;
         int size;
 
@@ -57,34 +65,28 @@ final class McapRecords {
 
         void u16(int v) {
             ensure(2);
-            buf[size++] = (byte) v;
-            buf[size++] = (byte) (v >>> 8);
+            U16.set(buf, size, (short) v);
+            size += 2;
         }
 
         void u32(long v) {
             ensure(4);
-            for (int i = 0; i < 4; i++) {
-                buf[size++] = (byte) (v >>> (8 * i));
-            }
+            U32.set(buf, size, (int) v);
+            size += 4;
         }
 
         void u64(long v) {
             ensure(8);
-            for (int i = 0; i < 8; i++) {
-                buf[size++] = (byte) (v >>> (8 * i));
-            }
+            U64.set(buf, size, v);
+            size += 8;
         }
 
         void putU64At(int at, long v) {
-            for (int i = 0; i < 8; i++) {
-                buf[at + i] = (byte) (v >>> (8 * i));
-            }
+            U64.set(buf, at, v);
         }
 
         void putU32At(int at, long v) {
-            for (int i = 0; i < 4; i++) {
-                buf[at + i] = (byte) (v >>> (8 * i));
-            }
+            U32.set(buf, at, (int) v);
         }
 
         void raw(byte[] b, int off, int len) {

@@ -37,7 +37,6 @@ public final class McapWriter implements Closeable {
 
     private final OutputStream out;
     private final int chunkBytes;
-    private final CRC32 dataCrc = new CRC32();
     private final CRC32 chunkCrc = new CRC32();
     private long position;
 
@@ -283,7 +282,6 @@ public final class McapWriter implements Closeable {
 
     private void emit(Bytes b, boolean push) throws IOException {
         out.write(b.buf, 0, b.size);
-        dataCrc.update(b.buf, 0, b.size);
         position += b.size;
         b.clear();
         if (push) {
@@ -331,7 +329,9 @@ public final class McapWriter implements Closeable {
             flushChunk();
             scratch.clear();
             int at = scratch.beginRecord(McapRecords.DATA_END);
-            scratch.u32(dataCrc.getValue());
+            // 0 = "not computed" (spec): every chunk carries its own CRC, which the reader checks;
+            // a second pass over every byte cost the recording thread as much as a third of its work
+            scratch.u32(0);
             scratch.endRecord(at);
             emit(scratch, false);
 

@@ -8,7 +8,10 @@ import com.google.protobuf.Message;
  * extension the channel's messages carry and of the {@code timestamp} field inside it. The
  * recorder reads the value straight from the payload bytes with a small wire-format walk:
  * asking the decoded message through protobuf reflection cost more per datagram than
- * writing the datagram to the file. Last occurrence wins, as in protobuf's own merge.
+ * writing the datagram to the file. The walk stops at the first timestamp, and gives up
+ * (log time is used instead) once it passes the timestamp's field number: encoders write
+ * fields in number order, so this reads only the first few bytes of a message. A message
+ * that repeats the field (legal protobuf, never written by our encoders) gets its first value.
  */
 final class RobotTimestamp {
 
@@ -47,7 +50,6 @@ final class RobotTimestamp {
     /** The robot's timestamp (ms) converted to ns, or {@code fallback} when the bytes hold none. */
     long nanos(byte[] b, int off, int len, long fallback) {
         int end = off + len;
-        long found = Long.MIN_VALUE;
         int at = off;
         while (at < end) {
             long tag = varint(b, at, end);
@@ -64,10 +66,7 @@ final class RobotTimestamp {
                 }
                 int start = next;
                 long inner = timestampIn(b, start, (int) (start + n));
-                if (inner != Long.MIN_VALUE) {
-                    found = inner;
-                }
-                at = (int) (start + n);
+                return inner == Long.MIN_VALUE ? fallback : inner * 1_000_000L;
             } else {
                 at = skip(b, at, end, wire);
                 if (at < 0) {
@@ -75,11 +74,10 @@ final class RobotTimestamp {
                 }
             }
         }
-        return found == Long.MIN_VALUE ? fallback : found * 1_000_000L;
+        return fallback;
     }
 
     private long timestampIn(byte[] b, int at, int end) {
-        long found = Long.MIN_VALUE;
         while (at < end) {
             long tag = varint(b, at, end);
             if (tag < 0) {
@@ -87,28 +85,26 @@ final class RobotTimestamp {
             }
             at = next;
             int wire = (int) (tag & 7);
-            if ((int) (tag >>> 3) == timestampNumber) {
+            int field = (int) (tag >>> 3);
+            if (field == timestampNumber) {
                 if (fixed && wire == FIXED64 && at + 8 <= end) {
-                    found = fixed64(b, at);
-                    at += 8;
-                    continue;
+                    return fixed64(b, at);
                 }
                 if (!fixed && wire == VARINT) {
                     long v = varintValue(b, at, end);
-                    if (next < 0) {
-                        return Long.MIN_VALUE;
-                    }
-                    found = zigZag ? (v >>> 1) ^ -(v & 1) : v;
-                    at = next;
-                    continue;
+                    return next < 0 ? Long.MIN_VALUE : zigZag ? (v >>> 1) ^ -(v & 1) : v;
                 }
+                return Long.MIN_VALUE;
+            }
+            if (field > timestampNumber) {
+                return Long.MIN_VALUE;
             }
             at = skip(b, at, end, wire);
             if (at < 0) {
                 return Long.MIN_VALUE;
             }
         }
-        return found;
+        return Long.MIN_VALUE;
     }
 
     // The walk's cursor after the last varint read; one walker per writer thread, so a field is fine.

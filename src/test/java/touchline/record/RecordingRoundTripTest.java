@@ -59,6 +59,37 @@ class RecordingRoundTripTest {
     }
 
     @Test
+    void envelopesThatDifferOnlyInPeerFramingOrDirectionKeepTheirOwnChannels() throws Exception {
+        // the writer's channel cache compares fields in place; every one of them must count
+        List<Envelope> team = RecordingFixture.team(1, 2);
+        Envelope status = team.stream().filter(e -> e.kind().equals("status")).findFirst().orElseThrow();
+        byte[] payload = java.util.Arrays.copyOfRange(status.raw(), 12, status.raw().length);
+        byte[] lengthFramed = new touchline.protocol.FrameCodec().encode(touchline.protocol.Framing.LENGTH_PREFIX, payload);
+        // another robot address, same port: the case a cache keyed by port alone would merge
+        java.net.InetSocketAddress otherPort = new java.net.InetSocketAddress(
+                java.net.InetAddress.getByAddress(new byte[]{10, 0, 0, 99}), status.peer().getPort());
+        List<Envelope> sent = new java.util.ArrayList<>();
+        for (int i = 0; i < 40; i++) {
+            long t = status.timeMicros() + i;
+            sent.add(switch (i % 4) {
+                case 0 -> new Envelope(t, Direction.IN, Channel.FUMANOID, status.peer(), status.robotId(), status.kind(),
+                        status.message(), status.raw(), null);
+                case 1 -> new Envelope(t, Direction.IN, Channel.FUMANOID, otherPort, status.robotId(), status.kind(),
+                        status.message(), status.raw(), null);
+                case 2 -> new Envelope(t, Direction.IN, Channel.FUMANOID, status.peer(), status.robotId(), status.kind(),
+                        status.message(), lengthFramed, null);
+                default -> new Envelope(t, Direction.OUT, Channel.FUMANOID, status.peer(), status.robotId(), status.kind(),
+                        status.message(), status.raw(), null);
+            });
+        }
+        Path file = dir.resolve("channels.mcap");
+        RecordingFixture.write(file, sent, EnvelopeWriter.Options.defaults());
+        try (Recording r = Recording.open(file)) {
+            assertEquals(sent, RecordingFixture.readAll(r));
+        }
+    }
+
+    @Test
     void decodedMessagesComeBackAndTheRobotTimestampIsThePublishTime() throws Exception {
         List<Envelope> sent = RecordingFixture.team(1, 2);
         Path file = dir.resolve("m.mcap");
