@@ -19,8 +19,9 @@ import java.util.Set;
  * Line plot of one option's series on one canvas: the last {@link #WINDOW_SECONDS} s, x in
  * seconds since the console started, y fitted to the data, a legend with each series' colour.
  * Each series is reduced to at most four points per pixel column before drawing
- * ({@link ColumnDecimation}), so a burst of 10 000 points costs what the plot's width costs; a
- * non-finite value breaks the line (a gap). The plot store already skipped non-finite points
+ * ({@link ColumnDecimation}) and drawn as one filled span per column ({@link ColumnSpans}), so a
+ * burst of 10 000 points costs what the plot's width costs; a non-finite value breaks the line
+ * (a gap). The plot store already skipped non-finite points
  * and decimated bursts; the status line says how many. A canvas of our own rather than a chart
  * library: under the software renderer a chart's axis nodes, relayout and layers cost several
  * times the whole frame budget.
@@ -37,12 +38,14 @@ public final class PlotView extends SourcedView {
     private static final double RIGHT = 12;
     private static final double TOP = 24;
     private static final double BOTTOM = 22;
+    private static final double LINE = 1.5;
     private static final Color BACKGROUND = Color.gray(0.12);
     private static final Color GRID = Color.gray(0.26);
     private static final Color LABEL = Color.gray(0.75);
 
     private final ResizableCanvas canvas = new ResizableCanvas(() -> dirty = true);
     private final ColumnDecimation decimation = new ColumnDecimation();
+    private final ColumnSpans spans = new ColumnSpans();
     private double[] sx = new double[256];
     private double[] sy = new double[256];
     private int points;
@@ -60,7 +63,7 @@ public final class PlotView extends SourcedView {
         return points;
     }
 
-    /** Points actually stroked after per-column decimation (for tests). */
+    /** Points actually drawn after per-column decimation (for tests). */
     public int drawnPoints() {
         return drawnPoints;
     }
@@ -131,13 +134,12 @@ public final class PlotView extends SourcedView {
         double y1 = maxY + pad;
         drawAxes(g, from, newest, y0, y1, pw, ph);
         int drawn = 0;
-        g.setLineWidth(1.2);
         for (int k = 0; k < starts.length; k++) {
             PlotStore.SeriesData d = s.series().get(k);
             decimation.run(d.x(), d.y(), starts[k], d.count(), from, newest, (int) Math.ceil(pw));
             drawn += decimation.size();
-            g.setStroke(PALETTE[k % PALETTE.length]);
-            stroke(g, from, newest, y0, y1, pw, ph);
+            g.setFill(PALETTE[k % PALETTE.length]);
+            drawSeries(g, from, newest, y0, y1, pw, ph);
         }
         drawLegend(g, s, w);
         points = total;
@@ -167,8 +169,11 @@ public final class PlotView extends SourcedView {
         return lo;
     }
 
-    /** Strokes the decimated series, one polyline per run between gaps. */
-    private void stroke(GraphicsContext g, double x0, double x1, double y0, double y1, double pw, double ph) {
+    /**
+     * Draws the decimated series as one filled span per pixel column ({@link ColumnSpans}),
+     * the line broken at each gap.
+     */
+    private void drawSeries(GraphicsContext g, double x0, double x1, double y0, double y1, double pw, double ph) {
         double[] xs = decimation.xs();
         double[] ys = decimation.ys();
         int n = decimation.size();
@@ -178,20 +183,23 @@ public final class PlotView extends SourcedView {
         }
         double fx = pw / Math.max(1e-9, x1 - x0);
         double fy = ph / (y1 - y0);
+        spans.reset((int) Math.ceil(pw));
         int run = 0;
         for (int i = 0; i <= n; i++) {
             if (i == n || Double.isNaN(ys[i])) {
-                if (run == 1) {
-                    g.strokeLine(sx[0] - 0.5, sy[0], sx[0] + 0.5, sy[0]); // a lone point between gaps
-                } else if (run > 1) {
-                    g.strokePolyline(sx, sy, run);
-                }
+                spans.line(sx, sy, run);
                 run = 0;
                 continue;
             }
-            sx[run] = LEFT + (xs[i] - x0) * fx;
+            sx[run] = (xs[i] - x0) * fx;
             sy[run] = TOP + (y1 - ys[i]) * fy;
             run++;
+        }
+        for (int c = 0; c < spans.columns(); c++) {
+            if (spans.covered(c)) {
+                // half a pixel either side: a flat line is as thick as a sloped one
+                g.fillRect(LEFT + c, spans.lo(c) - LINE / 2, 1, spans.hi(c) - spans.lo(c) + LINE);
+            }
         }
     }
 
