@@ -2,8 +2,6 @@ package touchline.ui;
 
 import javafx.scene.control.ListView;
 import javafx.scene.control.TextField;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -27,33 +25,34 @@ class FollowingViewsUiTest {
     private static final int ROBOT = 51;
     @TempDir
     Path layouts;
-    private ConsoleWindowFixture ui;
 
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
+    /** A console window with no view open and robot {@link #ROBOT} known. */
+    private ConsoleWindowFixture window() throws Exception {
+        ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts);
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
-        ui.console.bus().accept(StoreEnvelopes.status(now(), ROBOT));
+        ui.console.bus().accept(StoreEnvelopes.status(ui.console.clock().nowMicros(), ROBOT));
+        return ui;
     }
 
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
-
-    private long now() {
-        return ui.console.clock().nowMicros();
+    private static void publish(ConsoleWindowFixture ui, String option, String text) {
+        ui.console.bus().accept(StoreEnvelopes.text(ui.console.clock().nowMicros(), ROBOT, option, text));
     }
 
     @Test
     void theDebugConsoleFollowsTheLogOnceAndSearchRereadsIt() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            followAndSearch(ui);
+        }
+    }
+
+    private static void followAndSearch(ConsoleWindowFixture ui) throws Exception {
         ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
         DebugConsoleView view = ui.view(DebugConsoleView.class);
         ListView<?> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
-        ui.console.bus().accept(StoreEnvelopes.text(now(), ROBOT, "demo.text", "alpha"));
-        ui.console.bus().accept(StoreEnvelopes.text(now(), ROBOT, "demo.text", "beta"));
+        publish(ui, "demo.text", "alpha");
+        publish(ui, "demo.text", "beta");
         ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 2);
-        ui.console.bus().accept(StoreEnvelopes.text(now(), ROBOT, "demo.text", "gamma"));
+        publish(ui, "demo.text", "gamma");
         ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 3);
         long frame = ui.fx(() -> ui.window.pulse().frames());
         ui.await(10, () -> ui.window.pulse().frames() > frame + 5);
@@ -66,11 +65,17 @@ class FollowingViewsUiTest {
 
     @Test
     void theTextViewShowsOnlyItsOptionsLines() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            onlyItsOption(ui);
+        }
+    }
+
+    private static void onlyItsOption(ConsoleWindowFixture ui) throws Exception {
         ui.fxRun(() -> ui.window.open("text", new ViewSource(ROBOT, "mine")));
         TextView view = ui.view(TextView.class);
-        ui.console.bus().accept(StoreEnvelopes.text(now(), ROBOT, "mine", "one"));
-        ui.console.bus().accept(StoreEnvelopes.text(now(), ROBOT, "other", "not this"));
-        ui.console.bus().accept(StoreEnvelopes.text(now(), ROBOT, "mine", "two"));
+        publish(ui, "mine", "one");
+        publish(ui, "other", "not this");
+        publish(ui, "mine", "two");
         ui.await(10, () -> ui.fx(view::shownLines).size() == 2);
         List<String> shown = ui.fx(view::shownLines);
         assertTrue(shown.get(0).endsWith("one") && shown.get(1).endsWith("two"), shown.toString());
