@@ -25,6 +25,8 @@ public final class MessageKinds {
     private volatile ExtensionRegistry registry;
     private final Map<Integer, FieldDescriptor> byNumber = new ConcurrentHashMap<>();
     private final Map<String, FieldDescriptor> byName = new ConcurrentHashMap<>();
+    // One String instance per kind: every Envelope of a kind shares it, so its hash is computed once
+    private final Map<Integer, String> names = new ConcurrentHashMap<>();
 
     public MessageKinds() {
         ExtensionRegistry r = ExtensionRegistry.newInstance();
@@ -61,6 +63,7 @@ public final class MessageKinds {
             }
             byNumber.put(ext.getNumber(), ext);
             byName.put(ext.getName(), ext);
+            names.put(ext.getNumber(), ext.getName()); // was perhaps "ext#N" until now
             addDynamic(r, ext);
         }
         registry = r;
@@ -89,8 +92,15 @@ public final class MessageKinds {
 
     /** The kind name shown to users and used for channels: the extension's name, or {@code ext#N}. */
     public String kindOf(int extensionNumber) {
-        FieldDescriptor d = byNumber.get(extensionNumber);
-        return d != null ? d.getName() : unknownKind(extensionNumber);
+        String name = names.get(extensionNumber);
+        if (name == null) {
+            FieldDescriptor d = byNumber.get(extensionNumber);
+            name = d != null ? d.getName() : unknownKind(extensionNumber);
+            if (d != null || names.size() < 4096) { // unknown numbers from bad input must not grow it without bound
+                names.put(extensionNumber, name);
+            }
+        }
+        return name;
     }
 
     public static String unknownKind(int extensionNumber) {

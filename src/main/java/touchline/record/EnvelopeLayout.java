@@ -50,6 +50,24 @@ final class EnvelopeLayout {
     record Key(Direction direction, Channel channel, InetSocketAddress peer, int robotId, String kind,
                String layout, Framing framing) {
 
+        // Written out rather than the record's generated ones: this runs for every recorded
+        // envelope, and the generated equals cost more than writing the message (cheap,
+        // discriminating fields first; the peer's address last).
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Key k && robotId == k.robotId && direction == k.direction && channel == k.channel
+                    && framing == k.framing && kind.equals(k.kind) && layout.equals(k.layout)
+                    && java.util.Objects.equals(peer, k.peer);
+        }
+
+        @Override
+        public int hashCode() {
+            int h = robotId * 31 + kind.hashCode();
+            h = h * 31 + channel.ordinal() * 4 + direction.ordinal();
+            h = h * 31 + (peer == null ? 0 : peer.getPort());
+            return h * 31 + layout.hashCode();
+        }
+
         Map<String, String> metadata() {
             Map<String, String> m = new LinkedHashMap<>();
             m.put(KEY_DIRECTION, direction.name());

@@ -61,8 +61,7 @@ public final class EnvelopeWriter implements Closeable {
     private static final class ChannelState {
         final int id;
         long nextFrameMicros = Long.MIN_VALUE;
-        FieldDescriptor extension;
-        FieldDescriptor timestamp;
+        RobotTimestamp timestamp;
         boolean timestampResolved;
 
         ChannelState(int id) {
@@ -70,8 +69,15 @@ public final class EnvelopeWriter implements Closeable {
         }
     }
 
+    /** Opens the stream a file is written through (the recorder's is asynchronous). */
+    @FunctionalInterface
+    public interface FileOpener {
+        java.io.OutputStream open(Path file) throws IOException;
+    }
+
     private final Path base;
     private final Options options;
+    private final FileOpener opener;
     private final EnvelopeLayout layout = new EnvelopeLayout();
     private final List<Path> files = new ArrayList<>();
     private final Map<EnvelopeLayout.Key, ChannelState> channels = new HashMap<>();
@@ -82,8 +88,13 @@ public final class EnvelopeWriter implements Closeable {
     private long thinnedFrames;
 
     public EnvelopeWriter(Path file, Options options) throws IOException {
+        this(file, options, java.nio.file.Files::newOutputStream);
+    }
+
+    public EnvelopeWriter(Path file, Options options, FileOpener opener) throws IOException {
         this.base = file;
         this.options = options;
+        this.opener = opener;
         openNext();
     }
 
@@ -93,7 +104,7 @@ public final class EnvelopeWriter implements Closeable {
             writer.close();
         }
         Path next = files.isEmpty() ? base : numbered(base, files.size());
-        writer = new McapWriter(next, options.chunkBytes());
+        writer = new McapWriter(opener.open(next), options.chunkBytes());
         files.add(next);
         channels.clear();
         schemaIds.clear();
@@ -138,8 +149,9 @@ public final class EnvelopeWriter implements Closeable {
         switch (key.layout()) {
             case EnvelopeLayout.PAYLOAD -> {
                 int header = key.framing().headerSize();
-                writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), logTime),
-                        e.raw(), header, e.raw().length - header);
+                int length = e.raw().length - header;
+                writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), e.raw(), header, length, logTime),
+                        e.raw(), header, length);
             }
             case EnvelopeLayout.MALFORMED -> writer.addMessage(channel.id, logTime, logTime,
                     EnvelopeLayout.malformedData(e.error(), e.raw()));
@@ -168,25 +180,12 @@ public final class EnvelopeWriter implements Closeable {
     }
 
     /** The robot's own timestamp (ms) of the extension the message carries, in ns; else {@code fallback}. */
-    private static long robotTime(ChannelState c, Message message, long fallback) {
+    private static long robotTime(ChannelState c, Message message, byte[] raw, int off, int len, long fallback) {
         if (!c.timestampResolved) {
             c.timestampResolved = true;
-            for (FieldDescriptor f : message.getAllFields().keySet()) {
-                if (f.isExtension() && f.getJavaType() == FieldDescriptor.JavaType.MESSAGE) {
-                    FieldDescriptor ts = f.getMessageType().findFieldByName("timestamp");
-                    if (ts != null && ts.getJavaType() == FieldDescriptor.JavaType.LONG && !ts.isRepeated()) {
-                        c.extension = f;
-                        c.timestamp = ts;
-                    }
-                    break;
-                }
-            }
+            c.timestamp = RobotTimestamp.of(message);
         }
-        if (c.timestamp == null || !message.hasField(c.extension)) {
-            return fallback;
-        }
-        Message inner = (Message) message.getField(c.extension);
-        return inner.hasField(c.timestamp) ? (Long) inner.getField(c.timestamp) * 1_000_000L : fallback;
+        return c.timestamp == null ? fallback : c.timestamp.nanos(raw, off, len, fallback);
     }
 
     void metadataForTest(String name, Map<String, String> values) throws IOException {

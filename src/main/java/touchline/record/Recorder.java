@@ -7,111 +7,133 @@ import touchline.transport.EnvelopeSink;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
- * An {@link EnvelopeSink} that records everything it is given to MCAP. The network thread
- * only puts the envelope in a bounded queue (never blocks; a full queue drops and counts);
- * one writer thread drains it into an {@link EnvelopeWriter} and writes the open chunk at
- * least every {@link #MAX_CHUNK_AGE_NANOS} plus one poll, so a killed process loses at
- * most about a second. Subscribe it to the {@code EnvelopeBus}; close it to finish the file.
+ * An {@link EnvelopeSink} that records everything it is given to MCAP. The publishing
+ * thread encodes the envelope into the open chunk itself, while the envelope is still in its
+ * cache (handing each envelope to another thread cost that thread more in cache misses than
+ * the encoding); whole chunks go to a {@link BackgroundFiles} thread, so no publisher ever
+ * waits for the disk. When the disk falls behind by more than {@link #MAX_PENDING_BYTES},
+ * envelopes are refused and counted as dropped, so the file stays consistent. The open chunk
+ * is written at least every {@link #MAX_CHUNK_AGE_NANOS} plus one tick, so a killed process
+ * loses at most about a second. Subscribe it to the {@code EnvelopeBus}; close it to finish
+ * the file.
  */
 public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     static final long MAX_CHUNK_AGE_NANOS = 800_000_000L;
-    private static final long IDLE_PARK_NANOS = 2_000_000L;
+    static final long MAX_PENDING_BYTES = 64L << 20;
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
 
-    // Lock-free hand-off: the network thread does one CAS to count and one to enqueue, never
-    // takes a lock the writer holds and never wakes it (the writer parks and polls).
-    private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
-    private final AtomicInteger queued = new AtomicInteger();
-    private final int capacity;
-    private final EnvelopeWriter writer;
-    private final Thread thread;
-    private final AtomicLong received = new AtomicLong();
-    private final AtomicLong written = new AtomicLong();
-    private final AtomicLong dropped = new AtomicLong();
+    private final BackgroundFiles disk;
+    private final long maxPendingBytes;
+    private final EnvelopeWriter writer;   // guarded by itself: publishers and the disk thread's tick
+    private final AtomicLong refused = new AtomicLong();
+    private long written;                  // guarded by writer
+    private volatile long writtenSoFar;
     private volatile boolean stopping;
     private volatile String failure;
     private volatile long bytes;
 
     public Recorder(Path file, EnvelopeWriter.Options options) throws IOException {
-        this(file, options, 1 << 16);
+        this(file, options, MAX_PENDING_BYTES);
     }
 
-    public Recorder(Path file, EnvelopeWriter.Options options, int queueCapacity) throws IOException {
-        this.capacity = queueCapacity;
-        this.writer = new EnvelopeWriter(file, options);
-        this.thread = new Thread(this::run, "touchline-recorder");
-        thread.setDaemon(true);
-        thread.start();
+    /** @param maxPendingBytes how far the disk may fall behind before envelopes are refused */
+    Recorder(Path file, EnvelopeWriter.Options options, long maxPendingBytes) throws IOException {
+        this.maxPendingBytes = maxPendingBytes;
+        this.disk = new BackgroundFiles("touchline-recorder", this::tick);
+        EnvelopeWriter w;
+        try {
+            w = new EnvelopeWriter(file, options, disk::open);
+        } catch (IOException | RuntimeException e) {
+            disk.close();
+            throw e;
+        }
+        this.writer = w;
+    }
+
+    /** Test hook: the disk thread writes nothing until {@code release} opens. */
+    void holdDisk(java.util.concurrent.CountDownLatch release) {
+        disk.hold(release);
     }
 
     @Override
     public void accept(Envelope envelope) {
-        received.incrementAndGet();
-        if (failure != null || stopping || queued.get() >= capacity) {
-            dropped.incrementAndGet();
+        if (failure != null || stopping || disk.pendingBytes() > maxPendingBytes) {
+            refused.incrementAndGet();
             return;
         }
-        queued.incrementAndGet();
-        queue.offer(envelope);
+        synchronized (writer) {
+            if (stopping) {
+                refused.incrementAndGet();
+                return;
+            }
+            try {
+                writer.write(envelope);
+                writtenSoFar = ++written;
+            } catch (IOException | RuntimeException e) {
+                refused.incrementAndGet();
+                fail(e);
+            }
+        }
     }
 
-    private void run() {
-        List<Envelope> batch = new ArrayList<>(4096);
-        try {
-            while (true) {
-                // Polling, not a blocking take: a waiting consumer would make every offer() on the
-                // network thread signal it (a futex wake per datagram); parked, it costs nothing there.
-                for (Envelope e; batch.size() < 4096 && (e = queue.poll()) != null; ) {
-                    batch.add(e);
-                }
-                queued.addAndGet(-batch.size());
-                if (!batch.isEmpty()) {
-                    for (Envelope e : batch) {
-                        writer.write(e);
-                    }
-                    written.addAndGet(batch.size());
-                    batch.clear();
-                } else if (stopping) {
-                    break;
-                } else {
-                    LockSupport.parkNanos(IDLE_PARK_NANOS);
-                }
+    /** On the disk thread: writes an old open chunk, refreshes the byte count, picks up disk errors. */
+    private void tick() {
+        synchronized (writer) {
+            if (stopping) {
+                return;
+            }
+            try {
                 writer.flushIfOlderThan(MAX_CHUNK_AGE_NANOS);
                 bytes = writer.bytes();
+            } catch (IOException | RuntimeException e) {
+                fail(e);
             }
-        } catch (IOException | RuntimeException e) {
+        }
+        if (failure == null && disk.failure() != null) {
+            failure = disk.failure();
+            LOG.error("{} ({} envelopes written to {})", failure, writtenSoFar, writer.files());
+        }
+    }
+
+    private void fail(Exception e) {
+        if (failure == null) {
             failure = "recording stopped: " + e.getMessage();
-            LOG.error("{} ({} envelopes written to {})", failure, written.get(), writer.files());
+            LOG.error("{} ({} envelopes written to {})", failure, written, writer.files());
         }
     }
 
     public RecorderStats stats() {
-        return new RecorderStats(received.get(), written.get(), dropped.get(), bytes, writer.files(), failure);
+        long notTaken = refused.get();
+        long done = writtenSoFar;
+        return new RecorderStats(done + notTaken, done, notTaken, bytes, writer.files(), failure);
     }
 
-    /** Writes everything queued so far, the summary and the footer; waits for the writer thread. */
+    /** Writes the last chunk, the summary and the footer, and waits until the disk has it all. */
     @Override
     public void close() throws IOException {
-        stopping = true;
-        try {
-            thread.join();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        IOException closing = null;
+        synchronized (writer) {
+            if (stopping) {
+                return;
+            }
+            stopping = true;
+            try {
+                writer.close();
+                bytes = writer.bytes();
+            } catch (IOException e) {
+                closing = e;
+            }
         }
-        // envelopes that raced with stopping were accepted but never written: they count as dropped
-        for (Envelope e; (e = queue.poll()) != null; ) {
-            dropped.incrementAndGet();
+        disk.close();
+        if (failure == null && disk.failure() != null) {
+            failure = disk.failure();
         }
-        writer.close();
-        bytes = writer.bytes();
+        if (closing != null) {
+            throw closing;
+        }
     }
 }

@@ -1,7 +1,7 @@
 package touchline.transport;
 
 import io.netty.channel.ChannelHandlerContext;
-import io.netty.handler.codec.MessageToMessageDecoder;
+import io.netty.channel.ChannelInboundHandlerAdapter;
 import touchline.protocol.DatagramClass;
 import touchline.protocol.FrameCodec;
 import touchline.protocol.FrameResult;
@@ -9,30 +9,42 @@ import touchline.protocol.Framing;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageResult;
 
-import java.util.List;
-
 /**
  * Turns classified datagrams into Envelopes: FUmanoids frames are decoded (or become a
  * malformed Envelope with the reason), GameController packets pass as raw GC Envelopes, and
- * the robot's address and framing are learned for the way back.
+ * the robot's address and framing are learned for the way back. The end of the UDP
+ * pipeline: each Envelope goes straight to the stream (no further hop per datagram).
  */
-final class FumanoidDecoder extends MessageToMessageDecoder<ReceivedDatagram> {
+final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
 
     private final FrameCodec frames;
     private final MessageCodec messages;
     private final PeerTable peers;
     private final TrafficCounters counters;
+    private final EnvelopeSink sink;
 
-    FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters) {
+    FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters,
+                    EnvelopeSink sink) {
         this.frames = frames;
         this.messages = messages;
         this.peers = peers;
         this.counters = counters;
+        this.sink = sink;
     }
 
     @Override
-    protected void decode(ChannelHandlerContext ctx, ReceivedDatagram d, List<Object> out) {
-        out.add(toEnvelope(d));
+    public void channelRead(ChannelHandlerContext ctx, Object msg) {
+        if (msg instanceof ReceivedDatagram d) {
+            sink.accept(toEnvelope(d));
+        } else {
+            ctx.fireChannelRead(msg);
+        }
+    }
+
+    @Override
+    public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
+        // A decoder or sink failure must not close the channel; this datagram is lost, the next one is not.
+        org.slf4j.LoggerFactory.getLogger(FumanoidDecoder.class).warn("inbound pipeline: {}", cause.toString());
     }
 
     Envelope toEnvelope(ReceivedDatagram d) {

@@ -27,12 +27,17 @@ public final class PeerTable {
     }
 
     public void learn(int robotId, InetSocketAddress source, Framing framing) {
-        InetSocketAddress target = fixedRobotPort == 0 ? source : new InetSocketAddress(source.getAddress(), fixedRobotPort);
-        Peer now = new Peer(target, framing);
         Peer before = peers.get(robotId);
-        if (!now.equals(before)) {
-            peers.put(robotId, now);
+        if (before != null && before.framing() == framing && sameTarget(before.address(), source)) {
+            return; // the usual case, once per datagram: nothing to allocate
         }
+        InetSocketAddress target = fixedRobotPort == 0 ? source : new InetSocketAddress(source.getAddress(), fixedRobotPort);
+        peers.put(robotId, new Peer(target, framing));
+    }
+
+    private boolean sameTarget(InetSocketAddress known, InetSocketAddress source) {
+        return (fixedRobotPort != 0 || known.getPort() == source.getPort())
+                && java.util.Objects.equals(known.getAddress(), source.getAddress());
     }
 
     public Optional<Peer> peer(int robotId) {

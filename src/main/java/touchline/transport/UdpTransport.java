@@ -74,13 +74,11 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                 .handler(new ChannelInitializer<DatagramChannel>() {
                     @Override
                     protected void initChannel(DatagramChannel ch) {
-                        ch.pipeline().addLast("account", new DatagramAccounting(counters));
-                        ch.pipeline().addLast("demultiplex", new DatagramDemultiplexer(clock));
+                        ch.pipeline().addLast("intake", new DatagramIntake(counters, clock));
                         for (int i = 0; i < extraInbound.length; i++) {
                             ch.pipeline().addLast("extra" + i, extraInbound[i]);
                         }
-                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters));
-                        ch.pipeline().addLast("publish", new EnvelopePublisher(sink));
+                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters, sink));
                     }
                 });
         if (mmsg) {

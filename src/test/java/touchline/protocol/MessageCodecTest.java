@@ -40,6 +40,25 @@ class MessageCodecTest {
     }
 
     @Test
+    void anUnknownKindGetsItsNameOnceTheTeamFileIsLoaded() throws Exception {
+        MessageKinds kinds = new MessageKinds();
+        assertEquals("ext#1042", kinds.kindOf(1042));
+        assertSame(kinds.kindOf(3), kinds.kindOf(3), "one String per kind");
+        com.google.protobuf.DescriptorProtos.FileDescriptorProto team = com.google.protobuf.DescriptorProtos
+                .FileDescriptorProto.newBuilder().setName("team.proto").setPackage("team").addDependency("fumanoid.proto")
+                .addMessageType(com.google.protobuf.DescriptorProtos.DescriptorProto.newBuilder().setName("TeamBall"))
+                .addExtension(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.newBuilder().setName("teamBall")
+                        .setNumber(1042).setExtendee(".fumanoid.Message").setTypeName(".team.TeamBall")
+                        .setType(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.Type.TYPE_MESSAGE)
+                        .setLabel(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.Label.LABEL_OPTIONAL))
+                .build();
+        var file = com.google.protobuf.Descriptors.FileDescriptor.buildFrom(team,
+                new com.google.protobuf.Descriptors.FileDescriptor[]{Fumanoid.getDescriptor()});
+        assertTrue(kinds.add(file).isEmpty());
+        assertEquals("teamBall", kinds.kindOf(1042));
+    }
+
+    @Test
     void knownExtensionRendersAsText() {
         var decoded = assertInstanceOf(MessageResult.Decoded.class,
                 codec.decode(codec.optionRequest("demo.text", true).toByteArray()));

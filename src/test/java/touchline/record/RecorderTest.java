@@ -12,6 +12,7 @@ import java.util.List;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 class RecorderTest {
@@ -62,18 +63,34 @@ class RecorderTest {
     }
 
     @Test
-    void aFullQueueDropsAndCountsInsteadOfBlocking() throws Exception {
+    void aDiskThatFallsBehindMakesTheRecorderDropAndCountInsteadOfBlocking() throws Exception {
         List<Envelope> sent = RecordingFixture.team(3, 20);
         Path file = dir.resolve("drops.mcap");
-        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults(), 4);
-        sent.forEach(recorder::accept);
+        // tiny chunks: every envelope hands a chunk to the disk thread, which is held
+        EnvelopeWriter.Options options = new EnvelopeWriter.Options(0, 0, 64, List.of());
+        Recorder recorder = new Recorder(file, options, 4096);
+        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+        recorder.holdDisk(release);
+        sent.forEach(recorder::accept); // returns although nothing reaches the disk
+        RecorderStats during = recorder.stats();
+        assertTrue(during.dropped() > 0, "a disk that is 4 KB behind refuses envelopes");
+        assertTrue(during.written() > 0, "until then envelopes were taken");
+        release.countDown();
         recorder.close();
         RecorderStats stats = recorder.stats();
         assertEquals(sent.size(), stats.received());
         assertEquals(sent.size(), stats.written() + stats.dropped());
-        assertTrue(stats.dropped() > 0, "a four-slot queue cannot keep up with a burst");
+        assertNull(stats.failure());
         try (Recording r = Recording.open(file)) {
-            assertEquals(stats.written(), RecordingFixture.readAll(r).size());
+            List<Envelope> back = RecordingFixture.readAll(r);
+            assertEquals(stats.written(), back.size());
+            assertTrue(r.problems().isEmpty(), "a complete file: " + r.problems());
         }
+    }
+
+    @Test
+    void aFileThatCannotBeCreatedFailsAtOnce() {
+        Path missing = dir.resolve("no/such/dir/x.mcap");
+        assertThrows(java.io.IOException.class, () -> new Recorder(missing, EnvelopeWriter.Options.defaults()));
     }
 }

@@ -150,7 +150,7 @@ public final class RecordBenchmark implements Callable<Integer> {
 
     private static double recorderThroughput(List<Envelope> hour, Path file) throws IOException {
         long t0 = System.nanoTime();
-        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults(), hour.size());
+        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
         hour.forEach(recorder::accept);
         recorder.close();
         return recorder.stats().written() / ((System.nanoTime() - t0) / 1e9);
