@@ -87,6 +87,22 @@ class BadInputUiTest {
         String s = status(plot);
         assertTrue(s.contains("5000 NaN/infinite skipped"), s);
         assertTrue(s.contains("1 bursts decimated"), s);
+        int width = ui.fx(() -> (int) Math.ceil(plot.node().getLayoutBounds().getWidth()));
+        assertTrue(ui.fx(plot::drawnPoints) <= 4 * width, "at most four points per pixel column");
+    }
+
+    @Test
+    void aPlotWithNoNewDataDoesNotRedraw() throws Exception {
+        ui.fxRun(() -> ui.window.open("plot", new ViewSource(ROBOT, "calm.plot")));
+        PlotView plot = ui.view(PlotView.class);
+        publish(StoreEnvelopes.plot(now(), ROBOT, "calm.plot", "a", 1.0, 2.0, 3.0));
+        ui.await(10, () -> plot.points() == 3);
+        long draws = ui.fx(plot::draws);
+        long frame = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(10, () -> ui.window.pulse().frames() > frame + 10);
+        assertTrue(ui.fx(plot::draws) == draws, "redrawn without new data");
+        publish(StoreEnvelopes.plot(now(), ROBOT, "calm.plot", "a", 4.0));
+        ui.await(10, () -> plot.draws() > draws);
     }
 
     @Test

@@ -40,8 +40,7 @@ public final class DebugConsoleView implements View {
     private final ToggleButton pause = new ToggleButton("Pause");
     private final Label count = new Label();
     private final BorderPane root = new BorderPane();
-    private long seenSeq;
-    private boolean reload = true;
+    private final RingFollower<TextLine, String> follower = new RingFollower<>(lines.getItems(), SHOWN);
 
     public DebugConsoleView(ViewContext context) {
         this.context = context;
@@ -52,9 +51,13 @@ public final class DebugConsoleView implements View {
         lines.setFixedCellSize(22); // no per-cell measuring: appending stays cheap
         search.setPromptText("search");
         search.setId("debug-search");
-        robot.valueProperty().addListener((o, a, b) -> reload = true);
-        search.textProperty().addListener((o, a, b) -> reload = true);
-        pause.selectedProperty().addListener((o, a, b) -> reload = !b);
+        robot.valueProperty().addListener((o, a, b) -> follower.reload());
+        search.textProperty().addListener((o, a, b) -> follower.reload());
+        pause.selectedProperty().addListener((o, a, b) -> {
+            if (!b) {
+                follower.reload();
+            }
+        });
         Button copy = new Button("Copy");
         copy.setOnAction(e -> copy());
         Button clear = new Button("Clear");
@@ -95,36 +98,18 @@ public final class DebugConsoleView implements View {
         if (pause.isSelected()) {
             return;
         }
-        if (reload) {
-            lines.getItems().clear();
-            seenSeq = 0;
-            reload = false;
-        }
-        long v = context.stores().text().version();
-        if (v == seenSeq) {
-            return;
-        }
         String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);
-        List<SequencedRing.Entry<TextLine>> fresh = context.stores().text().since(seenSeq, robot.robotId(), SHOWN);
-        fresh.removeIf(e -> e.seq() > v); // read up to v only: later lines come next frame, once
-        seenSeq = v;
-        if (fresh.isEmpty()) {
+        boolean atEnd = lines.getItems().isEmpty() || lines.getSelectionModel().isEmpty();
+        int robotId = robot.robotId();
+        SequencedRing.Entry<TextLine> newest = follower.follow(context.stores().text().version(),
+                (after, max) -> context.stores().text().since(after, robotId, max), l -> {
+                    String s = format(l);
+                    return needle.isEmpty() || s.toLowerCase(Locale.ROOT).contains(needle) ? s : null;
+                });
+        if (newest == null) {
             return;
         }
-        List<String> add = new java.util.ArrayList<>(fresh.size());
-        for (SequencedRing.Entry<TextLine> e : fresh) {
-            String s = format(e.value());
-            if (needle.isEmpty() || s.toLowerCase(Locale.ROOT).contains(needle)) {
-                add.add(s);
-            }
-        }
-        frame.shown(fresh.get(fresh.size() - 1).value().timeMicros());
-        boolean atEnd = lines.getItems().isEmpty() || lines.getSelectionModel().isEmpty();
-        lines.getItems().addAll(add);
-        int over = lines.getItems().size() - SHOWN;
-        if (over > 0) {
-            lines.getItems().remove(0, over);
-        }
+        frame.shown(newest.value().timeMicros());
         if (atEnd && !lines.getItems().isEmpty()) {
             lines.scrollTo(lines.getItems().size() - 1);
         }

@@ -74,16 +74,19 @@ public final class FieldView extends SourcedView {
         double scale = Math.min(w / (FIELD_LENGTH + 2 * BORDER), h / (FIELD_WIDTH + 2 * BORDER));
         double cx = w / 2;
         double cy = h / 2;
+        // straight lines as filled rectangles: a stroke costs its whole bounding box in software
+        g.setFill(Color.WHITE);
+        CrispLines.outline(g, cx - FIELD_LENGTH / 2 * scale - 1, cy - FIELD_WIDTH / 2 * scale - 1,
+                FIELD_LENGTH * scale + 2, FIELD_WIDTH * scale + 2, 2);
+        g.fillRect(Math.round(cx) - 1, Math.round(cy - FIELD_WIDTH / 2 * scale), 2, Math.round(FIELD_WIDTH * scale));
         g.setStroke(Color.WHITE);
         g.setLineWidth(2);
-        g.strokeRect(cx - FIELD_LENGTH / 2 * scale, cy - FIELD_WIDTH / 2 * scale, FIELD_LENGTH * scale, FIELD_WIDTH * scale);
-        g.strokeLine(cx, cy - FIELD_WIDTH / 2 * scale, cx, cy + FIELD_WIDTH / 2 * scale);
         g.strokeOval(cx - 750 * scale, cy - 750 * scale, 1500 * scale, 1500 * scale);
         double goal = 2600 * scale;
-        g.setStroke(Color.GOLD);
-        g.strokeRect(cx + FIELD_LENGTH / 2 * scale, cy - goal / 2, 600 * scale, goal);
-        g.setStroke(Color.DODGERBLUE);
-        g.strokeRect(cx - FIELD_LENGTH / 2 * scale - 600 * scale, cy - goal / 2, 600 * scale, goal);
+        g.setFill(Color.GOLD);
+        CrispLines.outline(g, cx + FIELD_LENGTH / 2 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
+        g.setFill(Color.DODGERBLUE);
+        CrispLines.outline(g, cx - FIELD_LENGTH / 2 * scale - 600 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
         int drawn = 0;
         int noPosition = 0;
         for (RobotSnapshot r : robots) {

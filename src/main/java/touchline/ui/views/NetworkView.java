@@ -23,7 +23,6 @@ import touchline.ui.View;
 import touchline.ui.ViewContext;
 
 import java.time.Instant;
-import java.util.List;
 import java.util.Locale;
 import java.util.function.Function;
 import java.util.function.Predicate;
@@ -49,8 +48,7 @@ public final class NetworkView implements View {
     private final BorderPane root = new BorderPane();
     private final MessageText messageText = new MessageText();
     private final Hex hexDump = new Hex();
-    private long seenSeq;
-    private boolean reload = true;
+    private final RingFollower<Envelope, Envelope> follower = new RingFollower<>(table.getItems(), SHOWN);
 
     public NetworkView(ViewContext context) {
         this.context = context;
@@ -68,10 +66,14 @@ public final class NetworkView implements View {
         direction.getItems().addAll("in and out", "in", "out");
         direction.getSelectionModel().select(0);
         kind.setPromptText("kind (e.g. status)");
-        robot.valueProperty().addListener((o, a, b) -> reload = true);
-        direction.valueProperty().addListener((o, a, b) -> reload = true);
-        kind.textProperty().addListener((o, a, b) -> reload = true);
-        pause.selectedProperty().addListener((o, a, b) -> reload = !b);
+        robot.valueProperty().addListener((o, a, b) -> follower.reload());
+        direction.valueProperty().addListener((o, a, b) -> follower.reload());
+        kind.textProperty().addListener((o, a, b) -> follower.reload());
+        pause.selectedProperty().addListener((o, a, b) -> {
+            if (!b) {
+                follower.reload();
+            }
+        });
         text.setEditable(false);
         hex.setEditable(false);
         text.setId("network-text");
@@ -133,34 +135,14 @@ public final class NetworkView implements View {
         if (pause.isSelected()) {
             return;
         }
-        if (reload) {
-            table.getItems().clear();
-            seenSeq = 0;
-            reload = false;
-        }
-        long v = context.stores().network().version();
-        if (v == seenSeq) {
-            return;
-        }
-        // up to v only: what arrives while we read is next frame's, not read twice
         Predicate<Envelope> f = filter();
-        List<SequencedRing.Entry<Envelope>> fresh = context.stores().network().since(seenSeq, SHOWN, f);
-        fresh.removeIf(e -> e.seq() > v);
-        seenSeq = v;
-        if (fresh.isEmpty()) {
+        boolean follow = table.getSelectionModel().isEmpty();
+        SequencedRing.Entry<Envelope> newest = follower.follow(context.stores().network().version(),
+                (after, max) -> context.stores().network().since(after, max, f), e -> e);
+        if (newest == null) {
             return;
         }
-        List<Envelope> add = new java.util.ArrayList<>(fresh.size());
-        for (SequencedRing.Entry<Envelope> e : fresh) {
-            add.add(e.value());
-        }
-        frame.shown(add.get(add.size() - 1).timeMicros());
-        boolean follow = table.getSelectionModel().isEmpty();
-        table.getItems().addAll(add);
-        int over = table.getItems().size() - SHOWN;
-        if (over > 0) {
-            table.getItems().remove(0, over);
-        }
+        frame.shown(newest.value().timeMicros());
         if (follow) {
             table.scrollTo(table.getItems().size() - 1); // follow the newest until the user picks a row
         }

@@ -93,20 +93,24 @@ public final class RegionOverlayView extends SourcedView {
                 Color c = ColorClasses.color(r.getColorClass());
                 g.setFill(c.deriveColor(0, 1, 1, 0.35));
                 g.fillRect(ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale);
-                g.setStroke(Color.RED);
-                g.setLineWidth(2);
-                g.setLineDashes(wasClipped ? new double[] {6, 4} : null);
-                g.strokeRect(ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale);
-                g.setLineDashes(null);
+                if (wasClipped) {
+                    g.setStroke(Color.RED);
+                    g.setLineWidth(2);
+                    g.setLineDashes(6, 4);
+                    g.strokeRect(ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale);
+                    g.setLineDashes(null);
+                } else {
+                    g.setFill(Color.RED);
+                    CrispLines.outline(g, ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale, 2);
+                }
                 if (wasClipped) {
                     clipped++;
                 }
                 shown++;
             }
         }
-        g.setStroke(Color.DODGERBLUE);
-        g.setLineWidth(2);
-        g.strokeRect(ox, oy, fw * scale, fh * scale);
+        g.setFill(Color.DODGERBLUE);
+        CrispLines.outline(g, ox - 1, oy - 1, fw * scale + 2, fh * scale + 2, 2);
         drawLegend(g, classes, h - legend + 4, w);
         StringBuilder s = new StringBuilder("frame " + fw + "×" + fh + " · " + shown + " regions");
         if (clipped > 0) {
@@ -151,13 +155,12 @@ public final class RegionOverlayView extends SourcedView {
             g.setFill(ColorClasses.color(c).deriveColor(0, 1, 1, 0.3));
             g.fillRect(ox + (i % cols) * cw, oy + (i / cols) * ch, cw, ch);
         }
-        g.setStroke(Color.gray(0.6, 0.4));
-        g.setLineWidth(0.5);
+        g.setFill(Color.gray(0.6, 0.25));
         for (int c = 1; c < cols; c++) {
-            g.strokeLine(ox + c * cw, oy, ox + c * cw, oy + fh * scale);
+            CrispLines.vertical(g, ox + c * cw, oy, oy + fh * scale);
         }
         for (int r = 1; r < rows; r++) {
-            g.strokeLine(ox, oy + r * ch, ox + fw * scale, oy + r * ch);
+            CrispLines.horizontal(g, ox, ox + fw * scale, oy + r * ch);
         }
         return n < cols * rows ? " (" + (cols * rows - n) + " cells missing)" : "";
     }

@@ -54,8 +54,9 @@ public final class RelativePositionsView extends SourcedView {
             g.strokeOval(cx - r, cy - r, 2 * r, 2 * r);
             g.fillText(m + " m", cx + r + 2, cy - 2);
         }
-        g.strokeLine(cx, 0, cx, h);
-        g.strokeLine(0, cy, w, cy);
+        g.setFill(Color.gray(0.45));
+        CrispLines.vertical(g, cx, 0, h);
+        CrispLines.horizontal(g, 0, w, cy);
         g.setFill(Color.LIGHTSKYBLUE);
         g.fillPolygon(new double[] {cx, cx - 8, cx + 8}, new double[] {cy - 14, cy + 8, cy + 8}, 3);
         for (Fumanoid.RelativeObject o : p.getObjectsList()) {

@@ -9,7 +9,6 @@ import touchline.ui.SourcedView;
 import touchline.ui.ViewContext;
 import touchline.ui.ViewSource;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 
@@ -21,7 +20,7 @@ public final class TextView extends SourcedView {
 
     static final int LINES = 500;
     private final ListView<String> lines = new ListView<>();
-    private long seenSeq;
+    private final RingFollower<TextLine, String> follower = new RingFollower<>(lines.getItems(), LINES);
     private ViewSource seenSource = ViewSource.NONE;
 
     public TextView(ViewContext context, ViewSource source) {
@@ -42,23 +41,12 @@ public final class TextView extends SourcedView {
         ViewSource s = source();
         if (!s.equals(seenSource)) {
             seenSource = s;
-            seenSeq = 0;
-            lines.getItems().clear();
+            follower.reload();
         }
-        List<String> add = new ArrayList<>();
-        long v = context.stores().text().version();
-        for (SequencedRing.Entry<TextLine> e : context.stores().text().since(seenSeq, s.robotId(), LINES)) {
-            if (e.seq() <= v && e.value().option().equals(s.option())) {
-                add.add(DebugConsoleView.format(e.value()));
-            }
-        }
-        seenSeq = v;
-        if (!add.isEmpty()) {
-            lines.getItems().addAll(add);
-            int over = lines.getItems().size() - LINES;
-            if (over > 0) {
-                lines.getItems().remove(0, over);
-            }
+        SequencedRing.Entry<TextLine> newest = follower.follow(context.stores().text().version(),
+                (after, max) -> context.stores().text().since(after, s.robotId(), max),
+                l -> l.option().equals(s.option()) ? DebugConsoleView.format(l) : null);
+        if (newest != null && follower.added() > 0) {
             lines.scrollTo(lines.getItems().size() - 1);
         }
         return lines.getItems().size() + " lines";

@@ -1,0 +1,65 @@
+package touchline.ui.views;
+
+import javafx.collections.FXCollections;
+import javafx.collections.ObservableList;
+import org.junit.jupiter.api.Test;
+import touchline.model.store.SequencedRing;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+class RingFollowerTest {
+
+    private final SequencedRing<String> ring = new SequencedRing<>(100);
+    private final ObservableList<String> items = FXCollections.observableArrayList();
+    private final RingFollower<String, String> follower = new RingFollower<>(items, 5);
+    private int reads;
+
+    private SequencedRing.Entry<String> follow() {
+        return follower.follow(ring.version(), (after, max) -> {
+            reads++;
+            return ring.since(after, max);
+        }, s -> s.startsWith("skip") ? null : s.toUpperCase());
+    }
+
+    @Test
+    void appendsOnlyWhatIsNewAndReadsNothingWhenNothingChanged() {
+        ring.append("a");
+        ring.append("b");
+        assertEquals("b", follow().value());
+        assertEquals(List.of("A", "B"), items);
+        int before = reads;
+        assertNull(follow(), "nothing new");
+        assertEquals(before, reads, "no read without a new version");
+        ring.append("c");
+        follow();
+        assertEquals(List.of("A", "B", "C"), items);
+        assertEquals(1, follower.added());
+    }
+
+    @Test
+    void keepsTheNewestShownItemsAndSkipsUnmappedOnes() {
+        for (int i = 0; i < 8; i++) {
+            ring.append("x" + i);
+        }
+        ring.append("skip me");
+        SequencedRing.Entry<String> newest = follow();
+        assertEquals("skip me", newest.value(), "the newest read is reported even when not shown");
+        assertEquals(List.of("X4", "X5", "X6", "X7"), items);
+    }
+
+    @Test
+    void reloadStartsAgainFromWhatTheRingHolds() {
+        ring.append("a");
+        follow();
+        items.clear(); // e.g. the user pressed Clear
+        ring.append("b");
+        follow();
+        assertEquals(List.of("B"), items);
+        follower.reload();
+        follow();
+        assertEquals(List.of("A", "B"), items);
+    }
+}
