@@ -66,7 +66,7 @@ public final class RecordBenchmark implements Callable<Integer> {
                 writer, baseline, writer / baseline, Files.size(file) / 1e6);
 
         double recorder = recorderThroughput(hour, dir.resolve("bench-recorder.mcap"));
-        System.out.printf("recorder (queue + writer thread, end to end): %.0f messages/s%n", recorder);
+        System.out.printf("recorder (encoding on the publishing thread, chunks to the disk thread, until the file is closed): %.0f messages/s%n", recorder);
 
         double[] overhead = publishOverhead(hour, dir.resolve("bench-overhead.mcap"));
         System.out.printf("publishing thread: %.0f ns/envelope bus alone, %.0f ns with the recorder subscribed "
