@@ -1,7 +1,5 @@
 package touchline.model;
 
-import com.google.protobuf.Descriptors.FieldDescriptor;
-import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
 import touchline.protocol.MessageCodec;
 import touchline.transport.Direction;
@@ -34,6 +32,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
     private final RobotCommands commands;
     private final MessageCodec codec;
+    private final touchline.protocol.DebugData debugData;
     private final MicrosClock clock;
     private final Map<Integer, PerRobot> robots = new HashMap<>();
     private long version;
@@ -53,6 +52,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     public DebugOptionSession(RobotCommands commands, MessageCodec codec, MicrosClock clock) {
         this.commands = commands;
         this.codec = codec;
+        this.debugData = new touchline.protocol.DebugData(codec.kinds());
         this.clock = clock;
     }
 
@@ -75,16 +75,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
     /** The {@code option} field every data message carries (teams' own types too, by convention). */
     private String optionNameOf(Envelope e, Fumanoid.Message m) {
-        FieldDescriptor ext = codec.kinds().byName(e.kind()).orElse(null);
-        if (ext == null || ext.getJavaType() != FieldDescriptor.JavaType.MESSAGE || !m.hasField(ext)) {
-            return null;
-        }
-        Message data = (Message) m.getField(ext);
-        FieldDescriptor name = data.getDescriptorForType().findFieldByName("option");
-        if (name != null && name.getType() == FieldDescriptor.Type.STRING && data.hasField(name)) {
-            return (String) data.getField(name);
-        }
-        return null;
+        return debugData.optionOf(e.kind(), m);
     }
 
     private void onList(int robotId, Fumanoid.DebugOptionList list) {

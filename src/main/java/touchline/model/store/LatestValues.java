@@ -3,6 +3,7 @@ package touchline.model.store;
 import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
+import touchline.protocol.DebugData;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
@@ -33,24 +34,28 @@ public final class LatestValues implements EnvelopeSink {
         if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
             return;
         }
+        Message own = DebugData.ownDataOf(e.kind(), m);
+        if (own != null) {
+            keep(e, own);
+            return;
+        }
+        if (DebugData.isOwnKind(e.kind())) {
+            return; // status, option lists and requests: not debug data
+        }
+        // a team's own type: found through reflection (rare, so its cost does not matter)
         for (Map.Entry<FieldDescriptor, Object> f : m.getAllFields().entrySet()) {
             if (f.getKey().isExtension() && f.getValue() instanceof Message data) {
-                String option = optionOf(data);
-                if (option != null) {
-                    latest.put(new Key(e.robotId(), option),
-                            new Latest(e.robotId(), option, e.kind(), data, e.timeMicros(), version.incrementAndGet()));
-                }
+                keep(e, data);
             }
         }
     }
 
-    /** The {@code option} string field that every data message carries by convention. */
-    static String optionOf(Message data) {
-        FieldDescriptor name = data.getDescriptorForType().findFieldByName("option");
-        if (name != null && name.getType() == FieldDescriptor.Type.STRING && data.hasField(name)) {
-            return (String) data.getField(name);
+    private void keep(Envelope e, Message data) {
+        String option = DebugData.optionOf(data);
+        if (option != null) {
+            latest.put(new Key(e.robotId(), option),
+                    new Latest(e.robotId(), option, e.kind(), data, e.timeMicros(), version.incrementAndGet()));
         }
-        return null;
     }
 
     public Optional<Latest> get(int robotId, String option) {
