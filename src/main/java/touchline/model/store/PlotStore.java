@@ -59,6 +59,21 @@ public final class PlotStore implements EnvelopeSink {
     synchronized void add(int robotId, Fumanoid.DebugPlot p, long timeMicros) {
         Plot plot = plots.computeIfAbsent(new LatestValues.Key(robotId, p.getOption()), k -> new Plot());
         double x = (timeMicros - originMicros) / 1e6;
+        if (oneSamplePerSeries(p)) {
+            // the usual message (one value per series): straight into the rings, nothing allocated
+            for (Fumanoid.PlotSample s : p.getSamplesList()) {
+                double v = s.getValue();
+                if (!Double.isFinite(v)) {
+                    plot.skipped++;
+                    continue;
+                }
+                plot.series.computeIfAbsent(s.getSeries(), k -> new SeriesRing(pointsPerSeries)).add(x, v);
+            }
+            plot.version++;
+            plot.lastTimeMicros = timeMicros;
+            version++;
+            return;
+        }
         Map<String, List<Double>> bySeries = new LinkedHashMap<>();
         for (Fumanoid.PlotSample s : p.getSamplesList()) {
             double v = s.getValue();
@@ -88,6 +103,22 @@ public final class PlotStore implements EnvelopeSink {
         plot.version++;
         plot.lastTimeMicros = timeMicros;
         version++;
+    }
+
+    private static boolean oneSamplePerSeries(Fumanoid.DebugPlot p) {
+        int n = p.getSamplesCount();
+        if (n > 16) {
+            return false; // a burst: grouped and spread over time below
+        }
+        for (int i = 1; i < n; i++) {
+            String name = p.getSamples(i).getSeries();
+            for (int j = 0; j < i; j++) {
+                if (name.equals(p.getSamples(j).getSeries())) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     /** Min and max of each of BURST_LIMIT/2 buckets, spread evenly between the previous point and now. */
