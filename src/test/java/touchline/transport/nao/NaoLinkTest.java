@@ -192,4 +192,78 @@ class NaoLinkTest {
         assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.direction() == Direction.IN
                 && e.kind().equals("Test.echo") && e.message() != null));
     }
+
+    @Test
+    void anIdleLinkSendsOnTheCallersThreadWithoutAHandOff() throws Exception {
+        List<String> sendingThreads = new CopyOnWriteArrayList<>();
+        robot = new FakeNaoRobot(0);
+        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.defaults(), e -> {
+            if (e.direction() == Direction.OUT) {
+                sendingThreads.add(Thread.currentThread().getName());
+            }
+        });
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        for (int i = 0; i < 20; i++) {
+            assertEquals(new CallOutcome.Value((long) i), get(link.call("Test", "echo", i)));
+        }
+        String me = Thread.currentThread().getName();
+        long onCaller = sendingThreads.stream().filter(me::equals).count();
+        // The link thread holds the lock only briefly (after a reply, a heartbeat, a timer), so
+        // nearly every call finds it free; before, every request went through the link thread.
+        assertTrue(onCaller >= 10, "only " + onCaller + " of 20 requests were sent on the caller's thread: " + sendingThreads);
+    }
+
+    @Test
+    void callsFromManyThreadsAtOnceEachGetTheirOwnReply() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        int threads = 6;
+        int calls = 150;
+        List<CompletableFuture<Integer>> workers = new java.util.ArrayList<>();
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(threads);
+        try {
+            for (int t = 0; t < threads; t++) {
+                int base = t * 1000;
+                workers.add(CompletableFuture.supplyAsync(() -> {
+                    int ok = 0;
+                    for (int i = 0; i < calls; i++) {
+                        try {
+                            // A lost wake-up (a reply whose signal a sending caller consumed) would
+                            // show up here as a 10 s timeout.
+                            if (get(link.call("Test", "echo", base + i)).equals(new CallOutcome.Value((long) (base + i)))) {
+                                ok++;
+                            }
+                        } catch (Exception e) {
+                            throw new IllegalStateException(e);
+                        }
+                    }
+                    return ok;
+                }, pool));
+            }
+            // Calls made from completion callbacks (on the link thread) are queued, not re-entered.
+            SequenceOutcome sequence = link.sequence(java.util.Collections.nCopies(50, NaoCall.of("Test", "echo", "s")))
+                    .get(20, TimeUnit.SECONDS);
+            assertTrue(sequence.ok(), sequence.toString());
+            assertEquals(50, sequence.outcomes().size());
+            for (CompletableFuture<Integer> w : workers) {
+                assertEquals(calls, w.get(60, TimeUnit.SECONDS));
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        assertEquals(threads * calls + 50, link.stats().replies());
+    }
+
+    @Test
+    void aShortTimeoutOfACallSentByTheCallerFiresOnTime() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        get(link.call("Test", "echo", "settle"));
+        Thread.sleep(20); // the link thread is now waiting for up to 200 ms
+        long t0 = System.nanoTime();
+        CallOutcome outcome = get(link.call(NaoCall.of("Test", "sleep", 1000), 50));
+        long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
+        assertInstanceOf(CallOutcome.TimedOut.class, outcome);
+        // The caller wakes the link thread when its call's deadline is earlier than the thread's
+        // next wake-up; without that the timeout would fire after about 180 ms.
+        assertTrue(tookMs < 150, "a 50 ms timeout fired after " + tookMs + " ms");
+    }
 }
