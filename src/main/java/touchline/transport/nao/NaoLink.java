@@ -118,6 +118,8 @@ public final class NaoLink implements AutoCloseable {
     private boolean socketsReplaced;
     // Link thread only.
     private Selector selector;
+    private SelectionKey dealerKey;
+    private SelectionKey monitorKey;
     private long nextRequestId = 1;
     private final Map<Long, Pending> pending = new HashMap<>();
     private final List<Submission> awaitingOnline = new ArrayList<>();
@@ -432,8 +434,14 @@ public final class NaoLink implements AutoCloseable {
 
     /** (Re)registers the sockets' signalling descriptors after they were opened. Link thread, under lock. */
     private void registerSockets() throws IOException {
-        dealer.getFD().register(selector, SelectionKey.OP_READ);
-        monitor.getFD().register(selector, SelectionKey.OP_READ);
+        // A replaced socket's descriptor is closed later, by JeroMQ's reaper thread: drop our
+        // keys now rather than select on a dying descriptor until then.
+        if (dealerKey != null) {
+            dealerKey.cancel();
+            monitorKey.cancel();
+        }
+        dealerKey = dealer.getFD().register(selector, SelectionKey.OP_READ);
+        monitorKey = monitor.getFD().register(selector, SelectionKey.OP_READ);
         socketsReplaced = false;
     }
 

@@ -113,6 +113,20 @@ class NaoLinkTest {
                 "the call made while the robot was down must not have run after it came back");
         assertTrue(robot.executedNames().stream().noneMatch(n -> n.startsWith("ALMemory.insertData")));
         assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.LINK_EVENT && e.kind().equals("nao.lost")));
+        assertLinkThreadIdles(port);
+    }
+
+    /** The link thread waits in a selector: idle, it must not spin (e.g. on a replaced socket's descriptor). */
+    private static void assertLinkThreadIdles(int port) throws Exception {
+        java.lang.management.ThreadMXBean threads = java.lang.management.ManagementFactory.getThreadMXBean();
+        long id = Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().equals("nao-link-127.0.0.1:" + port)).findFirst().orElseThrow().getId();
+        long cpu0 = threads.getThreadCpuTime(id);
+        long wall0 = System.nanoTime();
+        Thread.sleep(1000);
+        long cpuMs = TimeUnit.NANOSECONDS.toMillis(threads.getThreadCpuTime(id) - cpu0);
+        long wallMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - wall0);
+        assertTrue(cpuMs < wallMs / 10, "idle link thread used " + cpuMs + " ms of CPU in " + wallMs + " ms");
     }
 
     @Test
