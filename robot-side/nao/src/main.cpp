@@ -1,12 +1,16 @@
 // touchline-nao-sim: the NAO robot side (RPC module + camera server) against the
 // simulated NAOqi broker. Prints "rpc listening on port <p>" and "camera listening on
-// port <p>" on stdout once both are bound; stops cleanly on SIGTERM/SIGINT.
+// port <p>" on stdout once both are bound; stops cleanly on SIGTERM/SIGINT. With
+// --echo-port it also serves a raw ROUTER echo (the round-trip benchmark's baseline) and
+// prints "echo listening on port <p>" first.
 #include <csignal>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "camera_server.h"
+#include "echo_server.h"
 #include "log.h"
 #include "rpc_server.h"
 #include "simulated_broker.h"
@@ -15,8 +19,9 @@ namespace {
 
 void usage(std::ostream& out) {
   out << "usage: touchline-nao-sim [--rpc-port 5555] [--cam-port 5556] [--workers 4]\n"
-         "                         [--bind 127.0.0.1]\n"
-         "  port 0 lets the OS choose; the chosen ports are printed on stdout.\n";
+         "                         [--bind 127.0.0.1] [--echo-port P]\n"
+         "  port 0 lets the OS choose; the chosen ports are printed on stdout.\n"
+         "  --echo-port also serves a raw ROUTER echo (benchmark baseline); off by default.\n";
 }
 
 bool parseInt(const std::string& text, int min, int max, int& out) {
@@ -37,6 +42,7 @@ int main(int argc, char** argv) {
   using namespace touchline::nao;
   RpcOptions rpc;
   CameraOptions cam;
+  int echoPort = -1;  // off
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -52,6 +58,7 @@ int main(int argc, char** argv) {
     bool ok = true;
     if (arg == "--rpc-port") ok = parseInt(value, 0, 65535, rpc.port);
     else if (arg == "--cam-port") ok = parseInt(value, 0, 65535, cam.port);
+    else if (arg == "--echo-port") ok = parseInt(value, 0, 65535, echoPort);
     else if (arg == "--workers") ok = parseInt(value, 1, 256, rpc.workers);
     else if (arg == "--bind") rpc.bind = cam.bind = value;
     else {
@@ -73,6 +80,11 @@ int main(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
 
   try {
+    std::unique_ptr<EchoServer> echo;
+    if (echoPort >= 0) {
+      echo = std::make_unique<EchoServer>(rpc.bind, echoPort);
+      std::cout << "echo listening on port " << echo->port() << "\n";
+    }
     RpcCounters counters;
     SimulatedBroker broker(1.0, &counters);
     RpcServer rpcServer(broker, counters, rpc);
@@ -84,6 +96,7 @@ int main(int argc, char** argv) {
     logLine(std::string("stopping on ") + strsignal(signal));
     rpcServer.stop();
     cameraServer.stop();
+    if (echo) echo->stop();
   } catch (const std::exception& e) {
     std::cerr << "touchline-nao-sim: " << e.what() << std::endl;
     return 1;

@@ -23,6 +23,17 @@ class NaoqiBroker {
 
   virtual std::vector<std::string> moduleNames() const = 0;
 
+  // True if module.method is known to return within microseconds: it never waits for robot
+  // time or for another call (getters, non-blocking setters, stop commands), and a name the
+  // broker does not know fails at once. The RPC module runs such calls on its frontend
+  // thread instead of handing them to a worker. Must be thread-safe and cheap. The default,
+  // false, sends every call to a worker (always correct, one thread hand-off slower).
+  virtual bool isQuick(const std::string& module, const std::string& method) const {
+    (void)module;
+    (void)method;
+    return false;
+  }
+
   // Wakes blocking calls so worker threads can be joined at shutdown.
   virtual void shutdown() {}
 };

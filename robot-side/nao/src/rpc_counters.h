@@ -14,6 +14,8 @@ struct RpcCounters {
   std::atomic<std::uint64_t> malformedPayloads{0};   // not a HAWActorRPCRequest / too deep
   std::atomic<std::uint64_t> oversize{0};            // payload above the request limit
   std::atomic<std::uint64_t> deadlinePassed{0};      // late requests not executed
+  std::atomic<std::uint64_t> inlineCalls{0};         // quick calls run on the frontend thread
+  std::atomic<std::uint64_t> queuedCalls{0};         // calls that waited for a free worker
 };
 
 }  // namespace touchline::nao

@@ -50,13 +50,17 @@ void RpcServer::stop() {
 }
 
 void RpcServer::brokerLoop() {
-  std::deque<zmq::message_t> freeWorkers;  // worker identities
+  std::deque<zmq::message_t> freeWorkers;             // worker identities
+  std::deque<std::vector<zmq::message_t>> waiting;    // calls for a worker while none is free
+  std::size_t waitingBytes = 0;
   while (!stopping_) {
     socketLoopStep("rpc broker", [&] {
       zmq::pollitem_t items[] = {{backend_.handle(), 0, ZMQ_POLLIN, 0},
                                  {frontend_.handle(), 0, ZMQ_POLLIN, 0}};
-      // Work pulling: the frontend is polled only while some worker is free.
-      zmq::poll(items, freeWorkers.empty() ? 1 : 2, kPollPeriod);
+      // The frontend is read whenever the waiting queue has room, so a quick call is answered
+      // even while every worker is busy; a full queue pushes back into the socket.
+      bool room = waiting.size() < kMaxWaitingCalls && waitingBytes < kMaxWaitingBytes;
+      zmq::poll(items, room ? 2 : 1, kPollPeriod);
 
       if (items[0].revents & ZMQ_POLLIN) {
         std::vector<zmq::message_t> frames;
@@ -72,34 +76,64 @@ void RpcServer::brokerLoop() {
         }
       }
 
-      if (!freeWorkers.empty() && (items[1].revents & ZMQ_POLLIN)) {
+      if (items[1].revents & ZMQ_POLLIN) {
         std::vector<zmq::message_t> frames;
         if (!zmq::recv_multipart(frontend_, std::back_inserter(frames))) return;
-        if (!validEnvelope(frames)) {
-          ++counters_.malformedEnvelopes;
-          logLine("rpc: dropped message with " + std::to_string(frames.size()) +
-                  " frames (expected [requestId][\"\"][payload])");
-          return;
+        if (admit(frames) && !answerInline(frames)) {
+          waitingBytes += frames.back().size();
+          waiting.push_back(std::move(frames));
+          if (freeWorkers.empty()) ++counters_.queuedCalls;
         }
-        ++counters_.requests;
-        if (frames.back().size() > options_.maxRequestBytes) {
-          ++counters_.oversize;
-          logLine("rpc: request of " + std::to_string(frames.back().size()) + " bytes rejected");
-          sendReply(frontend_, frames,
-                    errorReply("request of " + std::to_string(frames.back().size()) +
-                               " bytes exceeds the limit of " +
-                               std::to_string(options_.maxRequestBytes) + " bytes"));
-          return;
-        }
+      }
+
+      // Work pulling: a call goes only to a worker that announced itself free.
+      while (!freeWorkers.empty() && !waiting.empty()) {
+        std::vector<zmq::message_t>& frames = waiting.front();
+        waitingBytes -= frames.back().size();
         backend_.send(freeWorkers.front(), zmq::send_flags::sndmore);
         freeWorkers.pop_front();
         for (std::size_t i = 0; i < frames.size(); ++i) {
           backend_.send(frames[i], i + 1 < frames.size() ? zmq::send_flags::sndmore
                                                          : zmq::send_flags::none);
         }
+        waiting.pop_front();
       }
     });
   }
+}
+
+bool RpcServer::admit(std::vector<zmq::message_t>& frames) {
+  if (!validEnvelope(frames)) {
+    ++counters_.malformedEnvelopes;
+    logLine("rpc: dropped message with " + std::to_string(frames.size()) +
+            " frames (expected [requestId][\"\"][payload])");
+    return false;
+  }
+  ++counters_.requests;
+  if (frames.back().size() > options_.maxRequestBytes) {
+    ++counters_.oversize;
+    logLine("rpc: request of " + std::to_string(frames.back().size()) + " bytes rejected");
+    sendReply(frontend_, frames,
+              errorReply("request of " + std::to_string(frames.back().size()) +
+                         " bytes exceeds the limit of " + std::to_string(options_.maxRequestBytes) +
+                         " bytes"));
+    return false;
+  }
+  return true;
+}
+
+bool RpcServer::answerInline(std::vector<zmq::message_t>& frames) {
+  // Large requests are not even parsed here: parsing megabytes would hold up quick calls.
+  if (frames.back().size() > kMaxInlineRequestBytes) return false;
+  ::nao::HAWActorRPCRequest request;
+  if (auto error = parseRequest(frames.back().to_string(), request)) {
+    sendReply(frontend_, frames, badRequest(*error));
+    return true;
+  }
+  if (!broker_.isQuick(request.module(), request.method())) return false;
+  ++counters_.inlineCalls;
+  sendReply(frontend_, frames, execute(request));
+  return true;
 }
 
 void RpcServer::workerLoop() {
@@ -127,13 +161,19 @@ std::string RpcServer::errorReply(const std::string& message) {
   return response.SerializeAsString();
 }
 
+std::string RpcServer::badRequest(const std::string& error) {
+  ++counters_.malformedPayloads;
+  logLine("rpc: bad request: " + error);
+  return errorReply("bad request: " + error);
+}
+
 std::string RpcServer::handle(const std::string& payload) {
   ::nao::HAWActorRPCRequest request;
-  if (auto error = parseRequest(payload, request)) {
-    ++counters_.malformedPayloads;
-    logLine("rpc: bad request: " + *error);
-    return errorReply("bad request: " + *error);
-  }
+  if (auto error = parseRequest(payload, request)) return badRequest(*error);
+  return execute(request);
+}
+
+std::string RpcServer::execute(::nao::HAWActorRPCRequest& request) {
   std::string name = request.module() + "." + request.method();
   if (request.has_deadlinemillis() && nowMillis() > request.deadlinemillis()) {
     // Late calls are answered with an error, never executed: a walk command that arrives

@@ -1,9 +1,12 @@
 // The robot-side RPC module: a ZeroMQ ROUTER frontend and the ZeroMQ guide's
-// load-balancing broker in front of N worker threads. A worker announces READY, the broker
-// keeps a queue of free workers and reads the frontend only while one is free, so a short
-// call never waits behind a long one while any worker is idle (round robin would queue it).
-// Workers parse HAWActorRPCRequest, drop late requests, and dispatch module.method(params)
-// into a NaoqiBroker.
+// load-balancing broker in front of N worker threads. Quick calls (NaoqiBroker::isQuick:
+// getters, non-blocking setters, stop commands, unknown names) run on the broker thread
+// itself, answered without any thread hand-off. Every other call goes to a free worker: a
+// worker announces READY, the broker keeps a queue of free workers, and calls that find
+// none wait in a bounded FIFO. So a short call never waits behind a long one, even while
+// every worker is blocked (round robin to N workers would queue it behind a long call).
+// Both paths parse HAWActorRPCRequest, drop late requests, and dispatch
+// module.method(params) into a NaoqiBroker.
 #pragma once
 
 #include <zmq.hpp>
@@ -29,6 +32,13 @@ struct RpcOptions {
   std::int64_t maxMessageBytes = 64ll << 20;
 };
 
+// Requests above this size are not parsed on the broker thread, whatever the method.
+constexpr std::size_t kMaxInlineRequestBytes = 64u << 10;
+// Bounds of the FIFO of calls waiting for a free worker; when full, the broker stops reading
+// the frontend until a worker is free (requests then wait in the socket).
+constexpr std::size_t kMaxWaitingCalls = 256;
+constexpr std::size_t kMaxWaitingBytes = 64u << 20;
+
 class RpcServer {
  public:
   // Binds and starts the threads; throws zmq::error_t if the port cannot be bound.
@@ -47,6 +57,12 @@ class RpcServer {
  private:
   void brokerLoop();
   void workerLoop();
+  // Counts and checks a frontend message; answers an oversize one. False: nothing to run.
+  bool admit(std::vector<zmq::message_t>& frames);
+  // Runs a quick call (or answers a bad request) on the broker thread; false: needs a worker.
+  bool answerInline(std::vector<zmq::message_t>& frames);
+  std::string execute(::nao::HAWActorRPCRequest& request);
+  std::string badRequest(const std::string& error);
   std::string errorReply(const std::string& message);
 
   NaoqiBroker& broker_;

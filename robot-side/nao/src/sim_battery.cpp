@@ -13,6 +13,7 @@ SimBattery::SimBattery(RobotState& robot)
          monitoring_ = boolArg(p, 0);
          return none();
        }});
+  markQuick({"getBatteryCharge", "enablePowerMonitoring"});
 }
 
 }  // namespace touchline::nao

@@ -82,6 +82,11 @@ SimMemory::SimMemory(RobotState& robot, CallLog& log)
          std::lock_guard<std::mutex> lock(mutex_);
          return std::optional<Value>(stringList({events_.begin(), events_.end()}));
        }});
+  // Map reads and writes under a short lock; requests above RpcServer's inline size limit
+  // (a large insertData) go to a worker anyway.
+  markQuick({"getData", "insertData", "insertListData", "getListData", "getDataList",
+             "getDataListName", "getType", "removeData", "declareEvent", "raiseEvent",
+             "getEventList"});
 }
 
 std::vector<std::string> SimMemory::deviceKeys() const {

@@ -1,6 +1,7 @@
 #include "sim_module.h"
 
 #include <sstream>
+#include <stdexcept>
 
 namespace touchline::nao {
 
@@ -65,6 +66,20 @@ SimModule::SimModule(std::string name, std::string description)
        [](const Params&) { return std::optional<Value>(boolValue(true)); }});
   add({"getBrokerName", {}, "str", "Name of the broker the module runs in.",
        [](const Params&) { return std::optional<Value>(stringValue("touchline-nao-sim")); }});
+  markQuick({"getMethodList", "getMethodHelp", "getModuleHelp", "getUsage", "version", "ping",
+             "getBrokerName"});
+}
+
+void SimModule::markQuick(std::initializer_list<const char*> methods) {
+  for (const char* m : methods) {
+    // A misspelt name would silently send a blocking call to the frontend thread's table.
+    if (methods_.count(m) == 0) throw std::logic_error(name_ + ": markQuick of unknown method " + m);
+    quick_.insert(m);
+  }
+}
+
+bool SimModule::isQuick(const std::string& method) const {
+  return quick_.count(method) > 0 || methods_.count(method) == 0;
 }
 
 void SimModule::add(MethodSpec spec) {

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -57,8 +59,15 @@ class SimModule {
   std::optional<Value> call(const std::string& method, const Params& params,
                             CallLog* log = nullptr) const;
 
+  // True if method is known to return within microseconds: it never waits for robot time
+  // or for another call (getters, non-blocking setters, stop commands). An unknown method
+  // is quick too: it fails at once. The RPC module runs quick calls on its frontend thread.
+  bool isQuick(const std::string& method) const;
+
  protected:
   void add(MethodSpec spec);
+  // Marks methods as quick (see isQuick); every other method may block.
+  void markQuick(std::initializer_list<const char*> methods);
 
  private:
   Value methodHelp(const std::string& method) const;
@@ -68,6 +77,7 @@ class SimModule {
   std::string description_;
   std::map<std::string, MethodSpec> methods_;
   std::vector<std::string> order_;
+  std::set<std::string> quick_;
 };
 
 // Parameter accessors for handlers (types were checked by SimModule::call).

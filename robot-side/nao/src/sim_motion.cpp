@@ -295,6 +295,13 @@ SimMotion::SimMotion(RobotState& robot)
                   : throw CallError("chainName must be LArm, RArm or Arms");
          return std::optional<Value>(boolValue(v));
        }});
+  // Getters and velocity/stiffness/angle commands only set state; the interpolations,
+  // posture changes, moveTo and waits block for robot time.
+  markQuick({"robotIsWakeUp", "setStiffnesses", "getStiffnesses", "setAngles", "changeAngles",
+             "getAngles", "move", "moveToward", "setWalkTargetVelocity", "stopMove", "killMove",
+             "killWalk", "moveIsActive", "walkIsActive", "getRobotPosition", "getRobotVelocity",
+             "getBodyNames", "getJointNames", "getLimits", "getSummary", "setFallManagerEnabled",
+             "getFallManagerEnabled", "setMoveArmsEnabled", "getMoveArmsEnabled"});
 }
 
 void SimMotion::requireStanding(const char* method) const {

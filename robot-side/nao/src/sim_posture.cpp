@@ -69,6 +69,8 @@ SimPosture::SimPosture(RobotState& robot)
          maxTries_ = intArg(p, 0);
          return none();
        }});
+  markQuick({"getPosture", "getPostureList", "getPostureFamily", "getPostureFamilyList",
+             "stopMove", "setMaxTryNumber"});
 }
 
 }  // namespace touchline::nao

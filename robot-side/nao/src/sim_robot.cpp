@@ -28,9 +28,12 @@ SimRobotInfo::SimRobotInfo(std::function<std::vector<std::string>()> modules, Ca
            row("malformedPayloads", counters->malformedPayloads);
            row("oversize", counters->oversize);
            row("deadlinePassed", counters->deadlinePassed);
+           row("inlineCalls", counters->inlineCalls);
+           row("queuedCalls", counters->queuedCalls);
          }
          return std::optional<Value>(arrayValue(std::move(rows)));
        }});
+  markQuick({"getModuleList", "getCallLog", "clearCallLog", "getRpcStats"});
 }
 
 }  // namespace touchline::nao

@@ -87,6 +87,10 @@ SimSpeech::SimSpeech(RobotState& robot)
          it->second = numberArg(p, 1);
          return none();
        }});
+  // Everything but say: stopAll must never wait behind the say it stops.
+  markQuick({"stopAll", "getVolume", "setVolume", "getLanguage", "setLanguage",
+             "getAvailableLanguages", "getSupportedLanguages", "getVoice", "setVoice",
+             "getParameter", "setParameter"});
 }
 
 }  // namespace touchline::nao

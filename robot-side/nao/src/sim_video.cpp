@@ -122,6 +122,9 @@ SimVideo::SimVideo() : SimModule("ALVideoDevice", "Synthetic camera images (raw,
        }});
   add({"releaseImage", {{"nameId", ParamType::String}}, "void", "No-op (images are copies).",
        [](const Params&) { return none(); }});
+  // getImageRemote renders a frame (milliseconds at kVGA and above): it goes to a worker.
+  markQuick({"subscribe", "subscribeCamera", "unsubscribe", "getSubscribers", "setActiveCamera",
+             "getActiveCamera", "releaseImage"});
 }
 
 std::string SimVideo::subscribe(const std::string& name, Subscriber s) {

@@ -40,6 +40,11 @@ std::vector<std::string> SimulatedBroker::moduleNames() const {
   return names;
 }
 
+bool SimulatedBroker::isQuick(const std::string& module, const std::string& method) const {
+  auto it = modules_.find(module);
+  return it == modules_.end() || it->second->isQuick(method);  // unknown module: fails at once
+}
+
 void SimulatedBroker::shutdown() { robot_.shutdown(); }
 
 }  // namespace touchline::nao

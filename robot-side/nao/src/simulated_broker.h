@@ -22,6 +22,7 @@ class SimulatedBroker : public NaoqiBroker {
   std::optional<Value> call(const std::string& module, const std::string& method,
                             const Params& params) override;
   std::vector<std::string> moduleNames() const override;
+  bool isQuick(const std::string& module, const std::string& method) const override;
   void shutdown() override;
 
   RobotState& robot() { return robot_; }

@@ -256,3 +256,45 @@ TEST(Broker, RemovingStiffnessStopsTheJointButKeepsTheCommand) {
   EXPECT_DOUBLE_EQ(floats(*broker.call("ALMotion", "getAngles", {stringValue("HeadYaw"), boolValue(true)})).at(0),
                    sensed);
 }
+
+// Quick calls run on the RPC module's frontend thread, so a blocking method marked quick
+// would stall every other call: no method whose help says it blocks may be quick (and
+// every one documented as non-blocking is).
+TEST(Broker, BlockingMethodsAreNeverQuick) {
+  SimulatedBroker broker(kScale);
+  int quick = 0;
+  for (const auto& module : broker.moduleNames()) {
+    for (const auto& method : strings(*broker.call(module, "getMethodList", {}))) {
+      std::string help = broker.call(module, "getMethodHelp", {stringValue(method)})->array(1).string();
+      std::transform(help.begin(), help.end(), help.begin(), ::tolower);
+      if (help.find("non-blocking") != std::string::npos) {
+        EXPECT_TRUE(broker.isQuick(module, method)) << module << "." << method << ": " << help;
+      } else if (help.find("block") != std::string::npos) {
+        EXPECT_FALSE(broker.isQuick(module, method)) << module << "." << method << ": " << help;
+      }
+      quick += broker.isQuick(module, method);
+    }
+  }
+  for (auto [module, method] : {std::pair{"ALRobotPosture", "applyPosture"},
+                                {"ALVideoDevice", "getImageRemote"}, {"ALTextToSpeech", "say"},
+                                {"ALMotion", "moveTo"}, {"ALMotion", "wakeUp"}}) {
+    EXPECT_FALSE(broker.isQuick(module, method)) << module << "." << method;
+  }
+  for (auto [module, method] : {std::pair{"ALMotion", "ping"}, {"ALMotion", "getAngles"},
+                                {"ALMotion", "setStiffnesses"}, {"ALMotion", "stopMove"},
+                                {"ALTextToSpeech", "stopAll"}, {"ALMemory", "getData"},
+                                {"Robot", "getRpcStats"}}) {
+    EXPECT_TRUE(broker.isQuick(module, method)) << module << "." << method;
+  }
+  // Unknown names fail at once, so they are quick too.
+  EXPECT_TRUE(broker.isQuick("ALNope", "ping"));
+  EXPECT_TRUE(broker.isQuick("ALMotion", "fly"));
+  EXPECT_GT(quick, 50);
+}
+
+TEST(Broker, MarkingAnUnknownMethodQuickIsAProgrammingError) {
+  struct Misspelt : SimModule {
+    Misspelt() : SimModule("X", "test") { markQuick({"pnig"}); }
+  };
+  EXPECT_THROW(Misspelt(), std::logic_error);
+}

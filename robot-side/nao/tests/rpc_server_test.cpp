@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "echo_server.h"
 #include "rpc_client.h"
 #include "rpc_server.h"
 #include "simulated_broker.h"
@@ -223,4 +224,84 @@ TEST(RpcServerStop, StopJoinsWhileACallBlocks) {
   auto start = Clock::now();
   server.reset();
   EXPECT_LT(Clock::now() - start, 2s);  // the 18 s say was interrupted
+}
+
+// Quick calls run on the broker thread: answered even while every worker is blocked, and
+// long calls that find no free worker wait in order and still run.
+TEST(RpcServerQuickCalls, AnsweredWhileEveryWorkerIsBlockedAndQueuedLongCallsStillRun) {
+  RpcCounters counters;
+  SimulatedBroker broker(1.0, &counters);
+  RpcServer server(broker, counters, RpcOptions{"127.0.0.1", 0, 2});
+  zmq::context_t context;
+  DealerClient longCalls(context, loopback(server.port()));
+  DealerClient quick(context, loopback(server.port()));
+  // Two 30 s says occupy both workers; a third long call must wait for a worker.
+  for (int i = 0; i < 2; ++i)
+    longCalls.send(encodeRequest("ALTextToSpeech", "say", {stringValue(std::string(500, 'a'))}));
+  auto waitStart = Clock::now();
+  while (broker.callLog().total() < 2) {
+    ASSERT_LT(Clock::now() - waitStart, 2s);
+    std::this_thread::sleep_for(1ms);
+  }
+  std::string queuedId =
+      longCalls.send(encodeRequest("ALMotion", "angleInterpolation",
+                                   {stringValue("HeadYaw"), floatValue(0.5f), floatValue(0.1f), boolValue(true)}));
+  for (int i = 0; i < 20; ++i) {
+    auto sent = Clock::now();
+    auto reply = rpcCall(quick, i % 2 ? "ALRobotPosture" : "ALMotion", i % 2 ? "getPosture" : "ping", {},
+                         1000ms);
+    ASSERT_TRUE(reply) << "quick call " << i << " was not answered while all workers were busy";
+    EXPECT_FALSE(reply->has_error()) << reply->error();
+    EXPECT_LT(Clock::now() - sent, 100ms);
+  }
+  EXPECT_GE(counters.inlineCalls, 20u);
+  EXPECT_EQ(counters.queuedCalls, 1u);
+  EXPECT_EQ(broker.callLog().total(), 2u + 20u) << "the queued angleInterpolation ran too early";
+  // stopAll is quick too: it ends both says, a worker frees up and the queued call runs.
+  auto stop = rpcCall(quick, "ALTextToSpeech", "stopAll", {}, 1000ms);
+  ASSERT_TRUE(stop);
+  EXPECT_FALSE(stop->has_error());
+  std::vector<std::string> replies;
+  for (int i = 0; i < 3; ++i) {
+    auto reply = longCalls.receive(5000ms);
+    ASSERT_TRUE(reply) << "long call reply " << i << " missing";
+    replies.push_back(reply->first);
+  }
+  EXPECT_NE(std::find(replies.begin(), replies.end(), queuedId), replies.end());
+}
+
+// The fast path gives the same clear errors as a worker, and keeps serving afterwards.
+TEST_F(RpcServerTest, QuickCallsWithBadInputGetClearErrors) {
+  auto extra = call("ALMotion", "ping", {intValue(1)});
+  EXPECT_NE(extra.error().find("ALMotion.ping: expected 0 parameters, got 1"), std::string::npos)
+      << extra.error();
+  auto wrongType = call("ALMotion", "setStiffnesses", {stringValue("Body"), stringValue("high")});
+  EXPECT_NE(wrongType.error().find("parameter 2 (stiffnesses) must be float or Vec<float>"),
+            std::string::npos)
+      << wrongType.error();
+  auto unknownMethod = call("ALMotion", "fly");
+  EXPECT_NE(unknownMethod.error().find("unknown method 'fly'"), std::string::npos);
+  auto unknownModule = call("ALNope", "ping");
+  EXPECT_NE(unknownModule.error().find("unknown module 'ALNope'"), std::string::npos);
+  auto late = client_.roundTrip(
+      encodeRequest("ALMotion", "setStiffnesses", {stringValue("Body"), floatValue(1.0f)}, nowMillis() - 1000),
+      5s);
+  ASSERT_TRUE(late);
+  ::nao::HAWActorRPCResponse response;
+  ASSERT_TRUE(response.ParseFromString(*late));
+  EXPECT_NE(response.error().find("deadline passed: ALMotion.setStiffnesses was not executed"),
+            std::string::npos);
+  EXPECT_FALSE(logHas(callLog(), "setStiffnesses"));
+  EXPECT_EQ(counters_.inlineCalls, 6u);  // including the getCallLog
+  EXPECT_TRUE(call("ALMotion", "ping").returnval().bool_());
+}
+
+TEST(EchoServerTest, ReturnsEveryFrameUnchanged) {
+  EchoServer echo("127.0.0.1", 0);
+  zmq::context_t context;
+  DealerClient client(context, loopback(echo.port()));
+  std::string payload = encodeRequest("ALMotion", "ping");
+  auto reply = client.roundTrip(payload, 5000ms);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(*reply, payload);
 }

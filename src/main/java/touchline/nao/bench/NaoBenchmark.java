@@ -29,10 +29,12 @@ import java.util.regex.Pattern;
 
 /**
  * Console-side NAO link benchmark: starts {@code touchline-nao-sim} on loopback and measures
- * (1) the round trip of {@code ALMotion.ping} through {@link NaoLink} against two baselines
- * measured call by call in the same run — a raw JeroMQ DEALER sending the same bytes to an
- * in-process JeroMQ ROUTER echo (the simulator has no echo endpoint), and a raw DEALER
- * sending them to the simulator; (2) short-call latency while long {@code say} calls occupy
+ * (1) the round trip of {@code ALMotion.ping} through {@link NaoLink} against baselines
+ * measured call by call in the same run, each a raw JeroMQ DEALER sending the same bytes: to
+ * the raw libzmq ROUTER echo the simulator serves with {@code --echo-port} (the budget's
+ * baseline: same process, same path as the RPC), to in-process JeroMQ echoes (on their own
+ * context, and on the client's context, where one I/O thread serves both ends), and to the
+ * simulator itself; (2) short-call latency while long {@code say} calls occupy
  * half the workers; (3) camera frames per second and bytes per frame delivered to a viewer
  * at 640x480 and 1280x960. Prints a Markdown table for docs/benchmarks.md.
  *
@@ -42,6 +44,7 @@ public final class NaoBenchmark {
 
     private static final Pattern RPC = Pattern.compile("rpc listening on port (\\d+)");
     private static final Pattern CAM = Pattern.compile("camera listening on port (\\d+)");
+    private static final Pattern ECHO = Pattern.compile("echo listening on port (\\d+)");
 
     private final Path binary;
     private final int seconds;
@@ -72,12 +75,12 @@ public final class NaoBenchmark {
 
     void run() throws Exception {
         Process sim = new ProcessBuilder(binary.toString(), "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0",
-                "--workers", "4").redirectError(ProcessBuilder.Redirect.DISCARD).start();
+                "--workers", "4", "--echo-port", "0").redirectError(ProcessBuilder.Redirect.DISCARD).start();
         try {
             int[] ports = ports(sim);
             System.out.println("| what | figure (console side, Java) | budget |");
             System.out.println("| --- | --- | --- |");
-            roundTrip(ports[0]);
+            roundTrip(ports[0], ports[2]);
             shortCallsUnderLoad(ports[0]);
             camera(ports[1], 2);
             camera(ports[1], 3);
@@ -91,8 +94,9 @@ public final class NaoBenchmark {
         BufferedReader r = new BufferedReader(new InputStreamReader(sim.getInputStream(), StandardCharsets.UTF_8));
         int rpc = -1;
         int cam = -1;
+        int echo = -1;
         String line;
-        while ((rpc < 0 || cam < 0) && (line = r.readLine()) != null) {
+        while ((rpc < 0 || cam < 0 || echo < 0) && (line = r.readLine()) != null) {
             Matcher m = RPC.matcher(line);
             if (m.find()) {
                 rpc = Integer.parseInt(m.group(1));
@@ -101,11 +105,15 @@ public final class NaoBenchmark {
             if (m.find()) {
                 cam = Integer.parseInt(m.group(1));
             }
+            m = ECHO.matcher(line);
+            if (m.find()) {
+                echo = Integer.parseInt(m.group(1));
+            }
         }
-        if (rpc < 0 || cam < 0) {
+        if (rpc < 0 || cam < 0 || echo < 0) {
             throw new IllegalStateException("touchline-nao-sim did not report its ports");
         }
-        return new int[] {rpc, cam};
+        return new int[] {rpc, cam, echo};
     }
 
     private NaoLink link(int port) throws InterruptedException {
@@ -120,53 +128,37 @@ public final class NaoBenchmark {
         return link;
     }
 
-    private void roundTrip(int rpcPort) throws Exception {
+    private void roundTrip(int rpcPort, int simEchoPort) throws Exception {
         byte[] payload = HAWActorRPCRequest.newBuilder().setModule("ALMotion").setMethod("ping")
                 .setDeadlineMillis(System.currentTimeMillis() + 60_000).build().toByteArray();
-        try (ZContext zmq = new ZContext(1); NaoLink link = link(rpcPort)) {
-            ZMQ.Socket echo = zmq.createSocket(SocketType.ROUTER);
-            echo.bind("tcp://127.0.0.1:*");
-            String endpoint = echo.getLastEndpoint();
-            Thread echoThread = new Thread(() -> {
-                try {
-                    while (!Thread.currentThread().isInterrupted()) {
-                        ZMQ.Socket s = echo;
-                        byte[] id = s.recv(0);
-                        if (id == null) {
-                            return;
-                        }
-                        List<byte[]> frames = new ArrayList<>();
-                        while (s.hasReceiveMore()) {
-                            frames.add(s.recv(0));
-                        }
-                        s.send(id, ZMQ.SNDMORE);
-                        for (int i = 0; i < frames.size(); i++) {
-                            s.send(frames.get(i), i < frames.size() - 1 ? ZMQ.SNDMORE : 0);
-                        }
-                    }
-                } catch (RuntimeException closed) {
-                    // context closed at the end of the run
-                }
-            }, "bench-echo");
-            echoThread.setDaemon(true);
-            echoThread.start();
-            ZMQ.Socket toEcho = dealer(zmq, endpoint);
+        try (ZContext zmq = new ZContext(1); ZContext echoZmq = new ZContext(1); NaoLink link = link(rpcPort)) {
+            // In-process JeroMQ echoes: one on the clients' context (one I/O thread serves both
+            // ends of the TCP connection, which no remote robot can do), one on its own context.
+            Thread sharedEcho = echo(zmq, "bench-echo-shared");
+            Thread ownEcho = echo(echoZmq, "bench-echo-own");
+            ZMQ.Socket toSimEcho = dealer(zmq, "tcp://127.0.0.1:" + simEchoPort);
+            ZMQ.Socket toSharedEcho = dealer(zmq, sharedEcho.getName().substring(sharedEcho.getName().indexOf('@') + 1));
+            ZMQ.Socket toOwnEcho = dealer(zmq, ownEcho.getName().substring(ownEcho.getName().indexOf('@') + 1));
             ZMQ.Socket toSim = dealer(zmq, "tcp://127.0.0.1:" + rpcPort);
             NaoCall ping = NaoCall.of("ALMotion", "ping");
+            List<ZMQ.Socket> raw = List.of(toSimEcho, toSharedEcho, toOwnEcho, toSim);
             // warm-up (JIT, connections)
             for (int i = 0; i < 2000; i++) {
-                rawRoundTrip(toEcho, payload, i);
-                rawRoundTrip(toSim, payload, i);
+                for (ZMQ.Socket s : raw) {
+                    rawRoundTrip(s, payload, i);
+                }
                 link.call(ping).get();
             }
-            List<Long> echoNs = new ArrayList<>();
-            List<Long> rawSimNs = new ArrayList<>();
+            List<List<Long>> rawNs = new ArrayList<>();
+            raw.forEach(s -> rawNs.add(new ArrayList<>()));
             List<Long> linkNs = new ArrayList<>();
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
             long id = 1_000_000;
+            // One call in flight, the variants alternating call by call so noise hits all alike.
             while (System.nanoTime() < end) {
-                echoNs.add(rawRoundTrip(toEcho, payload, id++));
-                rawSimNs.add(rawRoundTrip(toSim, payload, id++));
+                for (int v = 0; v < raw.size(); v++) {
+                    rawNs.get(v).add(rawRoundTrip(raw.get(v), payload, id++));
+                }
                 long t0 = System.nanoTime();
                 CallOutcome outcome = link.call(ping).get();
                 linkNs.add(System.nanoTime() - t0);
@@ -174,16 +166,52 @@ public final class NaoBenchmark {
                     throw new IllegalStateException("ping failed: " + outcome.describe());
                 }
             }
-            double[] e = percentiles(echoNs);
-            double[] r = percentiles(rawSimNs);
+            double[] simEcho = percentiles(rawNs.get(0));
+            double[] shared = percentiles(rawNs.get(1));
+            double[] own = percentiles(rawNs.get(2));
+            double[] r = percentiles(rawNs.get(3));
             double[] l = percentiles(linkNs);
-            row("raw JeroMQ DEALER ↔ in-process JeroMQ ROUTER echo, same bytes, p50 / p99", e, echoNs.size());
-            row("raw JeroMQ DEALER ↔ touchline-nao-sim `ALMotion.ping`, p50 / p99", r, rawSimNs.size());
+            row("raw JeroMQ DEALER ↔ libzmq ROUTER echo in touchline-nao-sim, same bytes (baseline), p50 / p99", simEcho, linkNs.size());
+            row("raw JeroMQ DEALER ↔ in-process JeroMQ ROUTER echo on its own context, p50 / p99", own, linkNs.size());
+            row("raw JeroMQ DEALER ↔ in-process JeroMQ ROUTER echo on the client's context (shared I/O thread), p50 / p99", shared, linkNs.size());
+            row("raw JeroMQ DEALER ↔ touchline-nao-sim `ALMotion.ping`, p50 / p99", r, linkNs.size());
             row("NaoLink `ALMotion.ping` (future completed), p50 / p99", l, linkNs.size());
-            System.out.printf("| ratio p50 NaoLink / echo | %.2f | ≤ 1.5 |%n", l[0] / e[0]);
+            System.out.printf("| **ratio p50 NaoLink / echo in touchline-nao-sim** | **%.2f** | ≤ 1.5 |%n", l[0] / simEcho[0]);
+            System.out.printf("| ratio p50 NaoLink / in-process echo, own context | %.2f | — |%n", l[0] / own[0]);
+            System.out.printf("| ratio p50 NaoLink / in-process echo, shared I/O thread | %.2f | — |%n", l[0] / shared[0]);
             System.out.printf("| ratio p50 NaoLink / raw DEALER to the simulator (NaoLink's own cost) | %.2f | — |%n", l[0] / r[0]);
-            echoThread.interrupt();
+            sharedEcho.interrupt();
+            ownEcho.interrupt();
         }
+    }
+
+    /** Starts a JeroMQ ROUTER echo on {@code zmq}; the thread's name ends in {@code @endpoint}. */
+    private static Thread echo(ZContext zmq, String name) {
+        ZMQ.Socket echo = zmq.createSocket(SocketType.ROUTER);
+        echo.bind("tcp://127.0.0.1:*");
+        Thread thread = new Thread(() -> {
+            try {
+                while (!Thread.currentThread().isInterrupted()) {
+                    byte[] id = echo.recv(0);
+                    if (id == null) {
+                        return;
+                    }
+                    List<byte[]> frames = new ArrayList<>();
+                    while (echo.hasReceiveMore()) {
+                        frames.add(echo.recv(0));
+                    }
+                    echo.send(id, ZMQ.SNDMORE);
+                    for (int i = 0; i < frames.size(); i++) {
+                        echo.send(frames.get(i), i < frames.size() - 1 ? ZMQ.SNDMORE : 0);
+                    }
+                }
+            } catch (RuntimeException closed) {
+                // context closed at the end of the run
+            }
+        }, name + "@" + echo.getLastEndpoint());
+        thread.setDaemon(true);
+        thread.start();
+        return thread;
     }
 
     private static ZMQ.Socket dealer(ZContext zmq, String endpoint) {

@@ -16,6 +16,8 @@ import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.Pipe;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -28,6 +30,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
@@ -35,8 +38,13 @@ import java.util.function.Supplier;
 /**
  * The console's RPC link to one NAO's {@code HAWActorRPC} module over ZeroMQ.
  *
- * <p>One JeroMQ DEALER, owned by one thread ({@code nao-link-HOST:PORT}) because ZeroMQ
- * sockets are not thread-safe; {@link #call} only queues to that thread and returns a future
+ * <p>One JeroMQ DEALER. ZeroMQ sockets are not thread-safe, so the socket and all call
+ * state are guarded by one lock, and a thread ({@code nao-link-HOST:PORT}) reads replies,
+ * connection events and timers. It waits for them without the lock, in a selector on the
+ * sockets' signalling file descriptors (ZeroMQ's ZMQ_FD contract), so a caller that finds
+ * the lock free sends its request itself, at once, instead of queueing it and waking the
+ * link thread (a thread wake-up costs about as much as a loopback round trip); a caller
+ * that finds it busy queues the call and wakes the thread. {@link #call} returns a future
  * that always completes with a {@link CallOutcome}, never exceptionally. Many calls are in
  * flight at once: each request goes out as {@code [requestId][""][HAWActorRPCRequest]} and
  * replies, which the robot's load-balancing broker returns out of order, are matched by id;
@@ -85,6 +93,11 @@ public final class NaoLink implements AutoCloseable {
     private final Pipe wakePipe;
     private final AtomicBoolean wakePending = new AtomicBoolean();
     private final Thread thread;
+    // Guards the sockets and every field marked "under lock" below.
+    private final ReentrantLock lock = new ReentrantLock();
+    // When the link thread will wake next (System.nanoTime); a caller that adds an earlier
+    // timer wakes it.
+    private volatile long linkWakeAtNanos;
     private final List<Consumer<ConnectionState>> stateListeners = new CopyOnWriteArrayList<>();
     private volatile ConnectionState state = ConnectionState.CONNECTING;
     private volatile boolean running = true;
@@ -99,10 +112,14 @@ public final class NaoLink implements AutoCloseable {
     private final AtomicLong lostCalls = new AtomicLong();
     private final AtomicLong retried = new AtomicLong();
 
-    // Owned by the link thread only.
+    // Under lock.
     private ZMQ.Socket dealer;
     private ZMQ.Socket monitor;
-    private ZMQ.Poller poller;
+    private boolean socketsReplaced;
+    // Link thread only.
+    private Selector selector;
+    private SelectionKey dealerKey;
+    private SelectionKey monitorKey;
     private long nextRequestId = 1;
     private final Map<Long, Pending> pending = new HashMap<>();
     private final List<Submission> awaitingOnline = new ArrayList<>();
@@ -172,7 +189,9 @@ public final class NaoLink implements AutoCloseable {
 
     /**
      * Calls with the configured timeout for the method. The future completes on the link
-     * thread: dependent actions must not block (hand off to another executor if they do).
+     * thread, or on a calling thread for outcomes decided as a call is made (held back,
+     * superseded, lost): dependent actions must not block (hand off to another executor if
+     * they do).
      */
     public CompletableFuture<CallOutcome> call(NaoCall call) {
         return call(call, config.timeoutMillis(call));
@@ -183,6 +202,7 @@ public final class NaoLink implements AutoCloseable {
     }
 
     public CompletableFuture<CallOutcome> call(NaoCall call, long timeoutMillis) {
+        long now = System.nanoTime();
         CompletableFuture<CallOutcome> future = new CompletableFuture<>();
         boolean idempotent = config.isIdempotent(call);
         if (!running) {
@@ -201,9 +221,40 @@ public final class NaoLink implements AutoCloseable {
             future.complete(new CallOutcome.Failed("cannot send parameters: " + e.getMessage()));
             return future;
         }
-        submissions.add(new Submission(call, request, timeoutMillis, idempotent, future, System.nanoTime()));
-        wake();
+        submit(new Submission(call, request, timeoutMillis, idempotent, future, now));
         return future;
+    }
+
+    /**
+     * Sends at once on the caller's thread if the lock is free, else queues for the link
+     * thread. Not on a thread already inside the link (a callback of a completed call): the
+     * link's loops would be re-entered.
+     */
+    private void submit(Submission s) {
+        if (!lock.isHeldByCurrentThread() && lock.tryLock()) {
+            try {
+                if (dealer != null) {
+                    drainSubmissions(); // calls queued before this one go first
+                    dispatch(s);
+                    // ZMQ_FD contract: the send may have consumed the mailbox signal of a reply
+                    // that arrived meanwhile, and then the link thread's selector would not
+                    // wake for it; a timer earlier than the thread's next wake needs it too.
+                    if ((dealer.getEvents() & ZMQ.Poller.POLLIN) != 0
+                            || nextWakeNanos(System.nanoTime()) - linkWakeAtNanos < 0) {
+                        wake();
+                    }
+                    return;
+                }
+                if (!running) {
+                    s.future.complete(new CallOutcome.Lost("link closed"));
+                    return;
+                }
+            } finally {
+                lock.unlock();
+            }
+        }
+        submissions.add(s);
+        wake();
     }
 
     /**
@@ -305,40 +356,93 @@ public final class NaoLink implements AutoCloseable {
 
     private void run() {
         try {
-            openSocket();
+            selector = Selector.open();
+            wakePipe.source().register(selector, SelectionKey.OP_READ);
             ByteBuffer drain = ByteBuffer.allocate(64);
+            lock.lock();
+            try {
+                openSocket();
+            } finally {
+                lock.unlock();
+            }
             while (running) {
-                long now = System.nanoTime();
-                poller.poll(waitMillis(now));
-                if (poller.pollin(2)) {
-                    wakePending.set(false);
-                    drain.clear();
-                    while (wakePipe.source().read(drain) > 0) {
-                        drain.clear();
+                long timeoutMillis;
+                lock.lock();
+                try {
+                    // Read both sockets on every pass, not only when the selector flagged them:
+                    // JeroMQ was seen to miss a monitor event's signal.
+                    readMonitor();
+                    readReplies();
+                    drainSubmissions();
+                    long now = System.nanoTime();
+                    runTimers(now);
+                    if (socketsReplaced) {
+                        registerSockets();
                     }
+                    long next = nextWakeNanos(now);
+                    linkWakeAtNanos = next;
+                    timeoutMillis = Math.max(0, TimeUnit.NANOSECONDS.toMillis(next - now + 999_999));
+                } finally {
+                    lock.unlock();
                 }
-                // Read both sockets on every pass, not only when the poller flagged them: JeroMQ's
-                // poller signals through the socket's mailbox and was seen to miss a monitor event.
-                readMonitor();
-                readReplies();
-                Submission s;
-                while ((s = submissions.poll()) != null) {
-                    dispatch(s);
+                // Without the lock: callers send meanwhile. Readable = a signal on a socket's
+                // mailbox (a reply or an event) or a wake-up from a caller.
+                if (timeoutMillis == 0) {
+                    selector.selectNow();
+                } else {
+                    selector.select(timeoutMillis);
                 }
-                runTimers(System.nanoTime());
+                selector.selectedKeys().clear();
+                wakePending.set(false);
+                drain.clear();
+                while (wakePipe.source().read(drain) > 0) {
+                    drain.clear();
+                }
             }
         } catch (RuntimeException | IOException e) {
             LOG.error("NAO link thread for {}:{} failed", host, port, e);
         } finally {
-            failAll(new CallOutcome.Lost("link closed"));
-            Submission s;
-            while ((s = submissions.poll()) != null) {
-                s.future.complete(new CallOutcome.Lost("link closed"));
+            lock.lock();
+            try {
+                failAll(new CallOutcome.Lost("link closed"));
+                Submission s;
+                while ((s = submissions.poll()) != null) {
+                    s.future.complete(new CallOutcome.Lost("link closed"));
+                }
+                closeSocket();
+            } finally {
+                lock.unlock();
             }
-            closeSocket();
             zmq.close();
+            try {
+                if (selector != null) {
+                    selector.close();
+                }
+            } catch (IOException ignored) {
+                // closing our own selector at exit
+            }
             setState(ConnectionState.CLOSED, "link closed");
         }
+    }
+
+    private void drainSubmissions() {
+        Submission s;
+        while ((s = submissions.poll()) != null) {
+            dispatch(s);
+        }
+    }
+
+    /** (Re)registers the sockets' signalling descriptors after they were opened. Link thread, under lock. */
+    private void registerSockets() throws IOException {
+        // A replaced socket's descriptor is closed later, by JeroMQ's reaper thread: drop our
+        // keys now rather than select on a dying descriptor until then.
+        if (dealerKey != null) {
+            dealerKey.cancel();
+            monitorKey.cancel();
+        }
+        dealerKey = dealer.getFD().register(selector, SelectionKey.OP_READ);
+        monitorKey = monitor.getFD().register(selector, SelectionKey.OP_READ);
+        socketsReplaced = false;
     }
 
     private void openSocket() throws IOException {
@@ -360,17 +464,10 @@ public final class NaoLink implements AutoCloseable {
         monitor = zmq.createSocket(SocketType.PAIR);
         monitor.connect(monitorAddress);
         dealer.connect("tcp://" + host + ":" + port);
-        poller = zmq.createPoller(3);
-        poller.register(dealer, ZMQ.Poller.POLLIN);
-        poller.register(monitor, ZMQ.Poller.POLLIN);
-        poller.register(wakePipe.source(), ZMQ.Poller.POLLIN);
+        socketsReplaced = true;
     }
 
     private void closeSocket() {
-        if (poller != null) {
-            poller.close();
-            poller = null;
-        }
         if (dealer != null) {
             dealer.monitor(null, 0);
             zmq.destroySocket(dealer);
@@ -382,7 +479,8 @@ public final class NaoLink implements AutoCloseable {
         }
     }
 
-    private long waitMillis(long now) {
+    /** When the link thread must next look at the timers. Under lock. */
+    private long nextWakeNanos(long now) {
         long next = now + TimeUnit.MILLISECONDS.toNanos(200);
         for (Pending p : pending.values()) {
             next = Math.min(next, p.attemptDeadlineNanos);
@@ -393,7 +491,7 @@ public final class NaoLink implements AutoCloseable {
         for (Submission s : coalesced.values()) {
             next = Math.min(next, dueNanos(s));
         }
-        return Math.max(0, TimeUnit.NANOSECONDS.toMillis(next - now + 999_999));
+        return next;
     }
 
     private long dueNanos(Submission s) {

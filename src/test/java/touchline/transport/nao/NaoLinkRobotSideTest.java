@@ -12,6 +12,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -142,6 +143,35 @@ class NaoLinkRobotSideTest {
                 camera.configure(new CameraSettings(1, 11, 30));
                 assertTrue(Poll.until(() -> camera.latestFrame().width() == 320, Duration.ofSeconds(5)));
             }
+        }
+    }
+
+    @Test
+    void quickCallsAnswerWhileEveryWorkerIsBlockedAndBadOnesGetClearErrors() throws Exception {
+        try (RobotSideProcess sim = new RobotSideProcess(0, 0, "--workers", "2"); NaoLink link = online(sim)) {
+            String text = "This keeps a worker busy. ".repeat(40); // 60 ms a character: about a minute
+            List<CompletableFuture<CallOutcome>> says = List.of(
+                    link.call(NaoCall.of("ALTextToSpeech", "say", text), 120_000),
+                    link.call(NaoCall.of("ALTextToSpeech", "say", text), 120_000));
+            assertTrue(Poll.until(() -> {
+                CallOutcome log = link.call("Robot", "getCallLog").join();
+                return log instanceof CallOutcome.Value v && v.value().toString().split("ALTextToSpeech.say", -1).length == 3;
+            }, Duration.ofSeconds(5)), "both workers run a say");
+            for (int i = 0; i < 20; i++) {
+                long t0 = System.nanoTime();
+                assertEquals(new CallOutcome.Value(true), get(link.call("ALMotion", "ping")));
+                long ms = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
+                assertTrue(ms < 100, "ping " + i + " took " + ms + " ms while both workers were busy");
+            }
+            CallOutcome extra = get(link.call("ALMotion", "ping", 1));
+            assertTrue(extra instanceof CallOutcome.Failed f && f.error().contains("expected 0 parameters, got 1"),
+                    extra.describe());
+            CallOutcome stats = get(link.call("Robot", "getRpcStats"));
+            assertTrue(stats.describe().contains("inlineCalls"), stats.describe());
+            assertFalse(says.get(0).isDone() || says.get(1).isDone(), "the says were still running");
+            assertEquals(new CallOutcome.Done(), get(link.call("ALTextToSpeech", "stopAll")));
+            assertEquals(new CallOutcome.Done(), get(says.get(0)));
+            assertEquals(new CallOutcome.Done(), get(says.get(1)));
         }
     }
 }

@@ -113,6 +113,20 @@ class NaoLinkTest {
                 "the call made while the robot was down must not have run after it came back");
         assertTrue(robot.executedNames().stream().noneMatch(n -> n.startsWith("ALMemory.insertData")));
         assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.LINK_EVENT && e.kind().equals("nao.lost")));
+        assertLinkThreadIdles(port);
+    }
+
+    /** The link thread waits in a selector: idle, it must not spin (e.g. on a replaced socket's descriptor). */
+    private static void assertLinkThreadIdles(int port) throws Exception {
+        java.lang.management.ThreadMXBean threads = java.lang.management.ManagementFactory.getThreadMXBean();
+        long id = Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().equals("nao-link-127.0.0.1:" + port)).findFirst().orElseThrow().getId();
+        long cpu0 = threads.getThreadCpuTime(id);
+        long wall0 = System.nanoTime();
+        Thread.sleep(1000);
+        long cpuMs = TimeUnit.NANOSECONDS.toMillis(threads.getThreadCpuTime(id) - cpu0);
+        long wallMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - wall0);
+        assertTrue(cpuMs < wallMs / 10, "idle link thread used " + cpuMs + " ms of CPU in " + wallMs + " ms");
     }
 
     @Test
@@ -191,5 +205,79 @@ class NaoLinkTest {
                 && e.kind().equals("Test.echo")));
         assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.direction() == Direction.IN
                 && e.kind().equals("Test.echo") && e.message() != null));
+    }
+
+    @Test
+    void anIdleLinkSendsOnTheCallersThreadWithoutAHandOff() throws Exception {
+        List<String> sendingThreads = new CopyOnWriteArrayList<>();
+        robot = new FakeNaoRobot(0);
+        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.defaults(), e -> {
+            if (e.direction() == Direction.OUT) {
+                sendingThreads.add(Thread.currentThread().getName());
+            }
+        });
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        for (int i = 0; i < 20; i++) {
+            assertEquals(new CallOutcome.Value((long) i), get(link.call("Test", "echo", i)));
+        }
+        String me = Thread.currentThread().getName();
+        long onCaller = sendingThreads.stream().filter(me::equals).count();
+        // The link thread holds the lock only briefly (after a reply, a heartbeat, a timer), so
+        // nearly every call finds it free; before, every request went through the link thread.
+        assertTrue(onCaller >= 10, "only " + onCaller + " of 20 requests were sent on the caller's thread: " + sendingThreads);
+    }
+
+    @Test
+    void callsFromManyThreadsAtOnceEachGetTheirOwnReply() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        int threads = 6;
+        int calls = 150;
+        List<CompletableFuture<Integer>> workers = new java.util.ArrayList<>();
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(threads);
+        try {
+            for (int t = 0; t < threads; t++) {
+                int base = t * 1000;
+                workers.add(CompletableFuture.supplyAsync(() -> {
+                    int ok = 0;
+                    for (int i = 0; i < calls; i++) {
+                        try {
+                            // A lost wake-up (a reply whose signal a sending caller consumed) would
+                            // show up here as a 10 s timeout.
+                            if (get(link.call("Test", "echo", base + i)).equals(new CallOutcome.Value((long) (base + i)))) {
+                                ok++;
+                            }
+                        } catch (Exception e) {
+                            throw new IllegalStateException(e);
+                        }
+                    }
+                    return ok;
+                }, pool));
+            }
+            // Calls made from completion callbacks (on the link thread) are queued, not re-entered.
+            SequenceOutcome sequence = link.sequence(java.util.Collections.nCopies(50, NaoCall.of("Test", "echo", "s")))
+                    .get(20, TimeUnit.SECONDS);
+            assertTrue(sequence.ok(), sequence.toString());
+            assertEquals(50, sequence.outcomes().size());
+            for (CompletableFuture<Integer> w : workers) {
+                assertEquals(calls, w.get(60, TimeUnit.SECONDS));
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        assertEquals(threads * calls + 50, link.stats().replies());
+    }
+
+    @Test
+    void aShortTimeoutOfACallSentByTheCallerFiresOnTime() throws Exception {
+        connect(NaoLinkConfig.defaults());
+        get(link.call("Test", "echo", "settle"));
+        Thread.sleep(20); // the link thread is now waiting for up to 200 ms
+        long t0 = System.nanoTime();
+        CallOutcome outcome = get(link.call(NaoCall.of("Test", "sleep", 1000), 50));
+        long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
+        assertInstanceOf(CallOutcome.TimedOut.class, outcome);
+        // The caller wakes the link thread when its call's deadline is earlier than the thread's
+        // next wake-up; without that the timeout would fire after about 180 ms.
+        assertTrue(tookMs < 150, "a 50 ms timeout fired after " + tookMs + " ms");
     }
 }
