@@ -7,15 +7,26 @@ import javafx.scene.layout.Pane;
 public final class ResizableCanvas extends Pane {
 
     private final Canvas canvas = new Canvas(10, 10);
+    private long resizes;
 
     public ResizableCanvas(Runnable onResize) {
         getChildren().add(canvas);
         canvas.widthProperty().bind(widthProperty());
         canvas.heightProperty().bind(heightProperty());
-        widthProperty().addListener((o, a, b) -> onResize.run());
-        heightProperty().addListener((o, a, b) -> onResize.run());
+        widthProperty().addListener((o, a, b) -> resized(onResize));
+        heightProperty().addListener((o, a, b) -> resized(onResize));
         setMinSize(50, 50);
         setPrefSize(480, 360);
+    }
+
+    private void resized(Runnable onResize) {
+        resizes++;
+        onResize.run();
+    }
+
+    /** How often the width or the height changed (a redraw without new data is due then). */
+    public long resizes() {
+        return resizes;
     }
 
     public Canvas canvas() {

@@ -73,6 +73,11 @@ public final class PlotView extends SourcedView {
         return draws;
     }
 
+    /** How often the canvas changed size (each change may cause one redraw without new data). */
+    public long resizes() {
+        return canvas.resizes();
+    }
+
     @Override
     protected void empty() {
         GraphicsContext g = canvas.canvas().getGraphicsContext2D();
