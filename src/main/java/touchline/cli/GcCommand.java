@@ -77,8 +77,9 @@ public final class GcCommand implements Callable<Integer> {
     @Option(names = "--half", defaultValue = "600", description = "half length in seconds. Default: ${DEFAULT-VALUE}")
     int halfSeconds;
 
-    @Option(names = "--realtime", description = "ask for real-time scheduling of the sender thread "
-            + "(Linux, needs root or CAP_SYS_NICE): keeps the 500 ms cadence on a busy laptop")
+    @Option(names = "--realtime", negatable = true, defaultValue = "true", fallbackValue = "true",
+            description = "real-time scheduling of the sender thread (Linux, root or CAP_SYS_NICE; on by default, "
+                    + "the outcome is printed): keeps the 500 ms cadence on a busy laptop")
     boolean realtime;
 
     @Option(names = "--interval-ms", defaultValue = "500", hidden = true)
@@ -121,10 +122,9 @@ public final class GcCommand implements Callable<Integer> {
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
             if (realtime) {
-                // the sender thread reports the outcome once it has started
-                Thread.sleep(200);
-                String why = gc.sender().realtimeOutcome();
-                print(why.isEmpty() ? "sender runs with real-time priority" : "! no real-time priority: " + why);
+                String why = gc.sender().awaitRealtimeOutcome(5000);
+                print(why.isEmpty() ? "sender runs with real-time priority"
+                        : "! no real-time priority (500 ms cadence may jitter on a busy machine): " + why);
             }
             print("state: " + game.describe());
             ActionSyntax syntax = new ActionSyntax();

@@ -45,7 +45,65 @@ final class IngestBenchCommand implements Callable<Integer> {
     @Option(names = "--compare-recording", description = "each round also runs the pipeline with the recorder attached")
     boolean compareRecording;
 
+    @Option(names = "--senders", defaultValue = "2", description = "touchline-blast processes sending at once: more than"
+            + " one, so that the sending side outruns either receiver (default ${DEFAULT-VALUE})")
+    int senderCount;
+
+    @Option(names = "--java-sender", description = "saturate with a Java sender thread instead of the C sender touchline-blast")
+    boolean javaSender;
+
     private final List<byte[]> datagrams = sampleTraffic();
+    private java.nio.file.Path blaster;
+    private java.nio.file.Path datagramFile;
+
+    /** The C sender and the file of datagrams it sends, or null (Java sender) when it is not built. */
+    private void prepareSender() throws java.io.IOException {
+        java.nio.file.Path bin = java.nio.file.Path.of(System.getProperty("touchline.robotside.bin", "robot-side/build/bin"))
+                .resolve("touchline-blast");
+        if (javaSender || !java.nio.file.Files.isExecutable(bin)) {
+            System.out.println("sender: one Java thread (DatagramChannel.write)"
+                    + (javaSender ? "" : "; touchline-blast not found at " + bin));
+            return;
+        }
+        datagramFile = java.nio.file.Files.createTempFile("touchline-ingest", ".bin");
+        datagramFile.toFile().deleteOnExit();
+        try (java.io.DataOutputStream out = new java.io.DataOutputStream(java.nio.file.Files.newOutputStream(datagramFile))) {
+            for (byte[] d : datagrams) {
+                out.writeShort(d.length);
+                out.write(d);
+            }
+        }
+        blaster = bin;
+        System.out.printf("sender: %d x touchline-blast (C, sendmmsg)%n", senderCount);
+    }
+
+    private Result blast(int port, int secs, LongAdder decoded) throws Exception {
+        long startCount = decoded.sum();
+        List<Process> senders = new ArrayList<>();
+        for (int i = 0; i < senderCount; i++) {
+            senders.add(new ProcessBuilder(blaster.toString(), "--to", "127.0.0.1:" + port, "--file",
+                    datagramFile.toString(), "--seconds", Integer.toString(secs))
+                    .redirectError(ProcessBuilder.Redirect.INHERIT).start());
+        }
+        long sent = 0;
+        double elapsed = 0;
+        for (Process p : senders) {
+            String line = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.US_ASCII).trim();
+            if (p.waitFor() != 0 || !line.startsWith("sent ")) {
+                throw new IllegalStateException("touchline-blast failed: " + line);
+            }
+            String[] words = line.split(" ");
+            sent += Long.parseLong(words[1]);
+            elapsed = Math.max(elapsed, Double.parseDouble(words[3]));
+        }
+        long last = -1;
+        while (decoded.sum() != last) { // wait until the receiver has drained its socket buffer
+            last = decoded.sum();
+            Thread.sleep(200);
+        }
+        long received = decoded.sum() - startCount;
+        return new Result(sent, received, received / elapsed);
+    }
 
     /** Six robots' realistic mix: keep-alives, plots, text, region growing. */
     static List<byte[]> sampleTraffic() {
@@ -82,6 +140,7 @@ final class IngestBenchCommand implements Callable<Integer> {
         System.out.printf("ingest benchmark: %d rounds x %d s, %d distinct datagrams (%d..%d bytes), %d cores%n", rounds,
                 seconds, datagrams.size(), datagrams.stream().mapToInt(d -> d.length).min().orElse(0),
                 datagrams.stream().mapToInt(d -> d.length).max().orElse(0), Runtime.getRuntime().availableProcessors());
+        prepareSender();
         // Warm-up (not counted): the JIT compiles both receive paths before anything is measured.
         baseline(3);
         pipeline(3, 0, false);
@@ -198,8 +257,16 @@ final class IngestBenchCommand implements Callable<Integer> {
         }
     }
 
-    /** Sends for {@code secs} seconds (as fast as possible, or at {@code pacedRate}), then waits for the tail. */
+    /**
+     * Sends for {@code secs} seconds (as fast as possible, or at {@code pacedRate}), then waits
+     * for the tail. As fast as possible uses the C sender {@code touchline-blast} (sendmmsg)
+     * where it is built: one Java sender thread is slower than either receiver, and would
+     * measure itself instead of them.
+     */
     private Result drive(int port, int secs, int pacedRate, LongAdder decoded) throws Exception {
+        if (pacedRate == 0 && blaster != null) {
+            return blast(port, secs, decoded);
+        }
         try (DatagramChannel out = DatagramChannel.open()) {
             out.connect(new InetSocketAddress("127.0.0.1", port));
             ByteBuffer[] buffers = datagrams.stream().map(ByteBuffer::wrap).toArray(ByteBuffer[]::new);

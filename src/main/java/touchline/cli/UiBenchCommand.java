@@ -6,9 +6,15 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.game.Game;
+import touchline.game.GameClock;
+import touchline.game.LeagueParams;
 import touchline.model.OptionState;
 import touchline.model.RobotSnapshot;
 import touchline.transport.UdpConfig;
+import touchline.transport.gamecontroller.GcConfig;
+import touchline.transport.gamecontroller.GcIntervalProbe;
+import touchline.transport.gamecontroller.GcProfile;
 import touchline.ui.ConsoleWindow;
 import touchline.ui.UiSettings;
 import touchline.ui.layout.LayoutNode;
@@ -16,6 +22,7 @@ import touchline.ui.layout.LayoutNode.Branch;
 import touchline.ui.layout.LayoutNode.Entry;
 import touchline.ui.layout.LayoutNode.Leaf;
 
+import java.net.InetSocketAddress;
 import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.List;
@@ -43,6 +50,13 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
 
     @Option(names = "--seconds", defaultValue = "600", description = "seconds with the views open (default ${DEFAULT-VALUE})")
     int seconds;
+
+    @Option(names = "--gc", description = "also referee inside the console (embedded GameController, HL v12 to a probe on"
+            + " 127.0.0.1) and report its send intervals while the views are open")
+    boolean gc;
+
+    @Option(names = "--gc-no-realtime", description = "with --gc: the sender at default scheduling instead of real-time priority")
+    boolean gcNoRealtime;
 
     @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
     String only;
@@ -78,10 +92,14 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             }
             System.out.printf(Locale.ROOT, "%d robots, %d options switched on at %d Hz%n", robots, switched, rate);
             FxThread.await(() -> false, 5_000); // let every stream start
+            GcIntervalProbe gcProbe = gc ? startGameController(console) : null;
             Phase baseline = phase("views closed (baseline)", console, window, baselineSeconds);
             List<LayoutNode> layout = only == null ? benchLayout(robots)
                     : List.of(new Leaf(0, List.of(new Entry(only, only.equals("field") ? "1/demo.field" : "1/" + sourceFor(only)))));
             FxThread.run(() -> window.shell().restore(layout));
+            if (gcProbe != null) {
+                gcProbe.reset();
+            }
             Phase open = phase("views open", console, window, seconds);
             System.out.println();
             System.out.println(header());
@@ -91,9 +109,26 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             System.out.println("FX thread time per frame by view (views open):");
             open.viewNanos().forEach((id, ns) -> System.out.printf(Locale.ROOT, "  %-14s %.3f ms%n", id,
                     ns / 1e6 / Math.max(1, open.frames())));
+            if (gcProbe != null) {
+                String rt = console.gameController().map(g -> g.sender().realtimeOutcome()).orElse("stopped");
+                System.out.println();
+                System.out.println("GameController inside the console, views open (sender real-time priority: "
+                        + (rt.isEmpty() ? "yes" : rt) + "): " + gcProbe.summary());
+                gcProbe.close();
+            }
             FxThread.run(javafx.application.Platform::exit);
         }
         return 0;
+    }
+
+    /** The console referees a game (INITIAL: nothing held back) towards a probe on loopback. */
+    private GcIntervalProbe startGameController(Console console) throws java.io.IOException {
+        boolean realtime = !gcNoRealtime;
+        GcIntervalProbe probe = new GcIntervalProbe("gc-probe", GcConfig.INTERVAL_MS, realtime);
+        GcConfig config = new GcConfig(GcProfile.HL12, false, List.of(probe.address()), null,
+                new InetSocketAddress("127.0.0.1", 0), null, GcConfig.INTERVAL_MS, realtime);
+        console.startGameController(new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system()), config);
+        return probe;
     }
 
     private static String sourceFor(String view) {

@@ -8,10 +8,8 @@ import touchline.protocol.gamecontroller.HlGameState12;
 import java.io.IOException;
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
-import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 
@@ -27,68 +25,6 @@ import java.util.Locale;
 public final class GcIntervalBenchmark {
 
     private static final long INTERVAL_MS = 500;
-    /** With --realtime the receiving probes get the same priority, so they do not add their own delay. */
-    private static volatile boolean realtimeProbes;
-
-    /** Receives datagrams on 127.0.0.1 and records receive times. */
-    private static final class Probe implements AutoCloseable {
-        final DatagramSocket socket;
-        final List<Long> nanos = new ArrayList<>();
-        final Thread thread;
-
-        Probe(String name) throws IOException {
-            socket = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
-            thread = new Thread(this::loop, name);
-            thread.setDaemon(true);
-            thread.setPriority(Thread.MAX_PRIORITY);
-            thread.start();
-        }
-
-        InetSocketAddress address() {
-            return (InetSocketAddress) socket.getLocalSocketAddress();
-        }
-
-        private void loop() {
-            if (realtimeProbes) {
-                new RealtimePriority(10).applyToCurrentThread();
-            }
-            byte[] buf = new byte[2048];
-            DatagramPacket p = new DatagramPacket(buf, buf.length);
-            while (!socket.isClosed()) {
-                try {
-                    socket.receive(p);
-                    long t = System.nanoTime();
-                    synchronized (nanos) {
-                        nanos.add(t);
-                    }
-                } catch (IOException e) {
-                    return;
-                }
-            }
-        }
-
-        void reset() {
-            synchronized (nanos) {
-                nanos.clear();
-            }
-        }
-
-        double[] deviationsMs() {
-            synchronized (nanos) {
-                double[] d = new double[Math.max(0, nanos.size() - 1)];
-                for (int i = 1; i < nanos.size(); i++) {
-                    d[i - 1] = (nanos.get(i) - nanos.get(i - 1)) / 1e6 - INTERVAL_MS;
-                }
-                return d;
-            }
-        }
-
-        @Override
-        public void close() {
-            socket.close();
-        }
-    }
-
     public static void main(String[] args) throws Exception {
         int seconds = 600;
         int loadThreads = 0;
@@ -106,7 +42,6 @@ public final class GcIntervalBenchmark {
                 }
             }
         }
-        realtimeProbes = realtime;
         List<Thread> load = new ArrayList<>();
         for (int i = 0; i < loadThreads; i++) {
             Thread t = new Thread(GcIntervalBenchmark::busy, "load-" + i);
@@ -116,8 +51,8 @@ public final class GcIntervalBenchmark {
         }
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
         HlGameState12 format = new HlGameState12();
-        try (Probe ours = new Probe("probe-touchline");
-             Probe baseline = new Probe("probe-baseline");
+        try (GcIntervalProbe ours = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
+             GcIntervalProbe baseline = new GcIntervalProbe("probe-baseline", INTERVAL_MS, realtime);
              GcSender sender = new GcSender(p -> {
                  if (p) {
                      game.advance();
@@ -143,8 +78,8 @@ public final class GcIntervalBenchmark {
             naive.close();
             System.out.println("sender real-time priority: " + (sender.realtimeOutcome().isEmpty() ? "yes"
                     : sender.realtimeOutcome()));
-            report("touchline GcSender (drift-free grid)", ours.deviationsMs());
-            report("baseline: send, then sleep 500 ms (Java GC style)", baseline.deviationsMs());
+            System.out.println("touchline GcSender (drift-free grid): " + ours.summary());
+            System.out.println("baseline: send, then sleep 500 ms (Java GC style): " + baseline.summary());
         }
     }
 
@@ -159,24 +94,6 @@ public final class GcIntervalBenchmark {
                 return;
             }
         }
-    }
-
-    private static void report(String name, double[] dev) {
-        if (dev.length == 0) {
-            System.out.println(name + ": no intervals");
-            return;
-        }
-        double[] abs = Arrays.stream(dev).map(Math::abs).sorted().toArray();
-        double mean = Arrays.stream(dev).average().orElse(0);
-        System.out.printf(Locale.ROOT,
-                "%s: intervals %d, |deviation from 500 ms| p50 %.3f ms, p99 %.3f ms, max %.3f ms; "
-                        + "mean interval %.3f ms%n",
-                name, dev.length, pct(abs, 50), pct(abs, 99), abs[abs.length - 1], 500 + mean);
-    }
-
-    private static double pct(double[] sorted, double p) {
-        int i = (int) Math.ceil(p / 100.0 * sorted.length) - 1;
-        return sorted[Math.max(0, Math.min(sorted.length - 1, i))];
     }
 
     private static void busy() {

@@ -50,7 +50,8 @@ public final class GcSender implements AutoCloseable {
     private final AtomicLong sendErrors = new AtomicLong();
     private volatile boolean running;
     private volatile boolean realtime;
-    private volatile String realtimeOutcome = "not requested";
+    private final java.util.concurrent.CompletableFuture<String> realtimeOutcome =
+            new java.util.concurrent.CompletableFuture<>();
     private volatile Thread thread;
     private int packetNumber;
     private String lastError;
@@ -87,9 +88,24 @@ public final class GcSender implements AutoCloseable {
         realtime = on;
     }
 
-    /** "" when the sender thread got real-time priority, else why not (or "not requested"). */
+    /**
+     * "" when the sender thread got real-time priority, else why not ("not requested", or
+     * "not started yet" before the thread has asked).
+     */
     public String realtimeOutcome() {
-        return realtimeOutcome;
+        return realtimeOutcome.getNow("not started yet");
+    }
+
+    /** {@link #realtimeOutcome()} once the started sender thread has asked (at most {@code timeoutMs}). */
+    public String awaitRealtimeOutcome(long timeoutMs) {
+        try {
+            return realtimeOutcome.get(timeoutMs, java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.TimeoutException | java.util.concurrent.ExecutionException e) {
+            return realtimeOutcome();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return realtimeOutcome();
+        }
     }
 
     public synchronized void start() {
@@ -121,9 +137,7 @@ public final class GcSender implements AutoCloseable {
     }
 
     private void loop() {
-        if (realtime) {
-            realtimeOutcome = new RealtimePriority(10).applyToCurrentThread();
-        }
+        realtimeOutcome.complete(realtime ? new RealtimePriority(10).applyToCurrentThread() : "not requested");
         long next = System.nanoTime();
         while (running) {
             long now = System.nanoTime();

@@ -46,7 +46,9 @@ public final class GameControllerTab implements View {
     private final TextField destinations = new TextField(System.getProperty(DESTINATIONS_PROPERTY,
             GcConfig.DEFAULT_BROADCAST + ":" + GcProfile.GAME_STATE_PORT));
     private final TextField returnPort = new TextField("");
+    private final CheckBox realtime = new CheckBox("Real-time priority for the sender");
     private final Label setupMessage = new Label();
+    private final Label priority = new Label();
     private final Label matchNotice = new Label();
     private final CheckBox override = new CheckBox("Override match mode (logged)");
     private final TextField overrideReason = new TextField();
@@ -74,11 +76,16 @@ public final class GameControllerTab implements View {
         start.setId("gc-start");
         start.setDefaultButton(true);
         start.setOnAction(e -> start());
+        // On by default: a crowded laptop must not move the 500 ms cadence (Linux, root or
+        // CAP_SYS_NICE; where it is not granted the running tab says why).
+        realtime.setSelected(true);
+        realtime.setId("gc-realtime");
+        priority.setId("gc-priority");
         setup = new VBox(8,
                 new FlowPane(8, 8, new Label("Format"), format, new Label("Team A"), teamA, new Label("Team B"), teamB),
                 new FlowPane(8, 8, new Label("Send to (host:port, comma separated)"), destinations,
                         new Label("Return port"), returnPort),
-                start, setupMessage);
+                realtime, start, setupMessage);
         setup.setPadding(new Insets(8));
         overrideReason.setPromptText("reason (required to override)");
         override.setId("gc-override");
@@ -109,7 +116,7 @@ public final class GameControllerTab implements View {
             GcConfig defaults = GcConfig.defaults(profile);
             int returns = returnPort.getText().isBlank() ? profile.defaultReturnPort() : Integer.parseInt(returnPort.getText().strip());
             GcConfig config = new GcConfig(profile, false, dests, null, new InetSocketAddress("0.0.0.0", returns),
-                    defaults.rivalBind(), GcConfig.INTERVAL_MS, false);
+                    defaults.rivalBind(), GcConfig.INTERVAL_MS, realtime.isSelected());
             Game game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
             show(console.startGameController(game, config));
         } catch (NumberFormatException e) {
@@ -126,8 +133,9 @@ public final class GameControllerTab implements View {
         Button stop = new Button("Stop GameController");
         stop.setId("gc-stop");
         stop.setOnAction(e -> stop());
+        priority.setText("");
         VBox running = new VBox(6, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
-                stop, referee.node());
+                priority, stop, referee.node());
         running.setPadding(new Insets(4));
         root.setCenter(running);
     }
@@ -175,10 +183,20 @@ public final class GameControllerTab implements View {
         }
         if (referee != null) {
             referee.refresh(frame);
+            priority.setText(priorityText(shown.sender().realtimeOutcome()));
         }
         String notice = console.matchMode().notice();
         matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);
         matchNotice.setStyle(notice.isEmpty() ? "" : "-fx-text-fill: #e0a000; -fx-font-weight: bold;");
+    }
+
+    private static String priorityText(String outcome) {
+        return switch (outcome) {
+            case "" -> "Sender: real-time priority (500 ms cadence held under load)";
+            case "not requested" -> "Sender: normal priority";
+            case "not started yet" -> "Sender: starting";
+            default -> "Sender: normal priority, real-time refused (" + outcome + ")";
+        };
     }
 
     @Override

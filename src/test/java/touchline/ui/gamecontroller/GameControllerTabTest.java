@@ -91,8 +91,14 @@ class GameControllerTabTest {
             assertTrue(console.matchMode().playIsOn(), "our own GameController's PLAYING silences the console");
             assertTrue(published.get(), "sent packets appear in the Envelope stream");
 
+            String outcome = console.gameController().orElseThrow().sender().awaitRealtimeOutcome(5000);
+            assertNotEquals("not requested", outcome, "the tab asks for real-time priority by default");
             fx(() -> {
                 tab.refresh(null);
+                String priority = ((javafx.scene.control.Label) tab.node().lookup("#gc-priority")).getText();
+                // granted (root, CAP_SYS_NICE) or refused with the reason: the tab says which
+                assertEquals(outcome.isEmpty(), priority.startsWith("Sender: real-time priority"), priority);
+                assertEquals(!outcome.isEmpty(), priority.contains("real-time refused (" + outcome + ")"), priority);
                 assertTrue(((javafx.scene.control.Label) tab.node().lookup("#match-notice")).getText().contains("PLAYING"));
                 ((Button) tab.node().lookup("#gc-stop")).fire();
                 return null;
