@@ -45,6 +45,13 @@ final class IngestBenchCommand implements Callable<Integer> {
     @Option(names = "--compare-recording", description = "each round also runs the pipeline with the recorder attached")
     boolean compareRecording;
 
+    @Option(names = "--flood", description = "measure by flooding from touchline-blast senders while the receiver runs"
+            + " (both compete for the two cores) instead of draining a filled socket buffer")
+    boolean flood;
+
+    @Option(names = "--batch", defaultValue = "3000", description = "drain mode: datagrams per filled buffer (default ${DEFAULT-VALUE})")
+    int batch;
+
     @Option(names = "--senders", defaultValue = "2", description = "touchline-blast processes sending at once: more than"
             + " one, so that the sending side outruns either receiver (default ${DEFAULT-VALUE})")
     int senderCount;
@@ -52,9 +59,10 @@ final class IngestBenchCommand implements Callable<Integer> {
     @Option(names = "--java-sender", description = "saturate with a Java sender thread instead of the C sender touchline-blast")
     boolean javaSender;
 
-    private final List<byte[]> datagrams = sampleTraffic();
+    private final List<byte[]> datagrams = sampleTraffic(1);
     private java.nio.file.Path blaster;
-    private java.nio.file.Path datagramFile;
+    /** One file per sender: each sender is its own six robots, as on a field (a robot keeps its address). */
+    private final List<java.nio.file.Path> datagramFiles = new ArrayList<>();
 
     /** The C sender and the file of datagrams it sends, or null (Java sender) when it is not built. */
     private void prepareSender() throws java.io.IOException {
@@ -65,13 +73,16 @@ final class IngestBenchCommand implements Callable<Integer> {
                     + (javaSender ? "" : "; touchline-blast not found at " + bin));
             return;
         }
-        datagramFile = java.nio.file.Files.createTempFile("touchline-ingest", ".bin");
-        datagramFile.toFile().deleteOnExit();
-        try (java.io.DataOutputStream out = new java.io.DataOutputStream(java.nio.file.Files.newOutputStream(datagramFile))) {
-            for (byte[] d : datagrams) {
-                out.writeShort(d.length);
-                out.write(d);
+        for (int i = 0; i < senderCount; i++) {
+            java.nio.file.Path file = java.nio.file.Files.createTempFile("touchline-ingest", ".bin");
+            file.toFile().deleteOnExit();
+            try (java.io.DataOutputStream out = new java.io.DataOutputStream(java.nio.file.Files.newOutputStream(file))) {
+                for (byte[] d : sampleTraffic(1 + 6 * i)) {
+                    out.writeShort(d.length);
+                    out.write(d);
+                }
             }
+            datagramFiles.add(file);
         }
         blaster = bin;
         System.out.printf("sender: %d x touchline-blast (C, sendmmsg)%n", senderCount);
@@ -80,9 +91,9 @@ final class IngestBenchCommand implements Callable<Integer> {
     private Result blast(int port, int secs, LongAdder decoded) throws Exception {
         long startCount = decoded.sum();
         List<Process> senders = new ArrayList<>();
-        for (int i = 0; i < senderCount; i++) {
+        for (java.nio.file.Path file : datagramFiles) {
             senders.add(new ProcessBuilder(blaster.toString(), "--to", "127.0.0.1:" + port, "--file",
-                    datagramFile.toString(), "--seconds", Integer.toString(secs))
+                    file.toString(), "--seconds", Integer.toString(secs))
                     .redirectError(ProcessBuilder.Redirect.INHERIT).start());
         }
         long sent = 0;
@@ -105,11 +116,11 @@ final class IngestBenchCommand implements Callable<Integer> {
         return new Result(sent, received, received / elapsed);
     }
 
-    /** Six robots' realistic mix: keep-alives, plots, text, region growing. */
-    static List<byte[]> sampleTraffic() {
+    /** Six robots' realistic mix (IDs from {@code firstRobot}): keep-alives, plots, text, region growing. */
+    static List<byte[]> sampleTraffic(int firstRobot) {
         FrameCodec frames = new FrameCodec();
         List<byte[]> out = new ArrayList<>();
-        for (int robot = 1; robot <= 6; robot++) {
+        for (int robot = firstRobot; robot < firstRobot + 6; robot++) {
             out.add(frames.encode(Framing.LEGACY, Fumanoid.Message.newBuilder().setRobotID(robot)
                     .setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTimestamp(123456789L).setTeamID(13)
                             .setTimeOnline(42).setActiveRole("striker").setCurrentState("walking").setRobotName("fu" + robot)
@@ -140,7 +151,12 @@ final class IngestBenchCommand implements Callable<Integer> {
         System.out.printf("ingest benchmark: %d rounds x %d s, %d distinct datagrams (%d..%d bytes), %d cores%n", rounds,
                 seconds, datagrams.size(), datagrams.stream().mapToInt(d -> d.length).min().orElse(0),
                 datagrams.stream().mapToInt(d -> d.length).max().orElse(0), Runtime.getRuntime().availableProcessors());
-        prepareSender();
+        if (flood) {
+            prepareSender();
+        } else {
+            System.out.printf("drain mode: fill the paused receiver's socket buffer with %d datagrams, time how fast it"
+                    + " decodes them (the sender idle meanwhile); --flood for senders running against it%n", batch);
+        }
         // Warm-up (not counted): the JIT compiles both receive paths before anything is measured.
         baseline(3);
         pipeline(3, 0, false);
@@ -208,6 +224,19 @@ final class IngestBenchCommand implements Callable<Integer> {
             }
             console.start();
             try {
+                if (pacedRate == 0 && !flood) {
+                    return drain(console.udp().localPort(), secs, decoded, new Reading() {
+                        @Override
+                        public void pause() throws InterruptedException {
+                            console.udp().setReading(false);
+                        }
+
+                        @Override
+                        public void resume() throws InterruptedException {
+                            console.udp().setReading(true);
+                        }
+                    });
+                }
                 return drive(console.udp().localPort(), secs, pacedRate, decoded);
             } finally {
                 if (record) {
@@ -219,29 +248,103 @@ final class IngestBenchCommand implements Callable<Integer> {
         }
     }
 
+    /** How a receiver is held while its socket buffer is filled, and let go. */
+    private interface Reading {
+        void pause() throws InterruptedException;
+
+        void resume() throws InterruptedException;
+    }
+
+    /**
+     * Drain mode: with the receiver paused, fill its socket buffer with {@link #batch}
+     * datagrams, let it go and time until it has decoded them all; repeated for {@code secs}
+     * seconds. Rate = datagrams decoded / time spent draining. The sender is idle while the
+     * receiver works, so on two cores the figure is the receiver's own capacity, not a share
+     * of a core it fights the sender for. A batch the kernel did not take whole (buffer full)
+     * is left out and the batch made smaller.
+     */
+    private Result drain(int port, int secs, LongAdder decoded, Reading reading) throws Exception {
+        try (DatagramChannel out = DatagramChannel.open()) {
+            out.connect(new InetSocketAddress("127.0.0.1", port));
+            ByteBuffer[] buffers = datagrams.stream().map(ByteBuffer::wrap).toArray(ByteBuffer[]::new);
+            reading.pause();
+            long end = System.nanoTime() + secs * 1_000_000_000L;
+            long sent = 0;
+            long received = 0;
+            long drainingNanos = 0;
+            int size = batch;
+            int incomplete = 0;
+            while (System.nanoTime() < end) {
+                long before = decoded.sum();
+                for (int i = 0; i < size; i++) {
+                    ByteBuffer b = buffers[(int) (sent % buffers.length)];
+                    b.rewind();
+                    out.write(b);
+                    sent++;
+                }
+                if (decoded.sum() != before) {
+                    throw new IllegalStateException("the receiver read while paused");
+                }
+                long t0 = System.nanoTime();
+                reading.resume();
+                long deadline = t0 + 1_000_000_000L;
+                long t1;
+                while (decoded.sum() - before < size && (t1 = System.nanoTime()) < deadline) {
+                    Thread.onSpinWait();
+                }
+                t1 = System.nanoTime();
+                reading.pause();
+                long got = decoded.sum() - before;
+                if (got < size) {
+                    incomplete++;
+                    size = Math.max(100, size * 3 / 4);
+                    continue;
+                }
+                drainingNanos += t1 - t0;
+                received += got;
+            }
+            reading.resume();
+            if (incomplete > 0) {
+                System.out.printf("  (%d batches not taken whole by the kernel, left out; batch now %d)%n", incomplete, size);
+            }
+            return new Result(received, received, received / (drainingNanos / 1e9));
+        }
+    }
+
     private Result baseline(int secs) throws Exception {
         LongAdder decoded = new LongAdder();
         AtomicBoolean running = new AtomicBoolean(true);
         MessageKinds kinds = new MessageKinds();
         FrameCodec frames = new FrameCodec();
+        // drain mode: the receiver reads until the socket is empty each time it is let go
+        java.util.concurrent.Semaphore go = new java.util.concurrent.Semaphore(0);
+        java.util.concurrent.Semaphore idle = new java.util.concurrent.Semaphore(0);
         try (DatagramChannel channel = DatagramChannel.open()) {
             channel.setOption(StandardSocketOptions.SO_RCVBUF, UdpConfig.defaults().receiveBuffer());
             channel.bind(new InetSocketAddress("127.0.0.1", 0));
-            channel.configureBlocking(true);
+            channel.configureBlocking(flood);
             Thread receiver = new Thread(() -> {
                 ByteBuffer buf = ByteBuffer.allocate(2048);
                 while (running.get()) {
                     try {
-                        buf.clear();
-                        channel.receive(buf);
-                        byte[] bytes = new byte[buf.position()];
-                        buf.flip();
-                        buf.get(bytes);
-                        var frame = frames.decode(bytes);
-                        if (frame instanceof touchline.protocol.FrameResult.Frame f) {
-                            Fumanoid.Message.parseFrom(f.payload(), kinds.registry());
-                            decoded.increment();
+                        if (!flood) {
+                            idle.release();
+                            go.acquire();
                         }
+                        do {
+                            buf.clear();
+                            if (channel.receive(buf) == null) {
+                                break; // drain mode: the socket is empty
+                            }
+                            byte[] bytes = new byte[buf.position()];
+                            buf.flip();
+                            buf.get(bytes);
+                            var frame = frames.decode(bytes);
+                            if (frame instanceof touchline.protocol.FrameResult.Frame f) {
+                                Fumanoid.Message.parseFrom(f.payload(), kinds.registry());
+                                decoded.increment();
+                            }
+                        } while (!flood || running.get());
                     } catch (Exception e) {
                         return;
                     }
@@ -249,8 +352,19 @@ final class IngestBenchCommand implements Callable<Integer> {
             }, "baseline-receiver");
             receiver.start();
             int port = ((InetSocketAddress) channel.getLocalAddress()).getPort();
-            Result r = drive(port, secs, 0, decoded);
+            Result r = flood ? drive(port, secs, 0, decoded) : drain(port, secs, decoded, new Reading() {
+                @Override
+                public void pause() throws InterruptedException {
+                    idle.acquire();
+                }
+
+                @Override
+                public void resume() {
+                    go.release();
+                }
+            });
             running.set(false);
+            go.release();
             channel.close();
             receiver.join(2000);
             return r;

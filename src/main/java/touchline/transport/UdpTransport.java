@@ -55,8 +55,9 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     }
 
     public UdpTransport start() throws InterruptedException {
-        // Linux's epoll transport reads datagrams with far less overhead than NIO; NIO elsewhere.
-        String mode = System.getProperty("touchline.udp", "epoll");
+        // Linux's epoll transport with recvmmsg (up to 32 datagrams per system call) reads with
+        // far less overhead than NIO; "epoll" reads one datagram per call, "nio" everywhere else.
+        String mode = System.getProperty("touchline.udp", "epoll-mmsg");
         boolean epoll = !mode.equals("nio") && io.netty.channel.epoll.Epoll.isAvailable();
         boolean mmsg = epoll && mode.equals("epoll-mmsg");
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
@@ -67,8 +68,8 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                 .option(ChannelOption.SO_RCVBUF, config.receiveBuffer())
                 .option(ChannelOption.SO_BROADCAST, true)
                 // Read many datagrams per wake-up: a datagram never fills the buffer, so Netty's
-                // "maybe more data" guess would otherwise stop after one. (recvmmsg batching,
-                // -Dtouchline.udp=epoll-mmsg, measured slower here: docs/benchmarks.md.)
+                // "maybe more data" guess would otherwise stop after one. With recvmmsg the
+                // buffer holds 32 datagrams of up to 2048 bytes (docs/benchmarks.md).
                 .option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(mmsg ? 2048 * 32 : 2048)
                         .respectMaybeMoreData(false).maxMessagesPerRead(64))
                 .handler(new ChannelInitializer<DatagramChannel>() {
@@ -86,6 +87,15 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         }
         channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();
         return this;
+    }
+
+    /**
+     * Stops or resumes reading from the socket; while stopped, datagrams wait in the socket's
+     * receive buffer (and beyond it are dropped by the kernel). Returns once the event loop has
+     * applied it. The ingest benchmark measures how fast a filled buffer is drained with this.
+     */
+    public void setReading(boolean on) throws InterruptedException {
+        channel.eventLoop().submit(() -> channel.config().setAutoRead(on)).sync();
     }
 
     public int localPort() {

@@ -63,6 +63,7 @@ class UdpTransportTest {
                 HexFormat.of().parseHex("002a0000"),                          // truncated legacy header
                 HexFormat.of().parseHex("002a000000000000000000ff0801"),        // length disagrees
                 new byte[1401],                                               // over 1400 bytes
+                new byte[9000],                                               // larger than a receive slot (2048)
                 frames.encode(Framing.LENGTH_PREFIX, new byte[]{(byte) 0xff, (byte) 0xff, (byte) 0xff}), // protobuf garbage
         };
         for (byte[] b : bad) {
