@@ -15,7 +15,6 @@ import java.util.List;
  */
 final class ReportedGameState implements EnvelopeSink {
 
-    private static final String STATUS = Fumanoid.status.getDescriptor().getName();
     private static final List<String> STATES = List.of("INITIAL", "READY", "SET", "PLAYING", "FINISHED");
 
     private final MatchMode matchMode;
@@ -26,10 +25,9 @@ final class ReportedGameState implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        // the kind first: a string compare, where hasExtension costs a descriptor check per message
-        if (e.direction() == Direction.IN && STATUS.equals(e.kind()) && e.message() instanceof Fumanoid.Message m
-                && m.hasExtension(Fumanoid.status)) {
-            int state = STATES.indexOf(m.getExtension(Fumanoid.status).getGameState());
+        Fumanoid.Status status = e.direction() == Direction.IN ? e.extension(Fumanoid.status) : null;
+        if (status != null) {
+            int state = STATES.indexOf(status.getGameState());
             if (state >= 0) {
                 matchMode.observe(state, "robot " + e.robotId());
             }

@@ -61,8 +61,9 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
             return;
         }
-        if (m.hasExtension(Fumanoid.debugOptionList)) {
-            onList(e.robotId(), m.getExtension(Fumanoid.debugOptionList));
+        Fumanoid.DebugOptionList list = e.extension(Fumanoid.debugOptionList);
+        if (list != null) {
+            onList(e.robotId(), list);
             return;
         }
         String option = optionNameOf(e, m);

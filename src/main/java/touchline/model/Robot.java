@@ -37,8 +37,9 @@ final class Robot {
         lastSeenMicros = Math.max(lastSeenMicros, e.timeMicros());
         packets++;
         rate.add(e.timeMicros(), e.size());
-        if (e.message() instanceof Fumanoid.Message m && m.hasExtension(Fumanoid.status)) {
-            status = m.getExtension(Fumanoid.status);
+        Fumanoid.Status reported = e.extension(Fumanoid.status);
+        if (reported != null) {
+            status = reported;
         }
         return note;
     }

@@ -33,6 +33,20 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         Objects.requireNonNull(raw, "raw");
     }
 
+    /**
+     * The inbound or outbound FUmanoids message's extension of this kind, or null when the
+     * envelope carries another kind. The kind (a string compare) is checked first: asking a
+     * message for an extension costs a descriptor check, and each subscriber asks for every
+     * datagram.
+     */
+    public <T> T extension(com.google.protobuf.GeneratedMessage.GeneratedExtension<touchline.proto.Fumanoid.Message, T> ext) {
+        if (message instanceof touchline.proto.Fumanoid.Message m && kind.equals(ext.getDescriptor().getName())
+                && m.hasExtension(ext)) {
+            return m.getExtension(ext);
+        }
+        return null;
+    }
+
     public boolean isMalformed() {
         return error != null;
     }

@@ -50,9 +50,9 @@ public final class PlotStore implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        if (e.direction() == Direction.IN && e.message() instanceof Fumanoid.Message m
-                && m.hasExtension(Fumanoid.debugPlot)) {
-            add(e.robotId(), m.getExtension(Fumanoid.debugPlot), e.timeMicros());
+        Fumanoid.DebugPlot plot = e.direction() == Direction.IN ? e.extension(Fumanoid.debugPlot) : null;
+        if (plot != null) {
+            add(e.robotId(), plot, e.timeMicros());
         }
     }
 

@@ -22,9 +22,8 @@ public final class TextLog implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        if (e.direction() == Direction.IN && e.message() instanceof Fumanoid.Message m
-                && m.hasExtension(Fumanoid.debugText)) {
-            Fumanoid.DebugText t = m.getExtension(Fumanoid.debugText);
+        Fumanoid.DebugText t = e.direction() == Direction.IN ? e.extension(Fumanoid.debugText) : null;
+        if (t != null) {
             lines.append(new TextLine(e.timeMicros(), t.getTimestamp(), e.robotId(), t.getOption(), t.getText()));
         }
     }
