@@ -18,7 +18,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.LongAdder;
 
 /**
  * Ingest benchmark: the console's UDP pipeline (Netty, framing, decoding, Envelope stream,
@@ -88,7 +87,7 @@ final class IngestBenchCommand implements Callable<Integer> {
         System.out.printf("sender: %d x touchline-blast (C, sendmmsg)%n", senderCount);
     }
 
-    private Result blast(int port, int secs, LongAdder decoded) throws Exception {
+    private Result blast(int port, int secs, Decoded decoded) throws Exception {
         long startCount = decoded.sum();
         List<Process> senders = new ArrayList<>();
         for (java.nio.file.Path file : datagramFiles) {
@@ -158,10 +157,13 @@ final class IngestBenchCommand implements Callable<Integer> {
                     + " decodes them (the sender idle meanwhile); --flood for senders running against it%n", batch);
         }
         // Warm-up (not counted): the JIT compiles both receive paths before anything is measured.
-        baseline(3);
-        pipeline(3, 0, false);
-        if (compareRecording) {
-            pipeline(3, 0, true);
+        // Two warm-up rounds: with ZGC the first full round still ran at half speed.
+        for (int w = 0; w < 2; w++) {
+            baseline(seconds);
+            pipeline(seconds, 0, false);
+            if (compareRecording) {
+                pipeline(seconds, 0, true);
+            }
         }
         double bestBaseline = 0;
         double bestPipeline = 0;
@@ -209,7 +211,8 @@ final class IngestBenchCommand implements Callable<Integer> {
     }
 
     private Result pipeline(int secs, int pacedRate, boolean record) throws Exception {
-        LongAdder decoded = new LongAdder();
+        System.gc(); // the previous phase's garbage is not collected on this one's time
+        Decoded decoded = new Decoded();
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = transportOnly ? new Console(config, touchline.transport.MicrosClock.system(), false)
                 : new Console(config)) {
@@ -248,6 +251,45 @@ final class IngestBenchCommand implements Callable<Integer> {
         }
     }
 
+    /**
+     * Messages decoded, counted by the receiving thread; in drain mode it also notes when the
+     * expected count was reached and wakes the waiting benchmark thread.
+     */
+    static final class Decoded {
+        private final java.util.concurrent.atomic.AtomicLong count = new java.util.concurrent.atomic.AtomicLong();
+        private volatile long expected = Long.MAX_VALUE;
+        private volatile long reachedNanos;
+        private volatile Thread waiter;
+
+        void increment() {
+            if (count.incrementAndGet() == expected) {
+                reachedNanos = System.nanoTime();
+                java.util.concurrent.locks.LockSupport.unpark(waiter);
+            }
+        }
+
+        long sum() {
+            return count.get();
+        }
+
+        void expect(long total) {
+            waiter = Thread.currentThread();
+            reachedNanos = 0;
+            expected = total;
+        }
+
+        /** When the expected count was reached, or the time given up at the deadline. */
+        long await(long deadlineNanos) {
+            long now;
+            while (count.get() < expected && (now = System.nanoTime()) < deadlineNanos) {
+                java.util.concurrent.locks.LockSupport.parkNanos(this, deadlineNanos - now);
+            }
+            long reached = reachedNanos;
+            expected = Long.MAX_VALUE;
+            return reached != 0 ? reached : System.nanoTime();
+        }
+    }
+
     /** How a receiver is held while its socket buffer is filled, and let go. */
     private interface Reading {
         void pause() throws InterruptedException;
@@ -263,7 +305,7 @@ final class IngestBenchCommand implements Callable<Integer> {
      * of a core it fights the sender for. A batch the kernel did not take whole (buffer full)
      * is left out and the batch made smaller.
      */
-    private Result drain(int port, int secs, LongAdder decoded, Reading reading) throws Exception {
+    private Result drain(int port, int secs, Decoded decoded, Reading reading) throws Exception {
         try (DatagramChannel out = DatagramChannel.open()) {
             out.connect(new InetSocketAddress("127.0.0.1", port));
             ByteBuffer[] buffers = datagrams.stream().map(ByteBuffer::wrap).toArray(ByteBuffer[]::new);
@@ -285,14 +327,11 @@ final class IngestBenchCommand implements Callable<Integer> {
                 if (decoded.sum() != before) {
                     throw new IllegalStateException("the receiver read while paused");
                 }
+                decoded.expect(before + size);
                 long t0 = System.nanoTime();
                 reading.resume();
-                long deadline = t0 + 1_000_000_000L;
-                long t1;
-                while (decoded.sum() - before < size && (t1 = System.nanoTime()) < deadline) {
-                    Thread.onSpinWait();
-                }
-                t1 = System.nanoTime();
+                // parked, not spinning: the second core stays free for the receiver's own threads
+                long t1 = decoded.await(t0 + 1_000_000_000L);
                 reading.pause();
                 long got = decoded.sum() - before;
                 if (got < size) {
@@ -312,7 +351,8 @@ final class IngestBenchCommand implements Callable<Integer> {
     }
 
     private Result baseline(int secs) throws Exception {
-        LongAdder decoded = new LongAdder();
+        System.gc(); // the previous phase's garbage is not collected on this one's time
+        Decoded decoded = new Decoded();
         AtomicBoolean running = new AtomicBoolean(true);
         MessageKinds kinds = new MessageKinds();
         FrameCodec frames = new FrameCodec();
@@ -377,7 +417,7 @@ final class IngestBenchCommand implements Callable<Integer> {
      * where it is built: one Java sender thread is slower than either receiver, and would
      * measure itself instead of them.
      */
-    private Result drive(int port, int secs, int pacedRate, LongAdder decoded) throws Exception {
+    private Result drive(int port, int secs, int pacedRate, Decoded decoded) throws Exception {
         if (pacedRate == 0 && blaster != null) {
             return blast(port, secs, decoded);
         }
