@@ -85,6 +85,10 @@ public final class McapReader implements Closeable {
     }
 
     private void load() throws IOException, RecordingException {
+        if (fileSize == 0) {
+            throw new RecordingException(file.getFileName() + " is empty (a recorder that was stopped before it"
+                    + " wrote anything)");
+        }
         byte[] head = read(0, (int) Math.min(8, fileSize));
         if (!Arrays.equals(head, McapRecords.MAGIC)) {
             throw new RecordingException(file.getFileName() + " is not an MCAP recording (it starts with "

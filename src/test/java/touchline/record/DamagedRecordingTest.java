@@ -92,7 +92,8 @@ class DamagedRecordingTest {
         assertTrue(e.getMessage().contains("is not an MCAP recording"), e.getMessage());
         Path empty = dir.resolve("empty.mcap");
         Files.write(empty, new byte[0]);
-        assertThrows(RecordingException.class, () -> Recording.open(empty));
+        RecordingException none = assertThrows(RecordingException.class, () -> Recording.open(empty));
+        assertTrue(none.getMessage().contains("empty.mcap is empty"), none.getMessage());
         RecordingException missing = assertThrows(RecordingException.class, () -> Recording.open(dir.resolve("nope.mcap")));
         assertTrue(missing.getMessage().startsWith("cannot open"), missing.getMessage());
     }

@@ -97,12 +97,16 @@ class BadInputUiTest {
         PlotView plot = ui.view(PlotView.class);
         publish(StoreEnvelopes.plot(now(), ROBOT, "calm.plot", "a", 1.0, 2.0, 3.0));
         ui.await(10, () -> plot.points() == 3);
-        long draws = ui.fx(plot::draws);
-        long resizes = ui.fx(plot::resizes);
-        long frame = ui.fx(() -> ui.window.pulse().frames());
+        // The first status line can change the layout once, and the canvas' resize is drawn
+        // in the next frame: let three frames pass, then count.
+        long settled = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(10, () -> ui.window.pulse().frames() > settled + 3);
+        long[] before = ui.fx(() -> new long[] {plot.draws(), plot.resizes(), ui.window.pulse().frames()});
+        long draws = before[0];
+        long resizes = before[1];
+        long frame = before[2];
         ui.await(10, () -> ui.window.pulse().frames() > frame + 10);
-        // The first status line can still change the layout (and so the canvas size) once:
-        // a resize is a reason to redraw, ten frames without new data are not.
+        // a resize is a reason to redraw, ten frames without new data are not
         long redraws = ui.fx(plot::draws) - draws;
         long resized = ui.fx(plot::resizes) - resizes;
         assertTrue(redraws <= resized, "redrawn " + redraws + " times without new data, resized " + resized + " times");
