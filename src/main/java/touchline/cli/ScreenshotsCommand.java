@@ -154,7 +154,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 touchline.transport.gamecontroller.GcProfile.HL12);
         touchline.transport.gamecontroller.GcConfig config = new touchline.transport.gamecontroller.GcConfig(
                 touchline.transport.gamecontroller.GcProfile.HL12, false, robots, null,
-                new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), false);
+                new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), true); // as the tab does
         touchline.game.Game game = new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0,
                 touchline.game.GameClock.system());
         console.startGameController(game, config);
