@@ -32,7 +32,7 @@ final class IngestBenchCommand implements Callable<Integer> {
     @Option(names = "--seconds", defaultValue = "5", description = "seconds per measurement (default ${DEFAULT-VALUE})")
     int seconds;
 
-    @Option(names = "--rounds", defaultValue = "3", description = "alternating rounds (default ${DEFAULT-VALUE})")
+    @Option(names = "--rounds", defaultValue = "5", description = "alternating rounds (default ${DEFAULT-VALUE})")
     int rounds;
 
     @Option(names = "--rate", defaultValue = "50000", description = "fixed rate for the loss test, messages/s (default ${DEFAULT-VALUE})")
