@@ -1,0 +1,82 @@
+package touchline.cli;
+
+import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.DatagramChannel;
+import java.util.List;
+
+/**
+ * The ingest benchmark's default measurement: how fast a receiver empties a socket buffer
+ * that was filled while it was held.
+ */
+final class DrainMeter {
+
+    /** How a receiver is held while its socket buffer is filled, and let go. */
+    interface Reading {
+        void pause() throws InterruptedException;
+
+        void resume() throws InterruptedException;
+    }
+
+    private final List<byte[]> datagrams;
+    private final int batch;
+
+    /** @param batch datagrams per filled buffer (made smaller when the kernel does not take a batch whole) */
+    DrainMeter(List<byte[]> datagrams, int batch) {
+        this.datagrams = datagrams;
+        this.batch = batch;
+    }
+
+    /**
+     * Drain mode: with the receiver paused, fill its socket buffer with {@code batch}
+     * datagrams, let it go and time until it has decoded them all; repeated for {@code secs}
+     * seconds. Rate = datagrams decoded / time spent draining. The sender is idle while the
+     * receiver works, so on two cores the figure is the receiver's own capacity, not a share
+     * of a core it fights the sender for. A batch the kernel did not take whole (buffer full)
+     * is left out and the batch made smaller.
+     */
+    IngestResult measure(int port, int secs, DecodedCounter decoded, Reading reading) throws Exception {
+        try (DatagramChannel out = DatagramChannel.open()) {
+            out.connect(new InetSocketAddress("127.0.0.1", port));
+            ByteBuffer[] buffers = datagrams.stream().map(ByteBuffer::wrap).toArray(ByteBuffer[]::new);
+            reading.pause();
+            long end = System.nanoTime() + secs * 1_000_000_000L;
+            long sent = 0;
+            long received = 0;
+            long drainingNanos = 0;
+            int size = batch;
+            int incomplete = 0;
+            while (System.nanoTime() < end) {
+                long before = decoded.sum();
+                for (int i = 0; i < size; i++) {
+                    ByteBuffer b = buffers[(int) (sent % buffers.length)];
+                    b.rewind();
+                    out.write(b);
+                    sent++;
+                }
+                if (decoded.sum() != before) {
+                    throw new IllegalStateException("the receiver read while paused");
+                }
+                decoded.expect(before + size);
+                long t0 = System.nanoTime();
+                reading.resume();
+                // parked, not spinning: the second core stays free for the receiver's own threads
+                long t1 = decoded.await(t0 + 1_000_000_000L);
+                reading.pause();
+                long got = decoded.sum() - before;
+                if (got < size) {
+                    incomplete++;
+                    size = Math.max(100, size * 3 / 4);
+                    continue;
+                }
+                drainingNanos += t1 - t0;
+                received += got;
+            }
+            reading.resume();
+            if (incomplete > 0) {
+                System.out.printf("  (%d batches not taken whole by the kernel, left out; batch now %d)%n", incomplete, size);
+            }
+            return new IngestResult(received, received, received / (drainingNanos / 1e9));
+        }
+    }
+}
