@@ -58,6 +58,23 @@ class UdpTransportTest {
     }
 
     @Test
+    void datagramsWaitInTheSocketWhileReadingIsPausedAndAllArriveInOrderAfter() throws Exception {
+        transport.setReading(false);
+        for (int id = 1; id <= 200; id++) {
+            send(status(id, Framing.LEGACY));
+        }
+        // A round trip through the event loop: it handles ready sockets before its tasks, so an
+        // unpaused channel would have read the datagrams by now.
+        transport.setReading(false);
+        assertTrue(received.isEmpty(), received.size() + " read while paused");
+        transport.setReading(true);
+        for (int id = 1; id <= 200; id++) {
+            assertEquals(id, next().robotId());
+        }
+        assertEquals(200, transport.counters().datagramsIn());
+    }
+
+    @Test
     void eachBadDatagramIsReportedAndTheNextGoodOneDecodes() throws Exception {
         byte[][] bad = {
                 HexFormat.of().parseHex("002a0000"),                          // truncated legacy header
