@@ -51,12 +51,7 @@ final class BlastSenders {
             sent += Long.parseLong(words[1]);
             elapsed = Math.max(elapsed, Double.parseDouble(words[3]));
         }
-        long last = -1;
-        while (decoded.sum() != last) { // wait until the receiver has drained its socket buffer
-            last = decoded.sum();
-            Thread.sleep(200);
-        }
-        long received = decoded.sum() - startCount;
+        long received = decoded.awaitSettled() - startCount;
         return new IngestResult(sent, received, received / elapsed);
     }
 }

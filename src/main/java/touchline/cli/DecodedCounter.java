@@ -22,6 +22,19 @@ final class DecodedCounter {
         return count.get();
     }
 
+    /**
+     * After a flood: the count once it has stopped changing for 200 ms, i.e. once the receiver
+     * has emptied its socket buffer (nothing signals "empty", so the count is watched).
+     */
+    long awaitSettled() throws InterruptedException {
+        long last = -1;
+        while (count.get() != last) {
+            last = count.get();
+            Thread.sleep(200);
+        }
+        return last;
+    }
+
     void expect(long total) {
         waiter = Thread.currentThread();
         reachedNanos = 0;

@@ -11,11 +11,10 @@ import java.util.List;
  */
 final class DrainMeter {
 
-    /** How a receiver is held while its socket buffer is filled, and let go. */
-    interface Reading {
-        void pause() throws InterruptedException;
-
-        void resume() throws InterruptedException;
+    /** Holding the receiver while its socket buffer is filled, or letting it go. */
+    @FunctionalInterface
+    interface Step {
+        void run() throws InterruptedException;
     }
 
     private final List<byte[]> datagrams;
@@ -35,11 +34,11 @@ final class DrainMeter {
      * of a core it fights the sender for. A batch the kernel did not take whole (buffer full)
      * is left out and the batch made smaller.
      */
-    IngestResult measure(int port, int secs, DecodedCounter decoded, Reading reading) throws Exception {
+    IngestResult measure(int port, int secs, DecodedCounter decoded, Step pause, Step resume) throws Exception {
         try (DatagramChannel out = DatagramChannel.open()) {
             out.connect(new InetSocketAddress("127.0.0.1", port));
             ByteBuffer[] buffers = datagrams.stream().map(ByteBuffer::wrap).toArray(ByteBuffer[]::new);
-            reading.pause();
+            pause.run();
             long end = System.nanoTime() + secs * 1_000_000_000L;
             long sent = 0;
             long received = 0;
@@ -59,10 +58,10 @@ final class DrainMeter {
                 }
                 decoded.expect(before + size);
                 long t0 = System.nanoTime();
-                reading.resume();
+                resume.run();
                 // parked, not spinning: the second core stays free for the receiver's own threads
                 long t1 = decoded.await(t0 + 1_000_000_000L);
-                reading.pause();
+                pause.run();
                 long got = decoded.sum() - before;
                 if (got < size) {
                     incomplete++;
@@ -72,7 +71,7 @@ final class DrainMeter {
                 drainingNanos += t1 - t0;
                 received += got;
             }
-            reading.resume();
+            resume.run();
             if (incomplete > 0) {
                 System.out.printf("  (%d batches not taken whole by the kernel, left out; batch now %d)%n", incomplete, size);
             }

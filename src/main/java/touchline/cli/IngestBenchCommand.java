@@ -155,17 +155,8 @@ final class IngestBenchCommand implements Callable<Integer> {
             console.start();
             try {
                 if (pacedRate == 0 && !flood) {
-                    return new DrainMeter(datagrams, batch).measure(console.udp().localPort(), secs, decoded, new DrainMeter.Reading() {
-                        @Override
-                        public void pause() throws InterruptedException {
-                            console.udp().setReading(false);
-                        }
-
-                        @Override
-                        public void resume() throws InterruptedException {
-                            console.udp().setReading(true);
-                        }
-                    });
+                    return new DrainMeter(datagrams, batch).measure(console.udp().localPort(), secs, decoded,
+                            () -> console.udp().setReading(false), () -> console.udp().setReading(true));
                 }
                 return drive(console.udp().localPort(), secs, pacedRate, decoded);
             } finally {
@@ -220,17 +211,8 @@ final class IngestBenchCommand implements Callable<Integer> {
             }, "baseline-receiver");
             receiver.start();
             int port = ((InetSocketAddress) channel.getLocalAddress()).getPort();
-            IngestResult r = flood ? drive(port, secs, 0, decoded) : new DrainMeter(datagrams, batch).measure(port, secs, decoded, new DrainMeter.Reading() {
-                @Override
-                public void pause() throws InterruptedException {
-                    idle.acquire();
-                }
-
-                @Override
-                public void resume() {
-                    go.release();
-                }
-            });
+            IngestResult r = flood ? drive(port, secs, 0, decoded)
+                    : new DrainMeter(datagrams, batch).measure(port, secs, decoded, idle::acquire, go::release);
             running.set(false);
             go.release();
             channel.close();
@@ -269,12 +251,7 @@ final class IngestBenchCommand implements Callable<Integer> {
                 sent++;
             }
             long sendEnd = System.nanoTime();
-            long last = -1;
-            while (decoded.sum() != last) { // wait until the receiver has drained its socket buffer
-                last = decoded.sum();
-                Thread.sleep(200);
-            }
-            long received = decoded.sum() - startCount;
+            long received = decoded.awaitSettled() - startCount;
             double elapsed = (sendEnd - start) / 1e9;
             return new IngestResult(sent, received, received / elapsed);
         }
