@@ -63,8 +63,7 @@ final class IngestBenchCommand implements Callable<Integer> {
 
     /** The C senders, or null (one Java sender thread) when they are not built or not wanted. */
     private void prepareSender() throws java.io.IOException {
-        java.nio.file.Path bin = java.nio.file.Path.of(System.getProperty("touchline.robotside.bin", "robot-side/build/bin"))
-                .resolve("touchline-blast");
+        java.nio.file.Path bin = new RobotSideBinaries().of("touchline-blast");
         if (javaSender || !java.nio.file.Files.isExecutable(bin)) {
             System.out.println("sender: one Java thread (DatagramChannel.write)"
                     + (javaSender ? "" : "; touchline-blast not found at " + bin));

@@ -107,7 +107,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
 
     /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
     private void shootNao(ConsoleWindow window) throws Exception {
-        java.nio.file.Path sim = SimulatedTeam.binary().resolveSibling("touchline-nao-sim");
+        java.nio.file.Path sim = new RobotSideBinaries().of("touchline-nao-sim");
         if (!Files.isExecutable(sim)) {
             System.err.println("no NAO screenshot: " + sim + " is missing");
             return;

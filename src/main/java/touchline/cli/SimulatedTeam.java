@@ -15,13 +15,9 @@ final class SimulatedTeam implements AutoCloseable {
 
     private final List<Process> processes = new ArrayList<>();
 
-    static Path binary() {
-        return Path.of(System.getProperty("touchline.robotside.bin", "robot-side/build/bin")).resolve("touchline-robot");
-    }
-
     /** Starts robots 1..n; throws when the binary was not built. */
     static SimulatedTeam start(int n, int consolePort, List<String> extra) throws IOException {
-        Path bin = binary();
+        Path bin = new RobotSideBinaries().of("touchline-robot");
         if (!Files.isExecutable(bin)) {
             throw new IOException(bin + " is missing: build the robot side first (./touchline build)");
         }
