@@ -50,6 +50,11 @@ public final class GcSender implements AutoCloseable {
     private final AtomicLong sendErrors = new AtomicLong();
     private volatile boolean running;
     private volatile boolean realtime;
+    /** {@link #realtimeOutcome()} when real-time priority was not asked for. */
+    public static final String NOT_REQUESTED = "not requested";
+    /** {@link #realtimeOutcome()} before the sender thread has asked. */
+    public static final String NOT_STARTED = "not started yet";
+
     private final java.util.concurrent.CompletableFuture<String> realtimeOutcome =
             new java.util.concurrent.CompletableFuture<>();
     private volatile Thread thread;
@@ -89,11 +94,11 @@ public final class GcSender implements AutoCloseable {
     }
 
     /**
-     * "" when the sender thread got real-time priority, else why not ("not requested", or
-     * "not started yet" before the thread has asked).
+     * "" when the sender thread got real-time priority, else why not ({@link #NOT_REQUESTED},
+     * {@link #NOT_STARTED}, or the system's refusal).
      */
     public String realtimeOutcome() {
-        return realtimeOutcome.getNow("not started yet");
+        return realtimeOutcome.getNow(NOT_STARTED);
     }
 
     /** {@link #realtimeOutcome()} once the started sender thread has asked (at most {@code timeoutMs}). */
@@ -137,7 +142,7 @@ public final class GcSender implements AutoCloseable {
     }
 
     private void loop() {
-        realtimeOutcome.complete(realtime ? new RealtimePriority(10).applyToCurrentThread() : "not requested");
+        realtimeOutcome.complete(realtime ? new RealtimePriority(10).applyToCurrentThread() : NOT_REQUESTED);
         long next = System.nanoTime();
         while (running) {
             long now = System.nanoTime();

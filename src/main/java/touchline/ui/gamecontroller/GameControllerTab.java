@@ -18,6 +18,7 @@ import touchline.game.MatchMode;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
+import touchline.transport.gamecontroller.GcSender;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
@@ -191,12 +192,14 @@ public final class GameControllerTab implements View {
     }
 
     private static String priorityText(String outcome) {
-        return switch (outcome) {
-            case "" -> "Sender: real-time priority (500 ms cadence held under load)";
-            case "not requested" -> "Sender: normal priority";
-            case "not started yet" -> "Sender: starting";
-            default -> "Sender: normal priority, real-time refused (" + outcome + ")";
-        };
+        if (outcome.isEmpty()) {
+            return "Sender: real-time priority (500 ms cadence held under load)";
+        } else if (outcome.equals(GcSender.NOT_REQUESTED)) {
+            return "Sender: normal priority";
+        } else if (outcome.equals(GcSender.NOT_STARTED)) {
+            return "Sender: starting";
+        }
+        return "Sender: normal priority, real-time refused (" + outcome + ")";
     }
 
     @Override

@@ -92,7 +92,7 @@ class GameControllerTabTest {
             assertTrue(published.get(), "sent packets appear in the Envelope stream");
 
             String outcome = console.gameController().orElseThrow().sender().awaitRealtimeOutcome(5000);
-            assertNotEquals("not requested", outcome, "the tab asks for real-time priority by default");
+            assertNotEquals(touchline.transport.gamecontroller.GcSender.NOT_REQUESTED, outcome, "the tab asks for real-time priority by default");
             fx(() -> {
                 tab.refresh(null);
                 String priority = ((javafx.scene.control.Label) tab.node().lookup("#gc-priority")).getText();
