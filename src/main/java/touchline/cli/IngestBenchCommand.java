@@ -20,9 +20,11 @@ import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * Ingest benchmark: the console's UDP pipeline (Netty, framing, decoding, Envelope stream,
- * robot model) against a baseline in the same run, a plain DatagramChannel loop that only
- * parses the protobuf. Reports the best-effort throughput of both and the loss of the
- * pipeline at a fixed rate (50 000 messages/s: 40x a team's legal 1 Mbit/s).
+ * and without {@code --transport-only} the robot model) against a baseline in the same run, a
+ * plain DatagramChannel loop that only parses the protobuf. Both are measured by how fast
+ * they drain a filled socket buffer ({@link DrainMeter}; {@code --flood} instead runs
+ * {@link BlastSenders} against them), optionally with the recorder attached; then the
+ * pipeline's loss at a fixed rate (50 000 messages/s: 40x a team's legal 1 Mbit/s).
  */
 @Command(name = "ingest", mixinStandardHelpOptions = true,
         description = "Decoded messages/s of the UDP pipeline vs a plain receive loop, and loss at a fixed rate.")
