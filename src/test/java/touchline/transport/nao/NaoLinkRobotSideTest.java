@@ -99,7 +99,7 @@ class NaoLinkRobotSideTest {
     @Test
     void aFrozenServerIsLostByHeartbeatAndItsLateCallIsNotRunWhenItThaws() throws Exception {
         try (RobotSideProcess sim = new RobotSideProcess(0, 0); NaoLink link = online(sim)) {
-            sim.signal("STOP");
+            sim.freeze();
             long frozen = System.nanoTime();
             // Sent into the frozen robot's socket buffer: only its deadline keeps it from running later.
             CompletableFuture<CallOutcome> intoTheFreeze = link.call(NaoCall.of("ALMemory", "insertData", "Touchline/frozen", 1), 1000);

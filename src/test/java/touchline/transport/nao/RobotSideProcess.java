@@ -87,6 +87,33 @@ final class RobotSideProcess implements AutoCloseable {
         new ProcessBuilder("kill", "-" + name, Long.toString(process.pid())).inheritIO().start().waitFor();
     }
 
+    /**
+     * SIGSTOP, then waits until every thread of the process is stopped: {@code kill} returns when
+     * the signal is sent, and a thread busy on the other core can still answer a call meanwhile.
+     */
+    void freeze() throws Exception {
+        signal("STOP");
+        if (!Poll.until(this::stopped, java.time.Duration.ofSeconds(5))) {
+            throw new IllegalStateException("touchline-nao-sim did not stop within 5 s");
+        }
+    }
+
+    /** Every thread in state T (stopped), read from /proc. */
+    private boolean stopped() {
+        try (var tasks = Files.list(Path.of("/proc", Long.toString(process.pid()), "task"))) {
+            return tasks.allMatch(task -> {
+                try {
+                    String stat = Files.readString(task.resolve("stat"));
+                    return stat.charAt(stat.lastIndexOf(')') + 2) == 'T';
+                } catch (IOException e) {
+                    return true; // the thread has ended
+                }
+            });
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
     void kill() throws Exception {
         signal("CONT");
         process.destroyForcibly();
