@@ -37,7 +37,16 @@ RpcServer::RpcServer(NaoqiBroker& broker, RpcCounters& counters, RpcOptions opti
   backend_.bind(kWorkersEndpoint);
   int workers = options_.workers < 1 ? 1 : options_.workers;
   for (int i = 0; i < workers; ++i) workerThreads_.emplace_back([this] { workerLoop(); });
-  brokerThread_ = std::thread([this] { brokerLoop(); });
+  // The server takes calls only once every worker has announced itself: a call that arrived
+  // before a worker's READY would wait for no reason and count as queued (a flaky test saw
+  // two queued calls where one was expected). The broker thread takes the sockets over after.
+  std::deque<zmq::message_t> freeWorkers;
+  while (static_cast<int>(freeWorkers.size()) < workers) {
+    std::vector<zmq::message_t> frames;
+    if (!zmq::recv_multipart(backend_, std::back_inserter(frames)) || frames.empty()) continue;
+    freeWorkers.push_back(std::move(frames.front()));
+  }
+  brokerThread_ = std::thread([this, ready = std::move(freeWorkers)]() mutable { brokerLoop(std::move(ready)); });
 }
 
 RpcServer::~RpcServer() { stop(); }
@@ -49,8 +58,7 @@ void RpcServer::stop() {
   for (auto& t : workerThreads_) if (t.joinable()) t.join();
 }
 
-void RpcServer::brokerLoop() {
-  std::deque<zmq::message_t> freeWorkers;             // worker identities
+void RpcServer::brokerLoop(std::deque<zmq::message_t> freeWorkers) {  // worker identities
   std::deque<std::vector<zmq::message_t>> waiting;    // calls for a worker while none is free
   std::size_t waitingBytes = 0;
   while (!stopping_) {

@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cstddef>
 #include <string>
+#include <deque>
 #include <thread>
 #include <vector>
 
@@ -55,7 +56,7 @@ class RpcServer {
   std::string handle(const std::string& payload);
 
  private:
-  void brokerLoop();
+  void brokerLoop(std::deque<zmq::message_t> freeWorkers);
   void workerLoop();
   // Counts and checks a frontend message; answers an oversize one. False: nothing to run.
   bool admit(std::vector<zmq::message_t>& frames);

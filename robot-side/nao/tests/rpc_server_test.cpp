@@ -247,12 +247,11 @@ TEST(RpcServerQuickCalls, AnsweredWhileEveryWorkerIsBlockedAndQueuedLongCallsSti
       longCalls.send(encodeRequest("ALMotion", "angleInterpolation",
                                    {stringValue("HeadYaw"), floatValue(0.5f), floatValue(0.1f), boolValue(true)}));
   for (int i = 0; i < 20; ++i) {
-    auto sent = Clock::now();
+    // Answered within the call timeout while both 30 s says hold the workers: not waiting for one.
     auto reply = rpcCall(quick, i % 2 ? "ALRobotPosture" : "ALMotion", i % 2 ? "getPosture" : "ping", {},
                          1000ms);
     ASSERT_TRUE(reply) << "quick call " << i << " was not answered while all workers were busy";
     EXPECT_FALSE(reply->has_error()) << reply->error();
-    EXPECT_LT(Clock::now() - sent, 100ms);
   }
   EXPECT_GE(counters.inlineCalls, 20u);
   EXPECT_EQ(counters.queuedCalls, 1u);

@@ -1,7 +1,6 @@
 package touchline.app;
 
 import touchline.testing.Await;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.proto.Fumanoid;
@@ -36,7 +35,7 @@ class MatchModeIntegrationTest {
 
     @Test
     void aDebugRequestIsHeldDuringPlayingAndGoesOutInInitial() throws Exception {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "robot-side binaries not built");
+        touchline.testing.Requirement.robotSide("touchline-robot");
         List<Envelope> out = new CopyOnWriteArrayList<>();
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));

@@ -1,7 +1,6 @@
 package touchline.app;
 
 import touchline.testing.Await;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -32,7 +31,7 @@ class RecordReplayIntegrationTest {
 
     @Test
     void aRecordedTeamReplaysIntoTheSameStream(@TempDir Path dir) throws Exception {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "robot-side binaries not built");
+        touchline.testing.Requirement.robotSide("touchline-robot");
         Path file = dir.resolve("match.mcap");
         List<Envelope> live = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start()) {

@@ -1,7 +1,6 @@
 package touchline.app;
 
 import touchline.testing.Await;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -30,8 +29,7 @@ class SimulatedRobotIntegrationTest {
 
     @BeforeEach
     void needsBinary() {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"),
-                "robot-side binaries not built (run ./touchline test)");
+        touchline.testing.Requirement.robotSide("touchline-robot");
     }
 
 

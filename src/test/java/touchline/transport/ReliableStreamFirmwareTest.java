@@ -1,7 +1,6 @@
 package touchline.transport;
 
 import touchline.testing.Await;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -31,7 +30,7 @@ class ReliableStreamFirmwareTest {
 
     @BeforeEach
     void needsBinary() {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "robot-side binaries not built");
+        touchline.testing.Requirement.robotSide("touchline-robot");
     }
 
 

@@ -3,7 +3,6 @@ package touchline.ui;
 import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
 import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -43,8 +42,7 @@ class ConsoleUiTest {
     }
 
     private static void assumeRobot() {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"),
-                "touchline-robot not built in " + RobotProcess.binDir());
+        touchline.testing.Requirement.robotSide("touchline-robot");
     }
 
     @Test

@@ -49,9 +49,14 @@ final class ConsoleWindowFixture implements AutoCloseable {
         });
     }
 
-    /** Waits (polling on the FX thread) until the condition holds, failing after {@code seconds}. */
+    /**
+     * Waits (polling on the FX thread) until the condition holds, failing after {@code seconds}
+     * but never sooner than {@link touchline.testing.Await#FLOOR_MILLIS}: a deadline only stops a
+     * test that would hang; a loaded machine must not fail it.
+     */
     void await(int seconds, Callable<Boolean> condition) throws Exception {
-        WaitForAsyncUtils.waitFor(seconds, TimeUnit.SECONDS, () -> fx(condition));
+        long millis = Math.max(seconds * 1000L, touchline.testing.Await.FLOOR_MILLIS);
+        WaitForAsyncUtils.waitFor(millis, TimeUnit.MILLISECONDS, () -> fx(condition));
     }
 
     /** The options tree's cell for one option, or null while it is not shown. */
@@ -62,20 +67,48 @@ final class ConsoleWindowFixture implements AutoCloseable {
                         && c.getItem().option().name().equals(option)).findFirst().orElse(null);
     }
 
-    /** Clicks an option in the tree and waits until it is selected and the tree has the keyboard. */
+    /**
+     * Selects an option in the tree and gives the tree the keyboard, the way a user who walked
+     * there with the arrow keys would have it. Not a mouse click at the cell's coordinates: the
+     * tree rebuilds while robots report (a robot's label changes, e.g. going offline on a slow
+     * machine), and a click aimed at a cell found a moment earlier could land on another row.
+     * Waits until the window is focused, the tree owns the keyboard and the option is selected,
+     * so a key typed next reaches the tree.
+     */
     void selectOption(int robotId, String option) throws Exception {
-        await(15, () -> optionCell(robotId, option) != null);
+        await(30, () -> optionItem(robotId, option) != null);
         fxRun(() -> {
             window.scene().getWindow().requestFocus();
-            robot.lookup("#options-tree").query().requestFocus();
+            var tree = optionsTree();
+            tree.getSelectionModel().select(optionItem(robotId, option));
+            tree.requestFocus();
         });
-        robot.clickOn(fx(() -> optionCell(robotId, option)));
-        await(10, () -> {
-            var tree = robot.lookup("#options-tree").queryAs(javafx.scene.control.TreeView.class);
-            var item = (javafx.scene.control.TreeItem<?>) tree.getSelectionModel().getSelectedItem();
-            return item != null && item.getValue() instanceof touchline.ui.views.OptionsView.Row r && r.option() != null
-                    && r.option().name().equals(option);
+        await(30, () -> {
+            var tree = optionsTree();
+            var item = tree.getSelectionModel().getSelectedItem();
+            return window.scene().getWindow().isFocused() && window.scene().getFocusOwner() == tree
+                    && item != null && item.getValue().option() != null
+                    && item.getValue().robotId() == robotId && item.getValue().option().name().equals(option);
         });
+    }
+
+    @SuppressWarnings("unchecked")
+    private javafx.scene.control.TreeView<touchline.ui.views.OptionsView.Row> optionsTree() {
+        return robot.lookup("#options-tree").queryAs(javafx.scene.control.TreeView.class);
+    }
+
+    /** The options tree's item for one option, or null while the tree does not hold it. */
+    private javafx.scene.control.TreeItem<touchline.ui.views.OptionsView.Row> optionItem(int robotId, String option) {
+        var root = optionsTree().getRoot();
+        for (var robotItem : root.getChildren()) {
+            for (var item : robotItem.getChildren()) {
+                var row = item.getValue();
+                if (row.option() != null && row.robotId() == robotId && row.option().name().equals(option)) {
+                    return item;
+                }
+            }
+        }
+        return null;
     }
 
     <V extends View> V view(Class<V> type) throws Exception {

@@ -99,9 +99,8 @@ class NaoLinkTest {
         int port = robot.port();
         CompletableFuture<CallOutcome> inFlight = link.call("Test", "sleep", 2000);
         robot.close();
-        long killed = System.nanoTime();
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost within 3 s");
-        assertTrue(System.nanoTime() - killed < TimeUnit.SECONDS.toNanos(3));
+        // how fast a loss is noticed is a budget (docs/benchmarks.md), not asserted here
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost");
         assertInstanceOf(CallOutcome.Lost.class, get(inFlight));
         CallOutcome whileDown = get(link.call("ALMemory", "insertData", "late", 1));
         assertInstanceOf(CallOutcome.Lost.class, whileDown);

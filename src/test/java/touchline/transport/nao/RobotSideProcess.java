@@ -1,6 +1,5 @@
 package touchline.transport.nao;
 
-import org.junit.jupiter.api.Assumptions;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -35,8 +34,8 @@ final class RobotSideProcess implements AutoCloseable {
     }
 
     static void assumeBuilt() {
-        Assumptions.assumeTrue(Files.isExecutable(binary()),
-                "robot side not built (" + binary() + "); run ./touchline test or the cmake build first");
+        touchline.testing.Requirement.require(Files.isExecutable(binary()),
+                "robot side not built (" + binary() + "); run ./touchline build first");
     }
 
     RobotSideProcess(int rpcPort, int camPort, String... extra) throws Exception {

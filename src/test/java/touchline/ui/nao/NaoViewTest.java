@@ -51,13 +51,13 @@ class NaoViewTest {
                 view.refresh(frame);
                 return ((Label) root.lookup("#nao-state")).getText().startsWith("online");
             };
-            WaitForAsyncUtils.waitFor(10, TimeUnit.SECONDS, () -> fx(online));
+            WaitForAsyncUtils.waitFor(30, TimeUnit.SECONDS, () -> fx(online));
             fx(() -> {
                 ((ComboBox<String>) root.lookup("#nao-module")).setValue("Test");
                 ((ButtonBase) root.lookup("#nao-discover")).fire();
                 return null;
             });
-            WaitForAsyncUtils.waitFor(10, TimeUnit.SECONDS, () -> fx(() -> {
+            WaitForAsyncUtils.waitFor(30, TimeUnit.SECONDS, () -> fx(() -> {
                 view.refresh(frame);
                 return ((ListView<String>) root.lookup("#nao-methods")).getItems().contains("echo");
             }));
@@ -67,11 +67,11 @@ class NaoViewTest {
                 ((ButtonBase) root.lookup("#nao-call")).fire();
                 return null;
             });
-            WaitForAsyncUtils.waitFor(10, TimeUnit.SECONDS, () -> fx(() -> {
+            WaitForAsyncUtils.waitFor(30, TimeUnit.SECONDS, () -> fx(() -> {
                 view.refresh(frame);
                 return ((Label) root.lookup("#nao-result")).getText().equals("Test.echo: [\"a\", 1]");
             }));
-            WaitForAsyncUtils.waitFor(10, TimeUnit.SECONDS, () -> fx(() -> {
+            WaitForAsyncUtils.waitFor(30, TimeUnit.SECONDS, () -> fx(() -> {
                 view.refresh(frame);
                 return ((ImageView) root.lookup("#nao-image")).getImage() != null;
             }));
