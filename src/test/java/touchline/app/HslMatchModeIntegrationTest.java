@@ -81,4 +81,38 @@ class HslMatchModeIntegrationTest {
             assertEquals(List.of(), out, "nothing leaves the console for a robot during play");
         }
     }
+
+    @Test
+    void asAMonitorTheConsoleBelievesTheTrueStateAndSeesTheRobotsThroughTheGameController() throws Exception {
+        int gcPort = freeLoopbackPort();
+        int forwardPort = freeLoopbackPort();
+        try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+            gc.setSoTimeout(5000);
+            ConsoleConfig config = ConsoleConfig.defaults()
+                    .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))
+                    .withGameControllerPort(gcPort)
+                    .withGcMonitor((InetSocketAddress) gc.getLocalSocketAddress(), forwardPort);
+            try (Console console = new Console(config).start()) {
+                DatagramPacket request = new DatagramPacket(new byte[16], 16);
+                gc.receive(request);
+                assertEquals("RGTr", new String(request.getData(), 0, 4, java.nio.charset.StandardCharsets.US_ASCII));
+                assertEquals(5, request.getLength());
+
+                // during the robots' fake SET the monitor copy already says PLAYING
+                byte[] trueData = golden("05-playing-delayed.monitor.bin");
+                gc.send(new DatagramPacket(trueData, trueData.length, InetAddress.getLoopbackAddress(), gcPort));
+                Await.until("match mode from the true data", 5000, () -> console.matchMode().playIsOn());
+
+                byte[] robot = golden("return/r01-team5-player1-upright.bin");
+                byte[] forwarded = new byte[36];
+                forwarded[0] = 10;
+                forwarded[3] = 7;
+                System.arraycopy(robot, 0, forwarded, 4, 32);
+                gc.send(new DatagramPacket(forwarded, 36, InetAddress.getLoopbackAddress(), forwardPort));
+                Await.until("robot 5/1 seen through the GameController", 5000,
+                        () -> !console.gcMonitor().robots().isEmpty());
+                assertEquals("10.0.0.7", console.gcMonitor().robots().values().iterator().next().robotHost());
+            }
+        }
+    }
 }
