@@ -127,6 +127,8 @@ public final class Console implements AutoCloseable {
         try {
             gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
                     live, matchMode, monitorRegistrations);
+            // started in the middle of a game, the console must hear the GameController before it talks
+            matchMode.listenFirst(MatchMode.LISTEN_FIRST_MS);
         } catch (IOException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot listen for GameControllers on port {}: {} "
                     + "(match mode still follows the robots' reported game state)", config.gameControllerPort(), e.toString());
