@@ -9,6 +9,8 @@ import touchline.transport.Envelope;
 import touchline.game.Game;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GameStateWatch;
+import touchline.transport.gamecontroller.GcMonitor;
+import touchline.transport.gamecontroller.MonitorRegistrations;
 import touchline.transport.gamecontroller.GcConfig;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
@@ -60,6 +62,8 @@ public final class Console implements AutoCloseable {
     private final ScheduledExecutorService ticker;
     private final MatchMode matchMode = new MatchMode(GameClock.system());
     private GameStateWatch gcWatch;
+    private final MonitorRegistrations monitorRegistrations = new MonitorRegistrations();
+    private GcMonitor gcMonitor;
     private EmbeddedGameController gameController;
     private final touchline.model.store.ViewStores stores;
 
@@ -107,6 +111,7 @@ public final class Console implements AutoCloseable {
     public Console start() throws InterruptedException {
         udp.start();
         watchGameController();
+        monitorGameController();
         ticker.scheduleAtFixedRate(this::tick, config.tickMillis(), config.tickMillis(), TimeUnit.MILLISECONDS);
         return this;
     }
@@ -121,11 +126,36 @@ public final class Console implements AutoCloseable {
         }
         try {
             gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
-                    live, matchMode);
+                    live, matchMode, monitorRegistrations);
+            // started in the middle of a game, the console must hear the GameController before it talks
+            matchMode.listenFirst(MatchMode.LISTEN_FIRST_MS);
         } catch (IOException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot listen for GameControllers on port {}: {} "
                     + "(match mode still follows the robots' reported game state)", config.gameControllerPort(), e.toString());
         }
+    }
+
+    /**
+     * Registers with the field's HSL GameController as a monitor when asked ({@code --gc-monitor}):
+     * its true state then drives match mode and its forwarded return packets show each robot
+     * as the referee sees it. A port that cannot be opened is reported and the console runs on.
+     */
+    private void monitorGameController() {
+        if (config.gcMonitor() == null) {
+            return;
+        }
+        try {
+            gcMonitor = new GcMonitor(config.gcMonitor(), new InetSocketAddress(config.udp().bindAddress(),
+                    config.gcForwardPort()), monitorRegistrations, live, System::currentTimeMillis);
+        } catch (IOException e) {
+            org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot monitor the GameController at {}: {}",
+                    config.gcMonitor(), e.toString());
+        }
+    }
+
+    /** The monitor of the field's GameController, or null when not asked for (or its port was taken). */
+    public GcMonitor gcMonitor() {
+        return gcMonitor;
     }
 
     private void tick() {
@@ -263,6 +293,9 @@ public final class Console implements AutoCloseable {
         ticker.shutdownNow();
         if (gcWatch != null) {
             gcWatch.close();
+        }
+        if (gcMonitor != null) {
+            gcMonitor.close();
         }
         udp.close();
     }

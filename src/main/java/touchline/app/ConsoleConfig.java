@@ -1,6 +1,9 @@
 package touchline.app;
 
+import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.transport.UdpConfig;
+
+import java.net.InetSocketAddress;
 
 /**
  * What the application core needs to start.
@@ -8,8 +11,16 @@ import touchline.transport.UdpConfig;
  * @param udp                 the FUmanoids UDP endpoint
  * @param tickMillis          how often the model checks timeouts and retries
  * @param gameControllerPort  where to listen for the referee's GameController (3838), 0 for not at all
+ * @param gcMonitor           the field's HSL GameController to register with as a monitor
+ *                            ({@code --gc-monitor HOST}, its port 3636), or null
+ * @param gcForwardPort       where that GameController forwards the robots' return packets (3940)
  */
-public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort) {
+public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
+                            int gcForwardPort) {
+
+    public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort) {
+        this(udp, tickMillis, gameControllerPort, null, ForwardedReturnPacket.PORT);
+    }
 
     public static ConsoleConfig defaults() {
         return new ConsoleConfig(UdpConfig.defaults(), 100, 3838);
@@ -17,10 +28,16 @@ public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPo
 
     /** Also stops listening for GameControllers unless the port is set again: tests must not bind fixed ports. */
     public ConsoleConfig withUdp(UdpConfig udp) {
-        return new ConsoleConfig(udp, tickMillis, udp.listenPort() == 0 ? 0 : gameControllerPort);
+        return new ConsoleConfig(udp, tickMillis, udp.listenPort() == 0 ? 0 : gameControllerPort, gcMonitor,
+                gcForwardPort);
     }
 
     public ConsoleConfig withGameControllerPort(int port) {
-        return new ConsoleConfig(udp, tickMillis, port);
+        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort);
+    }
+
+    /** Registers with this GameController (monitor requests to {@code gameController}, forwards on {@code forwardPort}). */
+    public ConsoleConfig withGcMonitor(InetSocketAddress gameController, int forwardPort) {
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort);
     }
 }

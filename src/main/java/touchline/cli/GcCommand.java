@@ -173,7 +173,7 @@ public final class GcCommand implements Callable<Integer> {
                     + gc.game().snapshot().team(k.team()).player(k.player()).penalty());
         }
         gc.badPackets().bySource().forEach((src, t) ->
-                print("bad return packets from " + src + ": " + t.count() + " (last: " + t.lastReason() + ")"));
+                print("bad GameController packets from " + src + ": " + t.count() + " (last: " + t.lastReason() + ")"));
         String warning = gc.rivalWarning();
         if (!warning.isEmpty()) {
             print("! " + warning);

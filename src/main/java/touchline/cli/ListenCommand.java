@@ -32,6 +32,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
         PrintStream out = new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.out), true);
         EnvelopeLine lines = new EnvelopeLine();
         RobotTable table = new RobotTable();
+        MonitorTable monitorTable = new MonitorTable();
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
         try (Console console = new Console(udp.config())) {
@@ -52,6 +53,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 }
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
+                    monitorTable.print(out, console.gcMonitor(), System.currentTimeMillis());
                     out.flush();
                 }
             }

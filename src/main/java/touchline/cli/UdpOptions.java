@@ -2,7 +2,10 @@ package touchline.cli;
 
 import picocli.CommandLine.Option;
 import touchline.app.ConsoleConfig;
+import touchline.protocol.gamecontroller.MonitorRequest;
 import touchline.transport.UdpConfig;
+
+import java.net.InetSocketAddress;
 
 /** The network options every listening command shares. */
 final class UdpOptions {
@@ -17,8 +20,19 @@ final class UdpOptions {
             description = "port robots listen on (3838 on a field); 0 answers each robot at its source port (default)")
     int robotPort;
 
+    @Option(names = "--gc-monitor", paramLabel = "HOST",
+            description = "register as a monitor with the field's HSL GameController at HOST: its true game state "
+                    + "and the robots' return packets as it sees them (it refuses hosts that send return packets)")
+    String gcMonitor;
+
+    @Option(names = "--gc-forward-port", defaultValue = "3940",
+            description = "port the GameController forwards return packets to (default ${DEFAULT-VALUE})")
+    int gcForwardPort;
+
     ConsoleConfig config() {
-        return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port).withBindAddress(bind)
-                .withRobotPort(robotPort));
+        ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port)
+                .withBindAddress(bind).withRobotPort(robotPort));
+        return gcMonitor == null ? config
+                : config.withGcMonitor(new InetSocketAddress(gcMonitor, MonitorRequest.PORT), gcForwardPort);
     }
 }

@@ -26,6 +26,12 @@ public final class MatchMode {
 
     /** A source not heard for this long no longer counts (a GameController sends every 500 ms). */
     public static final long STALE_MS = 5000;
+    /**
+     * How long a console that starts listening to the field holds robot traffic back: one
+     * GameController interval (500 ms) and its jitter, so a console started in the middle of a
+     * game hears the GameController before it says anything to a robot.
+     */
+    public static final long LISTEN_FIRST_MS = 600;
     /** How many held-back request descriptions are kept for the notice. */
     public static final int HELD_LOG = 100;
 
@@ -52,6 +58,7 @@ public final class MatchMode {
     private long heldCount;
     private boolean override;
     private boolean lastMaySend = true;
+    private long listeningUntilMs = Long.MIN_VALUE;
 
     public MatchMode(GameClock clock) {
         this.clock = clock;
@@ -64,6 +71,17 @@ public final class MatchMode {
      */
     public void addListener(Consumer<Boolean> onMayConsoleSendChanged) {
         listeners.add(onMayConsoleSendChanged);
+    }
+
+    /**
+     * Holds robot traffic back for {@code ms} from now while the console first listens for a
+     * GameController (the port watch just opened); a PLAYING heard meanwhile keeps it silent.
+     */
+    public void listenFirst(long ms) {
+        synchronized (this) {
+            listeningUntilMs = clock.millis() + ms;
+        }
+        refresh();
     }
 
     /** Records a game state byte (0 INITIAL ... 4 FINISHED) heard from, or sent by, {@code source}. */
@@ -138,7 +156,8 @@ public final class MatchMode {
         synchronized (this) {
             String source = playingSource();
             if (source == null) {
-                return "";
+                return override || !listening() ? "" : "Match mode: listening for a GameController before talking "
+                        + "to robots; " + heldCount + " request(s) held back";
             }
             String state = GameControlData.stateName(heard.get(source).state);
             if (override) {
@@ -154,7 +173,7 @@ public final class MatchMode {
         boolean now;
         boolean changed;
         synchronized (this) {
-            now = override || playingSource() == null;
+            now = override || playingSource() == null && !listening();
             changed = now != lastMaySend;
             lastMaySend = now;
             if (changed && now) {
@@ -167,6 +186,10 @@ public final class MatchMode {
                 l.accept(now);
             }
         }
+    }
+
+    private boolean listening() {
+        return clock.millis() < listeningUntilMs;
     }
 
     private String playingSource() {

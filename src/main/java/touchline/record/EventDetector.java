@@ -1,6 +1,9 @@
 package touchline.record;
 
 import touchline.proto.Fumanoid;
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.KnownGameStateFormats;
+import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -12,10 +15,12 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * Finds timeline events in an envelope stream: GameController state changes and goals (HL
- * v12 "RGme": state byte 9, scores at 24+2 and 356+2), game-state changes the robots report
- * in their Status when no GameController packets are recorded, robots silent for longer
- * than {@link #LOST_AFTER_MICROS}, and link events whose kind says "lost".
+ * Finds timeline events in an envelope stream: GameController state changes and goals (any
+ * game-state format the console recognises on the network, HL v12 to HSL v20; once an HSL
+ * GameController's true data for monitors is recorded, it replaces the robots' copy, which
+ * shows SET for 10 s after each whistle), game-state changes the robots report in their Status
+ * when no GameController packets are recorded, robots silent for longer than
+ * {@link #LOST_AFTER_MICROS}, and link events whose kind says "lost".
  */
 final class EventDetector {
 
@@ -23,6 +28,7 @@ final class EventDetector {
     static final long LOST_AFTER_MICROS = 1_000_000;
     private static final String[] GC_STATES = {"INITIAL", "READY", "SET", "PLAYING", "FINISHED"};
 
+    private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private final List<TimelineEvent> events = new ArrayList<>();
     private final Map<Integer, Long> lastSeen = new HashMap<>();
     // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
@@ -31,6 +37,7 @@ final class EventDetector {
     @SuppressWarnings("unchecked")
     private final Map<Integer, Integer>[] scores = new Map[]{new HashMap<>(), new HashMap<>()};
     private boolean sawGc;
+    private boolean sawTrueData;
     private String robotState;
     private long lastTime = Long.MIN_VALUE;
 
@@ -61,30 +68,34 @@ final class EventDetector {
     }
 
     private void gameController(Envelope e) {
-        byte[] r = e.raw();
-        if (r.length != 688 || r[0] != 'R' || r[1] != 'G' || r[2] != 'm' || r[3] != 'e' || r[4] != 12) {
+        KnownGameStateFormats.Match m = e.isMalformed() ? null : formats.decode(e.raw());
+        if (m == null) {
+            return;
+        }
+        sawTrueData |= m.format().isTrueData();
+        if (sawTrueData && !m.format().isTrueData() && e.direction() == Direction.IN) {
             return;
         }
         if (!sawGc) {
             sawGc = true;
             events.removeIf(ev -> ev.type() == TimelineEvent.Type.STATE_CHANGE);
         }
+        GameControlData data = m.data();
         int d = e.direction().ordinal();
         String who = e.direction() == Direction.IN ? "GC: " : "our GC: ";
-        int state = r[9] & 0xFF;
-        int s0 = r[24 + 2] & 0xFF;
-        int s1 = r[356 + 2] & 0xFF;
+        int state = data.state();
         if (gcState[d] >= 0 && state != gcState[d]) {
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.STATE_CHANGE, -1,
                     who + stateName(gcState[d]) + " → " + stateName(state)));
         }
-        int team0 = r[24] & 0xFF;
-        int team1 = r[356] & 0xFF;
-        for (int[] team : new int[][]{{team0, s0}, {team1, s1}}) {
-            Integer before = scores[d].put(team[0], team[1]);
-            if (before != null && team[1] > before) {
+        TeamInfo a = data.teams().get(0);
+        TeamInfo b = data.teams().get(1);
+        for (TeamInfo team : data.teams()) {
+            Integer before = scores[d].put(team.teamNumber(), team.score());
+            if (before != null && team.score() > before) {
                 events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.GOAL, -1,
-                        who + "goal for team " + team[0] + " (" + team0 + " " + s0 + ":" + s1 + " " + team1 + ")"));
+                        who + "goal for team " + team.teamNumber() + " (" + a.teamNumber() + " " + a.score() + ":"
+                                + b.score() + " " + b.teamNumber() + ")"));
             }
         }
         gcState[d] = state;

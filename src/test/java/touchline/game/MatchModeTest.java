@@ -65,4 +65,30 @@ class MatchModeTest {
         assertEquals("referee allowed a config fix", mode.overrideLog().get(0).reason());
         assertTrue(mode.overrideLog().get(0).on());
     }
+
+    @Test
+    void aConsoleStartingToListenStaysSilentForOneGameControllerInterval() {
+        List<Boolean> heard = new ArrayList<>();
+        mode.addListener(heard::add);
+        mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        assertFalse(mode.mayConsoleSend());
+        assertTrue(mode.hold("debug option vision.ball"));
+        assertTrue(mode.notice().contains("listening for a GameController"), mode.notice());
+        clock.advance(MatchMode.LISTEN_FIRST_MS - 1);
+        assertFalse(mode.mayConsoleSend());
+        clock.advance(1);
+        assertTrue(mode.mayConsoleSend(), "nothing heard in one interval: the console may talk");
+        assertEquals(List.of(false, true), heard);
+        assertEquals("", mode.notice());
+    }
+
+    @Test
+    void aPlayingHeardWhileListeningKeepsTheConsoleSilent() {
+        mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        clock.advance(300);
+        mode.observe(3, "gc");
+        clock.advance(MatchMode.LISTEN_FIRST_MS);
+        assertFalse(mode.mayConsoleSend());
+        assertTrue(mode.notice().contains("PLAYING"), mode.notice());
+    }
 }

@@ -44,4 +44,51 @@ class EventDetectorTest {
         assertEquals("GC: INITIAL → READY", states.get(0));
         assertEquals("GC: PLAYING → FINISHED", states.get(states.size() - 1));
     }
+
+    private static final Path HSL20 = Path.of("src/test/resources/golden/gamecontroller/hsl20");
+
+    private static Envelope gc(long t, String file, String error) throws Exception {
+        return new Envelope(t, Direction.IN, Channel.GAMECONTROLLER, null, Envelope.NO_ROBOT, "gc.hsl20", null,
+                Files.readAllBytes(HSL20.resolve(file)), error);
+    }
+
+    @Test
+    void anHslVersion20GameGivesItsStateChangesAndThreeGoals() throws Exception {
+        List<Path> packets;
+        try (Stream<Path> files = Files.list(HSL20)) {
+            packets = files.map(Path::getFileName).map(Path::toString)
+                    .filter(f -> f.matches("\\d\\d-.*\\.bin") && !f.contains("monitor")).sorted().map(Path::of).toList();
+        }
+        assertEquals(54, packets.size());
+        EventDetector detector = new EventDetector();
+        long t = 0;
+        for (Path p : packets) {
+            detector.accept(gc(t += 1_000_000, p.toString(), null));
+        }
+        List<TimelineEvent> events = detector.finish();
+        List<String> goals = events.stream().filter(e -> e.type() == TimelineEvent.Type.GOAL)
+                .map(TimelineEvent::label).toList();
+        assertEquals(List.of("GC: goal for team 5 (5 1:0 14)", "GC: goal for team 14 (5 1:1 14)",
+                "GC: goal for team 5 (14 1:2 5)"), goals);
+        List<String> states = events.stream().filter(e -> e.type() == TimelineEvent.Type.STATE_CHANGE)
+                .map(TimelineEvent::label).toList();
+        assertEquals("GC: INITIAL → READY", states.get(0));
+        assertEquals("GC: READY → FINISHED", states.get(states.size() - 1));
+    }
+
+    @Test
+    void theMonitorsTrueDataWinsOverTheFakeSetRobotsSee() throws Exception {
+        EventDetector detector = new EventDetector();
+        detector.accept(gc(1, "04-set.bin", null));
+        detector.accept(gc(2, "05-playing-delayed.monitor.bin", null));
+        detector.accept(gc(3, "05-playing-delayed.bin", null));
+        detector.accept(gc(4, "06-playing-delayed-after-5s.bin", null));
+        detector.accept(gc(5, "06-playing-delayed-after-5s.monitor.bin", null));
+        // unsolicited true data (not registered) was published with an error: not believed
+        detector.accept(gc(6, "05-playing-delayed.monitor.bin", "monitor true data (RGTD) from 10.0.0.1, but ..."));
+        detector.accept(gc(7, "07-playing-after-delay.bin", null));
+        List<String> states = detector.finish().stream().filter(e -> e.type() == TimelineEvent.Type.STATE_CHANGE)
+                .map(e -> e.timeMicros() + " " + e.label()).toList();
+        assertEquals(List.of("2 GC: SET → PLAYING"), states);
+    }
 }

@@ -11,7 +11,7 @@ import java.util.List;
  * @param packetNumber       wrapping packet counter (0..255)
  * @param playersPerTeam     players on the field per team
  * @param gameType           HL byte 8 (round robin / playoff / drop-in); SPL competitionPhase
- * @param competitionType    SPL competitionType (0 normal)
+ * @param competitionType    SPL competitionType (0 normal, 1 most passes); HSL division (0 SMALL 1 MIDDLE 2 LARGE)
  * @param state              0 INITIAL 1 READY 2 SET 3 PLAYING 4 FINISHED (5 STANDBY, SPL)
  * @param firstHalf          whether the first half is being played
  * @param kickOffTeam        team number of the kicking team, or {@link #DROP_BALL}
@@ -25,11 +25,16 @@ import java.util.List;
  * @param secsRemaining      seconds left in the half (signed)
  * @param secondaryTime      secondary countdown (signed)
  * @param teams              exactly two teams, in wire order
+ * @param gamePhase          0 NORMAL 1 PENALTY_SHOOT_OUT 2 OVERTIME / EXTRA_TIME 3 TIMEOUT; SPL and HSL send it
+ *                           beside the set play (a penalty kick in extra time), HL folds both into
+ *                           {@code secondaryState}, where a running set play wins
+ * @param stopped            HSL (2026): play is stopped ("Stop Play", or a set play without READY being
+ *                           prepared); robots must stand still
  */
 public record GameControlData(int packetNumber, int playersPerTeam, int gameType, int competitionType, int state,
                               boolean firstHalf, int kickOffTeam, int secondaryState, int setPlayTeam,
                               int setPlayMode, int dropInTeam, int dropInTime, int secsRemaining,
-                              int secondaryTime, List<TeamInfo> teams) {
+                              int secondaryTime, List<TeamInfo> teams, int gamePhase, boolean stopped) {
 
     /** Neutral marker for "dropped ball, no kicking team" (wire: 0x80 / 255 / 2 by format). */
     public static final int DROP_BALL = -1;
@@ -47,10 +52,23 @@ public record GameControlData(int packetNumber, int playersPerTeam, int gameType
         }
     }
 
+    /**
+     * The content of a format without a separate game phase and without {@code stopped}: the
+     * phase is the secondary state when that is one (1–3), else NORMAL.
+     */
+    public GameControlData(int packetNumber, int playersPerTeam, int gameType, int competitionType, int state,
+                           boolean firstHalf, int kickOffTeam, int secondaryState, int setPlayTeam,
+                           int setPlayMode, int dropInTeam, int dropInTime, int secsRemaining,
+                           int secondaryTime, List<TeamInfo> teams) {
+        this(packetNumber, playersPerTeam, gameType, competitionType, state, firstHalf, kickOffTeam, secondaryState,
+                setPlayTeam, setPlayMode, dropInTeam, dropInTime, secsRemaining, secondaryTime, teams,
+                secondaryState >= 1 && secondaryState <= 3 ? secondaryState : 0, false);
+    }
+
     public GameControlData withPacketNumber(int number) {
         return new GameControlData(number & 0xFF, playersPerTeam, gameType, competitionType, state, firstHalf,
                 kickOffTeam, secondaryState, setPlayTeam, setPlayMode, dropInTeam, dropInTime, secsRemaining,
-                secondaryTime, teams);
+                secondaryTime, teams, gamePhase, stopped);
     }
 
     /** The team with this number, or null. */

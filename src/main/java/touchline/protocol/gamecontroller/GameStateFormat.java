@@ -19,6 +19,14 @@ public interface GameStateFormat {
     /** Encodes {@code data}; the result is always exactly {@link #size()} bytes. */
     byte[] encode(GameControlData data);
 
+    /**
+     * Whether this is the HSL "true data" copy ("RGTD") a GameController sends to registered
+     * monitors: the real state, without the 10 s of SET robots see after a whistle.
+     */
+    default boolean isTrueData() {
+        return false;
+    }
+
     /** Decodes a datagram; wrong length, magic or version are rejected, never thrown. */
     Decoded<GameControlData> decode(byte[] datagram);
 }

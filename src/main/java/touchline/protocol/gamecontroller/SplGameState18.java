@@ -45,29 +45,13 @@ public final class SplGameState18 extends FixedSizeFormat {
         b.putShort((short) d.secsRemaining());
         b.putShort((short) d.secondaryTime());
         for (TeamInfo t : d.teams()) {
-            b.put((byte) t.teamNumber());
-            b.put((byte) t.colour());
-            b.put((byte) t.goalkeeperColour());
-            b.put((byte) goalkeeperNumber(t));
-            b.put((byte) t.score());
-            b.put((byte) t.penaltyShot());
-            b.putShort((short) t.singleShots());
-            b.putShort((short) t.messageBudget());
+            TeamHeader.write(t, b, MAX_PLAYERS);
             for (int p = 1; p <= MAX_PLAYERS; p++) {
                 RobotInfo r = t.player(p);
                 b.put((byte) splPenalty(r.penalty()));
                 b.put((byte) r.secsTillUnpenalised());
             }
         }
-    }
-
-    private static int goalkeeperNumber(TeamInfo t) {
-        for (int p = 1; p <= Math.min(MAX_PLAYERS, t.players().size()); p++) {
-            if (t.player(p).goalkeeper()) {
-                return p;
-            }
-        }
-        return 0;
     }
 
     static int setPlayCode(int secondaryState) {
@@ -109,20 +93,12 @@ public final class SplGameState18 extends FixedSizeFormat {
         int setPlayTeam = fromSetPlay != 0 ? kicking : 0;
         List<TeamInfo> teams = new ArrayList<>(2);
         for (int t = 0; t < 2; t++) {
-            int number = WireChecks.u8(b);
-            int colour = WireChecks.u8(b);
-            int goalkeeperColour = WireChecks.u8(b);
-            int goalkeeper = WireChecks.u8(b);
-            int score = WireChecks.u8(b);
-            int penaltyShot = WireChecks.u8(b);
-            int singleShots = WireChecks.u16(b);
-            int budget = WireChecks.u16(b);
+            TeamHeader.Fields header = TeamHeader.read(b);
             List<RobotInfo> players = new ArrayList<>(MAX_PLAYERS);
             for (int p = 1; p <= MAX_PLAYERS; p++) {
-                players.add(new RobotInfo(WireChecks.u8(b), WireChecks.u8(b), 0, 0, 0, p == goalkeeper));
+                players.add(new RobotInfo(WireChecks.u8(b), WireChecks.u8(b), 0, 0, 0, p == header.goalkeeper()));
             }
-            teams.add(new TeamInfo(number, colour, goalkeeperColour, score, penaltyShot, singleShots, 0, budget,
-                    RobotInfo.EMPTY, players));
+            teams.add(header.team(players));
         }
         return Decoded.ok(new GameControlData(packetNumber, playersPerTeam, phase, competitionType, state, firstHalf,
                 kickOff, secondary, setPlayTeam, 0, 0, 0, secsRemaining, secondaryTime, teams));

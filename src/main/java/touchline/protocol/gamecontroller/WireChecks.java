@@ -8,6 +8,9 @@ final class WireChecks {
 
     static final byte[] GAME_STATE_MAGIC = {'R', 'G', 'm', 'e'};
     static final byte[] RETURN_MAGIC = {'R', 'G', 'r', 't'};
+    /** The HSL GameController's copy of the true game state for registered monitors. */
+    static final byte[] TRUE_DATA_MAGIC = {'R', 'G', 'T', 'D'};
+    static final byte[] MONITOR_REQUEST_MAGIC = {'R', 'G', 'T', 'r'};
 
     private WireChecks() {
     }

@@ -6,8 +6,9 @@ import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 
 /**
- * Malformed return packets, counted per source address with the last reason, so the operator
- * can see which robot sends garbage. Such packets are never applied. Thread-safe.
+ * Malformed GameController datagrams (return packets, game states), counted per source address
+ * with the last reason, so the operator can see who sends garbage. Such packets are never
+ * applied. Thread-safe.
  */
 public final class BadPackets {
 

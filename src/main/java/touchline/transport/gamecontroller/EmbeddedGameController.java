@@ -191,14 +191,19 @@ public final class EmbeddedGameController implements AutoCloseable {
         if (from.getPort() == senderPort && isLocal(from.getAddress())) {
             return; // our own packet, heard back
         }
-        KnownGameStateFormats.Match match = knownFormats.decode(data);
+        Decoded<KnownGameStateFormats.Match> recognised = knownFormats.recognise(data);
+        KnownGameStateFormats.Match match = recognised.value();
         GameStateFormat format = match == null ? null : match.format();
         GameControlData decoded = match == null ? null : match.data();
         String kind = format == null ? "gc.unknown" : format.kind();
+        String error = match == null ? recognised.failure() + ": " + recognised.detail() : null;
+        if (error != null) {
+            badPackets.count(from, error);
+        }
         boolean wasActive = rivals.active(game.now()).containsKey(sourceKey(from));
         rivals.heard(from, kind, decoded, game.now());
         sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
-                null, data, format == null ? "game-state packet in no known format" : null));
+                null, data, error));
         if (matchMode != null && decoded != null) {
             matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));
         }

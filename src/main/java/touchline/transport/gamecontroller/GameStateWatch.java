@@ -1,6 +1,7 @@
 package touchline.transport.gamecontroller;
 
 import touchline.game.MatchMode;
+import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
@@ -12,15 +13,20 @@ import java.net.InetSocketAddress;
 
 /**
  * Listens to the game-state port (3838) when the console does not run the GameController
- * itself, e.g. at a tournament: every game-state packet becomes an IN envelope, and its state
- * feeds {@link MatchMode}, so the console falls silent while the official GameController says
- * READY, SET or PLAYING. Packets in no known format are published with an error, never thrown.
+ * itself, e.g. at a tournament: every game-state packet (any known format, HL v12 to HSL v20,
+ * and the HSL monitors' true data) becomes an IN envelope, and its state feeds
+ * {@link MatchMode}, so the console falls silent while the official GameController says READY,
+ * SET or PLAYING. A packet no format accepts, or true data from a GameController this console
+ * did not register with, is published with its reason and counted in {@link #badPackets()},
+ * never thrown and never believed; the next good one is used as usual.
  */
 public final class GameStateWatch implements AutoCloseable {
 
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
+    private final BadPackets badPackets = new BadPackets();
     private final EnvelopeSink sink;
     private final MatchMode matchMode;
+    private final MonitorRegistrations registrations;
     private final GcListener listener;
 
     /**
@@ -29,9 +35,21 @@ public final class GameStateWatch implements AutoCloseable {
      * @param matchMode told each decoded state
      */
     public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode) throws IOException {
+        this(bind, sink, matchMode, new MonitorRegistrations());
+    }
+
+    /** @param registrations the GameControllers whose true data ("RGTD") this console asked for */
+    public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode,
+                          MonitorRegistrations registrations) throws IOException {
         this.sink = sink;
         this.matchMode = matchMode;
+        this.registrations = registrations;
         this.listener = new GcListener(bind, this::onDatagram, "gc-watch");
+    }
+
+    /** Rejected game-state packets, per source with the last reason. */
+    public BadPackets badPackets() {
+        return badPackets;
     }
 
     public InetSocketAddress localAddress() throws IOException {
@@ -42,11 +60,18 @@ public final class GameStateWatch implements AutoCloseable {
         if (!KnownGameStateFormats.isGameState(data)) {
             return; // robots' own broadcasts on the shared port are somebody else's business
         }
-        KnownGameStateFormats.Match m = formats.decode(data);
+        Decoded<KnownGameStateFormats.Match> r = formats.recognise(data);
+        KnownGameStateFormats.Match m = r.value();
+        String error = m == null ? r.failure() + ": " + r.detail()
+                : m.format().isTrueData() && !registrations.isRegisteredWith(from.getAddress())
+                ? "monitor true data (RGTD) from " + from.getAddress().getHostAddress()
+                  + ", but this console did not register as its monitor" : null;
+        if (error != null) {
+            badPackets.count(from, error);
+        }
         sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
-                m == null ? "gc.unknown" : m.format().kind(), null, data,
-                m == null ? "game-state packet in no known format" : null));
-        if (m != null) {
+                m == null ? "gc.unknown" : m.format().kind(), null, data, error));
+        if (error == null) {
             matchMode.observe(m.data().state(), "GameController at " + from.getAddress().getHostAddress() + ":"
                     + from.getPort());
         }

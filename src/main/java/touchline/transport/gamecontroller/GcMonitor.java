@@ -1,0 +1,149 @@
+package touchline.transport.gamecontroller;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import touchline.protocol.gamecontroller.Decoded;
+import touchline.protocol.gamecontroller.ForwardedReturnPacket;
+import touchline.protocol.gamecontroller.MonitorRequest;
+import touchline.protocol.gamecontroller.ReturnPacket;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.DatagramChannel;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.function.LongSupplier;
+
+/**
+ * This console as a monitor of the field's HSL GameController ({@code --gc-monitor HOST}): it
+ * sends the monitor request ("RGTr") to the GameController's port 3636 — at once and again
+ * every {@link #REQUEST_INTERVAL_MS}, so a restarted GameController registers it again — notes
+ * the registration (so the true state it then receives on 3838 is believed), and listens on
+ * 3940 for the robots' return packets the GameController forwards: each robot's last packet
+ * (fallen, pose, ball) and its liveness as the GameController sees it. Forwarded packets that
+ * do not decode (a bad address prefix, a bad return packet) are counted with their reason.
+ * The official GameController refuses a host that itself sent return packets as a monitor.
+ */
+public final class GcMonitor implements AutoCloseable {
+
+    public static final long REQUEST_INTERVAL_MS = 2000;
+
+    private static final Logger LOG = LoggerFactory.getLogger(GcMonitor.class);
+
+    /**
+     * A robot's last return packet as forwarded by the GameController.
+     *
+     * @param robotHost the robot's address as the GameController saw it
+     * @param packet    what the robot sent
+     * @param atMs      when it arrived here
+     */
+    public record Seen(String robotHost, ReturnPacket.V4 packet, long atMs) {
+    }
+
+    private final InetSocketAddress gameController;
+    private final EnvelopeSink sink;
+    private final LongSupplier clockMs;
+    private final DatagramChannel requests;
+    private final GcListener forwarded;
+    private final ScheduledExecutorService ticker;
+    private final ForwardedReturnPacket.Decoder decoder = new ForwardedReturnPacket.Decoder();
+    private final byte[] request = new MonitorRequest().encode();
+    private final RobotLiveness liveness = new RobotLiveness();
+    private final BadPackets badPackets = new BadPackets();
+    private final Map<RobotLiveness.RobotKey, Seen> lastSeen = new ConcurrentHashMap<>();
+
+    /**
+     * @param gameController the GameController's monitor-request address (HOST:3636)
+     * @param forwardBind    where forwarded return packets arrive (0.0.0.0:3940)
+     * @param registrations  told that this GameController's true data is now expected
+     * @param sink           receives the forwarded packets as GAMECONTROLLER envelopes
+     * @param clockMs        milliseconds for liveness
+     */
+    public GcMonitor(InetSocketAddress gameController, InetSocketAddress forwardBind,
+                     MonitorRegistrations registrations, EnvelopeSink sink, LongSupplier clockMs) throws IOException {
+        this.gameController = gameController;
+        this.sink = sink;
+        this.clockMs = clockMs;
+        registrations.requested(gameController.getAddress());
+        requests = DatagramChannel.open();
+        try {
+            forwarded = new GcListener(forwardBind, this::onForwarded, "gc-monitor");
+        } catch (IOException e) {
+            requests.close();
+            throw e;
+        }
+        ticker = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "gc-monitor-request");
+            t.setDaemon(true);
+            return t;
+        });
+        ticker.scheduleAtFixedRate(this::sendRequest, 0, REQUEST_INTERVAL_MS, TimeUnit.MILLISECONDS);
+    }
+
+    private void sendRequest() {
+        try {
+            requests.send(ByteBuffer.wrap(request), gameController);
+            sink.accept(new Envelope(Clock.micros(), Direction.OUT, Channel.GAMECONTROLLER, gameController,
+                    Envelope.NO_ROBOT, "gc.monitor.request", null, request, null));
+        } catch (IOException e) {
+            // the field network may come and go; the next request follows in REQUEST_INTERVAL_MS
+            LOG.warn("monitor request to {}: {}", gameController, e.toString());
+        }
+    }
+
+    private void onForwarded(byte[] data, InetSocketAddress from) {
+        Decoded<ForwardedReturnPacket> d = decoder.decode(data);
+        if (!d.isOk()) {
+            String reason = d.failure() + ": " + d.detail();
+            badPackets.count(from, reason);
+            sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+                    "gc.return.forwarded", null, data, reason));
+            return;
+        }
+        ReturnPacket.V4 p = d.value().packet();
+        long now = clockMs.getAsLong();
+        liveness.heard(p.team(), p.player(), now);
+        lastSeen.put(new RobotLiveness.RobotKey(p.team(), p.player()), new Seen(d.value().robotHost(), p, now));
+        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+                "gc.return.forwarded", null, data, null));
+    }
+
+    public InetSocketAddress forwardAddress() throws IOException {
+        return forwarded.localAddress();
+    }
+
+    /** Liveness of each robot by the return packets the GameController forwarded. */
+    public RobotLiveness liveness() {
+        return liveness;
+    }
+
+    /** Each robot's last forwarded return packet, by team and player. */
+    public Map<RobotLiveness.RobotKey, Seen> robots() {
+        return new TreeMap<>(lastSeen);
+    }
+
+    /** Forwarded datagrams that did not decode, per source with the last reason. */
+    public BadPackets badPackets() {
+        return badPackets;
+    }
+
+    @Override
+    public void close() {
+        ticker.shutdownNow();
+        forwarded.close();
+        try {
+            requests.close();
+        } catch (IOException ignored) {
+            // nothing to flush on a datagram socket
+        }
+    }
+}
