@@ -1,5 +1,6 @@
 package touchline.record;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.transport.Envelope;
@@ -16,6 +17,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static touchline.testing.Requirement.require;
 
 /** The recording opens with the independent Python {@code mcap} reader (skipped when it is missing; a failure under CI). */
+@Tag("interop")
 class McapInteropTest {
 
     @TempDir

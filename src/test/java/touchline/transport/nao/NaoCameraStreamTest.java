@@ -1,5 +1,6 @@
 package touchline.transport.nao;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
@@ -14,6 +15,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The camera stream against the in-test camera stand-in (the real server: NaoLinkRobotSideIT). */
+@Tag("slow")
 class NaoCameraStreamTest {
 
     @Test

@@ -1,6 +1,7 @@
 package touchline.transport.nao;
 
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
@@ -19,6 +20,7 @@ import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** NaoLink against the in-test ROUTER stand-in on loopback (the real robot side: NaoLinkRobotSideIT). */
+@Tag("slow")
 class NaoLinkTest {
 
     private final List<Envelope> envelopes = new CopyOnWriteArrayList<>();
