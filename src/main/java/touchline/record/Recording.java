@@ -148,7 +148,8 @@ public final class Recording implements Closeable {
             try {
                 key = EnvelopeLayout.Key.fromMetadata(info.metadata());
             } catch (RuntimeException e) {
-                problems.addIfAbsent("channel " + info.topic() + " was not written by Touchline (no envelope metadata); skipped");
+                problems.addIfAbsent("channel " + info.topic() + " was not written by Touchline (" + e.getMessage()
+                        + "); its messages are skipped");
                 return null;
             }
             keys.put(m.channelId(), key);
