@@ -1,4 +1,4 @@
-package touchline.record;
+package touchline.testing;
 
 import org.junit.jupiter.api.Assumptions;
 
@@ -16,13 +16,13 @@ import static org.junit.jupiter.api.Assertions.fail;
  * package skips the test on a developer's machine and fails it under CI ({@code CI=true}),
  * so a missing install step never passes as a green run that checked nothing.
  */
-final class PythonMcap {
+public final class PythonMcap {
 
     private PythonMcap() {
     }
 
     /** Skips (or under CI fails) the test unless python3 can import every module. */
-    static void require(String... modules) {
+    public static void require(String... modules) {
         String imports = "import " + String.join(", ", modules);
         boolean present;
         try {
@@ -46,21 +46,32 @@ final class PythonMcap {
     }
 
     /** Runs {@code script} with {@code args} as sys.argv[1..]; returns its output, fails the test if it fails. */
-    static String run(String script, Object... args) throws IOException, InterruptedException {
+    public static String run(String script, Object... args) throws IOException, InterruptedException {
+        Process p = start(script, args);
+        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "python did not finish");
+        if (p.exitValue() != 0) {
+            throw new AssertionError("python failed: " + text);
+        }
+        return text;
+    }
+
+    /** True when {@code script} fails on {@code args} (e.g. the reader refuses an unfinished file). */
+    public static boolean fails(String script, Object... args) throws IOException, InterruptedException {
+        Process p = start(script, args);
+        p.getInputStream().readAllBytes();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "python did not finish");
+        return p.exitValue() != 0;
+    }
+
+    private static Process start(String script, Object... args) throws IOException {
         List<String> command = new ArrayList<>(List.of("python3", "-c", script));
         for (Object a : args) {
             command.add(a.toString());
         }
         Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
         p.getOutputStream().close();
-        byte[] out = p.getInputStream().readAllBytes();
-        boolean done = p.waitFor(120, TimeUnit.SECONDS);
-        String text = new String(out, StandardCharsets.UTF_8).trim();
-        assertTrue(done, "python did not finish");
-        if (p.exitValue() != 0) {
-            throw new AssertionError("python failed: " + text);
-        }
-        return text;
+        return p;
     }
 
     /**
@@ -71,7 +82,7 @@ final class PythonMcap {
      * point to a message of their channel and time (in log-time order), summary offsets that
      * point to a group of their opcode.
      */
-    static final String INDEXED_READ = """
+    public static final String INDEXED_READ = """
             import io, sys
             from mcap.reader import make_reader, SeekingReader
             from mcap.records import Chunk, MessageIndex, Message, Footer, SummaryOffset
