@@ -88,14 +88,17 @@ public enum ChunkCompression {
             }
             case LZ4 -> {
                 byte[] out = new byte[uncompressedSize];
+                int n;
+                boolean more;
                 try (LZ4FrameInputStream in = new LZ4FrameInputStream(new ByteArrayInputStream(compressed))) {
-                    int n = in.readNBytes(out, 0, uncompressedSize);
-                    if (n != uncompressedSize || in.read() != -1) {
-                        throw new IOException("its lz4 frame does not hold the " + uncompressedSize
-                                + " bytes the chunk says");
-                    }
-                } catch (LZ4Exception | IllegalArgumentException e) {
+                    n = in.readNBytes(out, 0, uncompressedSize);
+                    more = in.read() != -1;
+                } catch (IOException | LZ4Exception | IllegalArgumentException e) {
                     throw new IOException("its lz4 frame does not decompress (" + e.getMessage() + ")");
+                }
+                if (n != uncompressedSize || more) {
+                    throw new IOException("its lz4 frame does not hold the " + uncompressedSize
+                            + " bytes the chunk says");
                 }
                 return out;
             }
