@@ -107,6 +107,10 @@ public final class McapReader implements Closeable {
         }
         if (!loadSummary()) {
             scanLinearly();
+        } else if (blocks.isEmpty() && messageCount != 0) {
+            // an unchunked file (allowed by the spec; other tools write them): its messages
+            // stand loose in the data section, and no index points to them
+            scanLinearly();
         }
         Map<String, String> format = metadata.get(McapWriter.FORMAT_METADATA);
         if (format != null) {

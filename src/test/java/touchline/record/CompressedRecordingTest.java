@@ -14,8 +14,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * Recordings whose chunks another tool compressed (Foxglove's SDK, Lichtblick and rosbag2
- * write zstd or lz4 by default) replay completely: the Python {@code mcap} writer re-writes a
- * Touchline recording with zstd and with lz4 chunks, and every envelope comes back.
+ * write zstd or lz4 by default), or that have no chunks at all, replay completely: the Python
+ * {@code mcap} writer re-writes a Touchline recording with zstd chunks, with lz4 chunks and
+ * unchunked, and every envelope comes back.
  */
 class CompressedRecordingTest {
 
@@ -27,7 +28,10 @@ class CompressedRecordingTest {
             src, dst, compression = sys.argv[1:4]
             with open(src, 'rb') as f, open(dst, 'wb') as o:
                 r = make_reader(f)
-                w = Writer(o, chunk_size=8 * 1024, compression=CompressionType[compression])
+                if compression == 'UNCHUNKED':
+                    w = Writer(o, use_chunking=False)
+                else:
+                    w = Writer(o, chunk_size=8 * 1024, compression=CompressionType[compression])
                 w.start('touchline', 'python-mcap')
                 schemas, channels = {}, {}
                 for schema, channel, m in r.iter_messages(log_time_order=False):
@@ -42,24 +46,25 @@ class CompressedRecordingTest {
                     w.add_message(channels[channel.id], m.log_time, m.data, m.publish_time, m.sequence)
                 w.finish()
             with open(dst, 'rb') as f:
-                print(sorted({c.compression for c in make_reader(f).get_summary().chunk_indexes}))
+                print(sorted({c.compression for c in make_reader(f).get_summary().chunk_indexes}) or 'unchunked')
             """;
 
     @TempDir
     Path dir;
 
     @ParameterizedTest
-    @ValueSource(strings = {"ZSTD", "LZ4"})
-    void chunksCompressedByThePythonWriterReplayCompletely(String compression) throws Exception {
+    @ValueSource(strings = {"ZSTD", "LZ4", "UNCHUNKED"})
+    void filesOfThePythonWriterReplayCompletely(String compression) throws Exception {
         PythonMcap.require("mcap", "zstandard", "lz4");
         List<Envelope> sent = RecordingFixture.team(3, 10);
         Path ours = dir.resolve("ours.mcap");
         RecordingFixture.write(ours, sent, EnvelopeWriter.Options.defaults());
         Path theirs = dir.resolve(compression + ".mcap");
         String used = PythonMcap.run(REWRITE, ours, theirs, compression);
-        assertEquals("['" + compression.toLowerCase() + "']", used);
+        boolean chunked = !compression.equals("UNCHUNKED");
+        assertEquals(chunked ? "['" + compression.toLowerCase() + "']" : "unchunked", used);
         try (Recording r = Recording.open(theirs)) {
-            assertTrue(r.mcap().chunkCount() > 3, "several chunks");
+            assertEquals(chunked, r.mcap().chunkCount() > 3, "several chunks, or none");
             assertEquals(sent, RecordingFixture.readAll(r));
             assertTrue(r.problems().isEmpty(), r.problems().toString());
         }
