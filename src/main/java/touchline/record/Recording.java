@@ -93,6 +93,11 @@ public final class Recording implements Closeable {
         return all;
     }
 
+    /** Adds a problem found while playing (once per distinct sentence). */
+    void note(String problem) {
+        problems.addIfAbsent(problem);
+    }
+
     public McapReader mcap() {
         return mcap;
     }

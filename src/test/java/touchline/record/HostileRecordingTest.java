@@ -217,4 +217,28 @@ class HostileRecordingTest {
         assertFalse(EnvelopeLayout.isAddressLiteral("10.0.13"), "a short form getByName would treat as a name");
         assertTrue(EnvelopeLayout.isAddressLiteral("fe80:0:0:0:0:0:0:1"));
     }
+
+    @Test
+    void anEnvelopeWhosePeerIsANameIsPrintedAndAFailingConsumerIsSaid() throws Exception {
+        Path file = dir.resolve("named.mcap");
+        try (OutputStream out = Files.newOutputStream(file); McapWriter w = new McapWriter(out, 4096)) {
+            int nao = w.addChannel(0, "/nao/out/rpc", EnvelopeLayout.RAW_ENCODING, Map.of("touchline.direction", "OUT",
+                    "touchline.channel", "NAO_RPC", "touchline.robot", "4", "touchline.kind", "rpc",
+                    "touchline.peer", "nao4.example.invalid:9559"));
+            w.addMessage(nao, 1_000_000_000_000L, 1_000_000_000_000L, new byte[]{1, 2});
+        }
+        StringWriter out = new StringWriter();
+        CommandLine replay = new CommandLine(new ReplayCommand());
+        replay.setOut(new PrintWriter(out));
+        replay.setErr(new PrintWriter(new StringWriter()));
+        assertEquals(0, replay.execute(file.toString(), "--headless"));
+        assertTrue(out.toString().contains("nao4.example.invalid:9559"), "the line is printed: " + out);
+
+        try (Recording r = Recording.open(file)) {
+            new Player(r, e -> {
+                throw new IllegalStateException("a view that cannot show it");
+            }, PlaybackClock.system()).runToEnd();
+            assertTrue(noted(r, "showing a replayed envelope failed"), r.problems().toString());
+        }
+    }
 }
