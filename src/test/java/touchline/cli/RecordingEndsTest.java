@@ -125,6 +125,19 @@ class RecordingEndsTest {
     }
 
     @Test
+    void aFullDiskEndsTheRecordingAndSaysHowToRecover() throws Exception {
+        Path full = Path.of("/dev/full"); // every write fails with "No space left on device"
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isWritable(full), "Linux /dev/full");
+        StringWriter out = new StringWriter();
+        CommandLine cli = new CommandLine(new RecordCommand());
+        cli.setOut(new PrintWriter(out));
+        cli.setErr(new PrintWriter(new StringWriter()));
+        assertEquals(1, cli.execute("--out", full.toString(), "--port", "0", "--bind", "127.0.0.1", "--seconds", "1"));
+        assertTrue(out.toString().contains("No space left on device; the file is not finished: 'touchline recover"),
+                out.toString());
+    }
+
+    @Test
     void recoverOfSomethingElseSaysWhatIsWrong() throws Exception {
         Path text = dir.resolve("notes.mcap");
         Files.writeString(text, "not a recording");
