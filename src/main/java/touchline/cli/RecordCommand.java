@@ -162,7 +162,8 @@ public final class RecordCommand implements Callable<Integer> {
         }
         RecorderStats s = recorder.stats();
         stdout.printf("recorded %d envelopes (%d dropped) to %s%s%n", s.written(), s.dropped(), s.files(),
-                stop.getCount() == 0 ? " (stopped by a signal; the file is finished)" : "");
+                stop.getCount() != 0 ? "" : s.failure() == null ? " (stopped by a signal; the file is finished)"
+                        : " (stopped by a signal)");
         if (s.failure() != null) {
             // e.g. a full disk: there was no room for the summary, so say how to get a finished file
             stdout.printf("%s; the file is not finished: 'touchline recover %s' writes a finished copy of what it"

@@ -54,7 +54,10 @@ public enum ChunkCompression {
             }
             case LZ4 -> {
                 ByteArrayOutputStream out = new ByteArrayOutputStream(length / 2 + 64);
-                try (LZ4FrameOutputStream lz4 = new LZ4FrameOutputStream(out)) {
+                // 256 KiB blocks, no content checksum: the default 4 MiB block buffer was allocated
+                // anew for every chunk, and the chunk record carries its own CRC
+                try (LZ4FrameOutputStream lz4 = new LZ4FrameOutputStream(out, LZ4FrameOutputStream.BLOCKSIZE.SIZE_256KB,
+                        LZ4FrameOutputStream.FLG.Bits.BLOCK_INDEPENDENCE)) {
                     lz4.write(data, 0, length);
                 } catch (IOException e) {
                     throw new UncheckedIOException(e); // a memory stream does not fail

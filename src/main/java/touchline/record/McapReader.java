@@ -274,7 +274,9 @@ public final class McapReader implements Closeable {
             if (op == McapRecords.DATA_END || op == McapRecords.FOOTER) {
                 break;
             }
-            if (len > MAX_CHUNK_BYTES) {
+            boolean read = op == McapRecords.SCHEMA || op == McapRecords.CHANNEL || op == McapRecords.METADATA
+                    || op == McapRecords.CHUNK || op == McapRecords.MESSAGE;
+            if (read && len > MAX_CHUNK_BYTES) {
                 problems.addIfAbsent("a record of " + len + " bytes at byte " + pos + " is larger than this reader"
                         + " accepts; skipped");
                 pos += 9 + len;
