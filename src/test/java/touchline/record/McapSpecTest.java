@@ -21,14 +21,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class McapSpecTest {
 
-    private static final int SUMMARY_GROUPS = 5; // schemas, channels, chunk indexes, metadata indexes, statistics
-
     @TempDir
     Path dir;
-
-    private static String expectedIndexedRead(int messages, long chunks) {
-        return messages + " " + messages + " " + chunks + " " + chunks + " " + messages + " " + SUMMARY_GROUPS;
-    }
 
     @ParameterizedTest
     @EnumSource(ChunkCompression.class)
@@ -45,7 +39,7 @@ class McapSpecTest {
             assertEquals(sent, RecordingFixture.readAll(r), "Touchline reads its own " + compression + " file");
             assertTrue(r.problems().isEmpty(), r.problems().toString());
         }
-        assertEquals(expectedIndexedRead(sent.size(), chunks), PythonMcap.run(PythonMcap.INDEXED_READ, file));
+        assertEquals(PythonMcap.indexedRead(sent.size(), chunks), PythonMcap.run(PythonMcap.INDEXED_READ, file));
     }
 
     @Test
@@ -62,7 +56,7 @@ class McapSpecTest {
         try (McapReader r = McapReader.open(file)) {
             chunks = r.chunkCount();
         }
-        assertEquals(expectedIndexedRead(sent.size(), chunks), PythonMcap.run(PythonMcap.INDEXED_READ, file));
+        assertEquals(PythonMcap.indexedRead(sent.size(), chunks), PythonMcap.run(PythonMcap.INDEXED_READ, file));
     }
 
     @Test
@@ -75,6 +69,6 @@ class McapSpecTest {
             chunks = r.chunkCount();
             messages = r.messageCount();
         }
-        assertEquals(expectedIndexedRead((int) messages, chunks), PythonMcap.run(PythonMcap.INDEXED_READ, sample));
+        assertEquals(PythonMcap.indexedRead(messages, chunks), PythonMcap.run(PythonMcap.INDEXED_READ, sample));
     }
 }

@@ -134,4 +134,13 @@ public final class PythonMcap {
                     f2.close()
                 print(n, s.statistics.message_count, len(s.chunk_indexes), consistent, good_entries, offsets_ok)
             """;
+
+    /**
+     * What {@link #INDEXED_READ} prints for a correct file of {@code messages} messages in
+     * {@code chunks} chunks with the five summary groups Touchline writes (schemas, channels,
+     * chunk indexes, metadata indexes, statistics).
+     */
+    public static String indexedRead(long messages, long chunks) {
+        return messages + " " + messages + " " + chunks + " " + chunks + " " + messages + " 5";
+    }
 }
