@@ -23,7 +23,8 @@ public final class EnvelopeLine {
         if (e.robotId() >= 0) {
             b.append("robot ").append(e.robotId()).append(' ');
         }
-        b.append(e.peer() == null ? "-" : e.peer().getAddress().getHostAddress() + ":" + e.peer().getPort()).append(' ');
+        // the host string: a literal, or the name a recording held (kept unresolved, it has no address)
+        b.append(e.peer() == null ? "-" : e.peer().getHostString() + ":" + e.peer().getPort()).append(' ');
         if (e.isMalformed()) {
             return b.append("MALFORMED (").append(e.size()).append(" bytes): ").append(e.error())
                     .append(" [").append(hex.dump(e.raw(), 16).replace('\n', ' ')).append(']').toString();

@@ -17,6 +17,7 @@ import picocli.CommandLine.Command;
                 ConsoleCommand.class,
                 ScreenshotsCommand.class,
                 RecordCommand.class,
+                RecoverCommand.class,
                 ReplayCommand.class,
                 ExportCommand.class,
                 GcCommand.class,

@@ -6,6 +6,7 @@ import picocli.CommandLine.Option;
 import com.google.protobuf.Descriptors.FileDescriptor;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.record.ChunkCompression;
 import touchline.record.EnvelopeSource;
 import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
@@ -25,9 +26,11 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * {@code touchline record}: headless match-day recording of everything the console hears and
- * sends to an MCAP file, until Ctrl+C (or {@code --seconds}). The traffic is the application
- * core's Envelope stream ({@link Console}, as {@code listen} runs it), so the robots are
- * greeted and asked for their options exactly as in the console.
+ * sends to an MCAP file, until Ctrl+C, SIGTERM (or {@code --seconds}). The traffic is the
+ * application core's Envelope stream ({@link Console}, as {@code listen} runs it), so the
+ * robots are greeted and asked for their options exactly as in the console. However the
+ * recording ends, the file is finished (data end, summary, footer) and the summary printed
+ * before the process exits: a signal's shutdown hook waits until that is done.
  */
 @Command(name = "record", mixinStandardHelpOptions = true,
         description = "Record every datagram the console receives to an MCAP file (headless).")
@@ -55,6 +58,14 @@ public final class RecordCommand implements Callable<Integer> {
     @Option(names = "--seconds", description = "stop after this many seconds (default: until Ctrl+C)")
     long seconds;
 
+    @Option(names = "--compression", paramLabel = "none|zstd|lz4", defaultValue = "none",
+            converter = CompressionOption.class,
+            description = "compression of the file's chunks (default: ${DEFAULT-VALUE})")
+    ChunkCompression compression;
+
+    /** How long a signal waits for the file to be finished before the JVM exits regardless. */
+    private static final long FINISH_TIMEOUT_SECONDS = 20;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -81,7 +92,7 @@ public final class RecordCommand implements Callable<Integer> {
         PrintWriter stdout = spec.commandLine().getOut();
         Path file = out != null ? out
                 : Path.of("touchline-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
-        EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults()
+        EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults().withCompression(compression)
                 .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L).withCameraRate(cameraFps);
         List<FileDescriptor> teamFiles = List.of();
         if (proto != null) {
@@ -97,8 +108,27 @@ public final class RecordCommand implements Callable<Integer> {
         }
         Recorder recorder = new Recorder(file, options);
         CountDownLatch stop = new CountDownLatch(1);
-        Thread hook = new Thread(stop::countDown, "touchline-record-stop");
+        CountDownLatch finished = new CountDownLatch(1);
+        // The JVM exits as soon as its shutdown hooks return, killing the thread that writes
+        // the summary: so the hook asks the recording to end and waits until the file is finished
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                finished.await(FINISH_TIMEOUT_SECONDS, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "touchline-record-stop");
         Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            return record(file, options, teamFiles, recorder, stop, hook, stdout, err);
+        } finally {
+            finished.countDown();
+        }
+    }
+
+    private int record(Path file, EnvelopeWriter.Options options, List<FileDescriptor> teamFiles, Recorder recorder,
+                       CountDownLatch stop, Thread hook, PrintWriter stdout, PrintWriter err) throws Exception {
         AutoCloseable source;
         try {
             source = sources.apply(udp.config(), teamFiles).start(recorder);
@@ -120,15 +150,25 @@ public final class RecordCommand implements Callable<Integer> {
                 break;
             }
         }
-        source.close();
-        recorder.close();
+        try {
+            source.close();
+        } finally {
+            recorder.close();
+        }
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {
             // Ctrl+C: the JVM is exiting anyway, and the file is finished above
         }
         RecorderStats s = recorder.stats();
-        stdout.printf("recorded %d envelopes (%d dropped) to %s%n", s.written(), s.dropped(), s.files());
+        stdout.printf("recorded %d envelopes (%d dropped) to %s%s%n", s.written(), s.dropped(), s.files(),
+                stop.getCount() != 0 ? "" : s.failure() == null ? " (stopped by a signal; the file is finished)"
+                        : " (stopped by a signal)");
+        if (s.failure() != null) {
+            // e.g. a full disk: there was no room for the summary, so say how to get a finished file
+            stdout.printf("%s; the file is not finished: 'touchline recover %s' writes a finished copy of what it"
+                    + " holds%n", s.failure(), s.files().get(s.files().size() - 1));
+        }
         stdout.flush();
         return s.failure() == null ? 0 : 1;
     }

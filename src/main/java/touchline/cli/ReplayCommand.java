@@ -54,6 +54,7 @@ public final class ReplayCommand implements Callable<Integer> {
             return 1;
         }
         try (recording) {
+            java.util.Set<String> noted = new java.util.HashSet<>(recording.problems());
             recording.problems().forEach(p -> err.println("note: " + p));
             EnvelopeLine text = new EnvelopeLine();
             if (events) {
@@ -79,8 +80,8 @@ public final class ReplayCommand implements Callable<Integer> {
                 n = player.snapshot().emitted();
             }
             out.flush();
-            int before = recording.mcap().problems().size();
-            recording.problems().stream().skip(before).forEach(p -> err.println("note: " + p));
+            // what playing found (a corrupt chunk, a channel of another tool): said, never dropped
+            recording.problems().stream().filter(noted::add).forEach(p -> err.println("note: " + p));
             err.printf("replayed %d envelopes, %.1f s of recording%n", n, recording.durationMicros() / 1e6);
             return 0;
         }

@@ -17,11 +17,14 @@ import java.util.concurrent.atomic.AtomicLong;
  * {@code OutputStream} whose writes copy the bytes and queue them (a writer writes whole
  * chunks, so this is one copy per chunk, not per message); {@link #pendingBytes} says how
  * much is queued, so a producer can refuse work when the disk falls behind. Between writes
- * the thread runs a tick (the recorder's "write a chunk older than a second").
+ * the thread runs a tick (the recorder's "write a chunk older than a second"). Written bytes
+ * are handed to the disk itself ({@code fsync}) at most {@link #SYNC_MILLIS} after they were
+ * written, so a power cut, not only a killed process, loses at most about a second.
  */
 final class BackgroundFiles implements AutoCloseable {
 
     private static final long TICK_MILLIS = 100;
+    static final long SYNC_MILLIS = 200;
 
     private sealed interface Job permits Write, CloseFile, Hold, Stop { }
 
@@ -43,6 +46,8 @@ final class BackgroundFiles implements AutoCloseable {
     private final Runnable tick;
     private final Thread thread;
     private volatile String failure;
+    private FileChannel unsynced;          // the file written since the last sync (file thread only)
+    private long unsyncedSince;
 
     /** @param tick run on the file thread about every 100 ms while idle; may write through streams of this */
     BackgroundFiles(String threadName, Runnable tick) {
@@ -124,6 +129,7 @@ final class BackgroundFiles implements AutoCloseable {
             if (job != null) {
                 perform(job);
             }
+            syncIfDue(job == null);
             if (job == null || System.nanoTime() - lastTick > TICK_MILLIS * 1_000_000L) {
                 lastTick = System.nanoTime();
                 try {
@@ -144,12 +150,20 @@ final class BackgroundFiles implements AutoCloseable {
                         while (w.bytes().hasRemaining()) {
                             w.file().write(w.bytes());
                         }
+                        if (unsynced != w.file()) {
+                            sync();
+                            unsynced = w.file();
+                            unsyncedSince = System.nanoTime();
+                        }
                     }
                 } finally {
                     pending.addAndGet(-length);
                     free.offer(w.bytes()); // a full pool lets it go
                 }
             } else if (job instanceof CloseFile c) {
+                if (unsynced == c.file()) {
+                    sync();
+                }
                 c.file().close();
             } else if (job instanceof Hold h) {
                 h.release().await();
@@ -158,6 +172,25 @@ final class BackgroundFiles implements AutoCloseable {
             Thread.currentThread().interrupt();
         } catch (IOException e) {
             fail("recording stopped: " + e.getMessage());
+        }
+    }
+
+    /** Syncs the written file when the thread is idle or the oldest unsynced write is {@link #SYNC_MILLIS} old. */
+    private void syncIfDue(boolean idle) {
+        if (unsynced != null && (idle || System.nanoTime() - unsyncedSince >= SYNC_MILLIS * 1_000_000L)) {
+            try {
+                sync();
+            } catch (IOException e) {
+                fail("recording stopped: " + e.getMessage());
+            }
+        }
+    }
+
+    private void sync() throws IOException {
+        FileChannel file = unsynced;
+        unsynced = null;
+        if (file != null && file.isOpen()) {
+            file.force(false);
         }
     }
 

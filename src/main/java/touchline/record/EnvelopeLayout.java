@@ -115,8 +115,17 @@ final class EnvelopeLayout {
             };
         }
 
+        /** Throws IllegalArgumentException (saying which key) when the metadata is not a Touchline channel's. */
         static Key fromMetadata(Map<String, String> m) {
+            for (String required : new String[]{KEY_DIRECTION, KEY_CHANNEL, KEY_ROBOT, KEY_KIND}) {
+                if (m.get(required) == null) {
+                    throw new IllegalArgumentException("no " + required + " in its metadata");
+                }
+            }
             String framing = m.get(KEY_FRAMING);
+            if (PAYLOAD.equals(m.get(KEY_LAYOUT)) && framing == null) {
+                throw new IllegalArgumentException("a payload channel without " + KEY_FRAMING);
+            }
             return new Key(Direction.valueOf(m.get(KEY_DIRECTION)), Channel.valueOf(m.get(KEY_CHANNEL)),
                     parsePeer(m.get(KEY_PEER)), Integer.parseInt(m.get(KEY_ROBOT)), m.get(KEY_KIND),
                     m.getOrDefault(KEY_LAYOUT, RAW), framing == null ? null : Framing.valueOf(framing));
@@ -207,6 +216,15 @@ final class EnvelopeLayout {
         return peer.getAddress().getHostAddress() + ":" + peer.getPort();
     }
 
+    private static final java.util.regex.Pattern IPV4 =
+            java.util.regex.Pattern.compile("(25[0-5]|2[0-4]\\d|1?\\d?\\d)(\\.(25[0-5]|2[0-4]\\d|1?\\d?\\d)){3}");
+    private static final java.util.regex.Pattern IPV6 = java.util.regex.Pattern.compile("[0-9A-Fa-f:.]*:[0-9A-Fa-f:.]*");
+
+    /** Dotted-quad IPv4 or IPv6 (no zone): forms {@link InetAddress#getByName} parses without any lookup. */
+    static boolean isAddressLiteral(String host) {
+        return IPV4.matcher(host).matches() || IPV6.matcher(host).matches();
+    }
+
     static InetSocketAddress parsePeer(String s) {
         if (s == null) {
             return null;
@@ -216,11 +234,15 @@ final class EnvelopeLayout {
         if (s.startsWith("unresolved:")) {
             return InetSocketAddress.createUnresolved(s.substring("unresolved:".length(), colon), port);
         }
+        String host = s.substring(0, colon);
+        if (!isAddressLiteral(host)) {
+            // a name written in a file from outside: opening a recording never causes a lookup
+            return InetSocketAddress.createUnresolved(host, port);
+        }
         try {
-            // an IP literal: no name lookup happens
-            return new InetSocketAddress(InetAddress.getByName(s.substring(0, colon)), port);
+            return new InetSocketAddress(InetAddress.getByName(host), port);
         } catch (UnknownHostException e) {
-            return InetSocketAddress.createUnresolved(s.substring(0, colon), port);
+            return InetSocketAddress.createUnresolved(host, port);
         }
     }
 }

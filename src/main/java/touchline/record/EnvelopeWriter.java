@@ -32,29 +32,35 @@ public final class EnvelopeWriter implements Closeable {
     /**
      * Limits and tuning; 0 disables a split limit. {@code cameraIntervalMicros} thins camera
      * frames (NAO_CAMERA) to at most one per interval per channel; 0 keeps every frame.
+     * {@code compression} is applied to every chunk.
      */
     public record Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles,
-                          long cameraIntervalMicros) {
+                          long cameraIntervalMicros, ChunkCompression compression) {
 
         public Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles) {
-            this(splitBytes, splitMicros, chunkBytes, teamFiles, 0);
+            this(splitBytes, splitMicros, chunkBytes, teamFiles, 0, ChunkCompression.NONE);
         }
 
         public static Options defaults() {
-            return new Options(0, 0, 512 * 1024, List.of(), 0);
+            return new Options(0, 0, 512 * 1024, List.of(), 0, ChunkCompression.NONE);
         }
 
         public Options withSplit(long bytes, long micros) {
-            return new Options(bytes, micros, chunkBytes, teamFiles, cameraIntervalMicros);
+            return new Options(bytes, micros, chunkBytes, teamFiles, cameraIntervalMicros, compression);
         }
 
         public Options withTeamFiles(List<FileDescriptor> files) {
-            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files), cameraIntervalMicros);
+            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files), cameraIntervalMicros, compression);
         }
 
         /** Camera frames at most {@code fps} per second per camera channel (0 = all). */
         public Options withCameraRate(double fps) {
-            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, fps <= 0 ? 0 : (long) (1e6 / fps));
+            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, fps <= 0 ? 0 : (long) (1e6 / fps),
+                    compression);
+        }
+
+        public Options withCompression(ChunkCompression c) {
+            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, cameraIntervalMicros, c);
         }
     }
 
@@ -150,7 +156,7 @@ public final class EnvelopeWriter implements Closeable {
             writer.close();
         }
         Path next = files.isEmpty() ? base : numbered(base, files.size());
-        writer = new McapWriter(opener.open(next), options.chunkBytes());
+        writer = new McapWriter(opener.open(next), options.chunkBytes(), options.compression());
         files.add(next);
         channels.clear();
         recent.clear();

@@ -22,10 +22,14 @@ import java.util.zip.CRC32;
 /**
  * A small MCAP reader (https://mcap.dev/spec). With an intact summary it reads schemas,
  * channels and chunk indexes from it; without one (a recorder that was killed, a file cut
- * short) it scans the data section linearly up to the cut. Chunks whose CRC does not match,
- * compressed chunks (this reader knows none) and records it cannot parse are skipped and
- * described in {@link #problems()}: bad input becomes a message, never an exception, once
- * the file is known to be MCAP at all. Cursors may be used from one thread each.
+ * short) it scans the data section linearly up to the cut. Chunks may be uncompressed,
+ * zstd or lz4 ({@link ChunkCompression}). A recording is input from outside (teams swap
+ * logs), so every length is checked against what the file holds before anything is
+ * allocated, each chunk is read once however often an index lists it, and chunks whose
+ * CRC does not match, chunks of an unknown compression and records it cannot parse are
+ * skipped and described in {@link #problems()}: bad input becomes a message, never an
+ * exception, once the file is known to be MCAP at all. Cursors may be used from one thread
+ * each.
  */
 public final class McapReader implements Closeable {
 
@@ -41,6 +45,13 @@ public final class McapReader implements Closeable {
 
     /** A chunk (or, for {@code loose}, a single message record outside any chunk) in file order. */
     record Block(long offset, long length, long startTime, long endTime, boolean loose) { }
+
+    /**
+     * The largest chunk (uncompressed records) read: a chunk's header says how much to
+     * allocate, and a damaged or hostile one must not make that the whole heap. Writers use
+     * chunks of a few megabytes.
+     */
+    static final long MAX_CHUNK_BYTES = 256L << 20;
 
     private final Path file;
     private final FileChannel in;
@@ -96,6 +107,10 @@ public final class McapReader implements Closeable {
         }
         if (!loadSummary()) {
             scanLinearly();
+        } else if (blocks.isEmpty() && messageCount != 0) {
+            // an unchunked file (allowed by the spec; other tools write them): its messages
+            // stand loose in the data section, and no index points to them
+            scanLinearly();
         }
         Map<String, String> format = metadata.get(McapWriter.FORMAT_METADATA);
         if (format != null) {
@@ -133,13 +148,19 @@ public final class McapReader implements Closeable {
             problems.addIfAbsent("the summary offsets in the footer point outside the file; scanning the data instead");
             return false;
         }
+        if (summaryEnd - summaryStart > MAX_CHUNK_BYTES) {
+            problems.addIfAbsent("the summary section is larger than " + (MAX_CHUNK_BYTES >> 20)
+                    + " MB; scanning the data instead");
+            return false;
+        }
         ByteBuffer s = ByteBuffer.wrap(read(summaryStart, (int) (summaryEnd - summaryStart)))
                 .order(ByteOrder.LITTLE_ENDIAN);
+        java.util.Set<Long> chunkOffsets = new java.util.HashSet<>();
         try {
             while (s.remaining() >= 9) {
                 int op = s.get() & 0xFF;
                 long len = s.getLong();
-                if (len > s.remaining()) {
+                if (len < 0 || len > s.remaining()) {
                     throw new BufferUnderflowException();
                 }
                 ByteBuffer r = s.slice(s.position(), (int) len).order(ByteOrder.LITTLE_ENDIAN);
@@ -152,7 +173,15 @@ public final class McapReader implements Closeable {
                         long end = r.getLong();
                         long offset = r.getLong();
                         long length = r.getLong();
-                        blocks.add(new Block(offset, length, start, end, false));
+                        if (!insideDataSection(offset, length, summaryStart)) {
+                            problems.addIfAbsent("a chunk index points outside the data section (" + offset + ", "
+                                    + length + " bytes); that entry is ignored");
+                        } else if (!chunkOffsets.add(offset)) {
+                            problems.addIfAbsent("the summary lists the chunk at byte " + offset
+                                    + " more than once; it is read once");
+                        } else {
+                            blocks.add(new Block(offset, length, start, end, false));
+                        }
                     }
                     case McapRecords.STATISTICS -> {
                         messageCount = r.getLong();
@@ -177,8 +206,14 @@ public final class McapReader implements Closeable {
             schemas.clear();
             channels.clear();
             blocks.clear();
+            metadata.clear();
+            messageCount = -1;
+            startTime = Long.MAX_VALUE;
+            endTime = Long.MIN_VALUE;
             return false;
         }
+        // file order, whatever order the index lists them in: playback and seeking rely on it
+        blocks.sort(java.util.Comparator.comparingLong(Block::offset));
         if (startTime == Long.MAX_VALUE) {
             for (Block b : blocks) {
                 startTime = Math.min(startTime, b.startTime());
@@ -189,8 +224,16 @@ public final class McapReader implements Closeable {
         return true;
     }
 
+    /** A record of {@code length} bytes at {@code offset} lies after the header, before {@code end}. */
+    private static boolean insideDataSection(long offset, long length, long end) {
+        return offset >= 8 && length >= 9 && offset < end && length <= end - offset;
+    }
+
     private void readMetadataAt(long offset, long length) throws IOException {
-        if (offset < 8 || length < 9 || offset + length > fileSize) {
+        // subtraction, not offset + length: a huge length must not wrap around and pass
+        if (offset < 8 || length < 9 || offset > fileSize || length > fileSize - offset || length > MAX_CHUNK_BYTES) {
+            problems.addIfAbsent("a metadata index entry points outside the file (" + offset + ", " + length
+                    + " bytes); ignored");
             return;
         }
         ByteBuffer b = ByteBuffer.wrap(read(offset + 9, (int) length - 9)).order(ByteOrder.LITTLE_ENDIAN);
@@ -217,7 +260,7 @@ public final class McapReader implements Closeable {
             header.flip();
             int op = header.get() & 0xFF;
             long len = header.getLong();
-            if (len < 0 || pos + 9 + len > fileSize) {
+            if (len < 0 || len > fileSize - pos - 9) {
                 if (op == McapRecords.CHUNK && len > 0) {
                     blocks.add(new Block(pos, fileSize - pos, Long.MIN_VALUE, Long.MAX_VALUE, false));
                     problems.addIfAbsent("the recording is cut off at byte " + fileSize + " inside its last chunk; "
@@ -230,6 +273,14 @@ public final class McapReader implements Closeable {
             }
             if (op == McapRecords.DATA_END || op == McapRecords.FOOTER) {
                 break;
+            }
+            boolean read = op == McapRecords.SCHEMA || op == McapRecords.CHANNEL || op == McapRecords.METADATA
+                    || op == McapRecords.CHUNK || op == McapRecords.MESSAGE;
+            if (read && len > MAX_CHUNK_BYTES) {
+                problems.addIfAbsent("a record of " + len + " bytes at byte " + pos + " is larger than this reader"
+                        + " accepts; skipped");
+                pos += 9 + len;
+                continue;
             }
             switch (op) {
                 case McapRecords.SCHEMA, McapRecords.CHANNEL, McapRecords.METADATA -> {
@@ -247,13 +298,21 @@ public final class McapReader implements Closeable {
                     }
                 }
                 case McapRecords.CHUNK -> {
-                    ByteBuffer r = ByteBuffer.wrap(read(pos + 9, 16)).order(ByteOrder.LITTLE_ENDIAN);
-                    blocks.add(new Block(pos, 9 + len, r.getLong(), r.getLong(), false));
+                    if (len < CHUNK_HEADER_BYTES) {
+                        problems.addIfAbsent("a chunk at byte " + pos + " is too short to be one; skipped");
+                    } else {
+                        ByteBuffer r = ByteBuffer.wrap(read(pos + 9, 16)).order(ByteOrder.LITTLE_ENDIAN);
+                        blocks.add(new Block(pos, 9 + len, r.getLong(), r.getLong(), false));
+                    }
                 }
                 case McapRecords.MESSAGE -> {
-                    ByteBuffer r = ByteBuffer.wrap(read(pos + 9 + 6, 8)).order(ByteOrder.LITTLE_ENDIAN);
-                    long t = r.getLong();
-                    blocks.add(new Block(pos, 9 + len, t, t, true));
+                    if (len < MESSAGE_HEADER_BYTES) {
+                        problems.addIfAbsent("a message at byte " + pos + " is too short to be one; skipped");
+                    } else {
+                        ByteBuffer r = ByteBuffer.wrap(read(pos + 9 + 6, 8)).order(ByteOrder.LITTLE_ENDIAN);
+                        long t = r.getLong();
+                        blocks.add(new Block(pos, 9 + len, t, t, true));
+                    }
                 }
                 default -> { }
             }
@@ -266,6 +325,11 @@ public final class McapReader implements Closeable {
             }
         }
     }
+
+    // start, end, uncompressed size, CRC, compression string length, records length
+    private static final int CHUNK_HEADER_BYTES = 8 + 8 + 8 + 4 + 4 + 8;
+    // channel id, sequence, log time, publish time
+    private static final int MESSAGE_HEADER_BYTES = 2 + 4 + 8 + 8;
 
     private void addSchema(ByteBuffer r) {
         int id = r.getShort() & 0xFFFF;
@@ -449,40 +513,85 @@ public final class McapReader implements Closeable {
         private ByteBuffer load(Block b) {
             recordsOffset = b.offset();
             try {
-                int n = (int) Math.min(b.length(), fileSize - b.offset());
-                ByteBuffer whole = ByteBuffer.wrap(read(b.offset(), n)).order(ByteOrder.LITTLE_ENDIAN);
+                long available = Math.min(b.length(), fileSize - b.offset());
+                if (available > MAX_CHUNK_BYTES + 4096) {
+                    problems.addIfAbsent("chunk at byte " + b.offset() + " is larger than " + (MAX_CHUNK_BYTES >> 20)
+                            + " MB; skipped");
+                    return null;
+                }
+                ByteBuffer whole = ByteBuffer.wrap(read(b.offset(), (int) available)).order(ByteOrder.LITTLE_ENDIAN);
                 if (b.loose()) {
                     return whole;
                 }
-                whole.position(9);
-                whole.getLong();
-                whole.getLong();
-                long uncompressedSize = whole.getLong();
-                long crc = whole.getInt() & 0xFFFFFFFFL;
-                String compression = string(whole);
-                long recordsLength = whole.getLong();
-                if (!compression.isEmpty()) {
-                    problems.addIfAbsent("chunk at byte " + b.offset() + " is compressed with " + compression
-                            + ", which this reader does not support; its messages are skipped");
-                    return null;
-                }
-                boolean cut = recordsLength > whole.remaining();
-                ByteBuffer records = whole.slice(whole.position(), (int) Math.min(recordsLength, whole.remaining()))
-                        .order(ByteOrder.LITTLE_ENDIAN);
-                if (!cut && crc != 0) {
-                    CRC32 check = new CRC32();
-                    check.update(records.duplicate());
-                    if (check.getValue() != crc || uncompressedSize != recordsLength) {
-                        problems.addIfAbsent("chunk at byte " + b.offset() + " is corrupt (CRC " + Long.toHexString(check.getValue())
-                                + ", expected " + Long.toHexString(crc) + "); its messages are skipped, the rest plays");
-                        return null;
-                    }
-                }
-                return records;
-            } catch (IOException | BufferUnderflowException | IllegalArgumentException e) {
-                problems.addIfAbsent("chunk at byte " + b.offset() + " could not be read (" + e.getMessage() + "); skipped");
+                return records(b, whole);
+            } catch (IOException | RuntimeException e) {
+                // the checks in records() should leave nothing to catch; a file from outside
+                // still must not stop the replay if one was missed
+                problems.addIfAbsent("chunk at byte " + b.offset() + " could not be read (" + e.getMessage()
+                        + "); skipped");
                 return null;
             }
+        }
+
+        private ByteBuffer records(Block b, ByteBuffer whole) throws IOException {
+            if (whole.remaining() < 9 + CHUNK_HEADER_BYTES || whole.get(0) != McapRecords.CHUNK) {
+                problems.addIfAbsent("the index points at byte " + b.offset() + ", where there is no chunk; skipped");
+                return null;
+            }
+            whole.position(9);
+            whole.getLong();
+            whole.getLong();
+            long uncompressedSize = whole.getLong();
+            long crc = whole.getInt() & 0xFFFFFFFFL;
+            String name = string(whole);
+            if (whole.remaining() < 8) {
+                throw new BufferUnderflowException();
+            }
+            long recordsLength = whole.getLong();
+            ChunkCompression compression = ChunkCompression.ofMcapName(name).orElse(null);
+            if (compression == null) {
+                problems.addIfAbsent("chunk at byte " + b.offset() + " is compressed with '" + name
+                        + "', which this reader does not know (it reads zstd and lz4); its messages are skipped");
+                return null;
+            }
+            if (recordsLength < 0 || uncompressedSize < 0 || uncompressedSize > MAX_CHUNK_BYTES) {
+                problems.addIfAbsent("chunk at byte " + b.offset() + " declares impossible sizes (records "
+                        + recordsLength + ", uncompressed " + uncompressedSize + " bytes); skipped");
+                return null;
+            }
+            boolean cut = recordsLength > whole.remaining();
+            if (cut && compression != ChunkCompression.NONE) {
+                problems.addIfAbsent("the compressed chunk at byte " + b.offset() + " is cut off; its messages are lost");
+                return null;
+            }
+            ByteBuffer stored = whole.slice(whole.position(), (int) Math.min(recordsLength, whole.remaining()));
+            ByteBuffer records;
+            if (compression == ChunkCompression.NONE) {
+                records = stored;
+            } else {
+                byte[] packed = new byte[stored.remaining()];
+                stored.get(packed);
+                try {
+                    records = ByteBuffer.wrap(compression.decompress(packed, (int) uncompressedSize));
+                } catch (IOException e) {
+                    problems.addIfAbsent("chunk at byte " + b.offset() + " is damaged: " + e.getMessage()
+                            + "; its messages are skipped, the rest plays");
+                    return null;
+                }
+            }
+            records.order(ByteOrder.LITTLE_ENDIAN);
+            if (!cut && (crc != 0 || uncompressedSize != records.remaining())) {
+                CRC32 check = new CRC32();
+                check.update(records.duplicate());
+                if ((crc != 0 && check.getValue() != crc) || uncompressedSize != records.remaining()) {
+                    problems.addIfAbsent("chunk at byte " + b.offset() + " is corrupt (CRC "
+                            + Long.toHexString(check.getValue()) + ", expected " + Long.toHexString(crc) + ", "
+                            + records.remaining() + " of " + uncompressedSize + " bytes); its messages are skipped,"
+                            + " the rest plays");
+                    return null;
+                }
+            }
+            return records;
         }
     }
 

@@ -15,9 +15,10 @@ import java.util.TreeMap;
 import java.util.zip.CRC32;
 
 /**
- * A small MCAP writer (https://mcap.dev/spec): chunked, uncompressed, indexed (message
- * indexes after every chunk; chunk indexes, statistics, metadata index and summary offsets
- * in the summary). Schema and channel records go into the chunk that first uses them, so
+ * A small MCAP writer (https://mcap.dev/spec): chunked (uncompressed, zstd or lz4, see
+ * {@link ChunkCompression}), indexed (message indexes after every chunk, their entries in
+ * log-time order even when messages arrived out of order; chunk indexes, statistics,
+ * metadata index and summary offsets in the summary). Schema and channel records go into the chunk that first uses them, so
  * every chunk is readable on its own after a crash. A chunk is written to the file when it
  * reaches {@code chunkBytes} or, through {@link #flushIfOlderThan}, when it is older than the
  * caller's limit, so a killed process loses at most that much. Not thread-safe: one writer
@@ -37,6 +38,7 @@ public final class McapWriter implements Closeable {
 
     private final OutputStream out;
     private final int chunkBytes;
+    private final ChunkCompression compression;
     private final CRC32 chunkCrc = new CRC32();
     private long position;
 
@@ -67,13 +69,18 @@ public final class McapWriter implements Closeable {
     private boolean closed;
 
     public McapWriter(Path file, int chunkBytes) throws IOException {
-        this(Files.newOutputStream(file), chunkBytes);
+        this(Files.newOutputStream(file), chunkBytes, ChunkCompression.NONE);
+    }
+
+    public McapWriter(OutputStream out, int chunkBytes) throws IOException {
+        this(out, chunkBytes, ChunkCompression.NONE);
     }
 
     /** {@code out} should be unbuffered (a file stream): every chunk is written whole. */
-    public McapWriter(OutputStream out, int chunkBytes) throws IOException {
+    public McapWriter(OutputStream out, int chunkBytes, ChunkCompression compression) throws IOException {
         this.out = out;
         this.chunkBytes = chunkBytes;
+        this.compression = compression;
         this.chunk = new Bytes(chunkBytes + 64 * 1024);
         scratch.raw(McapRecords.MAGIC);
         int at = scratch.beginRecord(McapRecords.HEADER);
@@ -220,19 +227,23 @@ public final class McapWriter implements Closeable {
         long end = chunkEnd == Long.MIN_VALUE ? 0 : chunkEnd;
         chunkCrc.reset();
         chunkCrc.update(chunk.buf, 0, chunk.size);
+        long uncompressedSize = chunk.size;
+        byte[] records = compression.compress(chunk.buf, chunk.size);
+        int recordsLength = compression == ChunkCompression.NONE ? chunk.size : records.length;
         scratch.clear();
         int at = scratch.beginRecord(McapRecords.CHUNK);
         scratch.u64(start);
         scratch.u64(end);
-        scratch.u64(chunk.size);
+        scratch.u64(uncompressedSize);
         scratch.u32(chunkCrc.getValue());
-        scratch.string("");
-        scratch.u64(chunk.size);
+        scratch.string(compression.mcapName());
+        scratch.u64(recordsLength);
         long chunkOffset = position;
-        long chunkLength = scratch.size + (long) chunk.size;
+        long chunkLength = scratch.size + (long) recordsLength;
         scratch.putU64At(at, chunkLength - 9);
         emit(scratch, false);
-        emit(chunk, false);
+        write(records, recordsLength);
+        chunk.clear();
 
         scratch.clear();
         Map<Integer, Long> indexOffsets = new TreeMap<>();
@@ -241,11 +252,12 @@ public final class McapWriter implements Closeable {
         for (int c = 0; c < chunkChannelCount; c++) {
             int channel = chunkChannels[c];
             int n = chunkIndexSize[channel];
+            long[] index = chunkIndex[channel];
+            sortByTime(index, n);
             indexOffsets.put(channel, indexStart + scratch.size);
             int rec = scratch.beginRecord(McapRecords.MESSAGE_INDEX);
             scratch.u16(channel);
             scratch.u32(n * 8L);
-            long[] index = chunkIndex[channel];
             for (int i = 0; i < n; i++) {
                 scratch.u64(index[i]);
             }
@@ -268,16 +280,44 @@ public final class McapWriter implements Closeable {
         }
         chunkIndexes.endPrefixed32(map);
         chunkIndexes.u64(indexLength);
-        chunkIndexes.string("");
-        chunkIndexes.u64(chunk.size);
-        chunkIndexes.u64(chunk.size);
+        chunkIndexes.string(compression.mcapName());
+        chunkIndexes.u64(recordsLength);
+        chunkIndexes.u64(uncompressedSize);
         chunkIndexes.endRecord(ci);
         chunkCount++;
 
-        chunk.clear();
         chunkStart = Long.MAX_VALUE;
         chunkEnd = Long.MIN_VALUE;
         chunkHasContent = false;
+    }
+
+    /**
+     * Sorts the (log time, offset) pairs {@code index[0, n)} by time, then offset: readers
+     * binary-search message indexes, and envelopes of several threads can reach the writer
+     * slightly out of order. Already sorted is the common case and costs one pass.
+     */
+    private static void sortByTime(long[] index, int n) {
+        boolean sorted = true;
+        for (int i = 2; i < n && sorted; i += 2) {
+            sorted = index[i - 2] <= index[i];
+        }
+        if (sorted) {
+            return;
+        }
+        long[][] pairs = new long[n / 2][];
+        for (int i = 0; i < n; i += 2) {
+            pairs[i / 2] = new long[]{index[i], index[i + 1]};
+        }
+        Arrays.sort(pairs, (a, b) -> a[0] != b[0] ? Long.compare(a[0], b[0]) : Long.compare(a[1], b[1]));
+        for (int i = 0; i < pairs.length; i++) {
+            index[2 * i] = pairs[i][0];
+            index[2 * i + 1] = pairs[i][1];
+        }
+    }
+
+    private void write(byte[] b, int length) throws IOException {
+        out.write(b, 0, length);
+        position += length;
     }
 
     private void emit(Bytes b, boolean push) throws IOException {

@@ -133,8 +133,9 @@ public final class Player implements AutoCloseable {
         emitted++;
         try {
             sink.accept(e);
-        } catch (RuntimeException ignored) {
-            // a failing consumer must not stop the replay; the bus reports its own subscribers
+        } catch (RuntimeException failed) {
+            // a failing consumer must not stop the replay, but what it skipped is said
+            recording.note("showing a replayed envelope failed (" + failed + "); such envelopes are skipped");
         }
     }
 

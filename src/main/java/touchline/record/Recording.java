@@ -93,6 +93,11 @@ public final class Recording implements Closeable {
         return all;
     }
 
+    /** Adds a problem found while playing (once per distinct sentence). */
+    void note(String problem) {
+        problems.addIfAbsent(problem);
+    }
+
     public McapReader mcap() {
         return mcap;
     }
@@ -148,7 +153,8 @@ public final class Recording implements Closeable {
             try {
                 key = EnvelopeLayout.Key.fromMetadata(info.metadata());
             } catch (RuntimeException e) {
-                problems.addIfAbsent("channel " + info.topic() + " was not written by Touchline (no envelope metadata); skipped");
+                problems.addIfAbsent("channel " + info.topic() + " was not written by Touchline (" + e.getMessage()
+                        + "); its messages are skipped");
                 return null;
             }
             keys.put(m.channelId(), key);

@@ -26,6 +26,12 @@ import java.util.Map;
  */
 public final class SchemaSet {
 
+    /**
+     * How deep imports may nest. Real schemas nest a handful of levels; a recording from
+     * outside could nest thousands, and resolving them recursively would overflow the stack.
+     */
+    static final int MAX_IMPORT_DEPTH = 100;
+
     private final Map<String, FileDescriptor> files = new LinkedHashMap<>();
 
     public SchemaSet() {
@@ -62,31 +68,35 @@ public final class SchemaSet {
         }
         List<FileDescriptor> added = new ArrayList<>();
         for (String name : new ArrayList<>(pending.keySet())) {
-            build(name, pending, added, new ArrayList<>());
+            build(name, pending, added, new java.util.LinkedHashSet<>(), null);
         }
         return added;
     }
 
     private FileDescriptor build(String name, Map<String, FileDescriptorProto> pending, List<FileDescriptor> added,
-                                 List<String> path) throws RecordingException {
+                                 java.util.LinkedHashSet<String> path, String importer) throws RecordingException {
         FileDescriptor known = files.get(name);
         if (known != null) {
             return known;
         }
         FileDescriptorProto proto = pending.get(name);
         if (proto == null) {
-            throw new RecordingException("schema file " + path.get(path.size() - 1) + " imports " + name
+            throw new RecordingException("schema file " + importer + " imports " + name
                     + ", which is neither in the descriptor set nor known to Touchline");
         }
         if (path.contains(name)) {
             throw new RecordingException("schema files import each other in a cycle: " + path);
         }
+        if (path.size() >= MAX_IMPORT_DEPTH) {
+            throw new RecordingException("schema file " + name + " is imported through more than " + MAX_IMPORT_DEPTH
+                    + " levels of imports; such a schema is not loaded");
+        }
         path.add(name);
         List<FileDescriptor> deps = new ArrayList<>();
         for (String dep : proto.getDependencyList()) {
-            deps.add(build(dep, pending, added, path));
+            deps.add(build(dep, pending, added, path, name));
         }
-        path.remove(path.size() - 1);
+        path.remove(name);
         try {
             FileDescriptor file = FileDescriptor.buildFrom(proto, deps.toArray(new FileDescriptor[0]));
             files.put(name, file);

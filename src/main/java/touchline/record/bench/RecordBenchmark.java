@@ -1,6 +1,7 @@
 package touchline.record.bench;
 
 import picocli.CommandLine;
+import touchline.record.ChunkCompression;
 import touchline.record.EnvelopeWriter;
 import touchline.record.PlaybackClock;
 import touchline.record.Player;
@@ -37,6 +38,10 @@ public final class RecordBenchmark implements Callable<Integer> {
 
     @CommandLine.Option(names = "--dir", description = "where the benchmark files go (default: a temporary directory)")
     Path dir;
+
+    @CommandLine.Option(names = "--compression", defaultValue = "NONE",
+            description = "chunk compression of the files written: NONE, ZSTD or LZ4 (default: ${DEFAULT-VALUE})")
+    ChunkCompression compression = ChunkCompression.NONE;
 
     public static void main(String[] args) throws Exception {
         RecordBenchmark bench = new RecordBenchmark();
@@ -126,6 +131,10 @@ public final class RecordBenchmark implements Callable<Integer> {
         return 0;
     }
 
+    private EnvelopeWriter.Options options() {
+        return EnvelopeWriter.Options.defaults().withCompression(compression);
+    }
+
     private static double baselineWrite(List<Envelope> hour, Path file) throws IOException {
         long t0 = System.nanoTime();
         try (DataOutputStream out = new DataOutputStream(new BufferedOutputStream(Files.newOutputStream(file), 1 << 16))) {
@@ -138,9 +147,9 @@ public final class RecordBenchmark implements Callable<Integer> {
         return hour.size() / ((System.nanoTime() - t0) / 1e9);
     }
 
-    private static double writeMcap(List<Envelope> hour, Path file) throws IOException {
+    private double writeMcap(List<Envelope> hour, Path file) throws IOException {
         long t0 = System.nanoTime();
-        try (EnvelopeWriter w = new EnvelopeWriter(file, EnvelopeWriter.Options.defaults())) {
+        try (EnvelopeWriter w = new EnvelopeWriter(file, options())) {
             for (Envelope e : hour) {
                 w.write(e);
             }
@@ -148,15 +157,15 @@ public final class RecordBenchmark implements Callable<Integer> {
         return hour.size() / ((System.nanoTime() - t0) / 1e9);
     }
 
-    private static double recorderThroughput(List<Envelope> hour, Path file) throws IOException {
+    private double recorderThroughput(List<Envelope> hour, Path file) throws IOException {
         long t0 = System.nanoTime();
-        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
+        Recorder recorder = new Recorder(file, options());
         hour.forEach(recorder::accept);
         recorder.close();
         return recorder.stats().written() / ((System.nanoTime() - t0) / 1e9);
     }
 
-    private static double[] publishOverhead(List<Envelope> hour, Path file) throws Exception {
+    private double[] publishOverhead(List<Envelope> hour, Path file) throws Exception {
         AtomicLong sink = new AtomicLong();
         EnvelopeBus alone = new EnvelopeBus();
         alone.subscribe(e -> sink.addAndGet(e.raw().length));
@@ -167,7 +176,7 @@ public final class RecordBenchmark implements Callable<Integer> {
         long dropped = 0;
         for (int round = 0; round < 3; round++) {
             bestAlone = Math.min(bestAlone, publish(alone, hour));
-            Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
+            Recorder recorder = new Recorder(file, options());
             try (AutoCloseable s = with.subscribe(recorder)) {
                 bestWith = Math.min(bestWith, publish(with, hour));
             }
