@@ -5,16 +5,13 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.transport.Envelope;
 
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.TreeSet;
-import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static touchline.testing.Requirement.require;
+import touchline.testing.PythonMcap;
 
 /** The recording opens with the independent Python {@code mcap} reader (skipped when it is missing; a failure under CI). */
 @Tag("interop")
@@ -23,33 +20,13 @@ class McapInteropTest {
     @TempDir
     Path dir;
 
-    private static String python(String script, Path file) throws IOException, InterruptedException {
-        Process p = new ProcessBuilder("python3", "-c", script, file.toString()).redirectErrorStream(true).start();
-        boolean done = p.waitFor(60, TimeUnit.SECONDS);
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertTrue(done, "python did not finish");
-        if (p.exitValue() != 0) {
-            throw new AssertionError("python failed: " + out);
-        }
-        return out.trim();
-    }
-
-    private static boolean pythonHas(String module) {
-        try {
-            Process p = new ProcessBuilder("python3", "-c", "import " + module).redirectErrorStream(true).start();
-            return p.waitFor(30, TimeUnit.SECONDS) && p.exitValue() == 0;
-        } catch (IOException | InterruptedException e) {
-            return false;
-        }
-    }
-
     @Test
     void pythonMcapReadsEveryMessageAndTopic() throws Exception {
-        require(pythonHas("mcap"), "python3 with the mcap package is not installed (pip install mcap)");
+        PythonMcap.require("mcap");
         List<Envelope> sent = RecordingFixture.team(3, 20);
         Path file = dir.resolve("interop.mcap");
         RecordingFixture.write(file, sent, new EnvelopeWriter.Options(0, 0, 16 * 1024, List.of()));
-        String out = python("""
+        String out = PythonMcap.run("""
                 import sys
                 from mcap.reader import make_reader
                 with open(sys.argv[1], 'rb') as f:
@@ -69,10 +46,10 @@ class McapInteropTest {
 
     @Test
     void pythonProtobufSupportDecodesAStatus() throws Exception {
-        require(pythonHas("mcap_protobuf"), "python3 with mcap-protobuf-support is not installed (pip install mcap-protobuf-support)");
+        PythonMcap.require("mcap_protobuf");
         Path file = dir.resolve("pb.mcap");
         RecordingFixture.write(file, RecordingFixture.team(1, 2), EnvelopeWriter.Options.defaults());
-        String out = python("""
+        String out = PythonMcap.run("""
                 import sys
                 from mcap.reader import make_reader
                 from mcap_protobuf.decoder import DecoderFactory

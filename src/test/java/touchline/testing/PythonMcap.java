@@ -1,7 +1,5 @@
 package touchline.testing;
 
-import org.junit.jupiter.api.Assumptions;
-
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -9,7 +7,6 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 /**
  * The independent Python {@code mcap} package as a test's second opinion on a file. A missing
@@ -34,15 +31,8 @@ public final class PythonMcap {
             Thread.currentThread().interrupt();
             present = false;
         }
-        if (present) {
-            return;
-        }
-        String reason = "python3 cannot '" + imports + "' (./touchline installs them: pip install mcap zstandard lz4)";
-        String ci = System.getenv("CI");
-        if (ci != null && !ci.isBlank() && !ci.equalsIgnoreCase("false") && !ci.equals("0")) {
-            fail("missing under CI: " + reason);
-        }
-        Assumptions.assumeTrue(false, reason);
+        Requirement.require(present,
+                "python3 cannot '" + imports + "' (./touchline installs them: pip install mcap zstandard lz4)");
     }
 
     /** Runs {@code script} with {@code args} as sys.argv[1..]; returns its output, fails the test if it fails. */
