@@ -73,7 +73,4 @@ public final class ExportCommand implements Callable<Integer> {
         return 0;
     }
 
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new ExportCommand()).execute(args));
-    }
 }

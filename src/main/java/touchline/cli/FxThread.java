@@ -7,18 +7,18 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 
 /** Starting JavaFX from a command and running a step on its thread, waiting for the result. */
-final class FxThread {
+public final class FxThread {
 
     private FxThread() { }
 
-    static void startToolkit() throws InterruptedException {
+    public static void startToolkit() throws InterruptedException {
         java.util.concurrent.CountDownLatch up = new java.util.concurrent.CountDownLatch(1);
         Platform.startup(up::countDown);
         up.await(30, TimeUnit.SECONDS);
         Platform.setImplicitExit(false);
     }
 
-    static <T> T call(Supplier<T> step) throws Exception {
+    public static <T> T call(Supplier<T> step) throws Exception {
         CompletableFuture<T> f = new CompletableFuture<>();
         Platform.runLater(() -> {
             try {
@@ -30,7 +30,7 @@ final class FxThread {
         return f.get(60, TimeUnit.SECONDS);
     }
 
-    static void run(Runnable step) throws Exception {
+    public static void run(Runnable step) throws Exception {
         call(() -> {
             step.run();
             return null;
@@ -38,7 +38,7 @@ final class FxThread {
     }
 
     /** Polls {@code condition} (off the FX thread) until true or the deadline passes. */
-    static boolean await(Supplier<Boolean> condition, long millis) throws InterruptedException {
+    public static boolean await(Supplier<Boolean> condition, long millis) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
         while (System.nanoTime() < deadline) {
             if (condition.get()) {

@@ -214,7 +214,4 @@ public final class GcCommand implements Callable<Integer> {
     }
 
     /** Stand-alone entry point until {@code touchline.cli.Main} lists this command. */
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new GcCommand()).execute(args));
-    }
 }

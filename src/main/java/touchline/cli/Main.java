@@ -12,7 +12,6 @@ import picocli.CommandLine.Command;
         subcommands = {
                 ListenCommand.class,
                 OptionsCommand.class,
-                BenchCommand.class,
                 StreamCommand.class,
                 ConsoleCommand.class,
                 ScreenshotsCommand.class,

@@ -47,9 +47,6 @@ public final class NaoCommand implements Runnable {
         spec.commandLine().usage(spec.commandLine().getOut());
     }
 
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new NaoCommand()).execute(args));
-    }
 
     /** HOST or HOST:PORT. */
     record Target(String host, int port) {

@@ -173,7 +173,4 @@ public final class RecordCommand implements Callable<Integer> {
         return s.failure() == null ? 0 : 1;
     }
 
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new RecordCommand()).execute(args));
-    }
 }

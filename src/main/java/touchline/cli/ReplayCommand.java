@@ -87,7 +87,4 @@ public final class ReplayCommand implements Callable<Integer> {
         }
     }
 
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new ReplayCommand()).execute(args));
-    }
 }

@@ -11,12 +11,12 @@ import java.util.concurrent.TimeUnit;
  * Simulated robots ({@code touchline-robot} from the robot-side build) sending to a console on
  * loopback, for the screenshot and benchmark commands. Their output goes to a log file each.
  */
-final class SimulatedTeam implements AutoCloseable {
+public final class SimulatedTeam implements AutoCloseable {
 
     private final List<Process> processes = new ArrayList<>();
 
     /** Starts robots 1..n; throws when the binary was not built. */
-    static SimulatedTeam start(int n, int consolePort, List<String> extra) throws IOException {
+    public static SimulatedTeam start(int n, int consolePort, List<String> extra) throws IOException {
         Path bin = new RobotSideBinaries().of("touchline-robot");
         if (!Files.isExecutable(bin)) {
             throw new IOException(bin + " is missing: build the robot side first (./touchline build)");

@@ -8,7 +8,7 @@ import touchline.protocol.FrameCodec;
 import touchline.protocol.Framing;
 import touchline.proto.Fumanoid;
 import touchline.record.Recording;
-import touchline.record.bench.SyntheticTeam;
+import touchline.bench.record.SyntheticTeam;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
 

@@ -1,6 +1,6 @@
 package touchline.record;
 
-import touchline.record.bench.SyntheticTeam;
+import touchline.bench.record.SyntheticTeam;
 import touchline.transport.Envelope;
 
 import java.io.IOException;

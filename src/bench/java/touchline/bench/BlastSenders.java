@@ -1,4 +1,4 @@
-package touchline.cli;
+package touchline.bench;
 
 import java.io.DataOutputStream;
 import java.io.IOException;

@@ -1,5 +1,6 @@
-package touchline.transport.gamecontroller;
+package touchline.bench.gc;
 
+import touchline.transport.gamecontroller.RealtimePriority;
 import java.io.IOException;
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;

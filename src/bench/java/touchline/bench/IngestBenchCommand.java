@@ -1,5 +1,6 @@
-package touchline.cli;
+package touchline.bench;
 
+import touchline.cli.RobotSideBinaries;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import touchline.app.Console;

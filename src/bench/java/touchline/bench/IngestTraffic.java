@@ -1,4 +1,4 @@
-package touchline.cli;
+package touchline.bench;
 
 import touchline.proto.Fumanoid;
 import touchline.protocol.FrameCodec;

@@ -1,4 +1,4 @@
-package touchline.record.bench;
+package touchline.bench.record;
 
 import touchline.record.EnvelopeWriter;
 import touchline.transport.Envelope;
@@ -11,7 +11,7 @@ import java.time.Instant;
 /**
  * Writes {@code samples/demo-team.mcap}: three minutes of a simulated three-robot team from
  * {@link SyntheticTeam} (deterministic, so the file is reproducible). Usage:
- * {@code java ... touchline.record.bench.SampleRecording [FILE] [SECONDS]}.
+ * {@code java ... touchline.bench.record.SampleRecording [FILE] [SECONDS]}.
  */
 public final class SampleRecording {
 

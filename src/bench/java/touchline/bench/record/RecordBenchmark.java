@@ -1,4 +1,4 @@
-package touchline.record.bench;
+package touchline.bench.record;
 
 import picocli.CommandLine;
 import touchline.record.ChunkCompression;
@@ -29,7 +29,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * messages/s (vs the same bytes to a BufferedOutputStream), headless replay speed of a
  * one-hour six-robot recording (vs reading the file's bytes), seek time in that file, and
  * the cost the recorder adds on the publishing (network) thread (bus with vs without it).
- * Usage: {@code java ... touchline.record.bench.RecordBenchmark [DIR]}, or as the picocli
+ * Usage: {@code java ... touchline.bench.record.RecordBenchmark [DIR]}, or as the picocli
  * subcommand {@code bench record [--dir DIR]}.
  */
 @CommandLine.Command(name = "record", mixinStandardHelpOptions = true,

@@ -1,5 +1,6 @@
-package touchline.transport.gamecontroller;
+package touchline.bench.gc;
 
+import touchline.transport.gamecontroller.GcSender;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
@@ -25,7 +26,8 @@ import java.util.Locale;
 public final class GcIntervalBenchmark {
 
     private static final long INTERVAL_MS = 500;
-    public static void main(String[] args) throws Exception {
+    /** Runs from the command line's arguments; returns the exit status (2: a wrong argument). */
+    public static int run(String[] args) throws Exception {
         int seconds = 600;
         int loadThreads = 0;
         int warmupSeconds = 10;
@@ -38,7 +40,7 @@ public final class GcIntervalBenchmark {
                 case "--realtime" -> realtime = true;
                 default -> {
                     System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N] [--realtime]");
-                    System.exit(2);
+                    return 2;
                 }
             }
         }
@@ -81,6 +83,7 @@ public final class GcIntervalBenchmark {
             System.out.println("touchline GcSender (drift-free grid): " + ours.summary());
             System.out.println("baseline: send, then sleep 500 ms (Java GC style): " + baseline.summary());
         }
+        return 0;
     }
 
     private static void sleepAfterSend(DatagramSocket socket, Game game, HlGameState12 format,

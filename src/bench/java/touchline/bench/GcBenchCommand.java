@@ -1,4 +1,4 @@
-package touchline.cli;
+package touchline.bench;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Unmatched;
@@ -18,7 +18,6 @@ final class GcBenchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        touchline.transport.gamecontroller.GcIntervalBenchmark.main(args.toArray(String[]::new));
-        return 0;
+        return touchline.bench.gc.GcIntervalBenchmark.run(args.toArray(String[]::new));
     }
 }

@@ -1,7 +1,8 @@
-package touchline.cli;
+package touchline.bench;
 
+import touchline.cli.FxThread;
+import touchline.cli.SimulatedTeam;
 import javafx.stage.Stage;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import touchline.app.Console;
@@ -13,7 +14,7 @@ import touchline.model.OptionState;
 import touchline.model.RobotSnapshot;
 import touchline.transport.UdpConfig;
 import touchline.transport.gamecontroller.GcConfig;
-import touchline.transport.gamecontroller.GcIntervalProbe;
+import touchline.bench.gc.GcIntervalProbe;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.ui.ConsoleWindow;
 import touchline.ui.UiSettings;
@@ -61,9 +62,6 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
     String only;
 
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new UiBenchCommand()).execute(args));
-    }
 
     /** One phase's figures. */
     record Phase(String name, double fpsMean, double fpsMin, double p50, double p99, long shown, double packetsPerSecond,

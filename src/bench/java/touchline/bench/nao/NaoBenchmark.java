@@ -1,4 +1,4 @@
-package touchline.nao.bench;
+package touchline.bench.nao;
 
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
@@ -54,7 +54,8 @@ public final class NaoBenchmark {
         this.seconds = seconds;
     }
 
-    public static void main(String[] args) throws Exception {
+    /** Runs from the command line's arguments; returns the exit status (1: the simulator is not built). */
+    public static int run(String[] args) throws Exception {
         String bin = System.getProperty("touchline.robotside.bin", "robot-side/build/bin");
         int seconds = 4;
         for (int i = 0; i < args.length - 1; i++) {
@@ -67,10 +68,10 @@ public final class NaoBenchmark {
         Path binary = Path.of(bin, "touchline-nao-sim");
         if (!Files.isExecutable(binary)) {
             System.err.println("touchline-nao-sim not found at " + binary + "; build the robot side first");
-            System.exit(1);
+            return 1;
         }
         new NaoBenchmark(binary, seconds).run();
-        System.exit(0);
+        return 0;
     }
 
     void run() throws Exception {

@@ -1,4 +1,4 @@
-package touchline.record.bench;
+package touchline.bench.record;
 
 import touchline.proto.Fumanoid;
 import touchline.protocol.FrameCodec;

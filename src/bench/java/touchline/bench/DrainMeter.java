@@ -1,4 +1,4 @@
-package touchline.cli;
+package touchline.bench;
 
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;

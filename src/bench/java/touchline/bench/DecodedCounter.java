@@ -1,4 +1,4 @@
-package touchline.cli;
+package touchline.bench;
 
 /**
  * Messages decoded, counted by the receiving thread; in drain mode it also notes when the

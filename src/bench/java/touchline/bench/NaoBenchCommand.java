@@ -1,4 +1,4 @@
-package touchline.cli;
+package touchline.bench;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -24,7 +24,6 @@ final class NaoBenchCommand implements Callable<Integer> {
         if (bin != null) {
             args.addAll(List.of("--bin", bin));
         }
-        touchline.nao.bench.NaoBenchmark.main(args.toArray(String[]::new));
-        return 0;
+        return touchline.bench.nao.NaoBenchmark.run(args.toArray(String[]::new));
     }
 }
