@@ -209,6 +209,7 @@ void robot_init(const robot_config *cfg, uint32_t now)
     rs_init(&g_stream, cfg->reliable_modulus, cfg->reliable_rto_ms ? cfg->reliable_rto_ms : 100u, 250u,
             stream_output, stream_deliver, 0, now);
     g_now = now;
+    g_gc = (fw_gc_info){0};
     g_gc_heard = false;
     g_returning = false;
     g_debug_sent = false;
