@@ -395,7 +395,8 @@ static void send_team_message(void)
     }
 }
 
-/* Sends the next due item of a schedule: true (and the next due time) when it is due. */
+/* A periodic schedule: true when its item is due at now, and then *next moves on by one
+ * period (or to now + period if we fell behind, so a late poll does not cause a burst). */
 static bool due(uint32_t now, uint32_t *next, uint32_t period)
 {
     if ((int32_t)(now - *next) < 0) return false;
@@ -451,10 +452,8 @@ void robot_poll(uint32_t now)
             g_next_due[i] = now + (period * i) / (g_cfg->option_count ? g_cfg->option_count : 1u);
             if (g_next_due[i] == 0) g_next_due[i] = 1;
         }
-        if ((int32_t)(now - g_next_due[i]) < 0) continue;
-        g_next_due[i] += period;
-        if ((int32_t)(now - g_next_due[i]) >= 0) g_next_due[i] = now + period; /* we were late */
-        if (g_next_due[i] == 0) g_next_due[i] = 1;
+        if (!due(now, &g_next_due[i], period)) continue;
+        if (g_next_due[i] == 0) g_next_due[i] = 1; /* 0 means "just switched on" */
         if (match) {
             g_count.debug_held++;
             continue;
