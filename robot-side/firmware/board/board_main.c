@@ -65,6 +65,7 @@ static const gs_serial k_serial = {uart_read, uart_write, 0};
 static const gs_config k_gs = {"fumanoids", {192, 168, 1, 100}, 11011, 3838};
 static const robot_config k_robot = {
     1, 13, "cm530", FW_FRAMING_LEGACY, 10, k_options, 1, 0, true, RS_DEFAULT_MODULUS, 100, 0, 0,
+    FW_GC_RETURN_PERIOD_MS, /* return packets to the GameController's own address (2026 field) */
 };
 
 int main(void)

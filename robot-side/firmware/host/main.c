@@ -6,6 +6,8 @@
  *                   [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]
  *                   [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]
  *                   [--reliable-peer HOST:PORT] [--seed S] [--rto MS]
+ *                   [--gc-return HOST[:PORT]] [--gc-return-rate HZ]
+ *                   [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]]
  *
  * First line on stdout: "listening on port <port>". */
 #define _POSIX_C_SOURCE 200809L
@@ -54,7 +56,9 @@ static void usage(const char *why)
             "usage: touchline-robot --id N [--team T] [--name NAME] --console HOST:PORT [--port P]\n"
             "                       [--framing legacy|length] [--wifi-sim [--baud B]] [--rate HZ]\n"
             "                       [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]\n"
-            "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n",
+            "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n"
+            "                       [--gc-return HOST[:PORT]] [--gc-return-rate HZ]\n"
+            "                       [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]]\n",
             why);
     exit(2);
 }
@@ -112,6 +116,31 @@ static void apps_poll(void *ctx, rs_stream *s, uint32_t now)
     }
 }
 
+/* "host[:port]" -> a peer of the core; port defaults to default_port. 0 on success. */
+static int parse_peer(const char *text, uint16_t default_port, wlan_peer *out)
+{
+    char buf[300];
+    struct sockaddr_in a;
+    if (strchr(text, ':') == NULL) {
+        snprintf(buf, sizeof buf, "%s:%u", text, (unsigned)default_port);
+        text = buf;
+    }
+    if (host_parse_address(text, &a) != 0) return -1;
+    memset(out, 0, sizeof *out);
+    memcpy(out->ip, &a.sin_addr.s_addr, 4);
+    out->port = ntohs(a.sin_port);
+    return 0;
+}
+
+/* A rate in Hz (decimals allowed) as a period in ms; 0 Hz = off. */
+static uint16_t period_of(const char *text, double min_hz, double max_hz, const char *why)
+{
+    char *end;
+    double hz = strtod(text, &end);
+    if (*end != '\0' || !(hz == 0.0 || (hz >= min_hz && hz <= max_hz))) usage(why);
+    return hz == 0.0 ? 0 : (uint16_t)(1000.0 / hz + 0.5);
+}
+
 static uint8_t *read_file(const char *path, size_t *len)
 {
     FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
@@ -141,9 +170,9 @@ int main(int argc, char **argv)
     static fw_stream_app app;
     static host_udp udp;
     static host_wifi wifi;
-    static wlan_peer peer;
+    static wlan_peer peer, gc_return, team_msg;
     struct sockaddr_in console, peer_addr;
-    const char *console_arg = NULL, *peer_arg = NULL, *send_path = NULL;
+    const char *console_arg = NULL, *peer_arg = NULL, *send_path = NULL, *gc_return_arg = NULL, *team_msg_arg = NULL;
     char name[32];
     long port = 3838;
     bool wifi_sim = false, have_id = false;
@@ -157,6 +186,8 @@ int main(int argc, char **argv)
     cfg.rate_hz = 10;
     cfg.reliable_modulus = RS_DEFAULT_MODULUS;
     cfg.name = NULL;
+    cfg.gc_return_period_ms = FW_GC_RETURN_PERIOD_MS;
+    cfg.team_msg_period_ms = 1000; /* 1 Hz a robot: a few a second over a team */
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -193,6 +224,16 @@ int main(int argc, char **argv)
         else if (strcmp(a, "--reliable-peer") == 0) { NEED_VALUE(); cfg.reliable_enabled = true; peer_arg = v; }
         else if (strcmp(a, "--seed") == 0) { NEED_VALUE(); seed = (uint32_t)strtoul(v, NULL, 10); }
         else if (strcmp(a, "--rto") == 0) { NEED_VALUE(); cfg.reliable_rto_ms = (uint32_t)strtoul(v, NULL, 10); }
+        else if (strcmp(a, "--gc-return") == 0) { NEED_VALUE(); gc_return_arg = v; }
+        else if (strcmp(a, "--gc-return-rate") == 0) {
+            NEED_VALUE();
+            cfg.gc_return_period_ms = period_of(v, 0.5, 2.0, "--gc-return-rate must be 0 (off) or 0.5..2");
+        }
+        else if (strcmp(a, "--team-msg-rate") == 0) {
+            NEED_VALUE();
+            cfg.team_msg_period_ms = period_of(v, 0.05, 50.0, "--team-msg-rate must be 0 (off) or 0.05..50");
+        }
+        else if (strcmp(a, "--team-msg-to") == 0) { NEED_VALUE(); team_msg_arg = v; }
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) usage("help");
         else usage("unknown argument");
 #undef NEED_VALUE
@@ -218,6 +259,24 @@ int main(int argc, char **argv)
         peer.port = ntohs(peer_addr.sin_port);
         cfg.reliable_peer = &peer;
     }
+    if (gc_return_arg != NULL) {
+        if (parse_peer(gc_return_arg, FW_GC_RETURN_PORT, &gc_return) != 0) usage("cannot resolve --gc-return address");
+        cfg.gc_return_to = &gc_return;
+    }
+    if (cfg.team_id < 1 || cfg.team_id > 255) usage("--team must be 1..255 (a GameController team number)");
+    {
+        /* Team messages go to UDP broadcast on the field; to 127.0.0.1 when the console is on
+         * this machine (loopback has no broadcast), so its budget guard hears them. */
+        char dflt[16];
+        uint32_t host = ntohl(console.sin_addr.s_addr);
+        snprintf(dflt, sizeof dflt, "%s", (host >> 24) == 127u ? "127.0.0.1" : "255.255.255.255");
+        if (parse_peer(team_msg_arg != NULL ? team_msg_arg : dflt, (uint16_t)(FW_TEAM_MSG_PORT_BASE + cfg.team_id),
+                       &team_msg) != 0) {
+            usage("cannot resolve --team-msg-to address");
+        }
+        cfg.team_msg_to = &team_msg;
+    }
+    cfg.ball = sim_world_ball;
     app.receive = apps_receive;
     app.poll = apps_poll;
     app.ctx = &apps;
@@ -257,9 +316,16 @@ int main(int argc, char **argv)
     }
     printf("listening on port %d\n", actual);
     fflush(stdout);
-    fprintf(stderr, "robot %ld: sending to %s every %u ms, %s framing, %s\n", (long)cfg.robot_id, console_arg,
-            FW_KEEPALIVE_MS, cfg.framing == FW_FRAMING_LEGACY ? "legacy" : "length",
+    fprintf(stderr, "robot %ld: sending to %s every %u ms (during READY/SET/PLAYING every %u ms), %s framing, %s\n",
+            (long)cfg.robot_id, console_arg, FW_KEEPALIVE_MS, FW_MATCH_DEBUG_PERIOD_MS, cfg.framing == FW_FRAMING_LEGACY ? "legacy" : "length",
             wifi_sim ? "through the simulated GS1500M" : "direct UDP");
+    {
+        char to[INET_ADDRSTRLEN];
+        inet_ntop(AF_INET, team_msg.ip, to, sizeof to);
+        fprintf(stderr, "robot %ld: team messages to %s:%u every %u ms (0 = off), return packets every %u ms\n",
+                (long)cfg.robot_id, to, (unsigned)team_msg.port, (unsigned)cfg.team_msg_period_ms,
+                (unsigned)cfg.gc_return_period_ms);
+    }
 
     robot_init(&cfg, now_ms());
     while (!g_stop) {
@@ -273,12 +339,15 @@ int main(int argc, char **argv)
     {
         const robot_counters *c = robot_stats();
         fprintf(stderr,
-                "robot %ld: stopping; in %lu, handled %lu, malformed %lu, unknown extensions %lu, gc %lu (rejected %lu), "
-                "reliable %lu, out %lu (%lu bytes, %lu failed)\n",
+                "robot %ld: stopping; in %lu, handled %lu, malformed %lu, unknown extensions %lu, gc %lu (rejected %lu, "
+                "other team %lu), reliable %lu, out %lu (%lu bytes, %lu failed), held in play %lu, "
+                "return packets %lu, team messages %lu (held %lu)\n",
                 (long)cfg.robot_id, (unsigned long)c->datagrams_in, (unsigned long)c->messages_handled,
                 (unsigned long)c->malformed, (unsigned long)c->unknown_ext, (unsigned long)c->gc_packets,
-                (unsigned long)c->gc_rejected, (unsigned long)c->reliable_segments, (unsigned long)c->messages_out,
-                (unsigned long)c->bytes_out, (unsigned long)c->send_failures);
+                (unsigned long)c->gc_rejected, (unsigned long)c->gc_other_team, (unsigned long)c->reliable_segments,
+                (unsigned long)c->messages_out, (unsigned long)c->bytes_out, (unsigned long)c->send_failures,
+                (unsigned long)c->debug_held, (unsigned long)c->gc_returns_out, (unsigned long)c->team_msgs_out,
+                (unsigned long)c->team_msgs_held);
     }
     if (wifi_sim) {
         gs_sim_stats ms;

@@ -1,5 +1,4 @@
 #include "fw_robot.h"
-#include "fw_gamecontroller.h"
 #include "fw_registry.h"
 
 /* All buffers are static: nothing of message size ever lives on the stack. */
@@ -21,6 +20,22 @@ static uint32_t g_next_due[FW_MAX_OPTIONS];
 static rs_stream g_stream;
 static wlan_peer g_stream_peer;
 static bool g_have_stream_peer;
+static uint32_t g_now; /* time of the current poll or dispatch */
+/* GameController */
+static fw_gc_info g_gc;
+static bool g_gc_heard;
+static uint32_t g_gc_heard_at;
+static wlan_peer g_gc_from;
+static uint32_t g_next_return;
+static bool g_returning;
+/* game limits and the motion clock */
+static uint32_t g_last_debug_at;
+static bool g_debug_sent;
+static uint32_t g_motion_ms;
+static uint32_t g_last_poll;
+/* team messages */
+static uint32_t g_next_team_msg;
+static uint16_t g_team_msg_seq;
 
 static void copy_str(char *dst, uint32_t cap, const char *src)
 {
@@ -48,6 +63,8 @@ static void send_outgoing(void)
         fw_log("message does not fit into one datagram", 0, 0);
         return;
     }
+    g_last_debug_at = g_now;
+    g_debug_sent = true;
     if (sendMsgToCon(g_tx, n, WLAN_CID_CONSOLE)) {
         g_count.messages_out++;
         g_count.bytes_out += n;
@@ -68,6 +85,8 @@ static const char *role_of(int32_t id)
 static const char *behaviour_of(uint8_t state)
 {
     static const char *const names[] = {"standing", "walkToPosition", "waitForKickoff", "playing", "sitDown"};
+    if (g_gc_heard && fw_gc_penalised(&g_gc)) return "penalized";
+    if (g_gc_heard && g_gc.stopped) return "stopped";
     return state < 5 ? names[state] : "standing";
 }
 
@@ -86,7 +105,7 @@ static void send_status(uint32_t now)
     st->timeOnline = online_s;
     if (g_cfg->position != 0) {
         st->has_robotPosition = true;
-        g_cfg->position(now, &st->robotPosition);
+        g_cfg->position(g_motion_ms, &st->robotPosition);
         st->has_robotPositionBelief = true;
         st->robotPositionBelief = 0.8;
     }
@@ -189,28 +208,55 @@ void robot_init(const robot_config *cfg, uint32_t now)
     if (g_have_stream_peer) g_stream_peer = *cfg->reliable_peer;
     rs_init(&g_stream, cfg->reliable_modulus, cfg->reliable_rto_ms ? cfg->reliable_rto_ms : 100u, 250u,
             stream_output, stream_deliver, 0, now);
+    g_now = now;
+    g_gc = (fw_gc_info){0};
+    g_gc_heard = false;
+    g_returning = false;
+    g_debug_sent = false;
+    g_motion_ms = now;
+    g_last_poll = now;
+    g_team_msg_seq = 0;
+    /* the team's messages spread over the period: robot n starts n/5 of a period later */
+    g_next_team_msg = now + (uint32_t)cfg->team_msg_period_ms * (uint32_t)(((cfg->robot_id % 5) + 5) % 5) / 5u;
 }
 
-static void on_gamecontroller(const uint8_t *d, uint16_t len)
+static void on_gamecontroller(const uint8_t *d, uint16_t len, const wlan_peer *from)
 {
-    fw_gc_info info;
-    fw_gc_result r = fw_gc_parse(d, len, &info);
+    static fw_gc_info info; /* static: keeps the receive path's stack small */
+    uint8_t team = g_cfg->team_id <= 255u ? (uint8_t)g_cfg->team_id : 0u;
+    uint8_t player = g_cfg->robot_id >= 1 && g_cfg->robot_id <= (int32_t)FW_GC_MAX_PLAYERS ? (uint8_t)g_cfg->robot_id : 0u;
+    fw_gc_result r = fw_gc_parse(d, len, team, player, &info);
     if (r != FW_GC_OK) {
         g_count.gc_rejected++;
-        fw_log(r == FW_GC_BAD_LENGTH ? "gamecontroller packet of wrong length" : "not a known gamecontroller packet",
-               0, len);
+        fw_log(fw_gc_result_name(r), 0, len);
         return;
     }
     g_count.gc_packets++;
-    if (info.state != g_game_state) {
-        g_game_state = info.state;
-        fw_log("game state", fw_gc_state_name(info.state), info.version);
+    if (info.has_game_fields && !info.own_team_found) {
+        /* another game's GameController, or a practice game without us: follow its state
+         * (the console's demo does that), but there is no penalty of ours to read */
+        if (g_count.gc_other_team++ == 0) fw_log("gamecontroller packet without our team number", 0, team);
+    }
+    if (!g_gc_heard || info.state != g_gc.state) fw_log("game state", fw_gc_state_name(info.state), info.version);
+    if (g_gc_heard && info.stopped != g_gc.stopped) fw_log(info.stopped ? "play stopped" : "play resumed", 0, 0);
+    if (g_gc_heard && fw_gc_penalised(&info) != fw_gc_penalised(&g_gc)) {
+        fw_log(fw_gc_penalised(&info) ? "penalised" : "unpenalised", 0, info.penalty);
+    }
+    g_gc = info;
+    g_game_state = info.state;
+    g_gc_heard = true;
+    g_gc_heard_at = g_now;
+    if (from != 0) g_gc_from = *from;
+    if (!g_returning && g_cfg->gc_return_period_ms != 0 && fw_gc_wants_return_v4(info.version) && info.own_team_found) {
+        g_returning = true;
+        g_next_return = g_now; /* the GameController sees us at once */
     }
 }
 
 void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint32_t now)
 {
     fw_datagram_info info;
+    g_now = now;
     g_count.datagrams_in++;
     fw_classify(d, len, &info);
     switch (info.kind) {
@@ -228,7 +274,7 @@ void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint3
         break;
     }
     case FW_DGRAM_GAMECONTROLLER:
-        on_gamecontroller(d, len);
+        on_gamecontroller(d, len, from);
         break;
     case FW_DGRAM_RELIABLE:
         if (g_cfg->reliable_enabled) {
@@ -250,9 +296,122 @@ void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint3
     }
 }
 
+bool robot_gc_heard(void) { return g_gc_heard; }
+uint32_t robot_motion_clock(void) { return g_motion_ms; }
+const fw_gc_info *robot_gamecontroller(void) { return &g_gc; }
+
+bool robot_in_match(void)
+{
+    return g_gc_heard && (g_gc.state == FW_GC_READY || g_gc.state == FW_GC_SET || g_gc.state == FW_GC_PLAYING);
+}
+
+bool robot_may_move(void)
+{
+    if (!g_gc_heard) return true; /* lab: no GameController, the robot does what it likes */
+    if (fw_gc_penalised(&g_gc) || g_gc.stopped) return false;
+    return g_gc.state == FW_GC_READY || g_gc.state == FW_GC_PLAYING;
+}
+
+/* Pose and ball as the world reports them at the motion clock. */
+static float world_view(fumanoid_Position *self, float ball[2])
+{
+    *self = (fumanoid_Position)fumanoid_Position_init_zero;
+    ball[0] = ball[1] = 0.0f;
+    if (g_cfg->position != 0) g_cfg->position(g_motion_ms, self);
+    return g_cfg->ball != 0 ? g_cfg->ball(g_now, self, ball) : -1.0f;
+}
+
+static void send_return(void)
+{
+    fw_gc_return r;
+    fumanoid_Position self;
+    wlan_peer to;
+    uint16_t n;
+    r.ball_age = world_view(&self, r.ball);
+    r.player = (uint8_t)g_cfg->robot_id;
+    r.team = (uint8_t)g_cfg->team_id;
+    r.fallen = 0;
+    r.pose[0] = self.x;
+    r.pose[1] = self.y;
+    r.pose[2] = self.theta;
+    n = fw_gc_write_return(&r, g_tx);
+    if (g_cfg->gc_return_to != 0) {
+        to = *g_cfg->gc_return_to;
+    } else {
+        to = g_gc_from;
+        to.port = FW_GC_RETURN_PORT;
+    }
+    if (sendMsgToPeer(&to, g_tx, n)) {
+        g_count.gc_returns_out++;
+    } else {
+        g_count.send_failures++;
+    }
+}
+
+/* The team message, our own format (the league fixes only port and size): "FUtm", version 1,
+ * player, team, flags (bit 0 penalised, bit 1 may move), sequence (u16), pose x, y, theta,
+ * ball age, ball x, y (f32, little-endian, the units of the return packet): 34 bytes. */
+#define FW_TEAM_MSG_SIZE 34u
+
+static bool team_budget_left(void)
+{
+    /* The budget counts in READY/SET/PLAYING, outside penalty shoot-outs; the GameController's
+     * count lags by up to one packet interval, so each robot leaves a reserve untouched. */
+    if (!robot_in_match() || !g_gc.own_team_found || g_gc.game_phase == FW_GC_PHASE_PENALTY_SHOOT_OUT) return true;
+    return g_gc.message_budget > FW_TEAM_MSG_RESERVE;
+}
+
+static void send_team_message(void)
+{
+    fumanoid_Position self;
+    float ball[2], age;
+    uint8_t *m = g_tx;
+    if (!team_budget_left()) {
+        if (g_count.team_msgs_held++ == 0) fw_log("team message budget used up, team messages held", 0, g_gc.message_budget);
+        return;
+    }
+    age = world_view(&self, ball);
+    m[0] = 'F';
+    m[1] = 'U';
+    m[2] = 't';
+    m[3] = 'm';
+    m[4] = 1;
+    m[5] = (uint8_t)g_cfg->robot_id;
+    m[6] = (uint8_t)g_cfg->team_id;
+    m[7] = (uint8_t)((g_gc_heard && fw_gc_penalised(&g_gc) ? 1u : 0u) | (robot_may_move() ? 2u : 0u));
+    m[8] = (uint8_t)g_team_msg_seq;
+    m[9] = (uint8_t)(g_team_msg_seq >> 8);
+    g_team_msg_seq++;
+    fw_gc_put_f32(m + 10, self.x);
+    fw_gc_put_f32(m + 14, self.y);
+    fw_gc_put_f32(m + 18, self.theta);
+    fw_gc_put_f32(m + 22, age);
+    fw_gc_put_f32(m + 26, ball[0]);
+    fw_gc_put_f32(m + 30, ball[1]);
+    if (sendMsgToPeer(g_cfg->team_msg_to, m, FW_TEAM_MSG_SIZE)) {
+        g_count.team_msgs_out++;
+    } else {
+        g_count.send_failures++;
+    }
+}
+
+/* A periodic schedule: true when its item is due at now, and then *next moves on by one
+ * period (or to now + period if we fell behind, so a late poll does not cause a burst). */
+static bool due(uint32_t now, uint32_t *next, uint32_t period)
+{
+    if ((int32_t)(now - *next) < 0) return false;
+    *next += period;
+    if ((int32_t)(now - *next) >= 0) *next = now + period; /* we were late */
+    return true;
+}
+
 void robot_poll(uint32_t now)
 {
     uint8_t i, budget;
+    bool match;
+    g_now = now;
+    if (robot_may_move()) g_motion_ms += now - g_last_poll;
+    g_last_poll = now;
     /* Asked on every poll: a driver may lose its link (DISCONNECT) and re-open it. */
     if (!pollInitNetwork(now)) {
         if (g_net_ready) fw_log("network lost, re-initialising", 0, 0);
@@ -269,14 +428,20 @@ void robot_poll(uint32_t now)
         if (!recvWlanData(g_rx, &len)) break;
         robot_dispatch(g_rx, len, wlanLastSender(), now);
     }
-    if (g_send_list) {
-        g_send_list = false;
-        send_option_list();
-    }
-    if ((int32_t)(now - g_next_keepalive) >= 0) {
-        g_next_keepalive += FW_KEEPALIVE_MS;
-        if ((int32_t)(now - g_next_keepalive) >= 0) g_next_keepalive = now + FW_KEEPALIVE_MS; /* we were late */
-        send_status(now);
+    g_now = now;
+    match = robot_in_match();
+    if (match) {
+        /* The game's limit: one debug packet (the Status) a period; the option list waits
+         * for the game to stop, option data is not produced at all. */
+        uint32_t period = g_cfg->match_debug_period_ms ? g_cfg->match_debug_period_ms : FW_MATCH_DEBUG_PERIOD_MS;
+        if (!g_debug_sent || now - g_last_debug_at >= period) send_status(now);
+        g_next_keepalive = now;
+    } else {
+        if (g_send_list) {
+            g_send_list = false;
+            send_option_list();
+        }
+        if (due(now, &g_next_keepalive, FW_KEEPALIVE_MS)) send_status(now);
     }
     for (i = 0; i < g_cfg->option_count && i < FW_MAX_OPTIONS; i++) {
         uint32_t period = 1000u / (g_cfg->rate_hz ? g_cfg->rate_hz : 10u);
@@ -287,11 +452,22 @@ void robot_poll(uint32_t now)
             g_next_due[i] = now + (period * i) / (g_cfg->option_count ? g_cfg->option_count : 1u);
             if (g_next_due[i] == 0) g_next_due[i] = 1;
         }
-        if ((int32_t)(now - g_next_due[i]) < 0) continue;
-        g_next_due[i] += period;
-        if ((int32_t)(now - g_next_due[i]) >= 0) g_next_due[i] = now + period; /* we were late */
-        if (g_next_due[i] == 0) g_next_due[i] = 1;
+        if (!due(now, &g_next_due[i], period)) continue;
+        if (g_next_due[i] == 0) g_next_due[i] = 1; /* 0 means "just switched on" */
+        if (match) {
+            g_count.debug_held++;
+            continue;
+        }
         if (g_cfg->options[i].produce != 0 && g_cfg->options[i].produce(now, &g_out)) send_outgoing();
+    }
+    if (g_returning && now - g_gc_heard_at > FW_GC_SILENT_MS) {
+        g_returning = false;
+        fw_log("gamecontroller silent, return packets stopped", 0, 0);
+    }
+    if (g_returning && due(now, &g_next_return, g_cfg->gc_return_period_ms)) send_return();
+    if (g_cfg->team_msg_period_ms != 0 && g_cfg->team_msg_to != 0 &&
+        due(now, &g_next_team_msg, g_cfg->team_msg_period_ms)) {
+        send_team_message();
     }
     if (g_cfg->reliable_enabled) {
         if (g_cfg->stream_app != 0 && g_cfg->stream_app->poll != 0) {

@@ -1,8 +1,11 @@
 /* The robot's communication core: one polled step (robot_poll) receives and dispatches
  * every waiting datagram, sends the Status keep-alive every 200 ms and the data of every
- * debug option that is switched on, and drives the reliable stream. Static memory only;
- * the platform supplies the network driver (fw_wlan.h), the clock (passed in) and
- * fw_log(). */
+ * debug option that is switched on, and drives the reliable stream. During a game (a
+ * GameController says READY, SET or PLAYING) it keeps to the league's limit on debug
+ * traffic: one Status a second and nothing else to the console. When it hears an HSL (or
+ * SPL) GameController it also sends return packets to it and, if configured, team messages.
+ * Static memory only; the platform supplies the network driver (fw_wlan.h), the clock
+ * (passed in) and fw_log(). */
 #ifndef FW_ROBOT_H
 #define FW_ROBOT_H
 
@@ -10,10 +13,19 @@
 #include <stdint.h>
 #include "fumanoid.pb.h"
 #include "fw_framing.h"
+#include "fw_gamecontroller.h"
 #include "fw_reliable.h"
 #include "fw_wlan.h"
 
 #define FW_KEEPALIVE_MS 200u
+/* HSL 2026 rules, "Debug Communication": a robot may send debug information at most once
+ * every second, in a single UDP packet (README.md cites the rule). */
+#define FW_MATCH_DEBUG_PERIOD_MS 1000u
+#define FW_GC_RETURN_PERIOD_MS 1000u    /* the GameController wants 0.5-2 Hz */
+#define FW_GC_SILENT_MS 5000u           /* no return packets once the GameController is gone */
+#define FW_TEAM_MSG_PORT_BASE 10000u    /* team messages: UDP 10000 + team number */
+#define FW_TEAM_MSG_MAX 512u            /* HSL limit on a team message's payload */
+#define FW_TEAM_MSG_RESERVE 10u         /* messages of the team budget a robot never uses */
 #define FW_MAX_OPTIONS 16u
 
 /* One outgoing message: the extension type and its submessage. Only one message is
@@ -44,8 +56,11 @@ typedef struct {
     fw_produce_fn produce;
 } fw_option_def;
 
-/* What the world (simulation or real sensors) tells the keep-alive. */
+/* What the world (simulation or real sensors) tells the keep-alive. `now` is the robot's
+ * motion clock: it stands still while the robot may not move (penalised, SET, stopped...). */
 typedef void (*fw_position_fn)(uint32_t now, fumanoid_Position *p);
+/* The ball relative to the robot at self (mm); returns seconds since it was seen, -1 never. */
+typedef float (*fw_ball_fn)(uint32_t now, const fumanoid_Position *self, float rel[2]);
 
 /* An application on the reliable stream (e.g. the Lorem and Mathe tests). */
 typedef struct {
@@ -68,6 +83,13 @@ typedef struct {
     uint32_t reliable_rto_ms;
     const wlan_peer *reliable_peer;  /* first peer of the stream; NULL = the console */
     const fw_stream_app *stream_app; /* may be NULL */
+    /* 2026 field (all optional: zero = off / default) */
+    uint16_t gc_return_period_ms;    /* "RGrt" v4 to the GameController; 0 = none, else 500..2000 */
+    const wlan_peer *gc_return_to;   /* NULL = the GameController's own address, port 3939 */
+    uint16_t team_msg_period_ms;     /* this robot's team messages; 0 = none */
+    const wlan_peer *team_msg_to;    /* broadcast (or 127.0.0.1) port 10000 + team; NULL = none */
+    uint16_t match_debug_period_ms;  /* console traffic in READY/SET/PLAYING; 0 = FW_MATCH_DEBUG_PERIOD_MS */
+    fw_ball_fn ball;                 /* may be NULL: ball never seen */
 } robot_config;
 
 typedef struct {
@@ -77,6 +99,11 @@ typedef struct {
     uint32_t unknown_ext;
     uint32_t gc_packets;
     uint32_t gc_rejected;
+    uint32_t gc_other_team;    /* accepted packets (v18-v20) without our team number */
+    uint32_t gc_returns_out;
+    uint32_t team_msgs_out;
+    uint32_t team_msgs_held;   /* not sent: the team's message budget is (nearly) used up */
+    uint32_t debug_held;       /* option data and lists held back by the game's debug limit */
     uint32_t reliable_segments;
     uint32_t messages_out;
     uint32_t send_failures;
@@ -90,6 +117,15 @@ void robot_poll(uint32_t now);
 void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint32_t now);
 const robot_counters *robot_stats(void);
 const char *robot_game_state(void);
+/* The last GameController packet accepted (valid once robot_gc_heard()). */
+const fw_gc_info *robot_gamecontroller(void);
+bool robot_gc_heard(void);
+/* READY, SET or PLAYING: the game's debug limit applies. */
+bool robot_in_match(void);
+/* False while the GameController forbids locomotion (penalised, INITIAL, SET, stopped...). */
+bool robot_may_move(void);
+/* Milliseconds the robot has been allowed to move: the world's clock for its own pose. */
+uint32_t robot_motion_clock(void);
 bool robot_option_enabled(const char *name);
 bool robot_network_ready(void);
 rs_stream *robot_stream(void);

@@ -39,6 +39,22 @@ static void ball_field(uint32_t now, float *x, float *y)
     *y = 1500.0f * sinf(t * 1.3f);
 }
 
+/* A field point (mm) in the robot's own frame. */
+static void to_robot(const fumanoid_Position *me, float x, float y, float rel[2])
+{
+    float c = cosf(-me->theta), s = sinf(-me->theta), dx = x - me->x, dy = y - me->y;
+    rel[0] = c * dx - s * dy;
+    rel[1] = s * dx + c * dy;
+}
+
+float sim_world_ball(uint32_t now, const fumanoid_Position *self, float rel[2])
+{
+    float bx, by;
+    ball_field(now, &bx, &by);
+    to_robot(self, bx, by, rel);
+    return 0.1f; /* the simulated camera always sees it, a frame ago */
+}
+
 /* Camera scene at time now: ball centre/radius and the two goal rectangles in pixels. */
 typedef struct { int bx, by, br; int yg[4]; int bg[4]; } scene;
 
@@ -188,20 +204,17 @@ static bool produce_relative(uint32_t now, fw_outgoing *out)
 {
     fumanoid_RelativePositions *m = &out->m.relative;
     fumanoid_Position me;
-    float bx, by, dx, dy, c, s;
-    sim_world_position(now, &me);
-    ball_field(now, &bx, &by);
-    c = cosf(-me.theta);
-    s = sinf(-me.theta);
+    float rel[2];
+    sim_world_position(robot_motion_clock(), &me);
     *m = (fumanoid_RelativePositions)fumanoid_RelativePositions_init_zero;
     out->type = &fumanoid_relativePositions;
     set_str(m->option, sizeof m->option, "demo.relative");
-    dx = bx - me.x; dy = by - me.y;
-    object(&m->objects[0], "ball", c * dx - s * dy, s * dx + c * dy, CC_BALL);
-    dx = 4500.0f - me.x; dy = -me.y;
-    object(&m->objects[1], "yellowGoal", c * dx - s * dy, s * dx + c * dy, CC_YELLOW_GOAL);
-    dx = -4500.0f - me.x; dy = -me.y;
-    object(&m->objects[2], "blueGoal", c * dx - s * dy, s * dx + c * dy, CC_BLUE_GOAL);
+    (void)sim_world_ball(now, &me, rel);
+    object(&m->objects[0], "ball", rel[0], rel[1], CC_BALL);
+    to_robot(&me, 4500.0f, 0.0f, rel);
+    object(&m->objects[1], "yellowGoal", rel[0], rel[1], CC_YELLOW_GOAL);
+    to_robot(&me, -4500.0f, 0.0f, rel);
+    object(&m->objects[2], "blueGoal", rel[0], rel[1], CC_BLUE_GOAL);
     m->objects_count = 3;
     return true;
 }
@@ -211,7 +224,7 @@ static bool produce_field(uint32_t now, fw_outgoing *out)
     fumanoid_FieldObjects *m = &out->m.field;
     fumanoid_Position me;
     float bx, by;
-    sim_world_position(now, &me);
+    sim_world_position(robot_motion_clock(), &me);
     ball_field(now, &bx, &by);
     *m = (fumanoid_FieldObjects)fumanoid_FieldObjects_init_zero;
     out->type = &fumanoid_fieldObjects;

@@ -20,6 +20,8 @@ enum { CC_UNKNOWN = 0, CC_BALL = 1, CC_FIELD = 2, CC_YELLOW_GOAL = 3, CC_BLUE_GO
 void sim_world_init(int32_t robot_id);
 const fw_option_def *sim_world_options(uint8_t *count);
 void sim_world_position(uint32_t now, fumanoid_Position *p);
+/* The ball relative to self (mm) at time now; returns its age in seconds (fw_ball_fn). */
+float sim_world_ball(uint32_t now, const fumanoid_Position *self, float rel[2]);
 /* Colour class of one camera pixel at time now (ms). */
 uint8_t sim_world_pixel(uint32_t now, int x, int y);
 

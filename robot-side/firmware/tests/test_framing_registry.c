@@ -326,8 +326,8 @@ static void test_robot(void)
     deliver(gc, 688);
     robot_poll(now);
     sent_count = 0;
-    robot_poll(now + 250);
-    now += 250;
+    robot_poll(now + 1000); /* during play the Status comes once a second (test_gamecontroller.c) */
+    now += 1000;
     CHECK(last_status());
     CHECK(strcmp(st.gameState, "PLAYING") == 0);
     /* wrong length is rejected, state unchanged */
@@ -379,14 +379,14 @@ int main(void)
         fw_gc_info info;
         static uint8_t p[688];
         memcpy(p, "RGme", 4);
-        CHECK_EQ(fw_gc_parse(p, 5, &info), FW_GC_BAD_MAGIC);
+        CHECK_EQ(fw_gc_parse(p, 5, 0, 0, &info), FW_GC_BAD_MAGIC);
         p[4] = 99;
-        CHECK_EQ(fw_gc_parse(p, 688, &info), FW_GC_BAD_VERSION);
+        CHECK_EQ(fw_gc_parse(p, 688, 0, 0, &info), FW_GC_BAD_VERSION);
         p[4] = 18;
         p[10] = 1;
-        CHECK_EQ(fw_gc_parse(p, 118, &info), FW_GC_OK);
+        CHECK_EQ(fw_gc_parse(p, 118, 0, 0, &info), FW_GC_OK);
         CHECK_EQ(info.state, 1);
-        CHECK_EQ(fw_gc_parse(p, 117, &info), FW_GC_BAD_LENGTH);
+        CHECK_EQ(fw_gc_parse(p, 117, 0, 0, &info), FW_GC_BAD_LENGTH);
     }
     TEST_DONE();
 }

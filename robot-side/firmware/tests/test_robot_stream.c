@@ -1,7 +1,11 @@
 /* End to end over real UDP on loopback: starts touchline-robot (direct UDP or --wifi-sim)
  * and plays the thesis' "Lorem ipsum" and "Mathe" tests against it with this process as
  * the peer, through a lossy link (20% drop, 20% duplicates, 20% delayed/reordered in
- * each direction). Usage: fw_test_robot_stream PATH_TO_touchline-robot direct|wifi */
+ * each direction). Usage: fw_test_robot_stream PATH_TO_touchline-robot direct|wifi
+ *
+ * With "hsl GOLDEN_GAMECONTROLLER_DIR" instead it plays the HSL GameController (the
+ * official v20 PLAYING datagram every 500 ms) and checks what the robot sends back: return
+ * packets v4 to --gc-return, team messages to --team-msg-to, Status saying PLAYING. */
 #define _POSIX_C_SOURCE 200809L
 #include <arpa/inet.h>
 #include <errno.h>
@@ -52,7 +56,7 @@ typedef struct {
     size_t len;
 } robot_proc;
 
-static void start_robot(robot_proc *r, uint16_t console_port, const char *const extra[])
+static void start_robot(robot_proc *r, uint16_t console_port, const char *id, const char *const extra[])
 {
     int p[2];
     char console[32];
@@ -61,7 +65,7 @@ static void start_robot(robot_proc *r, uint16_t console_port, const char *const 
     snprintf(console, sizeof console, "127.0.0.1:%u", console_port);
     argv[n++] = g_bin;
     argv[n++] = "--id";
-    argv[n++] = "7";
+    argv[n++] = id;
     argv[n++] = "--console";
     argv[n++] = console;
     argv[n++] = "--port";
@@ -237,7 +241,7 @@ static void test_lorem(void)
         snprintf(tag, sizeof tag, "<%04zu>", i / 200);
         memcpy(text + i, tag, 6);
     }
-    start_robot(&r, console_port, extra);
+    start_robot(&r, console_port, "7", extra);
     /* a separate peer address: in --wifi-sim this is the module's UDP-server path
      * (ESC y in, ESC Y out); the console's own address would use ESC Z */
     peer_init(peer_fd, r.port, NULL, NULL, 0x1234567u);
@@ -276,7 +280,7 @@ static void test_mathe(void)
     uint16_t console_port;
     int console_fd = udp_socket(&console_port);
     uint32_t deadline;
-    start_robot(&r, console_port, extra);
+    start_robot(&r, console_port, "7", extra);
     /* the robot starts the game towards the console address: play it from there */
     peer_init(console_fd, r.port, to_game, NULL, 0x7654321u);
     mathe_init(&game, 50, 4242);
@@ -303,15 +307,92 @@ static void test_mathe(void)
     close(console_fd);
 }
 
+/* ---- an HSL game: the official v20 datagram in, return packets and team messages out ---- */
+static void test_hsl(const char *golden_dir)
+{
+    static robot_proc r;
+    static uint8_t playing[256], buf[2048];
+    char path[1024], ret_arg[32], team_arg[32];
+    uint16_t console_port, gc_port, ret_port, team_port;
+    int console_fd = udp_socket(&console_port), gc_fd = udp_socket(&gc_port);
+    int ret_fd = udp_socket(&ret_port), team_fd = udp_socket(&team_port);
+    int returns = 0, team_msgs = 0, playing_status = 0;
+    size_t np;
+    uint32_t deadline, next_gc = 0;
+    struct sockaddr_in robot;
+    FILE *f;
+    const char *extra[] = {"--team", "5", "--gc-return", ret_arg, "--team-msg-to", team_arg,
+                           "--team-msg-rate", "10", "--gc-return-rate", "2", NULL};
+    snprintf(path, sizeof path, "%s/hsl20/07-playing-after-delay.bin", golden_dir);
+    f = fopen(path, "rb");
+    if (f == NULL) exit(3);
+    np = fread(playing, 1, sizeof playing, f);
+    fclose(f);
+    CHECK_EQ(np, 158);
+    snprintf(ret_arg, sizeof ret_arg, "127.0.0.1:%u", ret_port);
+    snprintf(team_arg, sizeof team_arg, "127.0.0.1:%u", team_port);
+    start_robot(&r, console_port, "3", extra);
+    memset(&robot, 0, sizeof robot);
+    robot.sin_family = AF_INET;
+    robot.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    robot.sin_port = htons(r.port);
+    deadline = now_ms() + 30000u;
+    while ((int32_t)(now_ms() - deadline) < 0 && (returns < 3 || team_msgs < 5 || playing_status < 1)) {
+        struct pollfd p[3] = {{console_fd, POLLIN, 0}, {ret_fd, POLLIN, 0}, {team_fd, POLLIN, 0}};
+        ssize_t n;
+        if ((int32_t)(now_ms() - next_gc) >= 0) { /* the GameController's own cadence */
+            sendto(gc_fd, playing, np, 0, (struct sockaddr *)&robot, sizeof robot);
+            next_gc = now_ms() + 500u;
+        }
+        (void)poll(p, 3, 50);
+        while ((n = recv(console_fd, buf, sizeof buf, MSG_DONTWAIT)) > 0) {
+            size_t i;
+            for (i = 0; i + 7 <= (size_t)n; i++) {
+                if (memcmp(buf + i, "PLAYING", 7) == 0) playing_status++;
+            }
+        }
+        while ((n = recv(ret_fd, buf, sizeof buf, MSG_DONTWAIT)) > 0) {
+            returns++;
+            CHECK_EQ(n, 32);
+            CHECK(memcmp(buf, "RGrt", 4) == 0);
+            CHECK_EQ(buf[4], 4);
+            CHECK_EQ(buf[5], 3);
+            CHECK_EQ(buf[6], 5);
+            CHECK_EQ(buf[7], 0);
+        }
+        while ((n = recv(team_fd, buf, sizeof buf, MSG_DONTWAIT)) > 0) {
+            team_msgs++;
+            CHECK(n <= 512);
+            CHECK(memcmp(buf, "FUtm", 4) == 0);
+            CHECK_EQ(buf[5], 3);
+            CHECK_EQ(buf[6], 5);
+        }
+    }
+    CHECK(returns >= 3);
+    CHECK(team_msgs >= 5);
+    CHECK(playing_status >= 1);
+    printf("hsl (%s): %d return packets, %d team messages, %d Status saying PLAYING\n", g_wifi ? "wifi-sim" : "direct",
+           returns, team_msgs, playing_status);
+    CHECK_EQ(stop_robot(&r), 0);
+    close(console_fd);
+    close(gc_fd);
+    close(ret_fd);
+    close(team_fd);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3) {
-        fprintf(stderr, "usage: %s TOUCHLINE_ROBOT direct|wifi\n", argv[0]);
+        fprintf(stderr, "usage: %s TOUCHLINE_ROBOT direct|wifi [hsl GOLDEN_GAMECONTROLLER_DIR]\n", argv[0]);
         return 2;
     }
     signal(SIGPIPE, SIG_IGN);
     g_bin = argv[1];
     g_wifi = strcmp(argv[2], "wifi") == 0;
+    if (argc == 5 && strcmp(argv[3], "hsl") == 0) {
+        test_hsl(argv[4]);
+        TEST_DONE();
+    }
     test_lorem();
     test_mathe();
     TEST_DONE();

@@ -31,6 +31,8 @@ INDIRECT = {
     "sendMsgToPeer": ["gs_send_peer"],
     "processData": ["on_list_request", "on_option_request"],
     "robot_poll": ["produce_text"],          # option producers (+ stream app: none on the board)
+    "send_status": [],                       # pose provider: none on the board (position NULL)
+    "world_view": [],                        # pose and ball providers: none on the board
     "rs_input": ["stream_deliver"],
     "rs_poll": ["stream_output"],
     "rs_send": ["stream_output"],
