@@ -21,8 +21,13 @@ import java.util.concurrent.CopyOnWriteArrayList;
  */
 public final class RobotRegistry implements touchline.transport.EnvelopeSink {
 
-    /** Keep-alives come every 200 ms; five missed ones make a robot offline. */
-    public static final long DEFAULT_OFFLINE_AFTER_MICROS = 1_000_000;
+    /**
+     * Keep-alives come every 200 ms in the lab but only once a second during a game (the HSL
+     * 2026 rules allow a robot one debug packet per second; the firmware keeps to it in
+     * READY/SET/PLAYING), so a robot is offline after three missed game-rate keep-alives. With
+     * 1 s, every robot flickered offline during play.
+     */
+    public static final long DEFAULT_OFFLINE_AFTER_MICROS = 3_000_000;
     private static final int MAX_NOTES = 200;
 
     private final MicrosClock clock;

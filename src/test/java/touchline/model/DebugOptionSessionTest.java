@@ -112,7 +112,7 @@ class DebugOptionSessionTest {
         assertTrue(session.options(3).option("demo.text").orElseThrow().streaming());
         sent.clear();
 
-        advance(1_500_000); // keep-alives stop: offline
+        advance(3_500_000); // keep-alives stop: offline
         assertFalse(registry.robot(3).orElseThrow().online());
         assertTrue(sent.isEmpty(), "nothing is sent to an offline robot");
 
