@@ -5,15 +5,89 @@ import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
 import org.junit.jupiter.api.Test;
 
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 
-/** The dependency rule of style.md: protocol depends on nothing of ours; nothing depends on ui or cli. */
+/**
+ * The dependency rule of style.md and docs/architecture.md, written down whole: every package
+ * of the product belongs to a layer (protocol → game → transport → model/record → app →
+ * faces), a layer is used only by the layers above it, protocol and game are pure, and JavaFX
+ * stays in the window's code. The benchmarks (src/bench) are not in target/classes at all.
+ */
 class ArchitectureTest {
+
+    private static final String[] LAYERS = {"touchline.proto..", "touchline.protocol..", "touchline.game..",
+            "touchline.transport..", "touchline.model..", "touchline.record..", "touchline.app..", "touchline.ui..",
+            "touchline.cli.."};
 
     // Only our compiled classes: scanning every jar on the class path for the package is slow.
     private final JavaClasses classes = new ClassFileImporter()
             .withImportOption(ImportOption.Predefined.DO_NOT_INCLUDE_TESTS)
             .importPath(java.nio.file.Path.of("target/classes"));
+
+    @Test
+    void everyPackageBelongsToALayer() {
+        // a new package must be placed in the rule below (and in docs/architecture.md)
+        classes().should().resideInAnyPackage(LAYERS).check(classes);
+    }
+
+    @Test
+    void eachLayerIsUsedOnlyByTheLayersAboveIt() {
+        layeredArchitecture().consideringOnlyDependenciesInLayers()
+                .layer("Protocol").definedBy("touchline.proto..", "touchline.protocol..")
+                .layer("Game").definedBy("touchline.game..")
+                .layer("Transport").definedBy("touchline.transport..")
+                .layer("Model").definedBy("touchline.model..")
+                .layer("Record").definedBy("touchline.record..")
+                .layer("App").definedBy("touchline.app..")
+                .layer("Faces").definedBy("touchline.ui..", "touchline.cli..")
+                .whereLayer("Faces").mayNotBeAccessedByAnyLayer()
+                .whereLayer("App").mayOnlyBeAccessedByLayers("Faces")
+                .whereLayer("Record").mayOnlyBeAccessedByLayers("App", "Faces")
+                .whereLayer("Model").mayOnlyBeAccessedByLayers("App", "Faces")
+                // the embedded GameController's runtime still lives in transport.gamecontroller
+                .whereLayer("Transport").mayOnlyBeAccessedByLayers("Model", "Record", "App", "Faces")
+                .whereLayer("Game").mayOnlyBeAccessedByLayers("Transport", "App", "Faces")
+                .whereLayer("Protocol").mayOnlyBeAccessedByLayers("Game", "Transport", "Model", "Record", "App", "Faces")
+                .check(classes);
+    }
+
+    @Test
+    void modelAndRecordDoNotKnowEachOther() {
+        noClasses().that().resideInAPackage("touchline.model..")
+                .should().dependOnClassesThat().resideInAPackage("touchline.record..").check(classes);
+        noClasses().that().resideInAPackage("touchline.record..")
+                .should().dependOnClassesThat().resideInAPackage("touchline.model..").check(classes);
+    }
+
+    @Test
+    void protocolAndGameHaveNoThreadsFilesOrSockets() {
+        noClasses().that().resideInAnyPackage("touchline.protocol..", "touchline.game..")
+                .should().dependOnClassesThat().resideInAnyPackage("java.io..", "java.nio.file..", "java.nio.channels..",
+                        "java.net..", "io.netty..", "org.zeromq..")
+                .orShould().dependOnClassesThat().haveFullyQualifiedName("java.lang.Thread")
+                .orShould().dependOnClassesThat().haveNameMatching("java\\.util\\.concurrent\\.(Executor.*|ScheduledExecutorService|ThreadPoolExecutor|CompletableFuture)")
+                .check(classes);
+    }
+
+    @Test
+    void javaFxOnlyInTheWindowAndTheCommandsThatOpenIt() {
+        noClasses().that().resideOutsideOfPackages("touchline.ui..")
+                .and().doNotHaveFullyQualifiedName("touchline.cli.ConsoleCommand")
+                .and().doNotHaveFullyQualifiedName("touchline.cli.ScreenshotsCommand")
+                .and().doNotHaveFullyQualifiedName("touchline.cli.FxThread")
+                .should().dependOnClassesThat().resideInAnyPackage("javafx..")
+                .check(classes);
+    }
+
+    @Test
+    void noMainMethodOrExitOutsideTheLaunchers() {
+        noClasses().that().doNotHaveFullyQualifiedName("touchline.cli.Main")
+                .and().doNotHaveFullyQualifiedName("touchline.ui.Launcher")
+                .should().callMethod(System.class, "exit", int.class)
+                .check(classes);
+    }
 
     @Test
     void protocolDependsOnNothingOfOurs() {
