@@ -14,7 +14,10 @@ import touchline.transport.gamecontroller.MonitorRegistrations;
 import touchline.transport.gamecontroller.GcConfig;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
+import touchline.model.RuleProfile;
+import touchline.model.TeamMessageBudget;
 import touchline.model.TrafficMeter;
+import touchline.transport.TeamMessageListener;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.EnvelopeBus;
@@ -65,6 +68,9 @@ public final class Console implements AutoCloseable {
     private final MonitorRegistrations monitorRegistrations = new MonitorRegistrations();
     private GcMonitor gcMonitor;
     private EmbeddedGameController gameController;
+    private TeamMessageListener teamMessages;
+    private AutoCloseable budgetSubscription;
+    private TeamMessageBudget budget;
     private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
@@ -281,8 +287,45 @@ public final class Console implements AutoCloseable {
         }
     }
 
+    /**
+     * Starts the budget guard for {@code team} under {@code profile}: listens to the team's
+     * messages on {@code bind} (usually 0.0.0.0:10000+team) and counts them against the
+     * profile's budget, with the GameController's own figure when one is heard. A second call
+     * replaces the first.
+     */
+    public synchronized TeamMessageBudget guardTeamMessages(RuleProfile profile, int team, InetSocketAddress bind)
+            throws IOException {
+        stopGuardingTeamMessages();
+        budget = new TeamMessageBudget(modelClock, profile, team);
+        budgetSubscription = bus.subscribe(budget);
+        teamMessages = new TeamMessageListener(bind, live, clock);
+        return budget;
+    }
+
+    /** The budget guard, if started. */
+    public synchronized Optional<TeamMessageBudget> teamMessageBudget() {
+        return Optional.ofNullable(budget);
+    }
+
+    public synchronized void stopGuardingTeamMessages() {
+        if (teamMessages != null) {
+            teamMessages.close();
+            teamMessages = null;
+        }
+        if (budgetSubscription != null) {
+            try {
+                budgetSubscription.close();
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+            budgetSubscription = null;
+        }
+        budget = null;
+    }
+
     @Override
     public void close() {
+        stopGuardingTeamMessages();
         stopGameController();
         closeReplay();
         try {

@@ -13,5 +13,7 @@ public enum Channel {
     /** NAO camera request or JPEG frame over ZeroMQ. */
     NAO_CAMERA,
     /** Connection events of a link (NAO online/lost, ...); raw holds the UTF-8 text. */
-    LINK_EVENT
+    LINK_EVENT,
+    /** Team messages between a team's robots (UDP 10000 + team number), heard for the budget guard. */
+    TEAM_MESSAGE
 }

@@ -45,6 +45,9 @@ public record GameControlData(int packetNumber, int playersPerTeam, int gameType
     public static final int STATE_PLAYING = 3;
     public static final int STATE_FINISHED = 4;
 
+    public static final int GAME_PHASE_NORMAL = 0;
+    public static final int GAME_PHASE_PENALTY_SHOOT_OUT = 1;
+
     public GameControlData {
         teams = List.copyOf(teams);
         if (teams.size() != 2) {

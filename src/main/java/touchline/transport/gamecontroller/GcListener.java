@@ -29,11 +29,18 @@ public final class GcListener implements AutoCloseable {
 
     private final DatagramChannel channel;
     private final Handler handler;
+    private final int maxDatagram;
     private final Thread thread;
     private volatile boolean running = true;
 
     public GcListener(InetSocketAddress bind, Handler handler, String name) throws IOException {
+        this(bind, handler, name, 2048);
+    }
+
+    /** @param maxDatagram the largest datagram received whole (a larger one arrives cut to this size) */
+    public GcListener(InetSocketAddress bind, Handler handler, String name, int maxDatagram) throws IOException {
         this.handler = handler;
+        this.maxDatagram = maxDatagram;
         this.channel = DatagramChannel.open();
         channel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
         channel.bind(bind);
@@ -47,7 +54,7 @@ public final class GcListener implements AutoCloseable {
     }
 
     private void loop() {
-        ByteBuffer buf = ByteBuffer.allocate(2048);
+        ByteBuffer buf = ByteBuffer.allocate(maxDatagram);
         while (running) {
             try {
                 buf.clear();
