@@ -23,7 +23,7 @@ public final class EnvelopeLine {
         if (e.robotId() >= 0) {
             b.append("robot ").append(e.robotId()).append(' ');
         }
-        b.append(e.peer() == null ? "-" : e.peer().getAddress().getHostAddress() + ":" + e.peer().getPort()).append(' ');
+        b.append(e.peer() == null ? "-" : e.peerText()).append(' ');
         if (e.isMalformed()) {
             return b.append("MALFORMED (").append(e.size()).append(" bytes): ").append(e.error())
                     .append(" [").append(hex.dump(e.raw(), 16).replace('\n', ' ')).append(']').toString();

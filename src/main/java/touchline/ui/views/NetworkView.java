@@ -57,7 +57,7 @@ public final class NetworkView implements View {
         table.setFixedCellSize(24);
         table.getColumns().add(column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96));
         table.getColumns().add(column("Dir", e -> e.direction() == Direction.IN ? "in" : "out", 40));
-        table.getColumns().add(column("Peer", e -> e.peer() == null ? "" : e.peer().getAddress().getHostAddress() + ":" + e.peer().getPort(), 130));
+        table.getColumns().add(column("Peer", Envelope::peerText, 130));
         table.getColumns().add(column("Robot", e -> e.robotId() < 0 ? "–" : Integer.toString(e.robotId()), 50));
         table.getColumns().add(column("Size", e -> Integer.toString(e.size()), 50));
         table.getColumns().add(column("Kind", Envelope::kind, 140));

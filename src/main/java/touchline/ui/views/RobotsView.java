@@ -62,7 +62,7 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
         table.getColumns().add(column("Malformed", r -> Long.toString(r.malformed()), 72));
-        table.getColumns().add(column("Address", r -> r.address() == null ? "" : r.address().getAddress().getHostAddress()
+        table.getColumns().add(column("Address", r -> r.address() == null ? "" : r.address().getHostString()
                 + ":" + r.address().getPort(), 130));
         problems.setEditable(false);
         problems.setPrefRowCount(4);
