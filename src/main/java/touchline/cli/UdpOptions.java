@@ -17,6 +17,20 @@ final class UdpOptions {
             description = "port robots listen on (3838 on a field); 0 answers each robot at its source port (default)")
     int robotPort;
 
+    /** A started Console on these options; a port in use fails with one sentence naming it. */
+    touchline.app.Console startConsole() throws InterruptedException, StartFailure {
+        touchline.app.Console console = new touchline.app.Console(config());
+        try {
+            return console.start();
+        } catch (Exception e) { // Netty rethrows the native bind error undeclared
+            console.close();
+            if (StartFailure.addressInUse(e)) {
+                throw StartFailure.portInUse(bind, port);
+            }
+            throw e;
+        }
+    }
+
     ConsoleConfig config() {
         return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port).withBindAddress(bind)
                 .withRobotPort(robotPort));
