@@ -31,7 +31,7 @@ public final class ConsoleStatus {
         if (!play.isEmpty()) {
             s.append(console.matchMode().isOverridden()
                     ? "MATCH MODE OVERRIDDEN: " + play + ", the console sends anyway"
-                    : "Silent: match mode, " + play + "; only the GameController sends");
+                    : "Silent: match mode, " + play);
         }
         Optional<Replay> replay = console.replay();
         if (replay.isPresent()) {

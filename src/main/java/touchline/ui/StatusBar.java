@@ -25,6 +25,7 @@ public final class StatusBar extends HBox {
     private final Label bad = new Label();
     private final Label waiting = new Label();
     private final Tooltip waitingTip = new Tooltip();
+    private final Tooltip silenceTip = new Tooltip();
     private final ProgressBar meter = new ProgressBar(0);
     private final Label meterText = new Label();
     private final Label fps = new Label();
@@ -48,6 +49,11 @@ public final class StatusBar extends HBox {
         silence.setId("status-silence");
         silence.getStyleClass().add("status-silence");
         silence.setMinWidth(Region.USE_PREF_SIZE);
+        silence.setTooltip(silenceTip);
+        // the counts keep their words; the meter's text and messages give way on a narrow window
+        rates.setMinWidth(Region.USE_PREF_SIZE);
+        bad.setMinWidth(Region.USE_PREF_SIZE);
+        waiting.setMinWidth(Region.USE_PREF_SIZE);
         silence.setVisible(false);
         silence.setManaged(false);
         waiting.setId("status-waiting");
@@ -86,6 +92,8 @@ public final class StatusBar extends HBox {
                 + "(each retry counts); waiting requests go out when play stops");
         String why = readings.silence();
         silence.setText(why);
+        silenceTip.setText(why + "\nIn match mode the console sends nothing to robots (debug requests wait until play "
+                + "stops); the GameController still sends. A replay never sends to the field.");
         silence.setVisible(!why.isEmpty());
         silence.setManaged(!why.isEmpty());
         lastIn = c.datagramsIn();

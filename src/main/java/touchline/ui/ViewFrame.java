@@ -23,16 +23,23 @@ import java.util.function.Supplier;
  * A refresh that throws is asked again next frame, and the line goes away once it succeeds.
  * A layout that threw leaves the view's own nodes stuck, so the view stops and offers to
  * reopen it (a fresh instance with the same source).
+ * <p>
+ * The frame also keeps a view inside its pane: a view larger than the pane scrolls instead
+ * of covering the menu or pushing the status bar out of the window, and buttons keep their
+ * full labels rather than shrinking to "…".
  */
 public final class ViewFrame extends BorderPane {
 
     private static final Logger LOG = LoggerFactory.getLogger(ViewFrame.class);
+    /** How often (in frames, twice a second at 60 fps) buttons added since are given their full width. */
+    private static final int LABEL_CHECK_FRAMES = 30;
 
     private final String title;
     private final Supplier<View> maker;
     private final Label fault = new Label();
     private final Button reopen = new Button("Reopen");
     private final HBox faultLine = new HBox(8, fault, reopen);
+    private javafx.scene.control.ScrollPane scroller;
     private final Set<String> logged = new HashSet<>();
     private View view;
     private boolean stopped;
@@ -51,6 +58,11 @@ public final class ViewFrame extends BorderPane {
         reopen.setOnAction(e -> reopen());
         reopen.setVisible(false);
         reopen.setManaged(false);
+        setMinSize(0, 0);
+        javafx.scene.shape.Rectangle clip = new javafx.scene.shape.Rectangle();
+        clip.widthProperty().bind(widthProperty());
+        clip.heightProperty().bind(heightProperty());
+        setClip(clip);
         show(maker.get());
     }
 
@@ -75,6 +87,9 @@ public final class ViewFrame extends BorderPane {
         }
         try {
             view.refresh(frame);
+            if (frame.frame() % LABEL_CHECK_FRAMES == 0) {
+                keepLabels(view.node()); // buttons a view adds later (robot rows, say)
+            }
             if (failing) {
                 failing = false;
                 setTop(null);
@@ -100,7 +115,26 @@ public final class ViewFrame extends BorderPane {
         setTop(null);
         reopen.setVisible(false);
         reopen.setManaged(false);
-        setCenter(v.node());
+        keepLabels(v.node());
+        // a new scroller each time: after a layout fault its own nodes are stuck as well
+        scroller = new javafx.scene.control.ScrollPane(v.node());
+        scroller.setFitToWidth(true);
+        scroller.setFitToHeight(true);
+        scroller.getStyleClass().add("view-scroller");
+        setCenter(scroller);
+    }
+
+    /** Buttons never shrink below their label: the pane scrolls instead (nodes the view has now). */
+    private static void keepLabels(javafx.scene.Node node) {
+        if (node instanceof javafx.scene.control.ButtonBase b && b.getText() != null && !b.getText().isEmpty()
+                && b.getMinWidth() == USE_COMPUTED_SIZE) {
+            b.setMinWidth(USE_PREF_SIZE);
+        }
+        if (node instanceof javafx.scene.Parent p) {
+            for (javafx.scene.Node child : p.getChildrenUnmodifiable()) {
+                keepLabels(child);
+            }
+        }
     }
 
     @Override
@@ -110,13 +144,11 @@ public final class ViewFrame extends BorderPane {
     }
 
     private void layOutCaught() {
-        if (stopped || getCenter() == null) {
+        if (stopped) {
             return;
         }
         try {
-            if (getCenter() instanceof javafx.scene.Parent p) {
-                p.layout();
-            }
+            scroller.layout();
         } catch (RuntimeException e) {
             stopped = true;
             reopen.setVisible(true);

@@ -1,9 +1,7 @@
 package touchline.ui;
 
 import javafx.scene.Node;
-import javafx.scene.control.Button;
 import javafx.scene.control.Label;
-import javafx.scene.control.TextField;
 import javafx.scene.control.TreeItem;
 import javafx.scene.control.TreeView;
 import org.junit.jupiter.api.AfterEach;
@@ -67,10 +65,6 @@ class StatusBarUiTest {
         return m.find() ? Double.parseDouble(m.group(1)) : -1;
     }
 
-    private void fire(Node root, String id) throws Exception {
-        ui.fxRun(() -> ((Button) root.lookup(id)).fire());
-    }
-
     /** Selects the option's row in the tree by program (no mouse) and toggles it as Space does. */
     @SuppressWarnings("unchecked")
     private void toggleInTree(OptionsView view) throws Exception {
@@ -107,21 +101,12 @@ class StatusBarUiTest {
             assertFalse(bannerShown(), "no banner while the console may send");
             ui.await(30, () -> text("#status-waiting").equals("0 requests waiting now"));
 
-            ui.fxRun(() -> ui.window.open("gamecontroller", ViewSource.NONE));
-            Node gc = ui.fx(() -> ui.window.shell().openViews().stream().filter(v -> v.spec().id().equals("gamecontroller"))
-                    .findFirst().orElseThrow().view().node());
-            ui.fxRun(() -> {
-                ((TextField) gc.lookup("#gc-dest")).setText("127.0.0.1:" + field.getLocalPort());
-                // return packets on an OS-chosen port: tests never bind the fixed 3939
-                ((javafx.scene.Parent) gc).lookupAll(".text-field").stream().map(n -> (TextField) n)
-                        .filter(t -> "default".equals(t.getPromptText())).findFirst().orElseThrow().setText("0");
-            });
-            fire(gc, "#gc-start");
-            ui.await(30, () -> ui.console.gameController().isPresent());
+            GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+            gc.start(field);
             ui.await(30, () -> outPerSecond() > 0); // no robot is sent anything: these are GameController packets
-            fire(gc, "#gc-ready");
-            fire(gc, "#gc-set");
-            fire(gc, "#gc-play");
+            gc.press("#gc-ready");
+            gc.press("#gc-set");
+            gc.press("#gc-play");
             ui.await(30, this::bannerShown);
             String banner = text("#status-silence");
             assertTrue(banner.contains("match mode") && banner.contains("PLAYING"), banner);
@@ -144,7 +129,7 @@ class StatusBarUiTest {
             assertFalse(text("#status-rates").contains("held") || ui.fx(() -> ((Label) ui.window.status().getChildren().get(2))
                     .getText()).contains("held"), "the running total is in the tooltip only");
 
-            fire(gc, "#gc-stop");
+            gc.press("#gc-stop");
             ui.await(30, () -> !bannerShown());
             ui.await(30, () -> ui.console.options().options(ROBOT).option(OPTION).orElseThrow().streaming());
             ui.await(30, () -> text("#status-waiting").equals("0 requests waiting now"));
