@@ -60,6 +60,9 @@ class ViewsFitUiTest {
         if (n instanceof ButtonBase b && cut(b)) {
             problems.add(view + ": button \"" + b.getText() + "\" cut (" + b.getWidth() + " of " + b.prefWidth(-1) + ")");
         }
+        if (n instanceof Label name && name.getText() != null && name.getText().length() <= 12 && cut(name)) {
+            problems.add(view + ": field name \"" + name.getText() + "\" cut"); // "Robot", "Source", "RPC" …
+        }
         if (n instanceof Label h && h.getParent() != null && h.getParent().getStyleClass().contains("column-header")) {
             HEADERS_SEEN.add(view + "/" + h.getText());
             if (cut(h)) {

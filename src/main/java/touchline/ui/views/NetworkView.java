@@ -11,7 +11,7 @@ import javafx.scene.control.TextArea;
 import javafx.scene.control.TextField;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.layout.BorderPane;
-import javafx.scene.layout.HBox;
+import javafx.scene.layout.FlowPane;
 import touchline.model.store.SequencedRing;
 import touchline.protocol.Hex;
 import touchline.protocol.MessageText;
@@ -85,7 +85,7 @@ public final class NetworkView implements View {
         split.setOrientation(Orientation.VERTICAL);
         split.setDividerPositions(0.6);
         pause.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
-        HBox bar = new HBox(8, new Label("Robot"), robot, direction, kind, pause, count);
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, direction, kind, pause, count); // wraps when narrow
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
         root.setCenter(split);
