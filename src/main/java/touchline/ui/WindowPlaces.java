@@ -20,7 +20,7 @@ import java.util.Properties;
 /**
  * The size and place of the console window and its dialogs, remembered in one small file of
  * the user's settings. A window opens where it was closed; the first time (or when that place
- * is on no screen now) at a share of the screen. Sizes are set on the stage before it is shown,
+ * is on no screen now) filling the screen up to a maximum size, centred. Sizes are set on the stage before it is shown,
  * so a window manager never gets to pick 200×200 (JavaFX 21's JDK-8316423).
  * A file that cannot be read or written only costs the remembering: logged once, never shown
  * as an error.
@@ -28,7 +28,8 @@ import java.util.Properties;
 public final class WindowPlaces {
 
     private static final Logger LOG = LoggerFactory.getLogger(WindowPlaces.class);
-    private static final double FIRST_START_FRACTION = 0.9;
+    /** A first start fills a laptop's screen (up to the caller's maximum, centred on a larger one). */
+    static final double FIRST_START_FRACTION = 1.0;
 
     private final Path file;
     private boolean warned;

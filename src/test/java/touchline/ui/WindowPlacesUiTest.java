@@ -28,10 +28,10 @@ class WindowPlacesUiTest {
     }
 
     @Test
-    void theWindowOpensAtAShareOfTheScreenFirstAndWhereItWasClosedNext() throws Exception {
+    void theWindowFillsTheScreenUpTo1400By900FirstAndOpensWhereItWasClosedNext() throws Exception {
         ConsoleWindowFixture first = new ConsoleWindowFixture(layouts);
         Rectangle2D screen = first.fx(() -> Screen.getPrimary().getVisualBounds());
-        WindowPlace expected = WindowPlace.centred(screen, 0.9, 1400, 900);
+        WindowPlace expected = WindowPlace.centred(screen, WindowPlaces.FIRST_START_FRACTION, 1400, 900);
         assertEquals(expected, first.fx(() -> placeOf(first.window.scene().getWindow())));
         assertTrue(expected.width() > 200 && expected.height() > 200, expected.toString());
         WindowPlace moved = new WindowPlace(screen.getMinX() + 40, screen.getMinY() + 30,
