@@ -98,7 +98,8 @@ public final class Console implements AutoCloseable {
         this.options = new DebugOptionSession(udp, codec, modelClock);
         this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
         bus.subscribe(new ReportedGameState(matchMode));
-        setGate(() -> matchMode.hold("console request") ? Optional.of(matchMode.notice()) : Optional.empty());
+        setGate(() -> matchMode.hold("console request")
+                ? Optional.of("match mode, " + matchMode.play() + "; goes out when play stops") : Optional.empty());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);

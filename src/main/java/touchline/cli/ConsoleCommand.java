@@ -1,14 +1,23 @@
 package touchline.cli;
 
+import javafx.stage.Stage;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
-import touchline.ui.TouchlineApp;
+import touchline.app.Console;
+import touchline.ui.ConsoleWindow;
+import touchline.ui.UiSettings;
+import touchline.ui.layout.LayoutStore;
 
-import java.util.ArrayList;
-import java.util.List;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.CountDownLatch;
 
-/** Opens the JavaFX console window; returns when the window is closed. */
+/**
+ * Opens the JavaFX console window; returns when the window is closed. The UDP port is bound
+ * and the display checked before any window, so a port in use or a missing display ends the
+ * command with one sentence and an exit code (see {@link StartFailure}).
+ */
 @Command(name = "console", mixinStandardHelpOptions = true,
         description = "Open the console window (robots, debug options, consoles, visualisations, layouts).")
 final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
@@ -26,19 +35,38 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     String layouts;
 
     @Override
-    public Integer call() {
-        List<String> args = new ArrayList<>(List.of("--port=" + udp.port, "--bind=" + udp.bind,
-                "--robot-port=" + udp.robotPort));
-        if (layouts != null) {
-            args.add("--layouts=" + layouts);
+    public Integer call() throws Exception {
+        try (Console console = udp.startConsole()) {
+            String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
+                    System.getProperty("os.name", ""));
+            if (noDisplay != null) {
+                throw StartFailure.noDisplay(noDisplay);
+            }
+            try {
+                FxThread.startToolkit();
+            } catch (RuntimeException e) { // "Unable to open DISPLAY" and the like
+                throw StartFailure.noDisplay("JavaFX could not open it (" + e.getMessage() + ")");
+            }
+            CountDownLatch closed = new CountDownLatch(1);
+            UiSettings settings = new UiSettings(layouts != null ? Path.of(layouts) : LayoutStore.defaultDir(), !light, demo);
+            FxThread.run(() -> {
+                Stage stage = new Stage();
+                stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_HIDDEN, e -> closed.countDown());
+                new ConsoleWindow(console, settings).show(stage);
+            });
+            closed.await();
+            javafx.application.Platform.exit();
+            return 0;
         }
-        if (demo) {
-            args.add("--demo");
+    }
+
+    /** Why there is no display to open a window on, or null when there is one (or no way to tell). */
+    static String missingDisplay(Map<String, String> env, String glassPlatform, String osName) {
+        if (!osName.toLowerCase(java.util.Locale.ROOT).contains("linux") || glassPlatform.equalsIgnoreCase("Monocle")) {
+            return null;
         }
-        if (light) {
-            args.add("--light");
-        }
-        javafx.application.Application.launch(TouchlineApp.class, args.toArray(String[]::new));
-        return 0;
+        boolean x11 = env.getOrDefault("DISPLAY", "").isBlank();
+        boolean wayland = env.getOrDefault("WAYLAND_DISPLAY", "").isBlank();
+        return x11 && wayland ? "neither DISPLAY nor WAYLAND_DISPLAY is set" : null;
     }
 }

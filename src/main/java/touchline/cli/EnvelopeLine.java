@@ -23,8 +23,7 @@ public final class EnvelopeLine {
         if (e.robotId() >= 0) {
             b.append("robot ").append(e.robotId()).append(' ');
         }
-        // the host string: a literal, or the name a recording held (kept unresolved, it has no address)
-        b.append(e.peer() == null ? "-" : e.peer().getHostString() + ":" + e.peer().getPort()).append(' ');
+        b.append(e.peer() == null ? "-" : e.peerText()).append(' ');
         if (e.isMalformed()) {
             return b.append("MALFORMED (").append(e.size()).append(" bytes): ").append(e.error())
                     .append(" [").append(hex.dump(e.raw(), 16).replace('\n', ' ')).append(']').toString();

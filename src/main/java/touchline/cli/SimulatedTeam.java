@@ -15,11 +15,11 @@ public final class SimulatedTeam implements AutoCloseable {
 
     private final List<Process> processes = new ArrayList<>();
 
-    /** Starts robots 1..n; throws when the binary was not built. */
-    public static SimulatedTeam start(int n, int consolePort, List<String> extra) throws IOException {
+    /** Starts robots 1..n; fails with one sentence when the binary was not built. */
+    public static SimulatedTeam start(int n, int consolePort, List<String> extra) throws IOException, StartFailure {
         Path bin = new RobotSideBinaries().of("touchline-robot");
         if (!Files.isExecutable(bin)) {
-            throw new IOException(bin + " is missing: build the robot side first (./touchline build)");
+            throw StartFailure.robotSideMissing(bin);
         }
         SimulatedTeam team = new SimulatedTeam();
         Path logs = Files.createTempDirectory("touchline-team");

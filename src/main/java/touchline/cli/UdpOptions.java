@@ -29,6 +29,20 @@ final class UdpOptions {
             description = "port the GameController forwards return packets to (default ${DEFAULT-VALUE})")
     int gcForwardPort;
 
+    /** A started Console on these options; a port in use fails with one sentence naming it. */
+    touchline.app.Console startConsole() throws InterruptedException, StartFailure {
+        touchline.app.Console console = new touchline.app.Console(config());
+        try {
+            return console.start();
+        } catch (Exception e) { // Netty rethrows the native bind error undeclared
+            console.close();
+            if (StartFailure.addressInUse(e)) {
+                throw StartFailure.portInUse(bind, port);
+            }
+            throw e;
+        }
+    }
+
     ConsoleConfig config() {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port)
                 .withBindAddress(bind).withRobotPort(robotPort));

@@ -152,19 +152,28 @@ public final class MatchMode {
 
     /** The text to show, or "" when match mode is not holding anything back. */
     public String notice() {
+        String play = play();
+        if (play.isEmpty()) {
+            return "";
+        }
+        synchronized (this) {
+            if (override) {
+                return "MATCH MODE OVERRIDDEN: " + play + " but the console may send";
+            }
+            return "Match mode: " + play + ", console silent except GameController; "
+                    + heldCount + " request(s) held back";
+        }
+    }
+
+    /** Why match mode is on in words, e.g. "game is PLAYING (GameController at 10.0.0.2:3838)"; "" when play is off. */
+    public String play() {
         refresh();
         synchronized (this) {
             String source = playingSource();
             if (source == null) {
-                return override || !listening() ? "" : "Match mode: listening for a GameController before talking "
-                        + "to robots; " + heldCount + " request(s) held back";
+                return override || !listening() ? "" : "listening for a GameController before talking to robots";
             }
-            String state = GameControlData.stateName(heard.get(source).state);
-            if (override) {
-                return "MATCH MODE OVERRIDDEN: game is " + state + " (" + source + ") but the console may send";
-            }
-            return "Match mode: game is " + state + " (" + source + "), console silent except GameController; "
-                    + heldCount + " request(s) held back";
+            return "game is " + GameControlData.stateName(heard.get(source).state) + " (" + source + ")";
         }
     }
 

@@ -47,6 +47,14 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         return null;
     }
 
+    /**
+     * The peer as a person reads it: {@code 10.0.0.7:10001}, or the host name as given when the
+     * address was never resolved (a NAO's link names its host without a lookup); "" when unknown.
+     */
+    public String peerText() {
+        return peer == null ? "" : peer.getHostString() + ":" + peer.getPort();
+    }
+
     public boolean isMalformed() {
         return error != null;
     }

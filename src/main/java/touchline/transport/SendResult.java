@@ -20,4 +20,13 @@ public record SendResult(Outcome outcome, String reason) {
     public boolean isSent() {
         return outcome == Outcome.SENT;
     }
+
+    /** In words for a status line: "sent", "held back: …", "not sent: …". */
+    public String describe() {
+        return switch (outcome) {
+            case SENT -> "sent";
+            case HELD -> "held back: " + reason;
+            case FAILED -> "not sent: " + reason;
+        };
+    }
 }

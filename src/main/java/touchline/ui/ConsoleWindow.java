@@ -42,6 +42,7 @@ public final class ConsoleWindow {
     private final StatusBar status;
     private final FramePulse pulse;
     private final LayoutStore layouts;
+    private final WindowPlaces places;
     private final BorderPane root = new BorderPane();
     private final Set<String> demoSwitched = new HashSet<>();
     private final Menu layoutMenu = new Menu("Layout");
@@ -52,6 +53,7 @@ public final class ConsoleWindow {
         this.console = console;
         this.settings = settings;
         this.layouts = new LayoutStore(settings.layoutDir());
+        this.places = settings.windowPlaces();
         this.dark = settings.dark();
         Shell[] holder = new Shell[1];
         this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src));
@@ -68,12 +70,12 @@ public final class ConsoleWindow {
     public ConsoleWindow show(Stage stage) {
         this.stage = stage;
         applyTheme();
-        javafx.geometry.Rectangle2D screen = javafx.stage.Screen.getPrimary().getVisualBounds();
-        Scene scene = new Scene(root, Math.min(1400, screen.getWidth()), Math.min(900, screen.getHeight()));
+        Scene scene = new Scene(root);
         scene.getStylesheets().add(ConsoleWindow.class.getResource("touchline.css").toExternalForm());
         scene.getStylesheets().add(ConsoleWindow.class.getResource("bento-themed.css").toExternalForm());
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
+        places.keep(stage, "main", 1400, 900);
         stage.setTitle("Touchline — UDP port " + console.udp().localPort());
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         shell.restore(last.orElseGet(DemoLayout::standard));
@@ -90,6 +92,7 @@ public final class ConsoleWindow {
     public FramePulse pulse() { return pulse; }
     public StatusBar status() { return status; }
     public LayoutStore layouts() { return layouts; }
+    public WindowPlaces places() { return places; }
     public ViewRegistry registry() { return registry; }
     public ViewContext context() { return context; }
     public Scene scene() { return root.getScene(); }
@@ -141,7 +144,7 @@ public final class ConsoleWindow {
     }
 
     public void quickOpen() {
-        new QuickOpen(context).show(stage);
+        new QuickOpen(context, places).show(stage);
     }
 
     /** In demo mode: switch the demo options on for every robot once its list arrived. */
@@ -162,7 +165,10 @@ public final class ConsoleWindow {
         MenuItem save = new MenuItem("Save layout as…");
         save.setOnAction(e -> {
             TextInputDialog d = new TextInputDialog("my layout");
+            d.initOwner(stage);
+            d.setTitle("Save layout");
             d.setHeaderText("Name of the layout");
+            places.keep((Stage) d.getDialogPane().getScene().getWindow(), "save-layout", 420, 200);
             d.showAndWait().ifPresent(name -> {
                 try {
                     saveLayout(name);
@@ -206,8 +212,17 @@ public final class ConsoleWindow {
                 s.append(v.title()).append(": ").append(v.help()).append("\n\n");
             }
             s.append("Ctrl+K opens any view. Drag a tab to split or move it, or out of the window.");
-            Alert a = new Alert(Alert.AlertType.INFORMATION, s.toString());
+            javafx.scene.control.TextArea text = new javafx.scene.control.TextArea(s.toString());
+            text.setEditable(false);
+            text.setWrapText(true);
+            text.setId("help-views-text");
+            Alert a = new Alert(Alert.AlertType.INFORMATION);
+            a.initOwner(stage);
+            a.setTitle("Help — views");
             a.setHeaderText("Touchline views");
+            a.getDialogPane().setContent(text);
+            a.setResizable(true);
+            places.keep((Stage) a.getDialogPane().getScene().getWindow(), "help", 760, 600);
             a.show();
         });
         help.getItems().add(about);

@@ -1,26 +1,19 @@
 package touchline.ui;
 
 import javafx.animation.AnimationTimer;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
-
-import java.util.HashSet;
-import java.util.Set;
-
 /**
  * The one place the UI reads the model: once per JavaFX pulse it refreshes every open view
  * and the status bar. 10 000 messages a second cost the FX thread the same as 10, because
- * nothing is pushed to it. A view that throws is reported once and keeps being asked.
+ * nothing is pushed to it. Each view is pulled through its {@link ViewFrame}, which keeps a
+ * view's faults inside that view.
  */
 public final class FramePulse extends AnimationTimer {
 
-    private static final Logger LOG = LoggerFactory.getLogger(FramePulse.class);
     private final Shell shell;
     private final StatusBar status;
     private final touchline.transport.MicrosClock clock;
     private final LatencyProbe latency = new LatencyProbe();
     private final FrameContext frame = new FrameContext(latency);
-    private final Set<String> reported = new HashSet<>();
     private final Runnable extra;
     private final java.util.Map<String, Long> refreshNanos = new java.util.TreeMap<>();
     private long frames;
@@ -53,15 +46,8 @@ public final class FramePulse extends AnimationTimer {
                 continue; // a tab behind another one catches up the moment it is selected
             }
             long t0 = System.nanoTime();
-            try {
-                v.view().refresh(frame);
-                refreshNanos.merge(v.spec().id(), System.nanoTime() - t0, Long::sum);
-            } catch (RuntimeException e) {
-                if (reported.add(v.spec().id() + e)) {
-                    LOG.warn("view {} failed to refresh: {}", v.spec().title(), e.toString(), e);
-                    status.say(v.spec().title() + ": " + e.getMessage());
-                }
-            }
+            v.frame().pull(frame);
+            refreshNanos.merge(v.spec().id(), System.nanoTime() - t0, Long::sum);
         }
         status.refresh(frame.nowMicros(), fps, latency);
     }

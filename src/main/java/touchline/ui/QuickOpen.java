@@ -33,9 +33,11 @@ public final class QuickOpen {
     }
 
     private final ViewContext context;
+    private final WindowPlaces places;
 
-    public QuickOpen(ViewContext context) {
+    public QuickOpen(ViewContext context, WindowPlaces places) {
         this.context = context;
+        this.places = places;
     }
 
     public List<Choice> choices() {
@@ -95,11 +97,13 @@ public final class QuickOpen {
                 go.run();
             }
         });
-        Scene scene = new Scene(new VBox(6, filter, list), 640, 400);
+        VBox.setVgrow(list, javafx.scene.layout.Priority.ALWAYS);
+        Scene scene = new Scene(new VBox(6, filter, list));
         if (owner != null && owner.getScene() != null) {
             scene.getStylesheets().addAll(owner.getScene().getStylesheets());
         }
         stage.setScene(scene);
+        places.keep(stage, "quick-open", 640, 400);
         stage.show();
         filter.requestFocus();
         return stage;

@@ -24,8 +24,14 @@ import java.util.function.Function;
  */
 public final class Shell {
 
-    /** An open view and the registry entry it came from. */
-    public record OpenView(ViewSpec spec, View view, Dockable dockable) { }
+    /** An open view, the registry entry it came from, and the frame that keeps its faults in its tab. */
+    public record OpenView(ViewSpec spec, ViewFrame frame, Dockable dockable) {
+
+        /** The view now in the frame (a reopened view is a new instance). */
+        public View view() {
+            return frame.view();
+        }
+    }
 
     private final Bento bento = new Bento();
     private final ViewRegistry registry;
@@ -84,12 +90,12 @@ public final class Shell {
     }
 
     private OpenView create(ViewSpec spec, ViewSource source) {
-        View view = maker.apply(spec).apply(source);
+        ViewFrame frame = new ViewFrame(spec.title(), () -> maker.apply(spec).apply(source));
         Dockable d = bento.dockBuilding().dockable();
         d.setTitle(spec.title() + (source.isSet() ? " · " + source.robotId() + " " + source.option() : ""));
-        d.setNode(view.node());
+        d.setNode(frame);
         d.setTooltip(new javafx.scene.control.Tooltip(spec.help()));
-        OpenView v = new OpenView(spec, view, d);
+        OpenView v = new OpenView(spec, frame, d);
         open.put(d, v);
         return v;
     }

@@ -10,15 +10,22 @@ import touchline.model.TrafficMeter;
 import touchline.transport.TrafficCounters;
 
 /**
- * The bottom line: packets/s and bytes/s in and out, malformed and held counts, the team's
- * traffic against the league's 1 Mbit/s limit as a small meter, and the UI's own frame rate.
- * Recomputed twice a second from counters, never per packet.
+ * The bottom line: a banner whenever the console is silent and why (match mode, a replay),
+ * packets/s and bytes/s in and out (GameController packets included), malformed packets and
+ * the requests waiting now, the team's traffic against the league's 1 Mbit/s limit as a small
+ * meter, and the UI's own frame rate. Recomputed twice a second from counters (through
+ * {@link ConsoleStatus}), never per packet.
  */
 public final class StatusBar extends HBox {
 
     private final touchline.app.Console console;
+    private final ConsoleStatus readings;
+    private final Label silence = new Label();
     private final Label rates = new Label();
     private final Label bad = new Label();
+    private final Label waiting = new Label();
+    private final Tooltip waitingTip = new Tooltip();
+    private final Tooltip silenceTip = new Tooltip();
     private final ProgressBar meter = new ProgressBar(0);
     private final Label meterText = new Label();
     private final Label fps = new Label();
@@ -33,15 +40,28 @@ public final class StatusBar extends HBox {
     public StatusBar(touchline.app.Console console) {
         super(12);
         this.console = console;
+        this.readings = new ConsoleStatus(console);
         setId("status-bar");
         setStyle("-fx-padding: 3 8 3 8; -fx-alignment: center-left;");
         meter.setPrefWidth(120);
         meter.setTooltip(new Tooltip("Team traffic (IP/UDP included) against the 1 Mbit/s league limit"));
         rates.setId("status-rates");
+        silence.setId("status-silence");
+        silence.getStyleClass().add("status-silence");
+        silence.setMinWidth(Region.USE_PREF_SIZE);
+        silence.setTooltip(silenceTip);
+        // the counts keep their words; the meter's text and messages give way on a narrow window
+        rates.setMinWidth(Region.USE_PREF_SIZE);
+        bad.setMinWidth(Region.USE_PREF_SIZE);
+        waiting.setMinWidth(Region.USE_PREF_SIZE);
+        silence.setVisible(false);
+        silence.setManaged(false);
+        waiting.setId("status-waiting");
+        waiting.setTooltip(waitingTip);
         meterText.setId("status-meter");
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
-        getChildren().addAll(rates, bad, new Label("Team"), meter, meterText, message, grow, fps);
+        getChildren().addAll(silence, rates, bad, waiting, new Label("Team"), meter, meterText, message, grow, fps);
     }
 
     public double packetsPerSecond() {
@@ -60,14 +80,25 @@ public final class StatusBar extends HBox {
         TrafficCounters c = console.udp().counters();
         double dt = lastMicros == 0 ? 1 : (nowMicros - lastMicros) / 1e6;
         packetsPerSecond = (c.datagramsIn() - lastIn) / dt;
+        long out = readings.packetsOut();
         rates.setText(String.format("in %.0f pkt/s %s/s · out %.0f pkt/s %s/s", packetsPerSecond,
-                bytes((c.bytesIn() - lastBytesIn) / dt), (c.datagramsOut() - lastOut) / dt,
+                bytes((c.bytesIn() - lastBytesIn) / dt), (out - lastOut) / dt,
                 bytes((c.bytesOut() - lastBytesOut) / dt)));
-        bad.setText("malformed " + c.malformedIn() + " · held " + c.held());
+        bad.setText("malformed " + c.malformedIn());
         bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
+        int waitingNow = readings.waitingNow();
+        waiting.setText(waitingNow == 1 ? "1 request waiting now" : waitingNow + " requests waiting now");
+        waitingTip.setText(readings.heldTotal() + " requests held back by match mode since the console started "
+                + "(each retry counts); waiting requests go out when play stops");
+        String why = readings.silence();
+        silence.setText(why);
+        silenceTip.setText(why + "\nIn match mode the console sends nothing to robots (debug requests wait until play "
+                + "stops); the GameController still sends. A replay never sends to the field.");
+        silence.setVisible(!why.isEmpty());
+        silence.setManaged(!why.isEmpty());
         lastIn = c.datagramsIn();
         lastBytesIn = c.bytesIn();
-        lastOut = c.datagramsOut();
+        lastOut = out;
         lastBytesOut = c.bytesOut();
         lastMicros = nowMicros;
         TrafficMeter.Reading r = console.traffic().read();

@@ -140,7 +140,7 @@ class ConsoleUiTest {
 
     @Test
     void quickOpenListsEveryViewAndOpensTheChosenOne() throws Exception {
-        QuickOpen quick = new QuickOpen(ui.window.context());
+        QuickOpen quick = new QuickOpen(ui.window.context(), ui.window.places());
         List<String> labels = ui.fx(() -> quick.choices().stream().map(QuickOpen.Choice::label).toList());
         for (ViewSpec spec : ui.window.registry().all()) {
             if (!spec.id().equals(ViewRegistry.RAW)) {

@@ -130,7 +130,10 @@ public final class ReplayView implements View {
         Button a = button("replay-loop-a", "Loop A", this::setLoopA);
         Button b = button("replay-loop-b", "Loop B", this::setLoopB);
         Button clear = button("replay-loop-clear", "Clear loop", this::clearLoop);
-        HBox controls = row(play, new Label("Speed"), speed, goal, change, lost, a, b, clear, loop);
+        // wraps on a narrow window, so the file row above keeps its Open button in view
+        javafx.scene.layout.FlowPane controls = new javafx.scene.layout.FlowPane(8, 6, play, new Label("Speed"), speed,
+                goal, change, lost, a, b, clear, loop);
+        controls.setStyle("-fx-alignment: center-left;");
         replayControls.addAll(List.of(play, speed, goal, change, lost, a, b, clear, close));
 
         position.setId("replay-position");

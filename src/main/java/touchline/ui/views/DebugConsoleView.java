@@ -10,7 +10,7 @@ import javafx.scene.control.ToggleButton;
 import javafx.scene.input.Clipboard;
 import javafx.scene.input.ClipboardContent;
 import javafx.scene.layout.BorderPane;
-import javafx.scene.layout.HBox;
+import javafx.scene.layout.FlowPane;
 import touchline.model.store.SequencedRing;
 import touchline.model.store.TextLine;
 import touchline.ui.FrameContext;
@@ -68,7 +68,7 @@ public final class DebugConsoleView implements View {
             c.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
         }
         search.setPrefColumnCount(10);
-        HBox bar = new HBox(8, new Label("Robot"), robot, search, pause, copy, clear, count);
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, search, pause, copy, clear, count); // wraps when narrow
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
         root.setCenter(lines);

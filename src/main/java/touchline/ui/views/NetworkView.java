@@ -1,6 +1,5 @@
 package touchline.ui.views;
 
-import javafx.beans.property.ReadOnlyObjectWrapper;
 import javafx.geometry.Orientation;
 import javafx.scene.Node;
 import javafx.scene.control.ComboBox;
@@ -12,7 +11,7 @@ import javafx.scene.control.TextArea;
 import javafx.scene.control.TextField;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.layout.BorderPane;
-import javafx.scene.layout.HBox;
+import javafx.scene.layout.FlowPane;
 import touchline.model.store.SequencedRing;
 import touchline.protocol.Hex;
 import touchline.protocol.MessageText;
@@ -38,6 +37,7 @@ public final class NetworkView implements View {
 
     private final ViewContext context;
     private final TableView<Envelope> table = new TableView<>();
+    private final TextColumns<Envelope> columns = new TextColumns<>(false);
     private final RobotFilter robot;
     private final ComboBox<String> direction = new ComboBox<>();
     private final TextField kind = new TextField();
@@ -55,9 +55,10 @@ public final class NetworkView implements View {
         this.robot = new RobotFilter(context);
         table.setId("network-table");
         table.setFixedCellSize(24);
-        table.getColumns().add(column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96));
+        table.getColumns().add(columns.column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96,
+                "00:00:00.000"));
         table.getColumns().add(column("Dir", e -> e.direction() == Direction.IN ? "in" : "out", 40));
-        table.getColumns().add(column("Peer", e -> e.peer() == null ? "" : e.peer().getAddress().getHostAddress() + ":" + e.peer().getPort(), 130));
+        table.getColumns().add(columns.column("Peer", Envelope::peerText, 130, "127.000.000.100:65535"));
         table.getColumns().add(column("Robot", e -> e.robotId() < 0 ? "–" : Integer.toString(e.robotId()), 50));
         table.getColumns().add(column("Size", e -> Integer.toString(e.size()), 50));
         table.getColumns().add(column("Kind", Envelope::kind, 140));
@@ -84,18 +85,14 @@ public final class NetworkView implements View {
         split.setOrientation(Orientation.VERTICAL);
         split.setDividerPositions(0.6);
         pause.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
-        HBox bar = new HBox(8, new Label("Robot"), robot, direction, kind, pause, count);
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, direction, kind, pause, count); // wraps when narrow
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
         root.setCenter(split);
     }
 
-    private static TableColumn<Envelope, String> column(String title, Function<Envelope, String> value, double width) {
-        TableColumn<Envelope, String> c = new TableColumn<>(title);
-        c.setCellValueFactory(cell -> new ReadOnlyObjectWrapper<>(value.apply(cell.getValue())));
-        c.setPrefWidth(width);
-        c.setSortable(false);
-        return c;
+    private TableColumn<Envelope, String> column(String title, Function<Envelope, String> value, double width) {
+        return columns.column(title, value, width, "");
     }
 
     private void show(Envelope e) {

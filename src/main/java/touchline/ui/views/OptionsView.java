@@ -85,6 +85,7 @@ public final class OptionsView implements View {
         root.setTop(bar);
         root.setCenter(tree);
         Label hint = new Label("Space: on/off   Double-click or Enter: open visualisation");
+        status.setId("options-status");
         HBox bottom = new HBox(16, hint, status);
         bottom.setStyle("-fx-padding: 2 8 2 8;");
         root.setBottom(bottom);
@@ -99,7 +100,8 @@ public final class OptionsView implements View {
     public void toggleSelected() {
         selectedOption().ifPresent(r -> {
             SendResult result = context.console().setOption(r.robotId(), r.option().name(), !r.option().wanted());
-            status.setText((r.option().wanted() ? "off: " : "on: ") + r.option().name() + " → " + result);
+            status.setText("Switching " + r.option().name() + (r.option().wanted() ? " off" : " on") + " for robot "
+                    + r.robotId() + ": " + result.describe());
             rebuild = true;
         });
     }
@@ -135,7 +137,7 @@ public final class OptionsView implements View {
         String name = r.name() == null || r.name().isEmpty() ? "" : " " + r.name();
         String list = o.listReceived() ? o.options().size() + " options"
                 : "requesting option list (" + o.listRequests() + " requests)";
-        String held = o.lastHoldReason() == null ? "" : " · held: " + o.lastHoldReason();
+        String held = o.lastHoldReason() == null || o.lastHoldReason().isBlank() ? "" : " · waiting: " + o.lastHoldReason();
         return "Robot " + r.id() + name + (r.online() ? "" : " (offline)") + " — " + list + held;
     }
 

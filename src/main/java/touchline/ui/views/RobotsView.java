@@ -1,6 +1,5 @@
 package touchline.ui.views;
 
-import javafx.beans.property.ReadOnlyObjectWrapper;
 import javafx.scene.Node;
 import javafx.scene.control.Label;
 import javafx.scene.control.SplitPane;
@@ -28,6 +27,7 @@ public final class RobotsView implements View {
 
     private final ViewContext context;
     private final TableView<RobotSnapshot> table = new TableView<>();
+    private final TextColumns<RobotSnapshot> columns = new TextColumns<>(true);
     private final TextArea problems = new TextArea();
     private final SplitPane root = new SplitPane();
     private long lastRebuildMicros;
@@ -62,8 +62,8 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
         table.getColumns().add(column("Malformed", r -> Long.toString(r.malformed()), 72));
-        table.getColumns().add(column("Address", r -> r.address() == null ? "" : r.address().getAddress().getHostAddress()
-                + ":" + r.address().getPort(), 130));
+        table.getColumns().add(columns.column("Address", r -> r.address() == null ? "" : r.address().getHostString()
+                + ":" + r.address().getPort(), 130, "127.000.000.100:65535"));
         problems.setEditable(false);
         problems.setPrefRowCount(4);
         problems.setPromptText("Bad sources and notes appear here.");
@@ -74,11 +74,8 @@ public final class RobotsView implements View {
         root.setDividerPositions(0.75);
     }
 
-    private static TableColumn<RobotSnapshot, String> column(String title, Function<RobotSnapshot, String> value, double width) {
-        TableColumn<RobotSnapshot, String> c = new TableColumn<>(title);
-        c.setCellValueFactory(cell -> new ReadOnlyObjectWrapper<>(value.apply(cell.getValue())));
-        c.setPrefWidth(width);
-        return c;
+    private TableColumn<RobotSnapshot, String> column(String title, Function<RobotSnapshot, String> value, double width) {
+        return columns.column(title, value, width, "");
     }
 
     private static String text(String s) {

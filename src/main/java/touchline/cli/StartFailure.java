@@ -1,0 +1,54 @@
+package touchline.cli;
+
+import java.net.BindException;
+import java.nio.file.Path;
+
+/**
+ * Why a command could not start, in one sentence that says what to do, with the exit code the
+ * shell sees. Main prints the sentence alone (no stack trace): at a tournament the reader is a
+ * team member, not the developer.
+ */
+final class StartFailure extends Exception {
+
+    static final int PORT_IN_USE = 3;
+    static final int NO_DISPLAY = 4;
+    static final int ROBOT_SIDE_MISSING = 5;
+
+    private final int exitCode;
+
+    StartFailure(String sentence, int exitCode) {
+        super(sentence, null, false, false);
+        this.exitCode = exitCode;
+    }
+
+    int exitCode() {
+        return exitCode;
+    }
+
+    static StartFailure portInUse(String bind, int port) {
+        return new StartFailure("UDP port " + port + " on " + bind + " is already in use (another Touchline or a team "
+                + "tool is listening there): close that program, or start with --port and a free port, e.g. --port "
+                + (port == 65535 ? 11012 : port + 1) + ".", PORT_IN_USE);
+    }
+
+    static StartFailure noDisplay(String why) {
+        return new StartFailure("The console window needs a display, and " + why + ": start it on the desktop, over "
+                + "ssh -X, or use the headless commands (touchline listen, touchline record).", NO_DISPLAY);
+    }
+
+    static StartFailure robotSideMissing(Path program) {
+        return new StartFailure("The robot-side programs are not built (" + program + " is missing): run "
+                + "./touchline build, or point -Dtouchline.robotside.bin at the directory that holds them.",
+                ROBOT_SIDE_MISSING);
+    }
+
+    /** True when {@code t} or one of its causes says the address is taken (Netty's native bind says it in words). */
+    static boolean addressInUse(Throwable t) {
+        for (Throwable c = t; c != null; c = c.getCause()) {
+            if (c instanceof BindException || (c.getMessage() != null && c.getMessage().contains("Address already in use"))) {
+                return true;
+            }
+        }
+        return false;
+    }
+}

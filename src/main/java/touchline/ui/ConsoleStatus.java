@@ -1,0 +1,90 @@
+package touchline.ui;
+
+import touchline.app.Console;
+import touchline.app.Replay;
+import touchline.model.OptionState;
+import touchline.model.RobotSnapshot;
+import touchline.transport.TrafficCounters;
+import touchline.transport.gamecontroller.GcSender;
+
+import java.util.Optional;
+
+/**
+ * What the status bar says, read from the console without JavaFX: why the console is silent
+ * (match mode, a replay, live traffic paused), how many requests wait right now, and the
+ * packets that went out, the embedded GameController's included.
+ */
+public final class ConsoleStatus {
+
+    private final Console console;
+    private GcSender countedSender;
+    private long earlierSendersPackets;
+
+    public ConsoleStatus(Console console) {
+        this.console = console;
+    }
+
+    /** Why the console does not send or does not listen, in words; "" when it does both. */
+    public String silence() {
+        StringBuilder s = new StringBuilder();
+        String play = console.matchMode().play();
+        if (!play.isEmpty()) {
+            s.append(console.matchMode().isOverridden()
+                    ? "MATCH MODE OVERRIDDEN: " + play + ", the console sends anyway"
+                    : "Silent: match mode, " + play);
+        }
+        Optional<Replay> replay = console.replay();
+        if (replay.isPresent()) {
+            append(s, "Replay: views show the recording" + (replay.get().state().playing() ? " (playing)" : " (paused)")
+                    + "; nothing is sent for replayed robots");
+        }
+        if (!console.liveListening()) {
+            append(s, "Live traffic paused: robots on the field are not shown");
+        }
+        return s.toString();
+    }
+
+    private static void append(StringBuilder s, String part) {
+        if (!s.isEmpty()) {
+            s.append(" · ");
+        }
+        s.append(part);
+    }
+
+    /**
+     * Debug-option changes not in effect while match mode holds the console back: they go out
+     * when play stops. 0 while the console may send (they are on their way).
+     */
+    public int waitingNow() {
+        if (console.matchMode().mayConsoleSend()) {
+            return 0;
+        }
+        int waiting = 0;
+        for (RobotSnapshot r : console.robots().robots()) {
+            for (OptionState o : console.options().options(r.id()).options()) {
+                if (o.wanted() != o.enabledOnRobot()) {
+                    waiting++;
+                }
+            }
+        }
+        return waiting;
+    }
+
+    /** Every request match mode held back since the console started, retries included. */
+    public long heldTotal() {
+        return console.matchMode().heldCount();
+    }
+
+    /** Datagrams sent so far: robots (UDP transport) and GameController packets; never goes down. */
+    public long packetsOut() {
+        TrafficCounters c = console.udp().counters();
+        GcSender sender = console.gameController().map(gc -> gc.sender()).orElse(null);
+        if (sender != countedSender) {
+            if (countedSender != null) {
+                earlierSendersPackets += countedSender.packetsSent();
+            }
+            countedSender = sender;
+        }
+        return c.datagramsOut() + earlierSendersPackets + (sender == null ? 0 : sender.packetsSent());
+    }
+}

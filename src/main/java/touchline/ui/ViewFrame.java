@@ -1,0 +1,170 @@
+package touchline.ui;
+
+import javafx.scene.control.Button;
+import javafx.scene.control.Label;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.HBox;
+import javafx.scene.layout.Priority;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.util.HashSet;
+import java.util.Set;
+import java.util.function.Supplier;
+
+/**
+ * Holds one view in its tab and keeps the view's faults inside it. The frame pulse pulls the
+ * view through {@link #pull}: the refresh and then the layout of the view's nodes both run
+ * here, inside a catch, so an exception (a table cell that throws, say) is shown as a red
+ * line at the top of this view, logged once, and never reaches the scene's layout pass.
+ * JavaFX leaves every ancestor of a node whose layout threw unable to lay out again, which
+ * once froze every other view of the window while plot and field kept drawing.
+ * <p>
+ * A refresh that throws is asked again next frame, and the line goes away once it succeeds.
+ * A layout that threw leaves the view's own nodes stuck, so the view stops and offers to
+ * reopen it (a fresh instance with the same source).
+ * <p>
+ * The frame also keeps a view inside its pane: a view larger than the pane scrolls instead
+ * of covering the menu or pushing the status bar out of the window, and buttons keep their
+ * full labels rather than shrinking to "…".
+ */
+public final class ViewFrame extends BorderPane {
+
+    private static final Logger LOG = LoggerFactory.getLogger(ViewFrame.class);
+    /** How often (in frames, twice a second at 60 fps) buttons added since are given their full width. */
+    private static final int LABEL_CHECK_FRAMES = 30;
+
+    private final String title;
+    private final Supplier<View> maker;
+    private final Label fault = new Label();
+    private final Button reopen = new Button("Reopen");
+    private final HBox faultLine = new HBox(8, fault, reopen);
+    private javafx.scene.control.ScrollPane scroller;
+    private final Set<String> logged = new HashSet<>();
+    private View view;
+    private boolean stopped;
+    private boolean failing;
+
+    public ViewFrame(String title, Supplier<View> maker) {
+        this.title = title;
+        this.maker = maker;
+        getStyleClass().add("view-frame");
+        fault.getStyleClass().add("view-fault");
+        fault.setWrapText(true);
+        fault.setMaxWidth(Double.MAX_VALUE);
+        HBox.setHgrow(fault, Priority.ALWAYS);
+        faultLine.getStyleClass().add("view-fault-line");
+        reopen.getStyleClass().add("view-reopen");
+        reopen.setOnAction(e -> reopen());
+        reopen.setVisible(false);
+        reopen.setManaged(false);
+        setMinSize(0, 0);
+        javafx.scene.shape.Rectangle clip = new javafx.scene.shape.Rectangle();
+        clip.widthProperty().bind(widthProperty());
+        clip.heightProperty().bind(heightProperty());
+        setClip(clip);
+        show(maker.get());
+    }
+
+    public View view() {
+        return view;
+    }
+
+    /** The reason shown at the top of the view, or "" when the view works. */
+    public String fault() {
+        return getTop() == null ? "" : fault.getText();
+    }
+
+    /** True when the view's layout failed and it no longer updates until reopened. */
+    public boolean stopped() {
+        return stopped;
+    }
+
+    /** One frame: the view pulls from the model, then its nodes are laid out, both caught. */
+    public void pull(FrameContext frame) {
+        if (stopped) {
+            return;
+        }
+        try {
+            view.refresh(frame);
+            if (frame.frame() % LABEL_CHECK_FRAMES == 0) {
+                keepLabels(view.node()); // buttons a view adds later (robot rows, say)
+            }
+            if (failing) {
+                failing = false;
+                setTop(null);
+            }
+        } catch (RuntimeException e) {
+            failing = true;
+            report("failed to refresh", e);
+        }
+        layOutCaught();
+    }
+
+    /** A fresh instance of the view in place of the stopped one. */
+    public void reopen() {
+        view.close();
+        stopped = false;
+        failing = false;
+        logged.clear();
+        show(maker.get());
+    }
+
+    private void show(View v) {
+        view = v;
+        setTop(null);
+        reopen.setVisible(false);
+        reopen.setManaged(false);
+        keepLabels(v.node());
+        // a new scroller each time: after a layout fault its own nodes are stuck as well
+        scroller = new javafx.scene.control.ScrollPane(v.node());
+        scroller.setFitToWidth(true);
+        scroller.setFitToHeight(true);
+        scroller.getStyleClass().add("view-scroller");
+        setCenter(scroller);
+    }
+
+    /** Buttons never shrink below their label: the pane scrolls instead (nodes the view has now). */
+    private static void keepLabels(javafx.scene.Node node) {
+        if (node instanceof javafx.scene.control.ButtonBase b && b.getText() != null && !b.getText().isEmpty()
+                && b.getMinWidth() == USE_COMPUTED_SIZE) {
+            b.setMinWidth(USE_PREF_SIZE);
+        }
+        if (node instanceof javafx.scene.Parent p) {
+            for (javafx.scene.Node child : p.getChildrenUnmodifiable()) {
+                keepLabels(child);
+            }
+        }
+    }
+
+    @Override
+    protected void layoutChildren() {
+        super.layoutChildren();
+        layOutCaught(); // a resize lays the view out in the scene's pass: keep its faults here too
+    }
+
+    private void layOutCaught() {
+        if (stopped) {
+            return;
+        }
+        try {
+            scroller.layout();
+        } catch (RuntimeException e) {
+            stopped = true;
+            reopen.setVisible(true);
+            reopen.setManaged(true);
+            report("stopped updating", e);
+        }
+    }
+
+    private void report(String what, RuntimeException e) {
+        String reason = e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage());
+        fault.setText(title + " " + what + " — " + reason + (stopped ? " (the other views go on)" : ""));
+        if (getTop() != faultLine) {
+            setTop(faultLine);
+        }
+        if (logged.add(what + e)) {
+            LOG.warn("view {} {}: {}", title, what, e.toString(), e);
+        }
+    }
+}

@@ -1,0 +1,38 @@
+package touchline.ui;
+
+import javafx.scene.Node;
+import javafx.scene.Parent;
+import javafx.scene.control.ButtonBase;
+import javafx.scene.control.TextField;
+
+import java.net.DatagramSocket;
+
+/** Drives the GameController tab of a test window by program: no clicks by coordinates. */
+final class GameControllerTabDriver {
+
+    private final ConsoleWindowFixture ui;
+    private final Node tab;
+
+    GameControllerTabDriver(ConsoleWindowFixture ui) throws Exception {
+        this.ui = ui;
+        ui.fxRun(() -> ui.window.open("gamecontroller", ViewSource.NONE));
+        this.tab = ui.fx(() -> ui.window.shell().openViews().stream().filter(v -> v.spec().id().equals("gamecontroller"))
+                .findFirst().orElseThrow().view().node());
+    }
+
+    /** Starts refereeing towards {@code field} (a loopback socket standing in for the robots). */
+    void start(DatagramSocket field) throws Exception {
+        ui.fxRun(() -> {
+            ((TextField) tab.lookup("#gc-dest")).setText("127.0.0.1:" + field.getLocalPort());
+            // return packets on an OS-chosen port: tests never bind the fixed 3939
+            ((Parent) tab).lookupAll(".text-field").stream().map(n -> (TextField) n)
+                    .filter(t -> "default".equals(t.getPromptText())).findFirst().orElseThrow().setText("0");
+        });
+        press("#gc-start");
+        ui.await(30, () -> ui.console.gameController().isPresent());
+    }
+
+    void press(String id) throws Exception {
+        ui.fxRun(() -> ((ButtonBase) tab.lookup(id)).fire());
+    }
+}

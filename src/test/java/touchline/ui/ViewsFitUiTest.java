@@ -1,0 +1,128 @@
+package touchline.ui;
+
+import javafx.geometry.Bounds;
+import javafx.scene.Node;
+import javafx.scene.control.ButtonBase;
+import javafx.scene.control.Label;
+import javafx.stage.Window;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.ui.layout.LayoutNode;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+/**
+ * Every view alone in a 1280×720 window: the menu and the status bar stay whole and in the
+ * window, no button is cut to "…", and every table header reads in full.
+ */
+@Tag("ui")
+class ViewsFitUiTest {
+
+    @TempDir
+    Path layouts;
+    private ConsoleWindowFixture ui;
+
+    @BeforeEach
+    void open() throws Exception {
+        ui = new ConsoleWindowFixture(layouts);
+        ui.fxRun(() -> {
+            Window w = ui.window.scene().getWindow();
+            w.setX(0);
+            w.setY(0);
+            w.setWidth(1280);
+            w.setHeight(650); // a 1280x720 screen less a panel and the title bar
+        });
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        ui.console.stopGameController();
+        ui.close();
+        if (field != null) {
+            field.close();
+        }
+    }
+
+    private static final java.util.Set<String> HEADERS_SEEN = new java.util.concurrent.ConcurrentSkipListSet<>();
+
+    private static boolean cut(javafx.scene.control.Labeled l) {
+        return l.isVisible() && l.getText() != null && !l.getText().isEmpty() && l.getWidth() + 0.5 < l.prefWidth(-1);
+    }
+
+    private static void collect(Node n, String view, List<String> problems) {
+        if (n instanceof ButtonBase b && cut(b)) {
+            problems.add(view + ": button \"" + b.getText() + "\" cut (" + b.getWidth() + " of " + b.prefWidth(-1) + ")");
+        }
+        if (n instanceof Label name && name.getText() != null && name.getText().length() <= 12 && cut(name)) {
+            problems.add(view + ": field name \"" + name.getText() + "\" cut"); // "Robot", "Source", "RPC" …
+        }
+        if (n instanceof Label h && h.getParent() != null && h.getParent().getStyleClass().contains("column-header")) {
+            HEADERS_SEEN.add(view + "/" + h.getText());
+            if (cut(h)) {
+                problems.add(view + ": header \"" + h.getText() + "\" cut");
+            }
+        }
+        if (n instanceof javafx.scene.Parent p) {
+            for (Node c : p.getChildrenUnmodifiable()) {
+                collect(c, view, problems);
+            }
+        }
+    }
+
+    private java.net.DatagramSocket field;
+
+    private void startGameController() throws Exception {
+        field = new java.net.DatagramSocket(new java.net.InetSocketAddress("127.0.0.1", 0));
+        new GameControllerTabDriver(ui).start(field);
+    }
+
+    @Test
+    void everyViewFitsA1280By720Window() throws Exception {
+        List<String> problems = new ArrayList<>();
+        List<ViewSpec> specs = new ArrayList<>(ui.window.registry().all());
+        specs.add(null); // and the demo layout, every pane smaller
+        for (ViewSpec one : specs) {
+            ViewSpec spec = one != null ? one : new ViewSpec("demo layout", "", "", java.util.Set.of(), null);
+            ui.fxRun(() -> ui.window.shell().restore(one != null ? List.of(new LayoutNode.Leaf(0,
+                    List.of(new LayoutNode.Entry(one.id(), "")))) : DemoLayout.standard()));
+            if (one != null && one.id().equals("gamecontroller")) {
+                startGameController(); // its robot rows make it the tallest view
+            }
+            long start = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > start + 35); // past a label check of the frame
+            problems.addAll(ui.fx(() -> {
+                List<String> out = new ArrayList<>();
+                double sceneHeight = ui.window.scene().getHeight();
+                Bounds status = ui.window.status().localToScene(ui.window.status().getLayoutBounds());
+                if (status.getMaxY() > sceneHeight + 0.5 || status.getHeight() < 10) {
+                    out.add(spec.id() + ": status bar out of the window (" + status + ")");
+                }
+                Node menu = ui.window.scene().getRoot().lookup(".menu-bar");
+                Bounds menuBounds = menu.localToScene(menu.getLayoutBounds());
+                for (Shell.OpenView v : ui.window.shell().openViews()) {
+                    Node frame = v.frame();
+                    if (!FramePulse.showing(frame)) {
+                        continue;
+                    }
+                    Bounds viewBounds = frame.localToScene(frame.getLayoutBounds());
+                    if (viewBounds.getMinY() < menuBounds.getMaxY() - 0.5 || viewBounds.getMaxY() > status.getMinY() + 0.5) {
+                        out.add(spec.id() + ": view " + v.spec().id() + " " + viewBounds + " over the menu or the status bar");
+                    }
+                    collect(frame, spec.id() + "/" + v.spec().id(), out);
+                }
+                collect(ui.window.status(), spec.id() + " status bar", out);
+                return out;
+            }));
+        }
+        assertEquals(List.of(), problems);
+        org.junit.jupiter.api.Assertions.assertTrue(HEADERS_SEEN.containsAll(List.of("robots/robots/Battery", "robots/robots/Online for",
+                "network/network/Time", "network/network/Peer")), HEADERS_SEEN.toString());
+    }
+}
