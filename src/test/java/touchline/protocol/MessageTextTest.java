@@ -115,7 +115,7 @@ class MessageTextTest {
     }
 
     @Test
-    @Timeout(value = 10, unit = TimeUnit.SECONDS) // a guard only: the assertions below are the test
+    @Timeout(value = 10, unit = TimeUnit.SECONDS, threadMode = Timeout.ThreadMode.SEPARATE_THREAD) // a guard only: the assertions below are the test
     void foldingLinesIsLinearInALongRunOfSpaces() {
         String spaces = " ".repeat(160_000);
         String folded = MessageText.foldLines("a" + spaces + "b \n\t c\n");
