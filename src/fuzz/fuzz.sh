@@ -56,7 +56,7 @@ for t in "${JAVA_TARGETS[@]}"; do
     -cp "target/test-classes:target/classes:$(cat target/fuzz-classpath.txt)" \
     com.code_intelligence.jazzer.Jazzer --target_class=touchline.fuzz.JazzerEntry \
     --instrumentation_includes='touchline.**' --keep_going=50 --reproducer_path="$work" \
-    -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+    -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
     -artifact_prefix="$findings/" "$work/corpus" "$findings" >"$work/log" 2>&1 || true
   after=$(find "$findings" -type f | wc -l)
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/log" | grep -o '[0-9]*$' || echo "?")

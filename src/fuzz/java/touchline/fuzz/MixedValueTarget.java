@@ -1,5 +1,6 @@
 package touchline.fuzz;
 
+import com.google.protobuf.ByteString;
 import com.google.protobuf.InvalidProtocolBufferException;
 import touchline.proto.Nao;
 import touchline.protocol.MessageText;
@@ -26,6 +27,16 @@ final class MixedValueTarget implements FuzzTarget {
 
     @Override
     public void accept(byte[] input) {
+        reply(input);
+        if (input.length > 0) {
+            // the rest of the input nested (first byte × 8) levels deep inside the return value
+            ByteString rest = ByteString.copyFrom(input, 1, input.length - 1);
+            reply(Nao.HAWActorRPCResponse.newBuilder().setReturnval(Nao.MixedValue.newBuilder()
+                    .setUnknownFields(Samples.nestedUnknown((input[0] & 0xFF) * 8, rest))).build().toByteArray());
+        }
+    }
+
+    private void reply(byte[] input) {
         Nao.HAWActorRPCResponse reply;
         try {
             reply = Nao.HAWActorRPCResponse.parseFrom(input);

@@ -22,9 +22,18 @@ final class ParamSyntaxTarget implements FuzzTarget {
 
     @Override
     public void accept(byte[] input) {
+        String text = new String(input, StandardCharsets.UTF_8);
+        parse(text);
+        if (input.length > 0) {
+            // the text inside (first byte × 8) opening brackets, a depth mutation seldom reaches
+            parse("[".repeat((input[0] & 0xFF) * 8) + text.substring(1));
+        }
+    }
+
+    private void parse(String text) {
         Object value;
         try {
-            value = ParamSyntax.parse(new String(input, StandardCharsets.UTF_8));
+            value = ParamSyntax.parse(text);
         } catch (IllegalArgumentException e) {
             FuzzTarget.check(e.getMessage() != null && e.getMessage().contains("column"), "an error that says not where");
             return;

@@ -1,6 +1,7 @@
 package touchline.fuzz;
 
 import com.google.protobuf.ByteString;
+import com.google.protobuf.UnknownFieldSet;
 import touchline.proto.Fumanoid;
 import touchline.proto.Nao;
 
@@ -48,7 +49,29 @@ final class Samples {
         all.forEach(m -> bytes.add(m.toByteArray()));
         // a team's own extension no registered type knows: nested unknown fields
         bytes.add(new byte[]{0x08, 0x04, (byte) 0x92, 0x41, 0x06, 0x08, 0x07, 0x12, 0x02, 'o', 'k'});
+        // unknown fields nested inside a known message, a few levels deep: mutations make them deeper
+        bytes.add(message().setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTimestamp(1)
+                .setUnknownFields(nestedUnknown(12)).build()).build().toByteArray());
         return bytes;
+    }
+
+    /** Field 100 holding field 1 inside field 1 ... {@code depth} times, then two varints. */
+    static UnknownFieldSet nestedUnknown(int depth) {
+        return nestedUnknown(depth, ByteString.copyFrom(new byte[]{0x08, 0x01, 0x10, 0x02}));
+    }
+
+    /**
+     * Field 100 holding field 1 inside field 1 ... {@code depth} times, then {@code inner}.
+     * Mutating bytes rarely makes nesting deeper (every level's length must agree), so targets
+     * that render also feed each input this way, {@code depth} read from the input itself.
+     */
+    static UnknownFieldSet nestedUnknown(int depth, ByteString inner) {
+        for (int i = 0; i < depth; i++) {
+            inner = UnknownFieldSet.newBuilder().addField(1, UnknownFieldSet.Field.newBuilder()
+                    .addLengthDelimited(inner).build()).build().toByteString();
+        }
+        return UnknownFieldSet.newBuilder().addField(100, UnknownFieldSet.Field.newBuilder()
+                .addLengthDelimited(inner).build()).build();
     }
 
     private static Fumanoid.Message.Builder message() {
@@ -65,7 +88,12 @@ final class Samples {
                 .addArray(Nao.MixedValue.newBuilder().setBinary(ByteString.copyFrom(new byte[]{1, 2, 3})))
                 .addArray(Nao.MixedValue.newBuilder().addArray(Nao.MixedValue.newBuilder().setFloat(1)))
                 .build();
+        Nao.MixedValue.Builder deep = Nao.MixedValue.newBuilder().setUnknownFields(nestedUnknown(12));
+        for (int i = 0; i < 12; i++) {
+            deep = Nao.MixedValue.newBuilder().addArray(deep);
+        }
         return List.of(Nao.HAWActorRPCResponse.newBuilder().setReturnval(list).build().toByteArray(),
+                Nao.HAWActorRPCResponse.newBuilder().setReturnval(deep).build().toByteArray(),
                 Nao.HAWActorRPCResponse.newBuilder().setError("no such method").build().toByteArray(),
                 Nao.HAWActorRPCResponse.newBuilder().setReturnval(Nao.MixedValue.getDefaultInstance()).build().toByteArray());
     }
