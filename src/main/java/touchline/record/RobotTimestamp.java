@@ -61,7 +61,7 @@ final class RobotTimestamp {
             int wire = (int) (tag & 7);
             if (field == extensionNumber && wire == LENGTH_DELIMITED) {
                 long n = varint(b, at, end);
-                if (n < 0 || next + n > end) {
+                if (n < 0 || n > end - next) {
                     return fallback;
                 }
                 int start = next;
@@ -142,7 +142,9 @@ final class RobotTimestamp {
             }
             case LENGTH_DELIMITED -> {
                 long n = varint(b, at, end);
-                return n < 0 || next + n > end ? -1 : (int) (next + n);
+                // compared as "n > room": next + n overflows for a length near 2^63, and the walk
+                // went back to the start of the bytes and round forever
+                return n < 0 || n > end - next ? -1 : (int) (next + n);
             }
             case FIXED32 -> {
                 return at + 4 <= end ? at + 4 : -1;

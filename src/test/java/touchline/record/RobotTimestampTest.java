@@ -7,9 +7,12 @@ import com.google.protobuf.Descriptors.Descriptor;
 import com.google.protobuf.Descriptors.FileDescriptor;
 import com.google.protobuf.DynamicMessage;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import touchline.proto.Fumanoid;
 
 import java.util.Arrays;
+import java.util.HexFormat;
+import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -60,6 +63,18 @@ class RobotTimestampTest {
         byte[] garbage = {(byte) 0xFF, (byte) 0xFF, (byte) 0xFF, (byte) 0xFF, (byte) 0xFF, (byte) 0xFF,
                 (byte) 0xFF, (byte) 0xFF, (byte) 0xFF, (byte) 0xFF, (byte) 0xFF};
         assertEquals(FALLBACK, where.nanos(garbage, 0, garbage.length, FALLBACK));
+    }
+
+    @Test
+    @Timeout(value = 10, unit = TimeUnit.SECONDS, threadMode = Timeout.ThreadMode.SEPARATE_THREAD) // a guard: before the fix the walk never returned
+    void aLengthNear2To63EndsTheWalk() {
+        RobotTimestamp where = RobotTimestamp.of(status(5));
+        // field 1 = 1, then field 2 with a length of 2^63 - 12 (a fuzzer found it; protobuf rejects it first)
+        byte[] skipped = HexFormat.of().parseHex("080112f4ffffffffffffff7f");
+        assertEquals(FALLBACK, where.nanos(skipped, 0, skipped.length, FALLBACK));
+        // the same length on the extension itself
+        byte[] extension = HexFormat.of().parseHex("0801ba01f4ffffffffffffff7f");
+        assertEquals(FALLBACK, where.nanos(extension, 0, extension.length, FALLBACK));
     }
 
     @Test

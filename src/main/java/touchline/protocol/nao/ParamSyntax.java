@@ -12,14 +12,22 @@ import java.util.regex.Pattern;
  * {@code "42"} a quoted string; anything else is taken as a string verbatim, so
  * {@code nao call HOST ALTextToSpeech.say hello world} needs no quotes for plain text.
  * Malformed lists give a {@link IllegalArgumentException} whose message points at the column.
+ * The text may come from anywhere (a pasted file), so lists nest at most {@link #MAX_DEPTH}
+ * deep and every pattern runs in linear time.
  */
 public final class ParamSyntax {
 
-    private static final Pattern INT = Pattern.compile("[+-]?\\d+");
-    private static final Pattern FLOAT = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?[fF]?");
+    /** Lists inside lists, at most; NAOqi values nest a few levels. */
+    public static final int MAX_DEPTH = 32;
+
+    // Possessive quantifiers: "\\d+\\.?\\d*" tried every split of a long run of digits before
+    // failing (60 000 digits then 'x': 57 s).
+    private static final Pattern INT = Pattern.compile("[+-]?+\\d++");
+    private static final Pattern FLOAT = Pattern.compile("[+-]?+(\\d++(\\.\\d*+)?+|\\.\\d++)([eE][+-]?+\\d++)?+[fF]?+");
 
     private final String text;
     private int pos;
+    private int depth;
 
     private ParamSyntax(String text) {
         this.text = text;
@@ -82,11 +90,15 @@ public final class ParamSyntax {
     }
 
     private List<Object> list() {
+        if (++depth > MAX_DEPTH) {
+            throw error("lists nested deeper than " + MAX_DEPTH + " levels");
+        }
         pos++; // '['
         List<Object> out = new ArrayList<>();
         skipSpace();
         if (pos < text.length() && text.charAt(pos) == ']') {
             pos++;
+            depth--;
             return Collections.unmodifiableList(out);
         }
         while (true) {
@@ -97,6 +109,7 @@ public final class ParamSyntax {
             }
             char c = text.charAt(pos++);
             if (c == ']') {
+                depth--;
                 return Collections.unmodifiableList(out);
             }
             if (c != ',') {

@@ -1,0 +1,28 @@
+package touchline.fuzz;
+
+import java.util.List;
+
+/**
+ * One decoder of outside input under fuzzing. {@link #accept} feeds it one input and returns
+ * normally when the decoder accepts the bytes or rejects them the way it declares (its error
+ * value or exception); anything else it throws is a finding: another exception, a broken
+ * property (an {@link AssertionError}), a {@link StackOverflowError} or an out-of-memory.
+ */
+public interface FuzzTarget {
+
+    /** The name on the command line and of the corpus directory, e.g. {@code framing}. */
+    String name();
+
+    /** Feeds one input; throws only for a finding. */
+    void accept(byte[] input);
+
+    /** Well-formed inputs to start from: golden files and sample messages. */
+    List<byte[]> seeds();
+
+    /** Throws a finding unless {@code property} holds. */
+    static void check(boolean property, String what) {
+        if (!property) {
+            throw new AssertionError(what);
+        }
+    }
+}
