@@ -303,6 +303,15 @@ public final class Console implements AutoCloseable {
         return budget;
     }
 
+    /** The port the team's messages are heard on, or -1 without a budget guard. */
+    public synchronized int teamMessagePort() {
+        try {
+            return teamMessages == null ? -1 : teamMessages.localAddress().getPort();
+        } catch (IOException e) {
+            return -1;
+        }
+    }
+
     /** The budget guard, if started. */
     public synchronized Optional<TeamMessageBudget> teamMessageBudget() {
         return Optional.ofNullable(budget);

@@ -25,6 +25,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     @Mixin
     UdpOptions udp;
 
+    @Mixin
+    TeamBudgetOptions budget;
+
     @Option(names = "--demo", description = "open the demo layout and switch the demo options on for every robot")
     boolean demo;
 
@@ -37,6 +40,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         try (Console console = udp.startConsole()) {
+            budget.guard(console, udp.bind);
             String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
                     System.getProperty("os.name", ""));
             if (noDisplay != null) {

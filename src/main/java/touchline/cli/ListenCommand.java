@@ -18,6 +18,9 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
     @Mixin
     UdpOptions udp;
 
+    @Mixin
+    TeamBudgetOptions budget;
+
     @Option(names = "--quiet", description = "print only the robot table, not every message")
     boolean quiet;
 
@@ -44,7 +47,9 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 });
             }
             console.start();
-            System.err.println("listening on UDP port " + console.udp().localPort());
+            var guard = budget.guard(console, udp.bind);
+            System.err.println("listening on UDP port " + console.udp().localPort()
+                    + guard.map(g -> ", team " + g.team() + "'s messages under " + g.profile().name()).orElse(""));
             long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
             while (System.nanoTime() < deadline) {
                 if (stop.await(Math.min(TimeUnit.SECONDS.toNanos(tableEvery), Math.max(1, deadline - System.nanoTime())),
@@ -54,6 +59,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
                     monitorTable.print(out, console.gcMonitor(), System.currentTimeMillis());
+                    guard.ifPresent(g -> out.println(g.snapshot().describe()));
                     out.flush();
                 }
             }

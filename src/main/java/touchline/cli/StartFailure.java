@@ -13,6 +13,7 @@ final class StartFailure extends Exception {
     static final int PORT_IN_USE = 3;
     static final int NO_DISPLAY = 4;
     static final int ROBOT_SIDE_MISSING = 5;
+    static final int BAD_INPUT = 2;
 
     private final int exitCode;
 
@@ -29,6 +30,16 @@ final class StartFailure extends Exception {
         return new StartFailure("UDP port " + port + " on " + bind + " is already in use (another Touchline or a team "
                 + "tool is listening there): close that program, or start with --port and a free port, e.g. --port "
                 + (port == 65535 ? 11012 : port + 1) + ".", PORT_IN_USE);
+    }
+
+    /** A file or option the user gave that cannot be used; {@code sentence} says which and why. */
+    static StartFailure badInput(String sentence) {
+        return new StartFailure(sentence, BAD_INPUT);
+    }
+
+    static StartFailure teamPortInUse(String bind, int port) {
+        return new StartFailure("UDP port " + port + " on " + bind + " (the team's messages) is already in use by a "
+                + "program that does not share it: close it, or give the port with --team-port.", PORT_IN_USE);
     }
 
     static StartFailure noDisplay(String why) {

@@ -28,6 +28,8 @@ public final class StatusBar extends HBox {
     private final Tooltip silenceTip = new Tooltip();
     private final ProgressBar meter = new ProgressBar(0);
     private final Label meterText = new Label();
+    private final Label meterName = new Label("Team");
+    private final Tooltip meterTip = new Tooltip("Team traffic (IP/UDP included) against the 1 Mbit/s league limit");
     private final Label fps = new Label();
     private final Label message = new Label();
     private long lastMicros;
@@ -44,7 +46,7 @@ public final class StatusBar extends HBox {
         setId("status-bar");
         setStyle("-fx-padding: 3 8 3 8; -fx-alignment: center-left;");
         meter.setPrefWidth(120);
-        meter.setTooltip(new Tooltip("Team traffic (IP/UDP included) against the 1 Mbit/s league limit"));
+        meter.setTooltip(meterTip);
         rates.setId("status-rates");
         silence.setId("status-silence");
         silence.getStyleClass().add("status-silence");
@@ -61,7 +63,7 @@ public final class StatusBar extends HBox {
         meterText.setId("status-meter");
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
-        getChildren().addAll(silence, rates, bad, waiting, new Label("Team"), meter, meterText, message, grow, fps);
+        getChildren().addAll(silence, rates, bad, waiting, meterName, meter, meterText, message, grow, fps);
     }
 
     public double packetsPerSecond() {
@@ -101,14 +103,49 @@ public final class StatusBar extends HBox {
         lastOut = out;
         lastBytesOut = c.bytesOut();
         lastMicros = nowMicros;
+        java.util.Optional<touchline.model.TeamMessageBudget> guard = console.teamMessageBudget();
+        if (guard.isPresent()) {
+            showBudget(guard.get().snapshot());
+        } else {
+            showTraffic();
+        }
+        double p99 = latency.quantileMillis(0.99);
+        fps.setText(String.format("%.0f fps", framesPerSecond) + (Double.isNaN(p99) ? "" : String.format(" · p99 %.0f ms", p99)));
+    }
+
+    /** The active profile's limit: the team-message budget of the game (HSL 2026). */
+    private void showBudget(touchline.model.TeamMessageBudget.Snapshot s) {
+        long total = s.left() >= 0 ? s.left() + s.used() : -1;
+        double f = total > 0 ? (double) s.used() / total : 0;
+        meterName.setText("Messages");
+        meter.setProgress(Math.min(1, f));
+        boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED;
+        boolean warn = s.verdict() == touchline.model.TeamMessageBudget.Verdict.RUNS_OUT_BEFORE_THE_END;
+        meter.setStyle(alarm ? "-fx-accent: #cf222e;" : warn ? "-fx-accent: #bf8700;" : "-fx-accent: #2da44e;");
+        meterText.setText(s.describe());
+        meterText.setStyle(alarm ? "-fx-text-fill: #cf222e;" : warn ? "-fx-text-fill: #bf8700;" : "");
+        StringBuilder tip = new StringBuilder("Team " + s.team() + "'s messages under " + s.profile().name()
+                + ": budget " + s.profile().teamMessageBudget().describe() + " per game, at most "
+                + s.profile().maxTeamMessageBytes().describe() + " bytes each. Counted in READY, SET and PLAYING.");
+        for (touchline.model.TeamMessageBudget.Sender r : s.senders()) {
+            tip.append(String.format("%n%s: %d messages, %.0f/min, largest %d bytes%s", r.sender(), r.messages(),
+                    r.perMinute(), r.largest(), r.oversize() > 0 ? ", " + r.oversize() + " OVERSIZE" : ""));
+        }
+        meterTip.setText(tip.toString());
+    }
+
+    /** Without a budget guard: the team's traffic against the 1 Mbit/s limit of the leagues before 2026. */
+    private void showTraffic() {
+        meterName.setText("Team");
+        meterTip.setText("Team traffic (IP/UDP included) against the 1 Mbit/s league limit (HL 2025; start with "
+                + "--team N for the 2026 team-message budget)");
         TrafficMeter.Reading r = console.traffic().read();
         double f = r.fractionOfLimit();
         meter.setProgress(Math.min(1, f));
         meter.setStyle(f > 1 ? "-fx-accent: #cf222e;" : f > 0.8 ? "-fx-accent: #bf8700;" : "-fx-accent: #2da44e;");
         meterText.setText(String.format("%.0f kbit/s of 1 Mbit/s (%.0f %%)%s", r.teamBitsPerSecond() / 1000, f * 100,
                 r.overShare().isEmpty() ? "" : " · over share: " + r.overShare()));
-        double p99 = latency.quantileMillis(0.99);
-        fps.setText(String.format("%.0f fps", framesPerSecond) + (Double.isNaN(p99) ? "" : String.format(" · p99 %.0f ms", p99)));
+        meterText.setStyle("");
     }
 
     static String bytes(double b) {

@@ -1,6 +1,5 @@
 package touchline.app;
 
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.testing.Await;
@@ -45,7 +44,7 @@ class HslMatchModeIntegrationTest {
 
     @Test
     void theOfficialVersion20PlayingDatagramSilencesTheConsole() throws Exception {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "robot-side binaries not built");
+        touchline.testing.Requirement.robotSide("touchline-robot");
         List<Envelope> out = new CopyOnWriteArrayList<>();
         List<Envelope> heard = new CopyOnWriteArrayList<>();
         int gcPort = freeLoopbackPort();

@@ -127,7 +127,7 @@ class RecordingEndsTest {
     @Test
     void aFullDiskEndsTheRecordingAndSaysHowToRecover() throws Exception {
         Path full = Path.of("/dev/full"); // every write fails with "No space left on device"
-        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isWritable(full), "Linux /dev/full");
+        touchline.testing.Requirement.require(Files.isWritable(full), "Linux /dev/full (a full disk to write to)");
         StringWriter out = new StringWriter();
         CommandLine cli = new CommandLine(new RecordCommand());
         cli.setOut(new PrintWriter(out));

@@ -5,7 +5,6 @@ import javafx.scene.control.Label;
 import javafx.scene.control.TreeItem;
 import javafx.scene.control.TreeView;
 import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -92,7 +91,7 @@ class StatusBarUiTest {
 
     @Test
     void matchModeShowsABannerCountsWaitingRequestsAndGameControllerPacketsGoOut() throws Exception {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-robot"), "touchline-robot not built in " + RobotProcess.binDir());
+        touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(ROBOT, ui.port()).start();
              DatagramSocket field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             ui.fxRun(() -> ui.window.shell().restore(List.of()));

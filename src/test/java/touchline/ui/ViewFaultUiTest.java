@@ -9,7 +9,6 @@ import javafx.scene.control.TableView;
 import javafx.scene.control.TextField;
 import javafx.scene.control.ToggleButton;
 import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -193,8 +192,7 @@ class ViewFaultUiTest {
 
     @Test
     void aNaoWithEveryViewOpenShowsInTheNetworkConsole() throws Exception {
-        Assumptions.assumeTrue(RobotProcess.available("touchline-nao-sim"),
-                "touchline-nao-sim not built in " + RobotProcess.binDir());
+        touchline.testing.Requirement.robotSide("touchline-nao-sim");
         ui.fxRun(() -> {
             for (ViewSpec s : ui.window.registry().all()) {
                 ui.window.shell().open(s, ViewSource.NONE);
