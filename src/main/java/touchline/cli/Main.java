@@ -22,6 +22,7 @@ import picocli.CommandLine.Command;
                 ExportCommand.class,
                 GcCommand.class,
                 NaoCommand.class,
+                ServeCommand.class,
         })
 public final class Main implements Runnable {
 
