@@ -162,6 +162,14 @@ final class FoxgloveTestClient implements AutoCloseable {
         ws.sendText(text, true).join();
     }
 
+    void sendPart(String text, boolean last) {
+        ws.sendText(text, last).join();
+    }
+
+    void sendBinary(ByteBuffer bytes) {
+        ws.sendBinary(bytes, true).join();
+    }
+
     void subscribe(int subscriptionId, int channelId) {
         send(new JSONObject().put("op", "subscribe").put("subscriptions",
                 new JSONArray().put(new JSONObject().put("id", subscriptionId).put("channelId", channelId))).toString());
