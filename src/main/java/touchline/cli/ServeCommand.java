@@ -99,6 +99,7 @@ final class ServeCommand implements Callable<Integer> {
                 err.println("touchline serve: cannot serve on " + bind + ":" + port + ": " + e.getMessage());
                 return 1;
             }
+            server.serveMatchMode(console.matchMode());
             try (server; AutoCloseable served = console.bus().subscribe(server)) {
                 console.start();
                 if (record != null) {

@@ -8,6 +8,8 @@ import org.json.JSONArray;
 import org.json.JSONException;
 import org.json.JSONObject;
 
+import touchline.transport.MicrosClock;
+
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -23,10 +25,12 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
 
     private final ChannelTable channels;
     private final AtomicLong badRequests;
+    private final MicrosClock clock;
 
-    ClientOps(ChannelTable channels, AtomicLong badRequests) {
+    ClientOps(ChannelTable channels, AtomicLong badRequests, MicrosClock clock) {
         this.channels = channels;
         this.badRequests = badRequests;
+        this.clock = clock;
     }
 
     @Override
@@ -77,7 +81,8 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
                 refuse(viewer, "unknown channel " + channelId);
                 continue;
             }
-            viewer.subscribe(id.intValue(), channel.get()).ifPresent(reason -> refuse(viewer, reason));
+            viewer.subscribe(id.intValue(), channel.get()).ifPresentOrElse(reason -> refuse(viewer, reason),
+                    () -> viewer.catchUp(id.intValue(), channel.get(), clock.nowMicros() * 1000));
         }
     }
 

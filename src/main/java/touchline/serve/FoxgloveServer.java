@@ -49,10 +49,12 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final FoxgloveFrames frames;
     private final AtomicLong refused = new AtomicLong();
     private final AtomicLong badRequests = new AtomicLong();
+    private final AtomicLong stateFailures = new AtomicLong();
     private final AccessToken token;
     private final EventLoopGroup group;
     private final Channel server;
     private final ScheduledFuture<?> timeTicker;
+    private final java.util.List<ServedState> states = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     /**
      * Binds and starts serving. Throws IllegalArgumentException (a message for the user) when
@@ -84,7 +86,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
             group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
             throw e;
         }
-        this.timeTicker = group.next().scheduleAtFixedRate(this::sendTime, config.timeEveryMillis(),
+        this.timeTicker = group.next().scheduleAtFixedRate(this::tick, config.timeEveryMillis(),
                 config.timeEveryMillis(), TimeUnit.MILLISECONDS);
     }
 
@@ -102,7 +104,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                 .build()));
         p.addLast(new WebSocketFrameAggregator(config.maxFrameBytes()));
         p.addLast(new ViewerSession(channels, viewers, frames, config.queueLimit()));
-        p.addLast(new ClientOps(channels, badRequests));
+        p.addLast(new ClientOps(channels, badRequests, clock));
     }
 
     @Override
@@ -125,10 +127,25 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         }
     }
 
-    private void sendTime() {
+    /** Serves match mode as the JSON channel {@code /touchline/matchMode}. */
+    public void serveMatchMode(touchline.game.MatchMode matchMode) {
+        states.add(new ServedState(new MatchModeState(matchMode), channels));
+    }
+
+    /** On the event loop, every {@link ServeConfig#timeEveryMillis()}: the server time and changed states. */
+    private void tick() {
         long now = clock.nowMicros() * 1000;
         for (Viewer v : viewers.all()) {
             v.time(now);
+        }
+        for (ServedState s : states) {
+            try {
+                s.poll(now);
+            } catch (RuntimeException e) {
+                if (stateFailures.getAndIncrement() == 0) { // every tick would repeat it
+                    org.slf4j.LoggerFactory.getLogger(FoxgloveServer.class).warn("serving a state failed: {}", e.toString());
+                }
+            }
         }
     }
 

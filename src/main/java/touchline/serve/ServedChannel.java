@@ -19,6 +19,7 @@ final class ServedChannel {
     private final String schemaEncoding;
     private final ChannelSchema payloads; // null for the console's JSON state channels
     private volatile Subscription[] subscribers = new Subscription[0];
+    private volatile byte[] latest; // a state channel's current value, sent to each new subscriber
 
     ServedChannel(int id, String topic, String encoding, String schemaName, String schema, String schemaEncoding,
                   ChannelSchema payloads) {
@@ -42,6 +43,15 @@ final class ServedChannel {
     /** How this channel's envelopes become payloads; null for a state channel. */
     ChannelSchema payloads() {
         return payloads;
+    }
+
+    /** A state channel's current value, or null (message channels keep nothing). */
+    byte[] latest() {
+        return latest;
+    }
+
+    void setLatest(byte[] value) {
+        latest = value;
     }
 
     Subscription[] subscribers() {

@@ -87,6 +87,15 @@ final class Viewer {
         return Optional.empty();
     }
 
+    /** Sends a state channel's current value to a new subscription, so a viewer need not wait for a change. */
+    void catchUp(int id, ServedChannel c, long timeNanos) {
+        byte[] value = c.latest();
+        Subscription s = subscriptions.get(id);
+        if (value != null && s != null) {
+            offer(s, timeNanos, value);
+        }
+    }
+
     /** Ends subscription {@code id}; the reason when there is none. */
     Optional<String> unsubscribe(int id) {
         Subscription s = subscriptions.remove(id);

@@ -5,7 +5,10 @@ import org.json.JSONObject;
 import org.junit.jupiter.api.Test;
 import touchline.testing.Await;
 
+import touchline.proto.Fumanoid;
+
 import java.net.URI;
+import java.nio.charset.StandardCharsets;
 import java.net.http.HttpClient;
 import java.net.http.WebSocketHandshakeException;
 import java.util.List;
@@ -152,6 +155,28 @@ class FoxgloveServerTest {
             assertTrue(slow.data().size() < published, "the stalled viewer's stale messages were dropped");
             assertTrue(field.server().stats().dropped() >= published - slow.data().size(),
                     "every message the slow viewer did not get is counted as dropped");
+        }
+    }
+
+    @Test
+    void matchModeIsAJsonChannelANewSubscriberGetsAtOnceAndEveryChangeAfter() throws Exception {
+        try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
+            JSONObject channel = viewer.awaitChannel("/touchline/matchMode");
+            assertEquals("json", channel.getString("encoding"));
+            assertEquals("jsonschema", channel.getString("schemaEncoding"));
+            assertEquals("object", new JSONObject(channel.getString("schema")).getString("type"));
+            viewer.subscribe(3, channel.getInt("id"));
+            Await.until("the current match mode", 5000, () -> !viewer.dataOf(3).isEmpty());
+            JSONObject first = new JSONObject(new String(viewer.dataOf(3).get(0).payload(), StandardCharsets.UTF_8));
+            assertTrue(first.getBoolean("mayConsoleSend"));
+            assertFalse(first.getBoolean("playIsOn"));
+
+            field.publish(Fumanoid.Message.newBuilder().setRobotID(2).setExtension(Fumanoid.status,
+                    Fumanoid.Status.newBuilder().setGameState("PLAYING").build()).build(), "status");
+            Await.until("match mode after the robot reports PLAYING", 5000, () -> viewer.dataOf(3).stream()
+                    .map(d -> new JSONObject(new String(d.payload(), StandardCharsets.UTF_8)))
+                    .anyMatch(o -> o.getBoolean("playIsOn") && !o.getBoolean("mayConsoleSend")
+                            && o.getString("notice").contains("PLAYING")));
         }
     }
 

@@ -32,6 +32,7 @@ final class ServedField implements AutoCloseable {
         console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
         server = new FoxgloveServer(config, console.kinds(), console.clock());
+        server.serveMatchMode(console.matchMode());
         subscription = console.bus().subscribe(server);
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
     }
