@@ -64,8 +64,12 @@ final class ChannelTable {
         return c;
     }
 
-    /** A channel of the console's own state (JSON), e.g. match mode. */
-    synchronized ServedChannel addState(String topic, String schemaName, String jsonSchema) {
+    /** A JSON channel (a console state, or a standard Foxglove type); null when the table is full. */
+    synchronized ServedChannel addJson(String topic, String schemaName, String jsonSchema) {
+        if (byId.size() >= maxChannels) {
+            refused.incrementAndGet();
+            return null;
+        }
         ServedChannel c = new ServedChannel(nextId++, topic, "json", schemaName, jsonSchema, "jsonschema", null);
         publish(c);
         return c;

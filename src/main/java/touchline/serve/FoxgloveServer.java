@@ -46,6 +46,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final MicrosClock clock;
     private final ViewerTable viewers = new ViewerTable();
     private final ChannelTable channels;
+    private final DebugTextLog logs;
     private final FoxgloveFrames frames;
     private final AtomicLong refused = new AtomicLong();
     private final AtomicLong badRequests = new AtomicLong();
@@ -69,6 +70,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.clock = clock;
         this.token = config.token() == null || config.token().isEmpty() ? null : new AccessToken(config.token());
         this.channels = new ChannelTable(kinds, viewers, MAX_CHANNELS);
+        this.logs = new DebugTextLog(channels);
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
         this.group = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
         try {
@@ -112,6 +114,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         if (e.message() == null || e.error() != null) {
             return;
         }
+        logs.accept(e);
         ServedChannel c = channels.find(e);
         if (c == null) {
             return;

@@ -11,13 +11,13 @@ final class ServedState {
 
     ServedState(StateSource source, ChannelTable channels) {
         this.source = source;
-        this.channel = channels.addState(source.topic(), source.schemaName(), source.jsonSchema());
+        this.channel = channels.addJson(source.topic(), source.schemaName(), source.jsonSchema());
     }
 
     /** On the server's tick. */
     void poll(long timeNanos) {
         String now = source.now().toString();
-        if (now.equals(last)) {
+        if (channel == null || now.equals(last)) {
             return;
         }
         last = now;

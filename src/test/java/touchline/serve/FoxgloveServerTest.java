@@ -181,6 +181,27 @@ class FoxgloveServerTest {
     }
 
     @Test
+    void debugTextIsAlsoAFoxgloveLogPerRobot() throws Exception {
+        try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
+            field.send(ServedField.text(5, "demo.text", "hello"));
+            JSONObject log = viewer.awaitChannel("/robot/5/log");
+            assertEquals("foxglove.Log", log.getString("schemaName"));
+            assertEquals("json", log.getString("encoding"));
+            viewer.subscribe(1, log.getInt("id"));
+            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            field.send(ServedField.text(5, "demo.text", "ball seen at 1200 mm"));
+            Await.until("the log line", 5000, () -> !viewer.dataOf(1).isEmpty());
+            JSONObject line = new JSONObject(new String(viewer.dataOf(1).get(0).payload(), StandardCharsets.UTF_8));
+            assertEquals("ball seen at 1200 mm", line.getString("message"));
+            assertEquals("demo.text", line.getString("name"));
+            assertEquals(2, line.getInt("level"));
+            long nanos = viewer.dataOf(1).get(0).timeNanos();
+            assertEquals(nanos / 1_000_000_000L, line.getJSONObject("timestamp").getLong("sec"));
+            assertEquals(nanos % 1_000_000_000L, line.getJSONObject("timestamp").getLong("nsec"));
+        }
+    }
+
+    @Test
     void withATokenOnlyAViewerThatPresentsItMayWatch() throws Exception {
         String token = AccessToken.generate(new java.security.SecureRandom());
         try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withToken(token))) {
