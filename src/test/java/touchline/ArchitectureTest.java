@@ -47,6 +47,18 @@ class ArchitectureTest {
     }
 
     @Test
+    void theLiveServerIsAFaceOverTheStream() {
+        noClasses().that().resideInAPackage("touchline.serve..")
+                .should().dependOnClassesThat().resideInAnyPackage("touchline.model..", "touchline.app..",
+                        "touchline.cli..", "touchline.ui..")
+                .check(classes);
+        noClasses().that().resideInAnyPackage("touchline.protocol..", "touchline.transport..", "touchline.model..",
+                        "touchline.record..", "touchline.game..")
+                .should().dependOnClassesThat().resideInAPackage("touchline.serve..")
+                .check(classes);
+    }
+
+    @Test
     void uiDoesNotTalkToSocketsDirectly() {
         noClasses().that().resideInAPackage("touchline.ui..")
                 .should().dependOnClassesThat().resideInAnyPackage("io.netty..", "org.zeromq..")
@@ -57,7 +69,7 @@ class ArchitectureTest {
     @Test
     void modelAndBelowNeverTouchJavaFx() {
         noClasses().that().resideInAnyPackage("touchline.protocol..", "touchline.transport..", "touchline.model..",
-                        "touchline.record..", "touchline.app..", "touchline.game..")
+                        "touchline.record..", "touchline.app..", "touchline.game..", "touchline.serve..")
                 .should().dependOnClassesThat().resideInAnyPackage("javafx..")
                 .check(classes);
     }

@@ -2,6 +2,7 @@ package touchline.serve;
 
 import com.google.protobuf.DynamicMessage;
 import org.json.JSONObject;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.testing.Await;
 
@@ -112,6 +113,7 @@ class FoxgloveServerTest {
         }
     }
 
+    @Tag("slow")
     @Test
     void aViewerThatStopsReadingCostsTheOtherNothingAndGetsTheNewestWhenItReadsAgain() throws Exception {
         try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withQueueLimit(64));
