@@ -12,6 +12,7 @@ import picocli.CommandLine.Command;
                 touchline.record.bench.RecordBenchmark.class,
                 NaoBenchCommand.class,
                 GcBenchCommand.class,
+                touchline.serve.bench.ServeBenchmark.class,
         })
 final class BenchCommand implements Runnable {
 
