@@ -59,6 +59,39 @@ class FoxgloveServerTest {
     }
 
     @Test
+    void aTeamsOwnTypeLoadedAtRunTimeIsServedWithItsOwnSchema() throws Exception {
+        var team = com.google.protobuf.DescriptorProtos.FileDescriptorProto.newBuilder().setName("team.proto")
+                .setPackage("team").addDependency("fumanoid.proto")
+                .addMessageType(com.google.protobuf.DescriptorProtos.DescriptorProto.newBuilder().setName("TeamBall")
+                        .addField(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.newBuilder().setName("x")
+                                .setNumber(1).setType(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.Type.TYPE_FLOAT)
+                                .setLabel(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.Label.LABEL_OPTIONAL)))
+                .addExtension(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.newBuilder().setName("teamBall")
+                        .setNumber(1042).setExtendee(".fumanoid.Message").setTypeName(".team.TeamBall")
+                        .setType(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.Type.TYPE_MESSAGE)
+                        .setLabel(com.google.protobuf.DescriptorProtos.FieldDescriptorProto.Label.LABEL_OPTIONAL))
+                .build();
+        var file = com.google.protobuf.Descriptors.FileDescriptor.buildFrom(team,
+                new com.google.protobuf.Descriptors.FileDescriptor[]{Fumanoid.getDescriptor()});
+        var ballType = file.findMessageTypeByName("TeamBall");
+        byte[] ball = DynamicMessage.newBuilder(ballType).setField(ballType.findFieldByName("x"), 1.5f).build().toByteArray();
+        Fumanoid.Message fromRobot = Fumanoid.Message.newBuilder().setRobotID(6).setUnknownFields(
+                com.google.protobuf.UnknownFieldSet.newBuilder().addField(1042, com.google.protobuf.UnknownFieldSet.Field
+                        .newBuilder().addLengthDelimited(com.google.protobuf.ByteString.copyFrom(ball)).build()).build()).build();
+        try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
+            assertTrue(field.console().kinds().add(file).isEmpty());
+            field.send(fromRobot);
+            JSONObject channel = viewer.awaitChannel("/robot/6/teamBall");
+            assertEquals("team.TeamBall", channel.getString("schemaName"));
+            viewer.subscribe(1, channel.getInt("id"));
+            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            field.send(fromRobot);
+            Await.until("the team's ball", 5000, () -> !viewer.dataOf(1).isEmpty());
+            assertEquals("1.5", field(FoxgloveTestClient.decode(channel, viewer.dataOf(1).get(0).payload()), "x"));
+        }
+    }
+
+    @Test
     void theNewerSubprotocolNameIsAcceptedToo() throws Exception {
         try (ServedField field = new ServedField();
              FoxgloveTestClient viewer = new FoxgloveTestClient(URI.create("ws://127.0.0.1:" + field.server().port() + "/"),
