@@ -41,6 +41,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     /** The subprotocols accepted, the spec's name first (the handshake picks the client's first match). */
     public static final String SUBPROTOCOLS = "foxglove.websocket.v1,foxglove.sdk.v1";
     static final int MAX_CHANNELS = 4096;
+    static final int UPGRADE_SECONDS = 10;
 
     private final ServeConfig config;
     private final MicrosClock clock;
@@ -93,6 +94,8 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     }
 
     private void pipeline(ChannelPipeline p) {
+        // a connection that never completes its upgrade is closed (ViewerSession removes this once it has)
+        p.addLast(ViewerSession.UPGRADE_TIMEOUT, new io.netty.handler.timeout.ReadTimeoutHandler(UPGRADE_SECONDS));
         p.addLast(new HttpServerCodec());
         p.addLast(new HttpObjectAggregator(8192));
         if (token != null) {

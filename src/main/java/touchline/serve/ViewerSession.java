@@ -13,6 +13,7 @@ import io.netty.util.AttributeKey;
 final class ViewerSession extends ChannelInboundHandlerAdapter {
 
     static final AttributeKey<Viewer> VIEWER = AttributeKey.valueOf("touchline.viewer");
+    static final String UPGRADE_TIMEOUT = "upgrade-timeout";
 
     private final ChannelTable channels;
     private final ViewerTable viewers;
@@ -29,6 +30,10 @@ final class ViewerSession extends ChannelInboundHandlerAdapter {
     @Override
     public void userEventTriggered(ChannelHandlerContext ctx, Object evt) throws Exception {
         if (evt instanceof WebSocketServerProtocolHandler.HandshakeComplete) {
+            // a viewer may read without ever sending anything
+            if (ctx.pipeline().get(UPGRADE_TIMEOUT) != null) {
+                ctx.pipeline().remove(UPGRADE_TIMEOUT);
+            }
             Viewer v = new Viewer(ctx.channel(), frames, queueLimit);
             ctx.channel().attr(VIEWER).set(v);
             channels.welcome(v);

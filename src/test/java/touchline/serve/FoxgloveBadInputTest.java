@@ -150,6 +150,16 @@ class FoxgloveBadInputTest {
         }
     }
 
+    @Tag("slow")
+    @Test
+    void aConnectionThatNeverAsksForTheUpgradeIsClosed() throws Exception {
+        try (ServedField field = new ServedField(); Socket s = new Socket()) {
+            s.connect(new InetSocketAddress("127.0.0.1", field.server().port()), 30_000);
+            s.setSoTimeout(60_000);
+            assertEquals(-1, s.getInputStream().read(), "closed by the server after its upgrade timeout");
+        }
+    }
+
     @Test
     void aViewerThatSendsWithoutReadingGetsNoQueueOfStatuses() throws Exception {
         try (ServedField field = new ServedField();
