@@ -48,6 +48,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final ViewerTable viewers = new ViewerTable();
     private final ChannelTable channels;
     private final DebugTextLog logs;
+    private final GameControllerState gameController;
     private final FoxgloveFrames frames;
     private final AtomicLong refused = new AtomicLong();
     private final AtomicLong badRequests = new AtomicLong();
@@ -72,6 +73,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.token = config.token() == null || config.token().isEmpty() ? null : new AccessToken(config.token());
         this.channels = new ChannelTable(kinds, viewers, MAX_CHANNELS);
         this.logs = new DebugTextLog(channels);
+        this.gameController = new GameControllerState(channels);
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
         this.group = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
         try {
@@ -114,6 +116,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     @Override
     public void accept(Envelope e) {
+        gameController.accept(e);
         if (e.message() == null || e.error() != null) {
             return;
         }

@@ -35,7 +35,7 @@ class ServeCommandTest {
                 "--seconds", "1", "--stats-every", "1");
         assertEquals(0, run.exit(), run.err());
         assertTrue(run.out().matches("(?s).*ws://127\\.0\\.0\\.1:\\d+/\\?token=s3cret\\n.*"), run.out());
-        assertTrue(run.out().contains("viewers 0, subscriptions 0, channels 1"), run.out()); // match mode's channel
+        assertTrue(run.out().contains("viewers 0, subscriptions 0, channels 2"), run.out()); // /gc/state, /touchline/matchMode
     }
 
     @Test

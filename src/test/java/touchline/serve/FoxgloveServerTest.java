@@ -216,6 +216,28 @@ class FoxgloveServerTest {
     }
 
     @Test
+    void theGameControllersStateIsAJsonChannel() throws Exception {
+        try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
+            JSONObject channel = viewer.awaitChannel("/gc/state");
+            assertEquals("json", channel.getString("encoding"));
+            field.publishGameState("hl12/04-playing.bin");
+            viewer.subscribe(1, channel.getInt("id"));
+            Await.until("the last game state at once", 5000, () -> !viewer.dataOf(1).isEmpty());
+            JSONObject playing = new JSONObject(new String(viewer.dataOf(1).get(0).payload(), StandardCharsets.UTF_8));
+            assertEquals("PLAYING", playing.getString("state"));
+            assertEquals("gc.hl12", playing.getString("format"));
+
+            field.publishGameState("hl12/06-goal-team13.bin");
+            Await.until("the state after the goal", 5000, () -> viewer.dataOf(1).size() >= 2);
+            JSONObject goal = new JSONObject(new String(viewer.dataOf(1).get(1).payload(), StandardCharsets.UTF_8));
+            assertEquals("READY", goal.getString("state"));
+            JSONObject team13 = goal.getJSONArray("teams").getJSONObject(0);
+            assertEquals(13, team13.getInt("teamNumber"));
+            assertEquals(1, team13.getInt("score"));
+        }
+    }
+
+    @Test
     void debugTextIsAlsoAFoxgloveLogPerRobot() throws Exception {
         try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
             field.send(ServedField.text(5, "demo.text", "hello"));

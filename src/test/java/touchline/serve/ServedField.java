@@ -72,6 +72,16 @@ final class ServedField implements AutoCloseable {
                 frames.encode(Framing.LENGTH_PREFIX, m.toByteArray()), null));
     }
 
+    /** A GameController packet from the golden files (e.g. {@code hl12/04-playing.bin}) into the stream, as heard on 3838. */
+    void publishGameState(String golden) throws Exception {
+        byte[] packet;
+        try (var in = ServedField.class.getResourceAsStream("/golden/gamecontroller/" + golden)) {
+            packet = in.readAllBytes();
+        }
+        console.bus().accept(new Envelope(console.clock().nowMicros(), Direction.IN, Channel.GAMECONTROLLER,
+                new InetSocketAddress("127.0.0.1", 3838), Envelope.NO_ROBOT, "gc.hl12", null, packet, null));
+    }
+
     @Override
     public void close() throws Exception {
         subscription.close();
