@@ -110,7 +110,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                         .allowExtensions(false).build())
                 .build()));
         p.addLast(new WebSocketFrameAggregator(config.maxFrameBytes()));
-        p.addLast(new ViewerSession(channels, viewers, frames, config.queueLimit()));
+        p.addLast(new ViewerSession(channels, viewers, frames, config, refused));
         p.addLast(new ClientOps(channels, badRequests, clock));
     }
 

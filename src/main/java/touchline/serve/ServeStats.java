@@ -8,7 +8,7 @@ package touchline.serve;
  * @param channels       channels advertised
  * @param sent           messages sent to viewers since the start
  * @param dropped        messages given up for viewers that fell behind (newer ones of the same channel went out)
- * @param refused        connections refused (no or wrong token)
+ * @param refused        connections refused (no or wrong token, or too many viewers)
  * @param badRequests    client messages answered with an error status (garbage, unknown or write ops)
  * @param channelsRefused new channels not served because the table was full
  */

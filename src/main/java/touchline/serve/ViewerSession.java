@@ -18,13 +18,16 @@ final class ViewerSession extends ChannelInboundHandlerAdapter {
     private final ChannelTable channels;
     private final ViewerTable viewers;
     private final FoxgloveFrames frames;
-    private final int queueLimit;
+    private final ServeConfig config;
+    private final java.util.concurrent.atomic.AtomicLong refused;
 
-    ViewerSession(ChannelTable channels, ViewerTable viewers, FoxgloveFrames frames, int queueLimit) {
+    ViewerSession(ChannelTable channels, ViewerTable viewers, FoxgloveFrames frames, ServeConfig config,
+                  java.util.concurrent.atomic.AtomicLong refused) {
         this.channels = channels;
         this.viewers = viewers;
         this.frames = frames;
-        this.queueLimit = queueLimit;
+        this.config = config;
+        this.refused = refused;
     }
 
     @Override
@@ -34,7 +37,13 @@ final class ViewerSession extends ChannelInboundHandlerAdapter {
             if (ctx.pipeline().get(UPGRADE_TIMEOUT) != null) {
                 ctx.pipeline().remove(UPGRADE_TIMEOUT);
             }
-            Viewer v = new Viewer(ctx.channel(), frames, queueLimit);
+            if (viewers.size() >= config.maxViewers()) {
+                refused.incrementAndGet();
+                ctx.writeAndFlush(frames.status(FoxgloveFrames.STATUS_ERROR, "too many viewers (" + config.maxViewers()
+                        + " at once); try again later")).addListener(io.netty.channel.ChannelFutureListener.CLOSE);
+                return;
+            }
+            Viewer v = new Viewer(ctx.channel(), frames, config.queueLimit());
             ctx.channel().attr(VIEWER).set(v);
             channels.welcome(v);
         }

@@ -150,6 +150,23 @@ class FoxgloveBadInputTest {
         }
     }
 
+    @Test
+    void oneViewerTooManyIsToldSoAndDisconnectedWhileTheOthersWatchOn() throws Exception {
+        try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withMaxViewers(2));
+             FoxgloveTestClient bystander = new FoxgloveTestClient(field.server().port());
+             FoxgloveTestClient second = new FoxgloveTestClient(field.server().port())) {
+            int before = bystander(field, bystander);
+            second.serverInfo();
+            try (FoxgloveTestClient third = new FoxgloveTestClient(field.server().port())) {
+                assertTrue(lastStatus(third, 1).contains("too many viewers"));
+                Await.until("the third is disconnected", 5000, third::closed);
+                assertEquals(1, field.server().stats().refused());
+            }
+            assertEquals(2, field.server().stats().viewers());
+            stillReceives(field, bystander, before);
+        }
+    }
+
     @Tag("slow")
     @Test
     void aConnectionThatNeverAsksForTheUpgradeIsClosed() throws Exception {
@@ -160,6 +177,7 @@ class FoxgloveBadInputTest {
         }
     }
 
+    @Tag("slow")
     @Test
     void aViewerThatSendsWithoutReadingGetsNoQueueOfStatuses() throws Exception {
         try (ServedField field = new ServedField();
