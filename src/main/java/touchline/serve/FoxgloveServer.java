@@ -61,7 +61,8 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     /**
      * Binds and starts serving. Throws IllegalArgumentException (a message for the user) when
-     * the address is not loopback and no token is given.
+     * the address is not loopback and no token is given, and the bind's own exception (e.g. a
+     * {@link java.net.BindException} for a port in use) when the port cannot be had.
      */
     public FoxgloveServer(ServeConfig config, MessageKinds kinds, MicrosClock clock) throws InterruptedException {
         if (!config.loopbackOnly() && (config.token() == null || config.token().isEmpty())) {
@@ -87,7 +88,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                         }
                     })
                     .bind(new InetSocketAddress(config.bindAddress(), config.port())).sync().channel();
-        } catch (RuntimeException | InterruptedException e) {
+        } catch (Exception e) { // also the BindException Netty throws without declaring it
             group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
             throw e;
         }
