@@ -18,8 +18,8 @@ import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 class ArchitectureTest {
 
     private static final String[] LAYERS = {"touchline.proto..", "touchline.protocol..", "touchline.game..",
-            "touchline.transport..", "touchline.model..", "touchline.record..", "touchline.app..", "touchline.ui..",
-            "touchline.cli.."};
+            "touchline.transport..", "touchline.model..", "touchline.record..", "touchline.app..", "touchline.serve..",
+            "touchline.ui..", "touchline.cli.."};
 
     // Only our compiled classes: scanning every jar on the class path for the package is slow.
     private final JavaClasses classes = new ClassFileImporter()
@@ -41,15 +41,18 @@ class ArchitectureTest {
                 .layer("Model").definedBy("touchline.model..")
                 .layer("Record").definedBy("touchline.record..")
                 .layer("App").definedBy("touchline.app..")
+                .layer("Serve").definedBy("touchline.serve..")
                 .layer("Faces").definedBy("touchline.ui..", "touchline.cli..")
                 .whereLayer("Faces").mayNotBeAccessedByAnyLayer()
                 .whereLayer("App").mayOnlyBeAccessedByLayers("Faces")
-                .whereLayer("Record").mayOnlyBeAccessedByLayers("App", "Faces")
+                .whereLayer("Serve").mayOnlyBeAccessedByLayers("Faces")
+                .whereLayer("Record").mayOnlyBeAccessedByLayers("App", "Serve", "Faces")
                 .whereLayer("Model").mayOnlyBeAccessedByLayers("App", "Faces")
                 // the embedded GameController's runtime still lives in transport.gamecontroller
-                .whereLayer("Transport").mayOnlyBeAccessedByLayers("Model", "Record", "App", "Faces")
-                .whereLayer("Game").mayOnlyBeAccessedByLayers("Transport", "App", "Faces")
-                .whereLayer("Protocol").mayOnlyBeAccessedByLayers("Game", "Transport", "Model", "Record", "App", "Faces")
+                .whereLayer("Transport").mayOnlyBeAccessedByLayers("Model", "Record", "App", "Serve", "Faces")
+                .whereLayer("Game").mayOnlyBeAccessedByLayers("Transport", "App", "Serve", "Faces")
+                .whereLayer("Protocol").mayOnlyBeAccessedByLayers("Game", "Transport", "Model", "Record", "App", "Serve",
+                        "Faces")
                 .check(classes);
     }
 
@@ -121,6 +124,18 @@ class ArchitectureTest {
     }
 
     @Test
+    void theLiveServerIsAFaceOverTheStream() {
+        noClasses().that().resideInAPackage("touchline.serve..")
+                .should().dependOnClassesThat().resideInAnyPackage("touchline.model..", "touchline.app..",
+                        "touchline.cli..", "touchline.ui..")
+                .check(classes);
+        noClasses().that().resideInAnyPackage("touchline.protocol..", "touchline.transport..", "touchline.model..",
+                        "touchline.record..", "touchline.game..")
+                .should().dependOnClassesThat().resideInAPackage("touchline.serve..")
+                .check(classes);
+    }
+
+    @Test
     void uiDoesNotTalkToSocketsDirectly() {
         noClasses().that().resideInAPackage("touchline.ui..")
                 .should().dependOnClassesThat().resideInAnyPackage("io.netty..", "org.zeromq..")
@@ -131,7 +146,7 @@ class ArchitectureTest {
     @Test
     void modelAndBelowNeverTouchJavaFx() {
         noClasses().that().resideInAnyPackage("touchline.protocol..", "touchline.transport..", "touchline.model..",
-                        "touchline.record..", "touchline.app..", "touchline.game..")
+                        "touchline.record..", "touchline.app..", "touchline.game..", "touchline.serve..")
                 .should().dependOnClassesThat().resideInAnyPackage("javafx..")
                 .check(classes);
     }

@@ -16,6 +16,7 @@ import picocli.CommandLine.Command;
                 touchline.bench.record.RecordBenchmark.class,
                 NaoBenchCommand.class,
                 GcBenchCommand.class,
+                touchline.bench.serve.ServeBenchmark.class,
         })
 public final class BenchCommand implements Runnable {
 

@@ -21,6 +21,7 @@ import picocli.CommandLine.Command;
                 ExportCommand.class,
                 GcCommand.class,
                 NaoCommand.class,
+                ServeCommand.class,
         })
 public final class Main implements Runnable {
 

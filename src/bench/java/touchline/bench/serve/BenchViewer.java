@@ -1,0 +1,107 @@
+package touchline.bench.serve;
+
+import org.json.JSONArray;
+import org.json.JSONObject;
+
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.WebSocket;
+import java.nio.ByteBuffer;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.LongAdder;
+
+/**
+ * A viewer for the benchmark (the JDK's WebSocket client): subscribes to every channel as it
+ * is advertised, counts the message frames it receives and how long each took from being
+ * published (the frame's receive timestamp) to arriving; {@link #stopReading} makes it one that
+ * stops reading.
+ */
+final class BenchViewer implements AutoCloseable {
+
+    private final LongAdder messages = new LongAdder();
+    private final AtomicInteger nextSubscription = new AtomicInteger();
+    private final WebSocket ws;
+    private final java.util.List<Long> latencies = new java.util.ArrayList<>();
+    private final touchline.transport.MicrosClock clock;
+    private volatile boolean reading = true;
+
+    BenchViewer(int port, touchline.transport.MicrosClock clock) throws Exception {
+        this.clock = clock;
+        ws = HttpClient.newHttpClient().newWebSocketBuilder().subprotocols("foxglove.websocket.v1")
+                .buildAsync(URI.create("ws://127.0.0.1:" + port + "/"), new WebSocket.Listener() {
+                    private final StringBuilder text = new StringBuilder();
+
+                    @Override
+                    public CompletionStage<?> onText(WebSocket w, CharSequence part, boolean last) {
+                        text.append(part);
+                        if (last) {
+                            subscribeAll(w, new JSONObject(text.toString()));
+                            text.setLength(0);
+                        }
+                        more(w);
+                        return null;
+                    }
+
+                    @Override
+                    public CompletionStage<?> onBinary(WebSocket w, ByteBuffer data, boolean last) {
+                        if (last && data.remaining() >= 13 && data.get(0) == 1) {
+                            messages.increment();
+                            long sentMicros = data.order(java.nio.ByteOrder.LITTLE_ENDIAN).getLong(5) / 1000;
+                            synchronized (latencies) {
+                                latencies.add(clock.nowMicros() - sentMicros);
+                            }
+                        }
+                        more(w);
+                        return null;
+                    }
+                }).get(30, TimeUnit.SECONDS);
+    }
+
+    private void subscribeAll(WebSocket w, JSONObject op) {
+        if (!op.optString("op").equals("advertise")) {
+            return;
+        }
+        JSONArray subs = new JSONArray();
+        JSONArray channels = op.getJSONArray("channels");
+        for (int i = 0; i < channels.length(); i++) {
+            subs.put(new JSONObject().put("id", nextSubscription.getAndIncrement())
+                    .put("channelId", channels.getJSONObject(i).getInt("id")));
+        }
+        if (!subs.isEmpty()) {
+            w.sendText(new JSONObject().put("op", "subscribe").put("subscriptions", subs).toString(), true);
+        }
+    }
+
+    private void more(WebSocket w) {
+        if (reading) {
+            w.request(1);
+        }
+    }
+
+    void stopReading() {
+        reading = false;
+    }
+
+    long messages() {
+        return messages.sum();
+    }
+
+    /** Microseconds from publishing to receiving, the {@code q} quantile (0..1) of every message so far; -1 when none. */
+    long latencyQuantile(double q) {
+        synchronized (latencies) {
+            if (latencies.isEmpty()) {
+                return -1;
+            }
+            java.util.List<Long> sorted = new java.util.ArrayList<>(latencies);
+            java.util.Collections.sort(sorted);
+            return sorted.get((int) Math.min(sorted.size() - 1, Math.floor(q * sorted.size())));
+        }
+    }
+
+    @Override
+    public void close() {
+        ws.abort();
+    }
+}

@@ -1,0 +1,167 @@
+package touchline.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.record.RecordingException;
+import touchline.record.SchemaSet;
+import touchline.serve.AccessToken;
+import touchline.serve.FoxgloveServer;
+import touchline.serve.ServeConfig;
+import touchline.serve.ServeStats;
+import touchline.transport.UdpConfig;
+
+import java.io.PrintWriter;
+import java.net.Inet4Address;
+import java.net.InetAddress;
+import java.net.NetworkInterface;
+import java.net.SocketException;
+import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * {@code touchline serve}: listens for the robots like {@code listen} and serves the stream live
+ * to Foxglove, Lichtblick or any Foxglove WebSocket client, printing the viewers, their
+ * subscriptions, rates and drops every few seconds. Loopback only unless a token protects it.
+ */
+@Command(name = "serve", mixinStandardHelpOptions = true,
+        description = "Listen for robots and serve their messages live to Foxglove/Lichtblick viewers (Foxglove WebSocket).")
+final class ServeCommand implements Callable<Integer> {
+
+    @Option(names = "--port", defaultValue = "8765", description = "WebSocket port viewers connect to (default ${DEFAULT-VALUE})")
+    int port;
+
+    @Option(names = "--bind", defaultValue = "127.0.0.1",
+            description = "address to serve on (default ${DEFAULT-VALUE}: this machine only; any other needs a token)")
+    String bind;
+
+    @Option(names = "--token", description = "the token viewers must present (generated when serving beyond loopback without one)")
+    String token;
+
+    @Option(names = "--robots-port", defaultValue = "11011", description = "UDP port robots send to (default ${DEFAULT-VALUE})")
+    int robotsPort;
+
+    @Option(names = "--robots-bind", defaultValue = "0.0.0.0", description = "address to hear robots on (default ${DEFAULT-VALUE})")
+    String robotsBind;
+
+    @Option(names = "--proto", paramLabel = "FILE", description = "a team's protoc descriptor set: its messages are served with their own types")
+    Path proto;
+
+    @Option(names = "--record", paramLabel = "FILE", description = "record to this MCAP file beside serving")
+    Path record;
+
+    @Option(names = "--stats-every", defaultValue = "5", description = "seconds between statistics lines (default ${DEFAULT-VALUE})")
+    long statsEvery;
+
+    @Option(names = "--seconds", description = "stop after this many seconds (default: until Ctrl+C)")
+    long seconds;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        ServeConfig config = ServeConfig.defaults().withBind(bind).withPort(port).withToken(token);
+        if (token == null && !config.loopbackOnly()) {
+            config = config.withToken(AccessToken.generate(new SecureRandom()));
+        }
+        SchemaSet schemas = new SchemaSet();
+        if (proto != null) {
+            try {
+                schemas.load(proto);
+            } catch (RecordingException e) {
+                err.println("touchline serve: " + e.getMessage());
+                return 2;
+            }
+        }
+        CountDownLatch stop = new CountDownLatch(1);
+        Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
+        ConsoleConfig consoleConfig = ConsoleConfig.defaults()
+                .withUdp(UdpConfig.defaults().withListenPort(robotsPort).withBindAddress(robotsBind));
+        try (Console console = new Console(consoleConfig)) {
+            schemas.teamFiles().forEach(f -> console.kinds().add(f).ifPresent(r -> err.println("touchline serve: " + r)));
+            FoxgloveServer server;
+            try {
+                server = new FoxgloveServer(config, console.kinds(), console.clock());
+            } catch (IllegalArgumentException e) {
+                err.println("touchline serve: " + e.getMessage());
+                return 2;
+            } catch (Exception e) {
+                err.println("touchline serve: cannot serve on " + bind + ":" + port + ": " + e.getMessage());
+                return 1;
+            }
+            server.serveMatchMode(console.matchMode());
+            try (server; AutoCloseable served = console.bus().subscribe(server)) {
+                console.start();
+                if (record != null) {
+                    console.startRecording(record);
+                }
+                out.println("hearing robots on UDP port " + console.udp().localPort()
+                        + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
+                out.println("serving Foxglove WebSocket (Foxglove/Lichtblick: Open connection → Foxglove WebSocket):");
+                for (String host : hosts(config)) {
+                    out.println("  " + server.url(host));
+                }
+                out.flush();
+                watch(server, stop, out);
+            }
+        }
+        return 0;
+    }
+
+    private void watch(FoxgloveServer server, CountDownLatch stop, PrintWriter out) throws InterruptedException {
+        long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
+        ServeStats last = server.stats();
+        long lastAt = System.nanoTime();
+        while (true) {
+            long wait = Math.min(TimeUnit.SECONDS.toNanos(Math.max(1, statsEvery)), deadline - System.nanoTime());
+            boolean stopped = wait <= 0 || stop.await(wait, TimeUnit.NANOSECONDS);
+            ServeStats now = server.stats();
+            long at = System.nanoTime();
+            double secs = Math.max(1e-3, (at - lastAt) / 1e9);
+            out.printf("viewers %d, subscriptions %d, channels %d, sent %d (%.0f/s), dropped %d (%.0f/s), "
+                            + "refused %d, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
+                    now.sent(), (now.sent() - last.sent()) / secs, now.dropped(), (now.dropped() - last.dropped()) / secs,
+                    now.refused(), now.badRequests(),
+                    now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused());
+            out.flush();
+            last = now;
+            lastAt = at;
+            if (stopped) {
+                return;
+            }
+        }
+    }
+
+    /** The addresses viewers reach the server as: the bind address, or each of this machine's for a wildcard. */
+    private static List<String> hosts(ServeConfig config) throws SocketException {
+        List<String> hosts = new ArrayList<>();
+        try {
+            if (!InetAddress.getByName(config.bindAddress()).isAnyLocalAddress()) {
+                return List.of(config.bindAddress());
+            }
+        } catch (java.net.UnknownHostException e) {
+            return List.of(config.bindAddress());
+        }
+        for (NetworkInterface n : java.util.Collections.list(NetworkInterface.getNetworkInterfaces())) {
+            for (InetAddress a : java.util.Collections.list(n.getInetAddresses())) {
+                if (a instanceof Inet4Address && !a.isLoopbackAddress()) {
+                    hosts.add(a.getHostAddress());
+                }
+            }
+        }
+        if (hosts.isEmpty()) {
+            hosts.add("127.0.0.1");
+        }
+        return hosts;
+    }
+}

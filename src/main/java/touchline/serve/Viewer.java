@@ -1,0 +1,159 @@
+package touchline.serve;
+
+import io.netty.channel.Channel;
+
+import java.net.SocketAddress;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.LongAdder;
+
+/**
+ * One connected viewer (Foxglove, Lichtblick, a script): its subscriptions and the messages
+ * waiting for its network. Publishers only queue ({@link #offer}) and never wait; the
+ * viewer's event loop sends while the socket is writable and stops when it is not, so a slow
+ * viewer gets the newest message of each channel once it catches up, and nobody else waits.
+ */
+final class Viewer {
+
+    private final Channel channel;
+    private final FoxgloveFrames frames;
+    private final PendingMessages pending;
+    private final AtomicBoolean drainScheduled = new AtomicBoolean();
+    private final Map<Integer, Subscription> subscriptions = new ConcurrentHashMap<>();
+    private final LongAdder sent = new LongAdder();
+    private final LongAdder statusesDropped = new LongAdder();
+
+    Viewer(Channel channel, FoxgloveFrames frames, int queueLimit) {
+        this.channel = channel;
+        this.frames = frames;
+        this.pending = new PendingMessages(queueLimit);
+    }
+
+    SocketAddress address() {
+        return channel.remoteAddress();
+    }
+
+    /** From any thread: queues a message for {@code s} and has the event loop send it. Never blocks. */
+    void offer(Subscription s, long timeNanos, byte[] payload) {
+        pending.offer(s, timeNanos, payload, !channel.isWritable());
+        if (drainScheduled.compareAndSet(false, true)) {
+            try {
+                channel.eventLoop().execute(this::drain);
+            } catch (RejectedExecutionException e) {
+                drainScheduled.set(false); // the server is closing
+            }
+        }
+    }
+
+    /** On the event loop: sends pending messages while the socket takes them. */
+    void drain() {
+        drainScheduled.set(false);
+        boolean wrote = false;
+        while (channel.isActive() && channel.isWritable()) {
+            PendingMessages.Pending p = pending.poll();
+            if (p == null) {
+                break;
+            }
+            if (!p.subscription.active()) {
+                continue;
+            }
+            channel.write(frames.messageData(channel.alloc(), p.subscription.id(), p.timeNanos, p.payload),
+                    channel.voidPromise());
+            sent.increment();
+            wrote = true;
+        }
+        if (wrote) {
+            channel.flush();
+        }
+    }
+
+    /** Subscribes under the viewer's {@code id}; the reason when refused. */
+    Optional<String> subscribe(int id, ServedChannel c) {
+        if (subscriptions.containsKey(id)) {
+            return Optional.of("subscription id " + id + " is in use");
+        }
+        for (Subscription s : subscriptions.values()) {
+            if (s.channel() == c) {
+                return Optional.of("already subscribed to channel " + c.id() + " (subscription " + s.id() + ")");
+            }
+        }
+        Subscription s = new Subscription(this, id, c);
+        subscriptions.put(id, s);
+        c.add(s);
+        return Optional.empty();
+    }
+
+    /** Sends a state channel's current value to a new subscription, so a viewer need not wait for a change. */
+    void catchUp(int id, ServedChannel c, long timeNanos) {
+        byte[] value = c.latest();
+        Subscription s = subscriptions.get(id);
+        if (value != null && s != null) {
+            offer(s, timeNanos, value);
+        }
+    }
+
+    /** Ends subscription {@code id}; the reason when there is none. */
+    Optional<String> unsubscribe(int id) {
+        Subscription s = subscriptions.remove(id);
+        if (s == null) {
+            return Optional.of("no subscription " + id);
+        }
+        s.end();
+        return Optional.empty();
+    }
+
+    /** Ends every subscription (the viewer left). */
+    void leave() {
+        List.copyOf(subscriptions.values()).forEach(s -> {
+            subscriptions.remove(s.id());
+            s.end();
+        });
+    }
+
+    /** The server info and every channel known so far: what a viewer hears first. */
+    void welcome(List<ServedChannel> channels) {
+        channel.write(frames.serverInfo(), channel.voidPromise());
+        channel.writeAndFlush(frames.advertise(channels), channel.voidPromise());
+    }
+
+    /** New channels; sent even to a viewer that is behind, or it could never subscribe to them. */
+    void advertise(List<ServedChannel> channels) {
+        channel.writeAndFlush(frames.advertise(channels), channel.voidPromise());
+    }
+
+    /** A status message, unless the viewer is not reading (then it is counted, never queued). */
+    void status(int level, String message) {
+        if (channel.isWritable()) {
+            channel.writeAndFlush(frames.status(level, message), channel.voidPromise());
+        } else {
+            statusesDropped.increment();
+        }
+    }
+
+    /** The server time, when the viewer keeps up. */
+    void time(long timeNanos) {
+        if (channel.isActive() && channel.isWritable()) {
+            channel.writeAndFlush(frames.time(channel.alloc(), timeNanos), channel.voidPromise());
+        }
+    }
+
+    int subscriptionCount() {
+        return subscriptions.size();
+    }
+
+    long sent() {
+        return sent.sum();
+    }
+
+    long dropped() {
+        return pending.dropped();
+    }
+
+    Channel channel() {
+        return channel;
+    }
+}

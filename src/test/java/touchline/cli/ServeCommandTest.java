@@ -1,0 +1,62 @@
+package touchline.cli;
+
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** {@code touchline serve} headless: it prints the URL to open (with its token) and its statistics, then stops. */
+@Tag("integration")
+class ServeCommandTest {
+
+    private record Run(int exit, String out, String err) {
+    }
+
+    private static Run serve(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cli = new CommandLine(new Main());
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        String[] all = new String[args.length + 1];
+        all[0] = "serve";
+        System.arraycopy(args, 0, all, 1, args.length);
+        int exit = cli.execute(all);
+        return new Run(exit, out.toString(), err.toString());
+    }
+
+    @Test
+    void servesOnLoopbackPrintsTheUrlWithItsTokenAndAStatisticsLine() {
+        Run run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--token", "s3cret",
+                "--seconds", "1", "--stats-every", "1");
+        assertEquals(0, run.exit(), run.err());
+        assertTrue(run.out().matches("(?s).*ws://127\\.0\\.0\\.1:\\d+/\\?token=s3cret\\n.*"), run.out());
+        assertTrue(run.out().contains("viewers 0, subscriptions 0, channels 2"), run.out()); // /gc/state, /touchline/matchMode
+    }
+
+    @Test
+    void aPortInUseIsReportedNotAStackTrace() throws Exception {
+        try (java.net.ServerSocket taken = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            Run run = serve("--port", Integer.toString(taken.getLocalPort()), "--robots-port", "0",
+                    "--robots-bind", "127.0.0.1", "--seconds", "1");
+            assertEquals(1, run.exit());
+            assertTrue(run.err().contains("cannot serve on 127.0.0.1:" + taken.getLocalPort()), run.err());
+            assertFalse(run.err().contains("\tat "), run.err());
+        }
+    }
+
+    @Test
+    void aTeamSchemaThatIsNotOneIsReportedAndNothingIsServed() throws Exception {
+        java.nio.file.Path bad = java.nio.file.Files.createTempFile("not-a-schema", ".desc");
+        java.nio.file.Files.writeString(bad, "hello");
+        Run run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--proto", bad.toString(),
+                "--seconds", "1");
+        assertEquals(2, run.exit());
+        assertTrue(run.err().contains("not a protobuf descriptor set"), run.err());
+        assertFalse(run.out().contains("ws://"), run.out());
+    }
+}
