@@ -1,0 +1,31 @@
+package touchline.game.hsl;
+
+/**
+ * SET → PLAYING, the whistle. The clock of the half starts with its first kick-off; the
+ * kick-off (10 s) or penalty kick (60 s) begins, a dropped ball has no kicking team and no set
+ * play. Robots keep seeing the state before the whistle for the rules' delay.
+ */
+public record FreeSetPlay() implements HslAction {
+    @Override
+    public boolean isLegal(HslState s) {
+        return s.state == HslPlayState.SET;
+    }
+
+    @Override
+    public void apply(HslState s) {
+        s.holdForRobots();
+        s.state = HslPlayState.PLAYING;
+        s.halfKickedOff = true;
+        s.stoppageClockMs = -1;
+        if (s.setPlay == null || s.kickingTeam == HslState.NO_TEAM) {
+            s.endSetPlay();
+        } else {
+            s.startSecondary(SecondaryTimer.SET_PLAY, s.setPlay.durationMs(s.rules));
+        }
+    }
+
+    @Override
+    public String describe() {
+        return "play";
+    }
+}

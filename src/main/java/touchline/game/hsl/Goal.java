@@ -1,0 +1,32 @@
+package touchline.game.hsl;
+
+/**
+ * A goal for {@code team} (not counted while the team is marked for illegal communication):
+ * READY with the other team's kick-off, or the end of the game by the mercy rule.
+ */
+public record Goal(int team) implements HslAction {
+    @Override
+    public boolean isLegal(HslState s) {
+        return s.team(team) != null && s.state == HslPlayState.PLAYING && s.phase != HslPhase.PENALTY_SHOOT_OUT;
+    }
+
+    @Override
+    public void apply(HslState s) {
+        HslTeam scorer = s.team(team);
+        HslTeam other = s.otherTeam(team);
+        if (!scorer.illegalCommunication) {
+            scorer.score++;
+        }
+        if (Math.abs(scorer.score - other.score) >= s.rules.mercyGoals()) {
+            s.finish();
+            return;
+        }
+        s.beginStoppage();
+        s.enterReady(SetPlay.KICK_OFF, other.number);
+    }
+
+    @Override
+    public String describe() {
+        return "goal " + team;
+    }
+}
