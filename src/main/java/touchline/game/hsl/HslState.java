@@ -14,7 +14,7 @@ import java.util.List;
  * Timers are remaining durations that run while their condition holds ({@link #advance}
  * moves time forward event by event, so a timer that ends changes the state at the exact
  * instant it ends). While robots still see the state from before a PLAYING whistle, that
- * frozen copy is {@link #delayed}. {@code teams[0]} defends the left goal as the operator sees
+ * copy is {@link #delayed}; its timers run by its own state. {@code teams[0]} defends the left goal as the operator sees
  * it; the teams swap at half time. Not thread-safe: {@link HslGame} serialises access.
  */
 public final class HslState {
@@ -190,7 +190,7 @@ public final class HslState {
             next = Math.min(next, switchHalfMs);
         }
         if (delayed != null && delayMs > 0) {
-            next = Math.min(next, delayMs);
+            next = Math.min(next, Math.min(delayMs, delayed.nextExpiry()));
         }
         if (penaltiesRun()) {
             for (HslTeam t : teams) {
@@ -230,6 +230,9 @@ public final class HslState {
             clockMs -= ms;
         }
         if (delayed != null) {
+            // the held copy is not frozen: its clocks run as its own state says (SET after a kick-off: the clock runs)
+            delayed.elapse(ms);
+            delayed.lastMs += ms;
             delayMs -= ms;
             if (delayMs <= 0) {
                 delayed = null;

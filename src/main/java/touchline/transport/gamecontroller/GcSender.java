@@ -35,6 +35,9 @@ public final class GcSender implements AutoCloseable {
         GameControlData next(boolean periodic);
     }
 
+    /** Spacing of the HSL burst after play gets stopped. */
+    public static final long BURST_SPACING_MS = 200;
+
     private static final Logger LOG = LoggerFactory.getLogger(GcSender.class);
     /** The last stretch before a deadline is waited out by spinning: parkNanos can overshoot. */
     private static final long SPIN_NANOS = 300_000;

@@ -28,17 +28,17 @@ import static org.junit.jupiter.api.Assertions.fail;
  * data with every {@code .monitor.bin}, byte for byte (packetNumber from the file: the stream
  * test checks the numbering). A difference names the step, the byte offset and the field.
  */
-class HslGameGoldenTest {
+public class HslGameGoldenTest {
 
     static final TeamColour[] HOME = {TeamColour.RED, TeamColour.PURPLE};
     static final TeamColour[] AWAY = {TeamColour.BLUE, TeamColour.YELLOW};
 
-    static HslGame goldenGame(int version, ManualClock clock) {
+    public static HslGame goldenGame(int version, ManualClock clock) {
         HslRules rules = HslRules.forVersion(version, Competition.MIDDLE_ADVANCED);
         return new HslGame(rules, 5, HOME, 14, AWAY, clock);
     }
 
-    static void perform(HslGame game, String command, String where) {
+    public static void perform(HslGame game, String command, String where) {
         HslActionSyntax.Parsed parsed = new HslActionSyntax().parse(command);
         assertTrue(parsed.error() == null, where + ": '" + command + "': " + parsed.error());
         Outcome o = game.perform(parsed.action());
@@ -81,7 +81,7 @@ class HslGameGoldenTest {
         }
     }
 
-    private static void compare(String file, byte[] expected, byte[] actual, int version, List<String> out) {
+    public static void compare(String file, byte[] expected, byte[] actual, int version, List<String> out) {
         if (java.util.Arrays.equals(expected, actual)) {
             return;
         }
@@ -98,7 +98,7 @@ class HslGameGoldenTest {
         out.add(b.toString());
     }
 
-    static byte[] golden(int version, String file) throws IOException {
+    public static byte[] golden(int version, String file) throws IOException {
         byte[] b = goldenOrNull(version, file);
         assertNotNull(b, "missing golden file hsl" + version + "/" + file);
         return b;

@@ -9,7 +9,7 @@ import java.util.List;
  * which step file shows the result at which send instant. Teams: home 5 (red / purple
  * goalkeeper) on the left with the first kick-off, away 14 (blue / yellow), Middle Advanced.
  */
-final class HslGoldenScript {
+public final class HslGoldenScript {
 
     /**
      * @param file     step file, or null for an action without a file of its own
@@ -17,7 +17,7 @@ final class HslGoldenScript {
      * @param sentAtMs when the step file was sent
      * @param commands CLI lines
      */
-    record Step(String file, long atMs, long sentAtMs, List<String> commands) {
+    public record Step(String file, long atMs, long sentAtMs, List<String> commands) {
     }
 
     /** Lines of {@link #V20} that the version 19 script shares (up to 20-playing-after-delay). */
@@ -123,7 +123,7 @@ final class HslGoldenScript {
     };
 
     /** The script of {@code hsl20} (version 20) or {@code hsl19}. */
-    static List<Step> of(int version) {
+    public static List<Step> of(int version) {
         List<Step> steps = new ArrayList<>();
         List<String> lines = new ArrayList<>(List.of(V20));
         if (version == 19) {
