@@ -48,17 +48,20 @@ public final class SendSchedule {
     }
 
     /**
-     * The scheduled datagram due at {@link #next()} went out at {@code now}: move to the next
-     * slot (after a stall, skip the missed slots instead of sending them in a rush).
+     * The scheduled datagram due at {@code due} went out at {@code now}: move to the next slot
+     * (after a stall, skip the missed slots of the grid instead of sending them in a rush; the
+     * datagrams of a burst are never skipped). Ignored when a burst began while it was being
+     * sent: that datagram does not count as the burst's first.
      */
-    public void sent(long now) {
-        long base = next;
-        if (burstLeft > 0) {
-            burstLeft--;
-            next = base + (burstLeft > 0 ? burstSpacing : interval);
-        } else {
-            next = base + interval;
+    public void sent(long due, long now) {
+        if (due != next) {
+            return;
         }
+        if (burstLeft > 0 && --burstLeft > 0) {
+            next += burstSpacing; // a late burst datagram still goes out, at once
+            return;
+        }
+        next += interval;
         while (now - next >= 0) {
             next += interval;
         }

@@ -61,7 +61,7 @@ class HslStreamGoldenTest {
             long t = schedule.next();
             clock.set(t);
             byte[] actual = format.encode(game.controlData().withPacketNumber(packetNumber));
-            schedule.sent(t);
+            schedule.sent(t, t);
             byte[] expected = Arrays.copyOfRange(stream, i * size, (i + 1) * size);
             String where = "datagram " + i + " (golden at " + times[i][1] + " ms, #" + times[i][2] + "; ours at "
                     + t + " ms, #" + packetNumber + ")";
