@@ -15,6 +15,9 @@ public record FreeSetPlay() implements HslAction {
     public void apply(HslState s) {
         s.holdForRobots();
         s.state = HslPlayState.PLAYING;
+        if (s.phase == HslPhase.PENALTY_SHOOT_OUT) {
+            return; // the shot's 60 s run from now
+        }
         s.halfKickedOff = true;
         s.stoppageClockMs = -1;
         if (s.setPlay == null || s.kickingTeam == HslState.NO_TEAM) {

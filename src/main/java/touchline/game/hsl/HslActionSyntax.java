@@ -50,6 +50,9 @@ public final class HslActionSyntax {
             finish                       end of the half (2nd half begins 300 s
                                          into the break, or "secondhalf")
             secondhalf
+            penaltyshootout TEAM         after a drawn 2nd half, TEAM shoots first;
+                                         per shot: shot, play, then goal TEAM or
+                                         missed (or its 60 s run out)
             goalkeeper TEAM PLAYER       0 = none
             teammessage TEAM [BYTES]     count a team message (as if heard)
             undo | status | quit""";
@@ -84,6 +87,9 @@ public final class HslActionSyntax {
                 case "additionalminute", "addtime", "extraminute" -> args(w, 0, new AddAdditionalTime());
                 case "finish", "finishhalf" -> args(w, 0, new FinishHalf());
                 case "secondhalf" -> args(w, 0, new SwitchHalf());
+                case "penaltyshootout", "pso" -> args(w, 1, new StartPenaltyShootout(num(w[1])));
+                case "shot" -> args(w, 0, new PenaltyShot());
+                case "missed", "miss" -> args(w, 0, new FinishPenaltyShot());
                 case "goalkeeper" -> args(w, 2, new SelectGoalkeeper(num(w[1]), num(w[2])));
                 case "teammessage" -> w.length == 2 ? new Parsed(new TeamMessage(num(w[1]), 1), null)
                         : args(w, 2, new TeamMessage(num(w[1]), w.length > 2 ? num(w[2]) : 1));

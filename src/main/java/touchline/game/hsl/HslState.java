@@ -160,11 +160,19 @@ public final class HslState {
     // ---- running time --------------------------------------------------------------------
 
     private boolean clockRuns() {
-        if (phase == HslPhase.PENALTY_SHOOT_OUT || (stopped && !rules.clockRunsWhileStopped())) {
+        if (phase == HslPhase.PENALTY_SHOOT_OUT) {
+            return state == HslPlayState.PLAYING; // the shot's own time
+        }
+        if (stopped && !rules.clockRunsWhileStopped()) {
             return false;
         }
         return state == HslPlayState.PLAYING
                 || (halfKickedOff && (state == HslPlayState.READY || state == HslPlayState.SET));
+    }
+
+    /** A penalty shoot-out shot is being taken: its time ends it. */
+    private boolean shotRuns() {
+        return phase == HslPhase.PENALTY_SHOOT_OUT && state == HslPlayState.PLAYING;
     }
 
     private boolean secondaryRuns() {
@@ -188,6 +196,9 @@ public final class HslState {
         }
         if (switchHalfMs > 0) {
             next = Math.min(next, switchHalfMs);
+        }
+        if (shotRuns() && clockMs > 0) {
+            next = Math.min(next, clockMs);
         }
         if (delayed != null && delayMs > 0) {
             next = Math.min(next, Math.min(delayMs, delayed.nextExpiry()));
@@ -226,8 +237,14 @@ public final class HslState {
         boolean secondaryRunning = secondaryRuns();
         boolean penalties = penaltiesRun();
         boolean changed = false;
+        boolean shot = shotRuns();
         if (clock) {
             clockMs -= ms;
+            if (shot && clockMs <= 0) {
+                clockMs = 0;
+                endShot();
+                changed = true;
+            }
         }
         if (delayed != null) {
             // the held copy is not frozen: its clocks run as its own state says (SET after a kick-off: the clock runs)
@@ -327,6 +344,12 @@ public final class HslState {
         stopped = false;
         stoppageClockMs = -1;
         startSecondary(SecondaryTimer.NONE, 0);
+    }
+
+    /** A shoot-out shot is over (goal, miss or time): FINISHED, the other team shoots next. */
+    void endShot() {
+        state = HslPlayState.FINISHED;
+        kickingTeam = otherTeam(kickingTeam).number;
     }
 
     /** The first half is over: INITIAL of the second, sides swapped, the other team kicks off. */

@@ -253,6 +253,47 @@ class HslGameTest {
     }
 
     @Test
+    void aPenaltyShootoutAlternatesShotsAndCountsGoalsInSingleShots() {
+        kickOffAndPlay(5);
+        ok("finish");
+        refused("penaltyshootout 5");
+        ok("secondhalf");
+        kickOffAndPlay(14);
+        ok("finish");
+        ok("penaltyshootout 14");
+        GameControlData d = game.controlData();
+        assertEquals(1, d.gamePhase());
+        assertEquals(GameControlData.STATE_INITIAL, d.state());
+        assertEquals(14, d.kickOffTeam());
+        assertEquals(60, d.secsRemaining());
+        ok("shot");
+        ok("play");
+        assertEquals(GameControlData.STATE_SET, game.controlData().state(), "robots see SET for 10 s");
+        secs(5);
+        ok("goal 14");
+        d = game.controlData();
+        assertEquals(GameControlData.STATE_FINISHED, d.state());
+        assertEquals(1, d.team(14).score());
+        assertEquals(1, d.team(14).penaltyShot());
+        assertEquals(0b1, d.team(14).singleShots());
+        assertEquals(5, d.kickOffTeam(), "the other team shoots next");
+        refused("goal 5");
+        ok("shot");
+        ok("play");
+        secs(60);
+        d = game.controlData();
+        assertEquals(GameControlData.STATE_FINISHED, d.state(), "the shot's 60 s ran out");
+        assertEquals(0, d.team(5).singleShots());
+        assertEquals(14, d.kickOffTeam());
+        ok("shot");
+        ok("play");
+        ok("missed");
+        ok("teammessage 14");
+        assertEquals(12000, game.controlData().team(14).messageBudget(), "not counted in a shoot-out");
+        assertEquals(2, game.controlData().team(14).penaltyShot());
+    }
+
+    @Test
     void syntaxErrorsAreValues() {
         HslActionSyntax syntax = new HslActionSyntax();
         assertEquals("unknown command 'fly' (see --help)", syntax.parse("fly away").error());
