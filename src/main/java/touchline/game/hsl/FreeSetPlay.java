@@ -8,7 +8,12 @@ package touchline.game.hsl;
 public record FreeSetPlay() implements HslAction {
     @Override
     public boolean isLegal(HslState s) {
-        return s.state == HslPlayState.SET;
+        if (s.state != HslPlayState.SET) {
+            return false;
+        }
+        // in a shoot-out each team has exactly one player on the field: shooter and goalkeeper
+        return s.phase != HslPhase.PENALTY_SHOOT_OUT
+                || (SelectShooter.onField(s.teams[0]) == 1 && SelectShooter.onField(s.teams[1]) == 1);
     }
 
     @Override

@@ -27,6 +27,7 @@ public record Goal(int team) implements HslAction {
             return;
         }
         if (Math.abs(scorer.score - other.score) >= s.rules.mercyGoals()) {
+            s.firstHalf = false; // the game is over: no half-time break, no second half
             s.finish();
             return;
         }

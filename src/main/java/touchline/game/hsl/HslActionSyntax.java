@@ -50,9 +50,11 @@ public final class HslActionSyntax {
             finish                       end of the half (2nd half begins 300 s
                                          into the break, or "secondhalf")
             secondhalf
+            extratime                    after a drawn 2nd half: 2 x 300 s
             penaltyshootout TEAM         after a drawn 2nd half, TEAM shoots first;
-                                         per shot: shot, play, then goal TEAM or
-                                         missed (or its 60 s run out)
+                                         "shooter TEAM PLAYER [goalkeeper]" for
+                                         both teams, then per shot: shot, play,
+                                         goal TEAM or missed (or its 60 s run out)
             goalkeeper TEAM PLAYER       0 = none
             teammessage TEAM [BYTES]     count a team message (as if heard)
             undo | status | quit""";
@@ -89,6 +91,10 @@ public final class HslActionSyntax {
                 case "secondhalf" -> args(w, 0, new SwitchHalf());
                 case "penaltyshootout", "pso" -> args(w, 1, new StartPenaltyShootout(num(w[1])));
                 case "shot" -> args(w, 0, new PenaltyShot());
+                case "extratime" -> args(w, 0, new StartExtraTime());
+                case "shooter" -> w.length == 4 && w[3].equals("goalkeeper")
+                        ? new Parsed(new SelectShooter(num(w[1]), num(w[2]), true), null)
+                        : args(w, 2, new SelectShooter(num(w[1]), num(w[2]), false));
                 case "missed", "miss" -> args(w, 0, new FinishPenaltyShot());
                 case "goalkeeper" -> args(w, 2, new SelectGoalkeeper(num(w[1]), num(w[2])));
                 case "teammessage" -> w.length == 2 ? new Parsed(new TeamMessage(num(w[1]), 1), null)

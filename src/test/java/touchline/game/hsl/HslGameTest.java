@@ -110,6 +110,8 @@ class HslGameTest {
         }
         assertEquals(GameControlData.STATE_FINISHED, game.controlData().state(), "10:0 ends the game");
         assertEquals(10, game.controlData().team(5).score());
+        assertFalse(game.controlData().firstHalf(), "no second half after the mercy rule");
+        refused("secondhalf");
     }
 
     @Test
@@ -266,7 +268,14 @@ class HslGameTest {
         assertEquals(GameControlData.STATE_INITIAL, d.state());
         assertEquals(14, d.kickOffTeam());
         assertEquals(60, d.secsRemaining());
+        assertEquals(HslPenalty.SUBSTITUTE.neutral(), d.team(14).player(1).penalty(), "everybody off");
+        assertEquals(0, game.snapshot().team(5).goalkeeper());
         ok("shot");
+        refused("play");
+        ok("shooter 14 3");
+        ok("shooter 5 1 goalkeeper");
+        assertEquals(1, game.snapshot().team(5).goalkeeper());
+        assertEquals(0, game.controlData().team(14).player(3).penalty());
         ok("play");
         assertEquals(GameControlData.STATE_SET, game.controlData().state(), "robots see SET for 10 s");
         secs(5);
@@ -291,6 +300,35 @@ class HslGameTest {
         ok("teammessage 14");
         assertEquals(12000, game.controlData().team(14).messageBudget(), "not counted in a shoot-out");
         assertEquals(2, game.controlData().team(14).penaltyShot());
+    }
+
+    @Test
+    void extraTimeIsTwoShortHalvesInTheFirstHalfsSidesWith6000MoreMessages() {
+        kickOffAndPlay(5);
+        ok("finish");
+        refused("extratime");
+        ok("secondhalf");
+        kickOffAndPlay(14);
+        ok("penalize 14 2 pushing");
+        ok("finish");
+        ok("extratime");
+        GameControlData d = game.controlData();
+        assertEquals(2, d.gamePhase());
+        assertEquals(GameControlData.STATE_INITIAL, d.state());
+        assertTrue(d.firstHalf(), "7.x: firstHalf in the first half of extra time");
+        assertEquals(5, d.teams().get(0).teamNumber(), "sides of the first half");
+        assertEquals(5, d.kickOffTeam());
+        assertEquals(300, d.secsRemaining());
+        assertEquals(18000, d.team(14).messageBudget());
+        assertEquals(0, d.team(14).player(2).penalty());
+        kickOffAndPlay(5);
+        ok("finish");
+        ok("secondhalf");
+        assertEquals(300, game.controlData().secsRemaining());
+        assertEquals(14, game.controlData().teams().get(0).teamNumber());
+        kickOffAndPlay(14);
+        ok("finish");
+        ok("penaltyshootout 5");
     }
 
     @Test
