@@ -2,7 +2,8 @@ package touchline.game.hsl;
 
 /**
  * One minute of additional time (6.0.1: "extra minute"), outside PLAYING once more than a
- * minute of the half was played: the clock gets 60 s and each team's message budget its share.
+ * minute of the half was played: the clock gets 60 s and each team's message budget its share
+ * (not a team that communicated illegally).
  */
 public record AddAdditionalTime() implements HslAction {
 
@@ -22,7 +23,9 @@ public record AddAdditionalTime() implements HslAction {
             s.stoppageClockMs += MINUTE_MS;
         }
         for (HslTeam t : s.teams) {
-            t.addBudget(s.rules.messagesPerAddedMinute());
+            if (!t.illegalCommunication) {
+                t.addBudget(s.rules.messagesPerAddedMinute());
+            }
         }
     }
 

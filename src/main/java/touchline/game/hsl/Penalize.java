@@ -7,8 +7,8 @@ import java.util.Locale;
 /**
  * Calls a penalty on a player. A removal penalty waits for the operator to start its timer
  * ({@link Unpenalize}); motion in set (in SET only) starts at once and ends by itself; motion
- * in stop can only be called while play is stopped; pick-up in INITIAL or a timeout has no
- * time. A caution (7.x) is a removal penalty that counts, and a second caution sends the
+ * in stop can only be called while play is stopped; pick-up (also in FINISHED) has no time
+ * in INITIAL, a timeout or FINISHED. A caution (7.x) is a removal penalty that counts, and a second caution sends the
  * player off; cautions and send-offs can be given to penalised players.
  */
 public record Penalize(int team, int player, HslPenalty call) implements HslAction {
@@ -16,7 +16,7 @@ public record Penalize(int team, int player, HslPenalty call) implements HslActi
     public boolean isLegal(HslState s) {
         HslTeam t = s.team(team);
         if (t == null || !HslTeam.validPlayer(player) || !s.rules.knows(call) || call == HslPenalty.NONE
-                || call == HslPenalty.SUBSTITUTE || s.state == HslPlayState.FINISHED) {
+                || call == HslPenalty.SUBSTITUTE || (s.state == HslPlayState.FINISHED && call != HslPenalty.PICK_UP)) {
             return false;
         }
         if ((call == HslPenalty.CAUTIONED || call == HslPenalty.SENT_OFF) && !s.rules.cautions()) {
@@ -53,8 +53,8 @@ public record Penalize(int team, int player, HslPenalty call) implements HslActi
         }
         if (penalty == HslPenalty.MOTION_IN_SET) {
             p.penalise(penalty, s.rules.motionInSetMs(), true);
-        } else if (penalty == HslPenalty.PICK_UP
-                && (s.state == HslPlayState.INITIAL || s.state == HslPlayState.TIMEOUT)) {
+        } else if (penalty == HslPenalty.PICK_UP && (s.state == HslPlayState.INITIAL
+                || s.state == HslPlayState.TIMEOUT || s.state == HslPlayState.FINISHED)) {
             p.penalise(penalty, 0, true);
         } else {
             long ms = s.rules.penaltyMs();

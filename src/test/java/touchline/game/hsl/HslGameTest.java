@@ -169,6 +169,27 @@ class HslGameTest {
     }
 
     @Test
+    void aTimeoutStopsPenaltyTimersAndATimeoutInATimeoutAddsToIt() {
+        kickOffAndPlay(5);
+        ok("penalize 14 3 pushing");
+        ok("unpenalize 14 3");
+        secs(10);
+        assertEquals(35, game.controlData().team(14).player(3).secsTillUnpenalised());
+        ok("penaltykick 14");
+        refused("timeout 5");
+        ok("timeout referee");
+        assertEquals(GameControlData.DROP_BALL, game.controlData().kickOffTeam(), "no kick-off was due");
+        assertEquals(0, game.controlData().team(14).player(3).secsTillUnpenalised(), "timer stopped");
+        assertEquals(HslPenalty.PUSHING.neutral(), game.controlData().team(14).player(3).penalty());
+        secs(100);
+        ok("timeout 5");
+        assertEquals(800, game.controlData().secondaryTime(), "500 s left + 300 s");
+        assertEquals(14, game.controlData().kickOffTeam());
+        ok("unpenalize 14 3");
+        assertEquals(45, game.controlData().team(14).player(3).secsTillUnpenalised(), "starts again in full");
+    }
+
+    @Test
     void motionInStopOnlyWhileStoppedAndMotionInSetOnlyInSet() {
         ok("kickoff 5");
         refused("penalize 5 1 motion_in_set");
