@@ -15,13 +15,16 @@ import touchline.game.hsl.Competition;
 import touchline.game.hsl.HslActionSyntax;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
+import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.MonitorRequest;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
+import touchline.transport.gamecontroller.MonitorService;
 import touchline.transport.gamecontroller.RobotLiveness;
 
 import java.io.BufferedReader;
@@ -94,6 +97,11 @@ public final class GcCommand implements Callable<Integer> {
 
     @Option(names = "--bind", defaultValue = "0.0.0.0", description = "local address of the receiving sockets")
     String bind;
+
+    @Option(names = "--monitor-port", description = "HSL: UDP port where monitor applications (TeamCommunication"
+            + "Monitor, a console with --gc-monitor) register for the true state and forwarded return packets "
+            + "(default 3636; -1 = none)")
+    Integer monitorPort;
 
     @Option(names = "--v7-compat", description = "also send the v7 compatibility packet every cycle")
     boolean v7Compat;
@@ -196,6 +204,12 @@ public final class GcCommand implements Callable<Integer> {
                     print("state: " + now);
                 }
             });
+            int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
+            if (profile.hsl() && monitorRequests >= 0) {
+                MonitorService m = gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                        GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+                print("monitors register on " + m.requestAddress());
+            }
             gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));

@@ -78,7 +78,8 @@ class GcCommandTest {
             String out = run("kickoff 5\nset\nplay\ngoal 5\ncorner 14\nset\nplay\npenalize 14 3 pushing\n"
                             + "unpenalize 14 3\ncaution 5 2\ncaution 5 2\ncorner 14\nteammessage 5 600\nstatus\n",
                     "--team-a", "5", "--team-b", "14", "--dest", "127.0.0.1:" + robot.getLocalPort(),
-                    "--return-port", "0", "--rival-port", "-1", "--bind", "127.0.0.1");
+                    "--return-port", "0", "--rival-port", "-1", "--monitor-port", "0", "--bind", "127.0.0.1");
+            assertTrue(out.contains("monitors register on /127.0.0.1:"), out);
             assertTrue(out.contains("GameController hsl20 sending"), out);
             assertTrue(out.contains("ok: kick off 5"), out);
             assertTrue(out.contains("robots still see SET"), out);

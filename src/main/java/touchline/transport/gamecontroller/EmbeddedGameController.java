@@ -58,6 +58,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     private final List<Consumer<String>> eventListeners = new CopyOnWriteArrayList<>();
     private final GcSender sender;
     private final List<GcListener> listeners = new ArrayList<>();
+    private volatile MonitorService monitors;
     private final int senderPort;
 
     /**
@@ -118,6 +119,22 @@ public final class EmbeddedGameController implements AutoCloseable {
         sender.start();
     }
 
+    /**
+     * Answers monitor applications as the official HSL GameController does (HSL formats only;
+     * {@link MonitorService}): requests on {@code requestBind}, true data to the monitors'
+     * {@code trueDataPort}, return packets forwarded to their {@code forwardPort}.
+     */
+    public MonitorService serveMonitors(InetSocketAddress requestBind, int trueDataPort, int forwardPort)
+            throws IOException {
+        if (!config.profile().hsl()) {
+            throw new IllegalStateException("monitors are served in the HSL formats only");
+        }
+        MonitorService m = new MonitorService(requestBind, trueDataPort, forwardPort,
+                config.profile().trueDataFormat(), this::emit);
+        monitors = m;
+        return m;
+    }
+
     /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
     public Game game() {
         return game;
@@ -172,6 +189,10 @@ public final class EmbeddedGameController implements AutoCloseable {
             referee.advance();
         }
         GameControlData data = referee.controlData();
+        MonitorService m = monitors;
+        if (periodic && m != null) {
+            m.publish(referee.trueData());
+        }
         if (matchMode != null) {
             matchMode.observe(data.state(), OWN_SOURCE);
         }
@@ -196,6 +217,10 @@ public final class EmbeddedGameController implements AutoCloseable {
         sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 p.kind(), null, data, null));
         liveness.heard(p.team(), p.player(), referee.now());
+        MonitorService m = monitors;
+        if (m != null) {
+            m.returnPacket(from, data);
+        }
         Action requested = game == null ? null : manualRequests.onMessage(p.team(), p.player(), p.message());
         if (requested != null) {
             Outcome o = game.perform(requested);
@@ -268,6 +293,10 @@ public final class EmbeddedGameController implements AutoCloseable {
     @Override
     public void close() {
         sender.close();
+        MonitorService m = monitors;
+        if (m != null) {
+            m.close();
+        }
         listeners.forEach(GcListener::close);
     }
 }

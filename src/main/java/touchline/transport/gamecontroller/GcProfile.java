@@ -64,6 +64,11 @@ public enum GcProfile {
         return this == HSL20 || this == HSL19;
     }
 
+    /** The monitors' true-data ("RGTD") format of an HSL format; null for the others. */
+    public GameStateFormat trueDataFormat() {
+        return this == HSL20 ? HslGameState20.trueData() : this == HSL19 ? HslGameState19.trueData() : null;
+    }
+
     /** The protocol version of an HSL format (20 or 19); 0 for the others. */
     public int hslVersion() {
         return this == HSL20 ? HslGameState20.VERSION : this == HSL19 ? HslGameState19.VERSION : 0;
