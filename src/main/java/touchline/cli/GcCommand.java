@@ -9,9 +9,22 @@ import touchline.game.GameClock;
 import touchline.game.LeagueParams;
 import touchline.game.MatchMode;
 import touchline.game.Outcome;
+import touchline.game.Penalty;
+import touchline.game.RefereedGame;
+import touchline.game.hsl.Competition;
+import touchline.game.hsl.HslActionSyntax;
+import touchline.game.hsl.HslGame;
+import touchline.game.hsl.HslRules;
+import touchline.protocol.gamecontroller.ForwardedReturnPacket;
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.MonitorRequest;
+import touchline.protocol.gamecontroller.HslPenalty;
+import touchline.protocol.gamecontroller.TeamColour;
+import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
+import touchline.transport.gamecontroller.MonitorService;
 import touchline.transport.gamecontroller.RobotLiveness;
 
 import java.io.BufferedReader;
@@ -31,15 +44,23 @@ import java.util.concurrent.Callable;
  */
 @Command(name = "gc", mixinStandardHelpOptions = true,
         description = {"Run the GameController headless; referee actions are read from stdin, one per line.",
-                "", "Actions:", ActionSyntax.HELP},
-        footer = {"", "Example: printf 'ready\\nset\\nplay\\ngoal 13\\nstatus\\n' | ./touchline gc --team-a 13 "
-                + "--team-b 7 --dest 127.0.0.1"})
+                "", "Actions of the HSL formats (hsl20, hsl19; the 2026 rules):", HslActionSyntax.HELP,
+                "", "Actions of the older formats (hl12, hl12-640, spl18, v8, v7):", ActionSyntax.HELP},
+        footer = {"", "Example: printf 'kickoff 5\\nset\\nplay\\ngoal 5\\nstatus\\n' | ./touchline gc --team-a 5 "
+                + "--team-b 14 --dest 127.0.0.1"})
 public final class GcCommand implements Callable<Integer> {
 
-    @Option(names = "--format", defaultValue = "hl12",
-            description = "wire format: hl12 (HL v12, 688 B), hl12-640 (HL v12 2017-2021, 640 B), spl18 "
-                    + "(SPL v18, 118 B), v8 (2014, 158 B), v7 (2013, 116 B). Default: ${DEFAULT-VALUE}")
+    @Option(names = "--format", defaultValue = "hsl20",
+            description = "wire format: hsl20 (HSL v20, 158 B, GameController 7.x, RoboCup 2026), hsl19 (HSL v19, "
+                    + "198 B, GameController 6.0.x), hl12 (HL v12, 688 B), hl12-640 (HL v12 2017-2021, 640 B), spl18 "
+                    + "(SPL v18, 118 B), v8 (2014, 158 B), v7 (2013, 116 B). The HSL formats referee under the "
+                    + "2026 rules of that release. Default: ${DEFAULT-VALUE}")
     String format;
+
+    @Option(names = "--competition", defaultValue = "middle_advanced",
+            description = "HSL competition: small_foundation (4 players), small_advanced (7), middle_foundation (3), "
+                    + "middle_advanced (5), large_foundation (3), large_advanced (5). Default: ${DEFAULT-VALUE}")
+    String competition;
 
     @Option(names = "--team-a", required = true, description = "team number on the left, kicks off first")
     int teamA;
@@ -47,12 +68,21 @@ public final class GcCommand implements Callable<Integer> {
     @Option(names = "--team-b", required = true, description = "team number on the right")
     int teamB;
 
-    @Option(names = "--colour-a", defaultValue = "1", description = "colour of team A (0 blue, 1 red, ...). "
-            + "Default: ${DEFAULT-VALUE}")
-    int colourA;
+    @Option(names = "--colour-a", defaultValue = "red", description = "field player colour of team A: a name "
+            + "(blue red yellow black white green orange purple brown gray) or its number. Default: ${DEFAULT-VALUE}")
+    String colourA;
 
-    @Option(names = "--colour-b", defaultValue = "0", description = "colour of team B. Default: ${DEFAULT-VALUE}")
-    int colourB;
+    @Option(names = "--colour-b", defaultValue = "blue", description = "field player colour of team B. "
+            + "Default: ${DEFAULT-VALUE}")
+    String colourB;
+
+    @Option(names = "--goalkeeper-colour-a", defaultValue = "purple",
+            description = "HSL: goalkeeper colour of team A. Default: ${DEFAULT-VALUE}")
+    String goalkeeperColourA;
+
+    @Option(names = "--goalkeeper-colour-b", defaultValue = "yellow",
+            description = "HSL: goalkeeper colour of team B. Default: ${DEFAULT-VALUE}")
+    String goalkeeperColourB;
 
     @Option(names = "--dest", paramLabel = "ADDRESS[:PORT]",
             description = "destination of game-state packets, repeatable (default 255.255.255.255:3838)")
@@ -68,14 +98,21 @@ public final class GcCommand implements Callable<Integer> {
     @Option(names = "--bind", defaultValue = "0.0.0.0", description = "local address of the receiving sockets")
     String bind;
 
+    @Option(names = "--monitor-port", description = "HSL: UDP port where monitor applications (TeamCommunication"
+            + "Monitor, a console with --gc-monitor) register for the true state and forwarded return packets "
+            + "(default 3636; -1 = none)")
+    Integer monitorPort;
+
     @Option(names = "--v7-compat", description = "also send the v7 compatibility packet every cycle")
     boolean v7Compat;
 
-    @Option(names = "--players", defaultValue = "4", description = "players per team. Default: ${DEFAULT-VALUE}")
-    int players;
+    @Option(names = "--players", description = "players per team of the older formats (default 4); "
+            + "in HSL the competition decides")
+    Integer players;
 
-    @Option(names = "--half", defaultValue = "600", description = "half length in seconds. Default: ${DEFAULT-VALUE}")
-    int halfSeconds;
+    @Option(names = "--half", description = "half length in seconds of the older formats (default 600); "
+            + "in HSL the release's rules decide")
+    Integer halfSeconds;
 
     @Option(names = "--realtime", negatable = true, defaultValue = "true", fallbackValue = "true",
             description = "real-time scheduling of the sender thread (Linux, root or CAP_SYS_NICE; on by default, "
@@ -101,12 +138,61 @@ public final class GcCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         GcProfile profile = GcProfile.parse(format);
         if (profile == null) {
-            out.println("error: unknown format '" + format + "' (hl12, hl12-640, spl18, v8, v7)");
+            out.println("error: unknown format '" + format + "' (" + GcProfile.names() + ")");
             return 2;
         }
+        TeamColour[] a = {colour(colourA), colour(goalkeeperColourA)};
+        TeamColour[] b = {colour(colourB), colour(goalkeeperColourB)};
+        if (a[0] == null || a[1] == null || b[0] == null || b[1] == null) {
+            out.println("error: unknown colour (blue red yellow black white green orange purple brown gray, or 0-9)");
+            return 2;
+        }
+        RefereedGame referee;
+        LineHandler handler;
+        if (profile.hsl()) {
+            Competition c = Competition.parse(competition);
+            String wrong = c == null ? "unknown competition '" + competition + "'"
+                    : players != null || halfSeconds != null
+                    ? "--players and --half are for the older formats; in HSL the competition and release decide" : null;
+            wrong = wrong != null ? wrong : teamA == teamB ? "the two teams need different numbers"
+                    : HslGame.colourConflict(a, b);
+            if (wrong != null) {
+                out.println("error: " + wrong);
+                return 2;
+            }
+            HslGame game = new HslGame(HslRules.forVersion(profile.hslVersion(), c), teamA, a, teamB, b,
+                    GameClock.system());
+            HslActionSyntax syntax = new HslActionSyntax();
+            referee = game;
+            handler = line -> {
+                HslActionSyntax.Parsed parsed = syntax.parse(line);
+                return parsed.error() != null ? "error: " + parsed.error() : outcome(game.perform(parsed.action()));
+            };
+        } else {
+            LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(
+                    players == null ? 4 : players, halfSeconds == null ? 600 : halfSeconds);
+            Game game = new Game(params, teamA, a[0].ordinal(), teamB, b[0].ordinal(), GameClock.system());
+            ActionSyntax syntax = new ActionSyntax();
+            referee = game;
+            handler = line -> {
+                ActionSyntax.Parsed parsed = syntax.parse(line, game.snapshot());
+                return parsed.error() != null ? "error: " + parsed.error() : outcome(game.perform(parsed.action()));
+            };
+        }
+        return referee(profile, referee, handler);
+    }
+
+    /** What a line of stdin does to the game; returns the line to print. */
+    private interface LineHandler {
+        String handle(String line);
+    }
+
+    private static String outcome(Outcome o) {
+        return (o.applied() ? "ok: " : "refused: ") + o.message();
+    }
+
+    private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
-        LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(players, halfSeconds);
-        Game game = new Game(params, teamA, colourA, teamB, colourB, GameClock.system());
         MatchMode matchMode = new MatchMode(GameClock.system());
         try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode)) {
             gc.addEventListener(event -> print("! " + event));
@@ -118,6 +204,12 @@ public final class GcCommand implements Callable<Integer> {
                     print("state: " + now);
                 }
             });
+            int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
+            if (profile.hsl() && monitorRequests >= 0) {
+                MonitorService m = gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                        GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+                print("monitors register on " + m.requestAddress());
+            }
             gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
@@ -127,7 +219,6 @@ public final class GcCommand implements Callable<Integer> {
                         : "! no real-time priority (500 ms cadence may jitter on a busy machine): " + why);
             }
             print("state: " + game.describe());
-            ActionSyntax syntax = new ActionSyntax();
             BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
             for (String line = in.readLine(); line != null; line = in.readLine()) {
                 String cmd = line.trim();
@@ -142,35 +233,47 @@ public final class GcCommand implements Callable<Integer> {
                 } else if (cmd.equals("status")) {
                     status(gc);
                 } else {
-                    ActionSyntax.Parsed parsed = syntax.parse(cmd, game.snapshot());
-                    if (parsed.error() != null) {
-                        print("error: " + parsed.error());
-                        continue;
-                    }
-                    Outcome o = game.perform(parsed.action());
-                    print((o.applied() ? "ok: " : "refused: ") + o.message());
+                    print(handler.handle(cmd));
                 }
             }
-            // Let the last change go out before closing (it is sent at once, this is only a margin).
+            // The HSL schedule does not send a change at once: send the final state before closing.
+            gc.sender().sendNow();
             Thread.sleep(100);
         }
         return 0;
     }
 
-    private static String stateLine(Game game) {
+    /** A colour by name or number, null when neither. */
+    static TeamColour colour(String text) {
+        String t = text.trim();
+        if (!t.isEmpty() && t.chars().allMatch(Character::isDigit)) {
+            return TeamColour.ofWire(Integer.parseInt(t));
+        }
+        for (TeamColour c : TeamColour.values()) {
+            if (c.name().equalsIgnoreCase(t) || (c == TeamColour.GRAY && t.equalsIgnoreCase("grey"))) {
+                return c;
+            }
+        }
+        return null;
+    }
+
+    private static String stateLine(RefereedGame game) {
         // Without timers: a change of the game, not of the clock.
         String d = game.describe();
         return d.replaceAll(", -?\\d+ s left, secondary -?\\d+ s", "");
     }
 
     private void status(EmbeddedGameController gc) {
-        print("status: " + gc.game().describe());
+        RefereedGame game = gc.referee();
+        print("status: " + game.describe());
         print("packets sent: " + gc.sender().packetsSent() + ", send errors: " + gc.sender().sendErrors());
-        long now = gc.game().now();
+        long now = game.now();
+        GameControlData data = game.trueData();
         for (var e : gc.liveness().all(now).entrySet()) {
             RobotLiveness.RobotKey k = e.getKey();
+            TeamInfo team = data.team(k.team());
             print("robot " + k + ": " + e.getValue() + ", penalty "
-                    + gc.game().snapshot().team(k.team()).player(k.player()).penalty());
+                    + (team == null ? "-" : penaltyName(team.player(k.player()).penalty(), gc.config().profile().hsl())));
         }
         gc.badPackets().bySource().forEach((src, t) ->
                 print("bad GameController packets from " + src + ": " + t.count() + " (last: " + t.lastReason() + ")"));
@@ -178,6 +281,18 @@ public final class GcCommand implements Callable<Integer> {
         if (!warning.isEmpty()) {
             print("! " + warning);
         }
+    }
+
+    private static String penaltyName(int neutral, boolean hsl) {
+        if (hsl) {
+            return HslPenalty.ofNeutral(neutral).name();
+        }
+        for (Penalty p : Penalty.values()) {
+            if (p.code() == neutral) {
+                return p.name();
+            }
+        }
+        return String.valueOf(neutral);
     }
 
     private GcConfig config(GcProfile profile) {

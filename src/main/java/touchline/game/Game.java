@@ -2,9 +2,6 @@ package touchline.game;
 
 import touchline.protocol.gamecontroller.GameControlData;
 
-import java.util.ArrayDeque;
-import java.util.ArrayList;
-import java.util.Deque;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 
@@ -14,16 +11,13 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * may call it concurrently. Listeners hear about every change (action, undo, or a change that
  * happened by itself in {@link #advance()}) so the sender can publish it at once.
  */
-public final class Game {
+public final class Game implements RefereedGame {
 
     /** How many actions can be undone. */
     public static final int UNDO_DEPTH = 50;
 
-    private record Done(String description, GameState before) {
-    }
-
     private final GameClock clock;
-    private final Deque<Done> history = new ArrayDeque<>();
+    private final UndoHistory<GameState> history = new UndoHistory<>(UNDO_DEPTH);
     private final List<Runnable> listeners = new CopyOnWriteArrayList<>();
     private GameState state;
 
@@ -43,10 +37,12 @@ public final class Game {
         this.state = new GameState(params, teamA, colourA, teamB, colourB, clock.millis());
     }
 
+    @Override
     public void addListener(Runnable onChange) {
         listeners.add(onChange);
     }
 
+    @Override
     public long now() {
         return clock.millis();
     }
@@ -60,10 +56,7 @@ public final class Game {
             if (!action.isLegal(state)) {
                 return new Outcome(false, "illegal now: " + action.describe() + " (state " + describeLocked(now) + ")");
             }
-            history.push(new Done(action.describe(), state.copy()));
-            while (history.size() > UNDO_DEPTH) {
-                history.removeLast();
-            }
+            history.push(action.describe(), state.copy());
             action.apply(state, now);
             state.syncClock(now);
             outcome = new Outcome(true, action.describe());
@@ -73,6 +66,7 @@ public final class Game {
     }
 
     /** Applies changes that happen as time passes (penalties ending, half-time switch). */
+    @Override
     public boolean advance() {
         boolean changed;
         synchronized (this) {
@@ -87,28 +81,32 @@ public final class Game {
     }
 
     /** Reverts the last applied action (timers keep running as if it had never happened). */
+    @Override
     public Outcome undo() {
-        Done done;
+        UndoHistory.Done<GameState> done;
         synchronized (this) {
-            done = history.poll();
+            done = history.pop();
             if (done == null) {
                 return new Outcome(false, "nothing to undo");
             }
-            state = done.before;
+            state = done.before();
         }
         notifyListeners();
-        return new Outcome(true, "undid " + done.description);
+        return new Outcome(true, "undid " + done.description());
     }
 
     /** Descriptions of the undoable actions, most recent first. */
     public synchronized List<String> undoList() {
-        List<String> out = new ArrayList<>();
-        history.forEach(d -> out.add(d.description));
-        return out;
+        return history.descriptions();
     }
 
     public synchronized boolean isLegal(Action action) {
         return action.isLegal(state);
+    }
+
+    @Override
+    public synchronized boolean hasTeam(int number) {
+        return state.team(number) != null;
     }
 
     /** A copy of the current state, safe to read on any thread. */
@@ -117,11 +115,13 @@ public final class Game {
     }
 
     /** The packet content right now (packetNumber 0). */
+    @Override
     public synchronized GameControlData controlData() {
         return state.toControlData(clock.millis());
     }
 
     /** One line such as {@code PLAYING 1st half, 512 s, kick-off 7, 1:0}. */
+    @Override
     public synchronized String describe() {
         return describeLocked(clock.millis());
     }

@@ -6,6 +6,8 @@ import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.GameState8;
 import touchline.protocol.gamecontroller.HlGameState12;
+import touchline.protocol.gamecontroller.HslGameState20;
+import touchline.protocol.gamecontroller.HslPenalty;
 
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -54,7 +56,7 @@ class GcCommandTest {
         try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
             String dest = "127.0.0.1:" + robot.getLocalPort();
             String out = run("ready\nset\nplay\ngoal 13\npenalty 7 2 physical_contact\nfly away\nplay\nundo\nstatus\n",
-                    "--team-a", "13", "--team-b", "7", "--dest", dest, "--return-port", "0", "--rival-port", "-1",
+                    "--format", "hl12", "--team-a", "13", "--team-b", "7", "--dest", dest, "--return-port", "0", "--rival-port", "-1",
                     "--bind", "127.0.0.1");
             assertTrue(out.contains("ok: goal 13"), out);
             assertTrue(out.contains("state: READY 1st half, kick-off 7, 13 1:0 7"), out);
@@ -67,6 +69,51 @@ class GcCommandTest {
             assertEquals(1, last.value().team(13).score());
             assertEquals(GameControlData.STATE_READY, last.value().state());
             assertEquals(0, last.value().team(7).player(2).penalty(), "undo reached the wire");
+        }
+    }
+
+    @Test
+    void refereesAnHslGameByDefault() throws Exception {
+        try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+            String out = run("kickoff 5\nset\nplay\ngoal 5\ncorner 14\nset\nplay\npenalize 14 3 pushing\n"
+                            + "unpenalize 14 3\ncaution 5 2\ncaution 5 2\ncorner 14\nteammessage 5 600\nstatus\n",
+                    "--team-a", "5", "--team-b", "14", "--dest", "127.0.0.1:" + robot.getLocalPort(),
+                    "--return-port", "0", "--rival-port", "-1", "--monitor-port", "0", "--bind", "127.0.0.1");
+            assertTrue(out.contains("monitors register on /127.0.0.1:"), out);
+            assertTrue(out.contains("GameController hsl20 sending"), out);
+            assertTrue(out.contains("ok: kick off 5"), out);
+            assertTrue(out.contains("robots still see SET"), out);
+            assertTrue(out.contains("ok: goal 5"), out);
+            assertTrue(out.contains("refused: illegal now: corner kick 14 (READY"), out);
+            assertTrue(out.contains("ok: penalize 5 2 cautioned"), out);
+            assertTrue(out.contains("ok: corner kick 14"), out);
+            assertTrue(out.contains("status: PLAYING STOPPED corner kick 1st half"), out);
+            byte[] last = lastDatagram(robot);
+            assertEquals(HslGameState20.SIZE, last.length);
+            Decoded<GameControlData> d = new HslGameState20().decode(last);
+            assertTrue(d.isOk(), d.toString());
+            assertEquals(GameControlData.STATE_PLAYING, d.value().state());
+            assertTrue(d.value().stopped(), "a corner kick stops play");
+            assertEquals(0, d.value().team(5).score(), "a 600-byte team message is illegal communication");
+            assertEquals(HslPenalty.SENT_OFF.neutral(), d.value().team(5).player(2).penalty(), "second caution");
+            assertEquals(HslPenalty.PUSHING.neutral(), d.value().team(14).player(3).penalty());
+            assertEquals(5, d.value().playersPerTeam(), "middle_advanced by default");
+            assertEquals(1, d.value().competitionType());
+        }
+    }
+
+    @Test
+    void hslOptionsThatDoNotFitAreErrors() {
+        for (String[] args : new String[][]{{"--competition", "tiny"}, {"--players", "4"},
+                {"--colour-b", "red"}, {"--colour-a", "pink"}}) {
+            ByteArrayOutputStream buf = new ByteArrayOutputStream();
+            String[] all = new String[args.length + 4];
+            System.arraycopy(new String[]{"--team-a", "5", "--team-b", "14"}, 0, all, 0, 4);
+            System.arraycopy(args, 0, all, 4, args.length);
+            int code = new CommandLine(new GcCommand(new ByteArrayInputStream(new byte[0]),
+                    new PrintStream(buf, true, StandardCharsets.UTF_8))).execute(all);
+            assertEquals(2, code, String.join(" ", args));
+            assertTrue(buf.toString(StandardCharsets.UTF_8).startsWith("error: "), buf.toString(StandardCharsets.UTF_8));
         }
     }
 

@@ -4,7 +4,18 @@ import touchline.transport.gamecontroller.GcSender;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
+import touchline.game.hsl.Competition;
+import touchline.game.hsl.FreeSetPlay;
+import touchline.game.hsl.HslAction;
+import touchline.game.hsl.HslGame;
+import touchline.game.hsl.HslRules;
+import touchline.game.hsl.SetPlay;
+import touchline.game.hsl.StartSetPlay;
+import touchline.game.hsl.StopPlay;
+import touchline.game.hsl.WaitForSetPlay;
 import touchline.protocol.gamecontroller.HlGameState12;
+import touchline.protocol.gamecontroller.HslGameState20;
+import touchline.protocol.gamecontroller.TeamColour;
 
 import java.io.IOException;
 import java.net.DatagramPacket;
@@ -22,24 +33,31 @@ import java.util.Locale;
  * {@code --load-threads N} busy threads stand in for a loaded console; the first
  * {@code --warmup N} seconds (default 10) are not measured. {@code --realtime} gives our sender
  * (and both receivers, not the baseline sender) SCHED_RR like {@code touchline gc --realtime}.
+ * {@code --hsl} measures the HSL schedule instead: an hsl20 game is stopped every 5 s, and the
+ * stop-to-datagram latency, the burst's 200 ms and the grid's 500 ms are reported apart.
  */
 public final class GcIntervalBenchmark {
 
     private static final long INTERVAL_MS = 500;
+    /** HSL mode: how often play is stopped (and resumed halfway between). */
+    private static final long STOP_EVERY_MS = 5_000;
+
     /** Runs from the command line's arguments; returns the exit status (2: a wrong argument). */
     public static int run(String[] args) throws Exception {
         int seconds = 600;
         int loadThreads = 0;
         int warmupSeconds = 10;
         boolean realtime = false;
+        boolean hsl = false;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
                 case "--load-threads" -> loadThreads = Integer.parseInt(args[++i]);
                 case "--warmup" -> warmupSeconds = Integer.parseInt(args[++i]);
                 case "--realtime" -> realtime = true;
+                case "--hsl" -> hsl = true;
                 default -> {
-                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N] [--realtime]");
+                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N] [--realtime] [--hsl]");
                     return 2;
                 }
             }
@@ -50,6 +68,10 @@ public final class GcIntervalBenchmark {
             t.setDaemon(true);
             t.start();
             load.add(t);
+        }
+        if (hsl) {
+            hslBursts(seconds, warmupSeconds, realtime);
+            return 0;
         }
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
         HlGameState12 format = new HlGameState12();
@@ -84,6 +106,50 @@ public final class GcIntervalBenchmark {
             System.out.println("baseline: send, then sleep 500 ms (Java GC style): " + baseline.summary());
         }
         return 0;
+    }
+
+    /**
+     * The HSL schedule: an hsl20 game in play is stopped every {@link #STOP_EVERY_MS} and resumed
+     * halfway between; the probe's receive times are judged by {@link BurstTiming}.
+     */
+    private static void hslBursts(int seconds, int warmupSeconds, boolean realtime) throws Exception {
+        HslGame game = new HslGame(HslRules.v7(Competition.MIDDLE_ADVANCED), 5,
+                new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
+                new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, GameClock.system());
+        List<Long> stops = new ArrayList<>();
+        try (GcIntervalProbe probe = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
+             GcSender sender = new GcSender(p -> {
+                 if (p) {
+                     game.advance();
+                 }
+                 return game.controlData();
+             }, List.of(new HslGameState20()), List.of(probe.address()), null, e -> { }, INTERVAL_MS, true)) {
+            game.addListener(() -> sender.changed(game.controlData().stopped()));
+            for (HslAction a : List.<HslAction>of(new StartSetPlay(5, SetPlay.KICK_OFF), new WaitForSetPlay(),
+                    new FreeSetPlay())) {
+                game.perform(a);
+            }
+            System.out.printf(Locale.ROOT, "HSL schedule: stop every %d ms for %d s after %d s warm-up, %d cores%n",
+                    STOP_EVERY_MS, seconds, warmupSeconds, Runtime.getRuntime().availableProcessors());
+            sender.useRealtimePriority(realtime);
+            sender.start();
+            Thread.sleep(warmupSeconds * 1000L);
+            probe.reset();
+            long end = System.nanoTime() + seconds * 1_000_000_000L;
+            while (System.nanoTime() < end) {
+                Thread.sleep(STOP_EVERY_MS / 2);
+                stops.add(System.nanoTime());
+                game.perform(new StopPlay(false));
+                Thread.sleep(STOP_EVERY_MS / 2);
+                game.perform(new StopPlay(true));
+            }
+            System.out.println("sender real-time priority: " + (sender.realtimeOutcome().isEmpty() ? "yes"
+                    : sender.realtimeOutcome()));
+            long[] stopNanos = stops.stream().mapToLong(Long::longValue).toArray();
+            System.out.println("touchline GcSender, HSL schedule: "
+                    + new BurstTiming(probe.receiveTimes(), stopNanos, INTERVAL_MS, GcSender.BURST_SPACING_MS)
+                    .summary());
+        }
     }
 
     private static void sleepAfterSend(DatagramSocket socket, Game game, HlGameState12 format,

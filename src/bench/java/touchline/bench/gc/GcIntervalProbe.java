@@ -68,6 +68,13 @@ public final class GcIntervalProbe implements AutoCloseable {
         }
     }
 
+    /** The receive times so far (System.nanoTime), in order. */
+    public long[] receiveTimes() {
+        synchronized (lock) {
+            return Arrays.copyOf(nanos, count);
+        }
+    }
+
     /** Each interval's deviation from the nominal period, in ms (negative: early). */
     public double[] deviationsMs() {
         synchronized (lock) {
@@ -92,7 +99,7 @@ public final class GcIntervalProbe implements AutoCloseable {
                 dev.length, intervalMs, percentile(abs, 50), percentile(abs, 99), abs[abs.length - 1], intervalMs + mean);
     }
 
-    static double percentile(double[] sorted, double p) {
+    public static double percentile(double[] sorted, double p) {
         int i = (int) Math.ceil(p / 100.0 * sorted.length) - 1;
         return sorted[Math.max(0, Math.min(sorted.length - 1, i))];
     }

@@ -6,6 +6,7 @@ import touchline.game.Action;
 import touchline.game.Game;
 import touchline.game.MatchMode;
 import touchline.game.Outcome;
+import touchline.game.RefereedGame;
 import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.protocol.gamecontroller.GameControlData;
@@ -42,6 +43,8 @@ public final class EmbeddedGameController implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
     private static final String OWN_SOURCE = "this console's GameController";
 
+    private final RefereedGame referee;
+    /** The HL game when one is refereed (robots' manual penalty requests apply to it), else null. */
     private final Game game;
     private final GcConfig config;
     private final EnvelopeSink sink;
@@ -55,6 +58,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     private final List<Consumer<String>> eventListeners = new CopyOnWriteArrayList<>();
     private final GcSender sender;
     private final List<GcListener> listeners = new ArrayList<>();
+    private volatile MonitorService monitors;
     private final int senderPort;
 
     /**
@@ -65,7 +69,28 @@ public final class EmbeddedGameController implements AutoCloseable {
      */
     public EmbeddedGameController(Game game, GcConfig config, EnvelopeSink sink, MatchMode matchMode)
             throws IOException {
-        this.game = game;
+        this((RefereedGame) game, config, sink, matchMode);
+    }
+
+    /**
+     * @param referee   the game to referee: an HSL game for the HSL formats, an HL {@link Game}
+     *                  for the others
+     * @param config    formats, addresses and ports
+     * @param sink      receives every GameController envelope (IN and OUT)
+     * @param matchMode told the state we send and the states we hear (may be null)
+     * @throws IllegalArgumentException when the game's rules do not fit the format
+     */
+    public EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, MatchMode matchMode)
+            throws IOException {
+        boolean hslGame = !(referee instanceof Game);
+        if (hslGame != config.profile().hsl()) {
+            throw new IllegalArgumentException(config.profile().hsl()
+                    ? "the " + config.profile().cliName() + " format sends a game under the HSL 2026 rules; "
+                    + "referee it with 'touchline gc --format " + config.profile().cliName() + "'"
+                    : "an HSL game is sent in the hsl20 or hsl19 format, not " + config.profile().cliName());
+        }
+        this.referee = referee;
+        this.game = referee instanceof Game g ? g : null;
         this.config = config;
         this.sink = sink;
         this.matchMode = matchMode;
@@ -75,7 +100,7 @@ public final class EmbeddedGameController implements AutoCloseable {
             formats.add(new GameState7());
         }
         sender = new GcSender(this::nextState, formats, config.destinations(), config.senderBind(), sink,
-                config.intervalMs());
+                config.intervalMs(), config.profile().hsl());
         senderPort = sender.localAddress().getPort();
         sender.useRealtimePriority(config.realtime());
         try {
@@ -87,15 +112,37 @@ public final class EmbeddedGameController implements AutoCloseable {
             close();
             throw e;
         }
-        game.addListener(sender::sendNow);
+        referee.addListener(() -> sender.changed(referee.controlData().stopped()));
     }
 
     public void start() {
         sender.start();
     }
 
+    /**
+     * Answers monitor applications as the official HSL GameController does (HSL formats only;
+     * {@link MonitorService}): requests on {@code requestBind}, true data to the monitors'
+     * {@code trueDataPort}, return packets forwarded to their {@code forwardPort}.
+     */
+    public MonitorService serveMonitors(InetSocketAddress requestBind, int trueDataPort, int forwardPort)
+            throws IOException {
+        if (!config.profile().hsl()) {
+            throw new IllegalStateException("monitors are served in the HSL formats only");
+        }
+        MonitorService m = new MonitorService(requestBind, trueDataPort, forwardPort,
+                config.profile().trueDataFormat(), this::emit);
+        monitors = m;
+        return m;
+    }
+
+    /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
     public Game game() {
         return game;
+    }
+
+    /** The game refereed here, whatever its rules. */
+    public RefereedGame referee() {
+        return referee;
     }
 
     public GcConfig config() {
@@ -134,14 +181,18 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     /** "" or the loud warning that another GameController is sending. */
     public String rivalWarning() {
-        return rivals.warning(game.now());
+        return rivals.warning(referee.now());
     }
 
     private GameControlData nextState(boolean periodic) {
         if (periodic) {
-            game.advance();
+            referee.advance();
         }
-        GameControlData data = game.controlData();
+        GameControlData data = referee.controlData();
+        MonitorService m = monitors;
+        if (periodic && m != null) {
+            m.publish(referee.trueData());
+        }
         if (matchMode != null) {
             matchMode.observe(data.state(), OWN_SOURCE);
         }
@@ -159,14 +210,18 @@ public final class EmbeddedGameController implements AutoCloseable {
             return;
         }
         ReturnPacket p = decoded.value();
-        if (game.snapshot().team(p.team()) == null) {
+        if (!referee.hasTeam(p.team())) {
             rejectReturn(data, from, "team " + p.team() + " is not playing in this game");
             return;
         }
         sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 p.kind(), null, data, null));
-        liveness.heard(p.team(), p.player(), game.now());
-        Action requested = manualRequests.onMessage(p.team(), p.player(), p.message());
+        liveness.heard(p.team(), p.player(), referee.now());
+        MonitorService m = monitors;
+        if (m != null) {
+            m.returnPacket(from, data);
+        }
+        Action requested = game == null ? null : manualRequests.onMessage(p.team(), p.player(), p.message());
         if (requested != null) {
             Outcome o = game.perform(requested);
             emit("robot " + p.team() + "/" + p.player() + " asked for " + requested.describe() + ": "
@@ -200,15 +255,15 @@ public final class EmbeddedGameController implements AutoCloseable {
         if (error != null) {
             badPackets.count(from, error);
         }
-        boolean wasActive = rivals.active(game.now()).containsKey(sourceKey(from));
-        rivals.heard(from, kind, decoded, game.now());
+        boolean wasActive = rivals.active(referee.now()).containsKey(sourceKey(from));
+        rivals.heard(from, kind, decoded, referee.now());
         sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
                 null, data, error));
         if (matchMode != null && decoded != null) {
             matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));
         }
         if (!wasActive) {
-            String warning = rivals.warning(game.now());
+            String warning = rivals.warning(referee.now());
             LOG.warn(warning);
             emit(warning);
         }
@@ -238,6 +293,10 @@ public final class EmbeddedGameController implements AutoCloseable {
     @Override
     public void close() {
         sender.close();
+        MonitorService m = monitors;
+        if (m != null) {
+            m.close();
+        }
         listeners.forEach(GcListener::close);
     }
 }

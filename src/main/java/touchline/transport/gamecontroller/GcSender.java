@@ -22,7 +22,9 @@ import java.util.concurrent.locks.LockSupport;
 /**
  * Sends the game state every 500 ms on a fixed, drift-free grid (deadline k·interval from the
  * start, not "sleep after send" like the Java GameController) and at once when
- * {@link #sendNow()} is called after a state change, without shifting the grid. Every cycle
+ * {@link #sendNow()} is called after a state change, without shifting the grid; or, for the HSL
+ * formats, on the official HSL schedule, where only a switch to stopped sends at once, followed
+ * by four more datagrams 200 ms apart ({@link SendSchedule}, told by {@link #changed}). Every cycle
  * sends one datagram per format (e.g. v8 plus the v7 compatibility packet) to every
  * destination; packetNumber starts at 0 and wraps 255→0. Each datagram is published as an
  * OUT envelope.
@@ -35,6 +37,9 @@ public final class GcSender implements AutoCloseable {
         GameControlData next(boolean periodic);
     }
 
+    /** Spacing of the HSL burst after play gets stopped. */
+    public static final long BURST_SPACING_MS = 200;
+
     private static final Logger LOG = LoggerFactory.getLogger(GcSender.class);
     /** The last stretch before a deadline is waited out by spinning: parkNanos can overshoot. */
     private static final long SPIN_NANOS = 300_000;
@@ -44,6 +49,10 @@ public final class GcSender implements AutoCloseable {
     private final List<InetSocketAddress> destinations;
     private final EnvelopeSink sink;
     private final long intervalNanos;
+    private final boolean burstOnStop;
+    /** Guarded by {@link #scheduleLock}; created when the sender thread starts. */
+    private SendSchedule schedule;
+    private final Object scheduleLock = new Object();
     private final DatagramChannel channel;
     private final AtomicBoolean wake = new AtomicBoolean();
     private final AtomicLong sent = new AtomicLong();
@@ -71,6 +80,17 @@ public final class GcSender implements AutoCloseable {
      */
     public GcSender(Source source, List<GameStateFormat> formats, List<InetSocketAddress> destinations,
                     InetSocketAddress bind, EnvelopeSink sink, long intervalMs) throws IOException {
+        this(source, formats, destinations, bind, sink, intervalMs, false);
+    }
+
+    /**
+     * @param burstOnStop the HSL schedule: no datagram at once after a change, except the burst
+     *                    when play gets stopped ({@link #changed})
+     */
+    public GcSender(Source source, List<GameStateFormat> formats, List<InetSocketAddress> destinations,
+                    InetSocketAddress bind, EnvelopeSink sink, long intervalMs, boolean burstOnStop)
+            throws IOException {
+        this.burstOnStop = burstOnStop;
         if (formats.isEmpty() || destinations.isEmpty()) {
             throw new IllegalArgumentException("need at least one format and one destination");
         }
@@ -124,6 +144,25 @@ public final class GcSender implements AutoCloseable {
         thread.start();
     }
 
+    /**
+     * The game changed; {@code stopped} is whether the state robots get now has play stopped.
+     * Older formats send at once; the HSL schedule only when this is the switch to stopped.
+     */
+    public void changed(boolean stopped) {
+        boolean extra;
+        synchronized (scheduleLock) {
+            extra = schedule == null ? !burstOnStop : schedule.changed(System.nanoTime(), stopped);
+        }
+        if (extra) {
+            sendNow();
+        } else {
+            Thread t = thread;
+            if (t != null) {
+                LockSupport.unpark(t); // the schedule may have moved the next datagram to now
+            }
+        }
+    }
+
     /** Sends the current state as soon as possible (after a state change). */
     public void sendNow() {
         wake.set(true);
@@ -143,17 +182,24 @@ public final class GcSender implements AutoCloseable {
 
     private void loop() {
         realtimeOutcome.complete(realtime ? new RealtimePriority(10).applyToCurrentThread() : NOT_REQUESTED);
-        long next = System.nanoTime();
+        long start = System.nanoTime();
+        synchronized (scheduleLock) {
+            schedule = burstOnStop ? SendSchedule.burstOnStop(start, intervalNanos, BURST_SPACING_MS * 1_000_000L)
+                    : SendSchedule.everyChange(start, intervalNanos);
+        }
         while (running) {
             long now = System.nanoTime();
+            long next;
+            synchronized (scheduleLock) {
+                next = schedule.next();
+            }
             boolean periodic = now - next >= 0;
             if (periodic || wake.get()) {
                 sendCycle(periodic);
                 if (periodic) {
-                    // Stay on the grid; after a stall skip the missed slots instead of bursting.
-                    do {
-                        next += intervalNanos;
-                    } while (System.nanoTime() - next >= 0);
+                    synchronized (scheduleLock) {
+                        schedule.sent(next, System.nanoTime());
+                    }
                 }
                 continue;
             }

@@ -1,0 +1,35 @@
+package touchline.game;
+
+import touchline.protocol.gamecontroller.GameControlData;
+
+/**
+ * What the embedded GameController's sender and receivers need of a refereed game, whatever
+ * league's rules it follows ({@link Game} for the Humanoid League, {@code hsl.HslGame} for the
+ * 2026 Humanoid Soccer League). Implementations serialise access themselves.
+ */
+public interface RefereedGame {
+
+    /** Called after every change (action, undo, or a change that came with time). */
+    void addListener(Runnable onChange);
+
+    long now();
+
+    /** Applies the changes time brings; true when the state (not only a clock) changed. */
+    boolean advance();
+
+    /** The packet content robots get now (packetNumber 0). */
+    GameControlData controlData();
+
+    /** The true state for monitors; the same as {@link #controlData()} where a league hides nothing. */
+    default GameControlData trueData() {
+        return controlData();
+    }
+
+    /** Whether a team with this number plays in this game. */
+    boolean hasTeam(int number);
+
+    Outcome undo();
+
+    /** One line for logs and the CLI's status. */
+    String describe();
+}
