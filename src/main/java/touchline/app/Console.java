@@ -15,6 +15,9 @@ import touchline.transport.gamecontroller.GcConfig;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
 import touchline.model.TrafficMeter;
+import touchline.model.store.NetworkLog;
+import touchline.model.store.PlotStore;
+import touchline.model.store.TextLog;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.EnvelopeBus;
@@ -85,12 +88,19 @@ public final class Console implements AutoCloseable {
             Replay r = replay;
             return r != null && !live.isLive() ? r.state().positionMicros() : clock.nowMicros();
         };
-        this.robots = new RobotRegistry(modelClock);
+        // Replayed robots are online, and their options stream, by the replay's position;
+        // live robots by the wall clock, whatever a replay does.
+        MicrosClock replayClock = () -> {
+            Replay r = replay;
+            return r != null ? r.state().positionMicros() : clock.nowMicros();
+        };
+        this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
         this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
-        this.options = new DebugOptionSession(udp, codec, modelClock);
-        this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
+        this.options = new DebugOptionSession(udp, codec, clock, replayClock);
+        this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
+                NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null && !live.isLive());
         bus.subscribe(new ReportedGameState(matchMode));
         setGate(() -> matchMode.hold("console request") ? Optional.of(matchMode.notice()) : Optional.empty());
         if (withModel) {
@@ -190,7 +200,10 @@ public final class Console implements AutoCloseable {
     /** The model's "now": wall time, or the replay position while a replay plays with live listening paused. */
     public MicrosClock modelClock() { return modelClock; }
     public MatchMode matchMode() { return matchMode; }
-    /** The bounded stores the UI's views pull from once per frame. */
+    /**
+     * The bounded stores the UI's views pull from once per frame: the replay's while one plays
+     * with live listening paused, else the live ones (both stay reachable by origin).
+     */
     public touchline.model.store.ViewStores stores() { return stores; }
 
     /** Starts recording every envelope (in and out, live or replayed) into an MCAP file. */
@@ -214,11 +227,21 @@ public final class Console implements AutoCloseable {
         return recorder == null ? Optional.empty() : Optional.of(recorder.stats());
     }
 
-    /** Opens a recording and plays it into the same stream as live traffic (paused at its start). */
+    /**
+     * Opens a recording and plays it into the same stream as live traffic (paused at its
+     * start). Its envelopes are marked replayed: they never cause a datagram, never change
+     * match mode, and fill the model beside the live robots, never merged with them. Each
+     * jump of the replay (a seek, a loop going round) starts its robots and stores afresh.
+     */
     public synchronized Replay openReplay(Path file) throws RecordingException {
         closeReplay();
         Recording recording = Recording.open(file, kinds);
-        replay = new Replay(recording, bus);
+        long start = recording.startMicros();
+        stores.restartReplay(start);
+        replay = new Replay(recording, bus, () -> {
+            stores.restartReplay(start);
+            robots.forgetReplayed();
+        });
         return replay;
     }
 
@@ -226,10 +249,14 @@ public final class Console implements AutoCloseable {
         return Optional.ofNullable(replay);
     }
 
+    /** Closes the replay; its robots, options and stores go with it, live ones stay. */
     public synchronized void closeReplay() {
         if (replay != null) {
             replay.close();
             replay = null;
+            robots.forgetReplayed();
+            options.forgetReplayed();
+            stores.restartReplay(clock.nowMicros());
         }
     }
 

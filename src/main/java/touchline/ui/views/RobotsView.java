@@ -50,7 +50,7 @@ public final class RobotsView implements View {
         });
         table.getColumns().add(online);
         table.getColumns().add(column("ID", r -> Integer.toString(r.id()), 44));
-        table.getColumns().add(column("Name", r -> text(r.name()), 100));
+        table.getColumns().add(column("Name", r -> text(r.label()), 100)); // "robot 3 (replay)" for a replayed one
         table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
         table.getColumns().add(column("Role", r -> text(r.role()), 90));
