@@ -100,7 +100,7 @@ public final class Console implements AutoCloseable {
         this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
         this.options = new DebugOptionSession(udp, codec, clock, replayClock);
         this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
-                NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null && !live.isLive());
+                NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
         bus.subscribe(new ReportedGameState(matchMode));
         setGate(() -> matchMode.hold("console request") ? Optional.of(matchMode.notice()) : Optional.empty());
         if (withModel) {
@@ -201,8 +201,9 @@ public final class Console implements AutoCloseable {
     public MicrosClock modelClock() { return modelClock; }
     public MatchMode matchMode() { return matchMode; }
     /**
-     * The bounded stores the UI's views pull from once per frame: the replay's while one plays
-     * with live listening paused, else the live ones (both stay reachable by origin).
+     * The bounded stores the UI's views pull from once per frame: the replay's while one is
+     * open (opening it is asking to look at it), else the live ones. Live data keeps arriving
+     * in the live stores meanwhile; both stay reachable by origin.
      */
     public touchline.model.store.ViewStores stores() { return stores; }
 

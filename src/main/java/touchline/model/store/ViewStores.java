@@ -11,8 +11,8 @@ import java.util.function.BooleanSupplier;
  * Live and replayed envelopes fill separate stores, so a replayed robot's plot never mixes
  * with the live robot of the same number, and a seek can start the replay's stores afresh
  * ({@link #restartReplay}) without touching live data. The accessors return the stores the
- * views show: the replay's while {@code showReplay} says so (a replay plays with live
- * listening paused), else the live ones.
+ * views show: the replay's while {@code showReplay} says so (the console: while a replay is
+ * open), else the live ones.
  */
 public final class ViewStores implements EnvelopeSink {
 
