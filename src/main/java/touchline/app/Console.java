@@ -50,6 +50,7 @@ public final class Console implements AutoCloseable {
     private final ConsoleConfig config;
     private final MicrosClock clock;
     private final MicrosClock modelClock;
+    private final MicrosClock replayClock;
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
     private final EnvelopeBus bus = new EnvelopeBus();
@@ -90,7 +91,7 @@ public final class Console implements AutoCloseable {
         };
         // Replayed robots are online, and their options stream, by the replay's position;
         // live robots by the wall clock, whatever a replay does.
-        MicrosClock replayClock = () -> {
+        replayClock = () -> {
             Replay r = replay;
             return r != null ? r.state().positionMicros() : clock.nowMicros();
         };
@@ -199,6 +200,8 @@ public final class Console implements AutoCloseable {
 
     /** The model's "now": wall time, or the replay position while a replay plays with live listening paused. */
     public MicrosClock modelClock() { return modelClock; }
+    /** The replay's position (wall time while none is open): the "now" of replayed robots. */
+    public MicrosClock replayClock() { return replayClock; }
     public MatchMode matchMode() { return matchMode; }
     /**
      * The bounded stores the UI's views pull from once per frame: the replay's while one is

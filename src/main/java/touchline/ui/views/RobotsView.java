@@ -57,7 +57,8 @@ public final class RobotsView implements View {
         table.getColumns().add(column("State", r -> text(r.state()), 90));
         table.getColumns().add(column("Game", r -> text(r.gameState()), 80));
         table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
-        table.getColumns().add(column("Last seen", r -> ago(context.console().modelClock().nowMicros() - r.lastSeenMicros()), 76));
+        table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.console().replayClock()
+                : context.console().modelClock()).nowMicros() - r.lastSeenMicros()), 76));
         table.getColumns().add(column("Status", r -> r.online() ? "online" : "offline", 64));
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
