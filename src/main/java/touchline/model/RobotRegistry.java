@@ -35,6 +35,7 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     private final Map<Integer, Robot> robots = new TreeMap<>();
     private final Map<Integer, Robot> replayed = new TreeMap<>();
     private final Map<InetSocketAddress, Source> sources = new LinkedHashMap<>();
+    private final Map<InetSocketAddress, Source> replayedSources = new LinkedHashMap<>();
     private final List<RobotPresence> presence = new CopyOnWriteArrayList<>();
     private final List<String> notes = new ArrayList<>();
     private long version;
@@ -75,7 +76,7 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
         synchronized (this) {
             Source source = null;
             if (e.peer() != null) {
-                source = sources.computeIfAbsent(e.peer(), a -> new Source());
+                source = (e.replayed() ? replayedSources : sources).computeIfAbsent(e.peer(), a -> new Source());
                 source.packets++;
                 source.lastSeen = e.timeMicros();
             }
@@ -179,20 +180,24 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     }
 
     /**
-     * Forgets the replayed robots (the replay jumped or closed): they appear again, counted
+     * Forgets the replayed robots and senders (the replay jumped or closed): they appear again, counted
      * afresh, with the next envelope the replay plays. Live robots are untouched.
      */
     public synchronized void forgetReplayed() {
-        if (!replayed.isEmpty()) {
+        if (!replayed.isEmpty() || !replayedSources.isEmpty()) {
             replayed.clear();
+            replayedSources.clear();
             version++;
         }
     }
 
     public synchronized List<SourceSnapshot> sources() {
         List<SourceSnapshot> out = new ArrayList<>();
-        sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen)));
-        out.sort(Comparator.comparing(s -> s.address().toString()));
+        sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen,
+                Origin.LIVE)));
+        replayedSources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError,
+                s.lastSeen, Origin.REPLAY)));
+        out.sort(Comparator.comparing(SourceSnapshot::origin).thenComparing(s -> s.address().toString()));
         return out;
     }
 

@@ -86,6 +86,21 @@ class ReplaySandboxModelTest {
     }
 
     @Test
+    void aRecordingsBadSenderIsCountedApartFromTheLiveSenderAtTheSameAddress() {
+        receive(status(now[0], 3, "INITIAL"));
+        Envelope junk = new Envelope(replayNow[0], Direction.IN, Channel.FUMANOID,
+                new InetSocketAddress("127.0.0.1", 4003), Envelope.NO_ROBOT, "malformed", null, new byte[3], "too short");
+        registry.accept(junk.asReplayed());
+
+        assertEquals(0, registry.robot(3).orElseThrow().malformed(), "the live robot at that address sent nothing bad");
+        assertEquals(List.of("/127.0.0.1:4003 (replay)"), registry.sources().stream()
+                .filter(s -> s.malformed() > 0).map(SourceSnapshot::label).toList());
+        assertEquals(0, registry.sources().get(0).malformed());
+        registry.forgetReplayed();
+        assertEquals(List.of(Origin.LIVE), registry.sources().stream().map(SourceSnapshot::origin).toList());
+    }
+
+    @Test
     void aReplayedRobotIsOnlineByTheReplaysClockAndForgottenWithoutTouchingTheLiveOne() {
         receive(status(now[0], 3, "INITIAL"));
         receive(status(replayNow[0], 3, "PLAYING").asReplayed());

@@ -124,7 +124,7 @@ public final class RobotsView implements View {
         StringBuilder p = new StringBuilder();
         for (SourceSnapshot s : context.console().robots().sources()) {
             if (s.malformed() > 0) {
-                p.append(s.address()).append(": ").append(s.malformed()).append(" malformed of ").append(s.packets())
+                p.append(s.label()).append(": ").append(s.malformed()).append(" malformed of ").append(s.packets())
                         .append(s.lastError() == null ? "" : " — last: " + s.lastError()).append('\n');
             }
         }
