@@ -58,7 +58,7 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Game", r -> text(r.gameState()), 80));
         table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
         table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.console().replayClock()
-                : context.console().modelClock()).nowMicros() - r.lastSeenMicros()), 76));
+                : context.console().clock()).nowMicros() - r.lastSeenMicros()), 76));
         table.getColumns().add(column("Status", r -> r.online() ? "online" : "offline", 64));
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
