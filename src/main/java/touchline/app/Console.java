@@ -83,8 +83,8 @@ public final class Console implements AutoCloseable {
     public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
-        // The model's "now" follows a replay while one plays with live listening paused, so
-        // robots in a recording are online exactly as long as they were during the match.
+        // The traffic meter's "now" follows a replay while one plays with live listening paused,
+        // so its rates are the recording's rates.
         modelClock = () -> {
             Replay r = replay;
             return r != null && !live.isLive() ? r.state().positionMicros() : clock.nowMicros();
@@ -198,7 +198,7 @@ public final class Console implements AutoCloseable {
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
 
-    /** The model's "now": wall time, or the replay position while a replay plays with live listening paused. */
+    /** The traffic meter's "now": wall time, or the replay position while a replay plays with live listening paused. */
     public MicrosClock modelClock() { return modelClock; }
     /** The replay's position (wall time while none is open): the "now" of replayed robots. */
     public MicrosClock replayClock() { return replayClock; }
