@@ -18,6 +18,9 @@ import touchline.model.RuleProfile;
 import touchline.model.TeamMessageBudget;
 import touchline.model.TrafficMeter;
 import touchline.transport.TeamMessageListener;
+import touchline.model.store.NetworkLog;
+import touchline.model.store.PlotStore;
+import touchline.model.store.TextLog;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.EnvelopeBus;
@@ -50,6 +53,7 @@ public final class Console implements AutoCloseable {
     private final ConsoleConfig config;
     private final MicrosClock clock;
     private final MicrosClock modelClock;
+    private final MicrosClock replayClock;
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
     private final EnvelopeBus bus = new EnvelopeBus();
@@ -85,18 +89,25 @@ public final class Console implements AutoCloseable {
     public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
-        // The model's "now" follows a replay while one plays with live listening paused, so
-        // robots in a recording are online exactly as long as they were during the match.
+        // The traffic meter's "now" follows a replay while one plays with live listening paused,
+        // so its rates are the recording's rates.
         modelClock = () -> {
             Replay r = replay;
             return r != null && !live.isLive() ? r.state().positionMicros() : clock.nowMicros();
         };
-        this.robots = new RobotRegistry(modelClock);
+        // Replayed robots are online, and their options stream, by the replay's position;
+        // live robots by the wall clock, whatever a replay does.
+        replayClock = () -> {
+            Replay r = replay;
+            return r != null ? r.state().positionMicros() : clock.nowMicros();
+        };
+        this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
         this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
-        this.options = new DebugOptionSession(udp, codec, modelClock);
-        this.stores = new touchline.model.store.ViewStores(clock.nowMicros());
+        this.options = new DebugOptionSession(udp, codec, clock, replayClock);
+        this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
+                NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
         bus.subscribe(new ReportedGameState(matchMode));
         setGate(() -> matchMode.hold("console request")
                 ? Optional.of("match mode, " + matchMode.play() + "; goes out when play stops") : Optional.empty());
@@ -194,10 +205,16 @@ public final class Console implements AutoCloseable {
     public MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
 
-    /** The model's "now": wall time, or the replay position while a replay plays with live listening paused. */
+    /** The traffic meter's "now": wall time, or the replay position while a replay plays with live listening paused. */
     public MicrosClock modelClock() { return modelClock; }
+    /** The replay's position (wall time while none is open): the "now" of replayed robots. */
+    public MicrosClock replayClock() { return replayClock; }
     public MatchMode matchMode() { return matchMode; }
-    /** The bounded stores the UI's views pull from once per frame. */
+    /**
+     * The bounded stores the UI's views pull from once per frame: the replay's while one is
+     * open (opening it is asking to look at it), else the live ones. Live data keeps arriving
+     * in the live stores meanwhile; both stay reachable by origin.
+     */
     public touchline.model.store.ViewStores stores() { return stores; }
 
     /** Starts recording every envelope (in and out, live or replayed) into an MCAP file. */
@@ -221,11 +238,21 @@ public final class Console implements AutoCloseable {
         return recorder == null ? Optional.empty() : Optional.of(recorder.stats());
     }
 
-    /** Opens a recording and plays it into the same stream as live traffic (paused at its start). */
+    /**
+     * Opens a recording and plays it into the same stream as live traffic (paused at its
+     * start). Its envelopes are marked replayed: they never cause a datagram, never change
+     * match mode, and fill the model beside the live robots, never merged with them. Each
+     * jump of the replay (a seek, a loop going round) starts its robots and stores afresh.
+     */
     public synchronized Replay openReplay(Path file) throws RecordingException {
         closeReplay();
         Recording recording = Recording.open(file, kinds);
-        replay = new Replay(recording, bus);
+        long start = recording.startMicros();
+        stores.restartReplay(start);
+        replay = new Replay(recording, bus, () -> {
+            stores.restartReplay(start);
+            robots.forgetReplayed();
+        });
         return replay;
     }
 
@@ -233,10 +260,14 @@ public final class Console implements AutoCloseable {
         return Optional.ofNullable(replay);
     }
 
+    /** Closes the replay; its robots, options and stores go with it, live ones stay. */
     public synchronized void closeReplay() {
         if (replay != null) {
             replay.close();
             replay = null;
+            robots.forgetReplayed();
+            options.forgetReplayed();
+            stores.restartReplay(clock.nowMicros());
         }
     }
 

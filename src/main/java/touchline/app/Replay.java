@@ -12,7 +12,7 @@ import java.util.Optional;
 
 /**
  * A recording playing into the console's Envelope stream, so every view shows it as it showed
- * live traffic. A daemon thread pumps the player; the controls are the player's and may be
+ * live traffic, marked as replayed so it never acts on the live field. A daemon thread pumps the player; the controls are the player's and may be
  * called from any thread (the UI's timeline calls them from the FX thread).
  */
 public final class Replay implements AutoCloseable {
@@ -26,9 +26,10 @@ public final class Replay implements AutoCloseable {
 
     private record Seen(PlayerState state, long nanos) { }
 
-    Replay(Recording recording, EnvelopeSink sink) {
+    /** @param jumped run when the position jumps (a seek, a loop going round), before anything plays from there */
+    Replay(Recording recording, EnvelopeSink sink, Runnable jumped) {
         this.recording = recording;
-        this.player = new Player(recording, sink, PlaybackClock.system());
+        this.player = new Player(recording, sink, PlaybackClock.system(), jumped);
         remember();
         this.pump = new Thread(this::loop, "touchline-replay");
         pump.setDaemon(true);

@@ -12,6 +12,7 @@ import java.util.List;
  * Feeds match mode with the game state each robot reports in its keep-alive (what it last
  * heard from the referee's GameController), so the console stays silent during play even when
  * it cannot hear the GameController itself (the port watch covers the case where it can).
+ * Replayed robots are not on the field: what they reported never changes match mode.
  */
 final class ReportedGameState implements EnvelopeSink {
 
@@ -25,7 +26,7 @@ final class ReportedGameState implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        Fumanoid.Status status = e.direction() == Direction.IN ? e.extension(Fumanoid.status) : null;
+        Fumanoid.Status status = e.direction() == Direction.IN && !e.replayed() ? e.extension(Fumanoid.status) : null;
         if (status != null) {
             int state = STATES.indexOf(status.getGameState());
             if (state >= 0) {

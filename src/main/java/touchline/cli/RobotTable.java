@@ -13,14 +13,14 @@ final class RobotTable {
         out.printf("%-4s %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6s %8s %8s %5s%n",
                 "ID", "NAME", "TEAM", "BAT", "ROLE", "STATE", "GAME", "ONLINE", "PKTS", "PKT/S", "B/S", "BAD");
         for (RobotSnapshot r : robots) {
-            out.printf("%-4d %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6d %8.1f %8.0f %5d%n", r.id(), r.name(),
+            out.printf("%-4d %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6d %8.1f %8.0f %5d%n", r.id(), r.label(),
                     r.teamId() < 0 ? "?" : r.teamId(), r.batteryPercent() < 0 ? "?" : r.batteryPercent() + "%",
                     r.role(), r.state(), r.gameState(), r.online() ? "online" : "OFFLINE", r.packets(),
                     r.packetsPerSecond(), r.bytesPerSecond(), r.malformed());
         }
         for (SourceSnapshot s : sources) {
             if (s.malformed() > 0) {
-                out.printf("  source %s: %d malformed of %d; last: %s%n", s.address(), s.malformed(), s.packets(),
+                out.printf("  source %s: %d malformed of %d; last: %s%n", s.label(), s.malformed(), s.packets(),
                         s.lastError());
             }
         }

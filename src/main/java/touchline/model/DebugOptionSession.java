@@ -6,6 +6,7 @@ import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 import touchline.transport.MicrosClock;
+import touchline.transport.Origin;
 import touchline.transport.RobotCommands;
 import touchline.transport.SendResult;
 
@@ -23,6 +24,9 @@ import java.util.Set;
  * and reconcile: what is wanted but not streaming is requested again, what is unwanted but
  * still streaming is switched off again, and when a robot comes back after being offline
  * everything that was on is switched on again without being asked.
+ * Replayed robots' option lists and data are kept apart and only shown: nothing a replay
+ * plays ever makes this session send (a replayed robot is not on the field, and a live robot
+ * with its number must not hear about it).
  */
 public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
@@ -34,7 +38,9 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     private final MessageCodec codec;
     private final touchline.protocol.DebugData debugData;
     private final MicrosClock clock;
+    private final MicrosClock replayClock;
     private final Map<Integer, PerRobot> robots = new HashMap<>();
+    private final Map<Integer, PerRobot> replayed = new HashMap<>();
     private long version;
 
     private static final class PerRobot {
@@ -50,15 +56,25 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     }
 
     public DebugOptionSession(RobotCommands commands, MessageCodec codec, MicrosClock clock) {
+        this(commands, codec, clock, clock);
+    }
+
+    /** @param replayClock the replay's position: a replayed robot's option streams by it */
+    public DebugOptionSession(RobotCommands commands, MessageCodec codec, MicrosClock clock, MicrosClock replayClock) {
         this.commands = commands;
         this.codec = codec;
         this.debugData = new touchline.protocol.DebugData(codec.kinds());
         this.clock = clock;
+        this.replayClock = replayClock;
     }
 
     @Override
     public void accept(Envelope e) {
         if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
+            return;
+        }
+        if (e.replayed()) {
+            showReplayed(e, m);
             return;
         }
         Fumanoid.DebugOptionList list = e.extension(Fumanoid.debugOptionList);
@@ -72,6 +88,29 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
                 robot(e.robotId()).lastData.put(option, e.timeMicros());
             }
         }
+    }
+
+    /** Keeps a replayed robot's option list and data times to show them; never sends anything. */
+    private void showReplayed(Envelope e, Fumanoid.Message m) {
+        Fumanoid.DebugOptionList list = e.extension(Fumanoid.debugOptionList);
+        String option = list == null ? optionNameOf(e, m) : null;
+        synchronized (this) {
+            PerRobot r = replayed.computeIfAbsent(e.robotId(), k -> new PerRobot());
+            if (list != null) {
+                r.list.clear();
+                list.getOptionsList().forEach(o -> r.list.put(o.getName(), o));
+                r.listReceived = true;
+                version++;
+            } else if (option != null) {
+                r.lastData.put(option, e.timeMicros());
+            }
+        }
+    }
+
+    /** Forgets what replayed robots showed (the replay closed); live robots are untouched. */
+    public synchronized void forgetReplayed() {
+        replayed.clear();
+        version++;
     }
 
     /** The {@code option} field every data message carries (teams' own types too, by convention). */
@@ -203,12 +242,18 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         return robots.computeIfAbsent(id, k -> new PerRobot());
     }
 
-    public synchronized RobotOptions options(int robotId) {
-        PerRobot r = robots.get(robotId);
+    /** The live robot's options. */
+    public RobotOptions options(int robotId) {
+        return options(robotId, Origin.LIVE);
+    }
+
+    /** A live or replayed robot's options (a replayed robot's are only shown: nobody can switch them). */
+    public synchronized RobotOptions options(int robotId, Origin origin) {
+        PerRobot r = (origin == Origin.REPLAY ? replayed : robots).get(robotId);
         if (r == null) {
             return new RobotOptions(robotId, false, 0, List.of(), "");
         }
-        long now = clock.nowMicros();
+        long now = origin == Origin.REPLAY ? replayClock.nowMicros() : clock.nowMicros();
         List<OptionState> states = new ArrayList<>();
         for (Fumanoid.DebugOption o : r.list.values()) {
             states.add(new OptionState(o.getName(), o.getDescription(), o.getKind(), r.wanted.contains(o.getName()),

@@ -2,6 +2,7 @@ package touchline.model;
 
 import touchline.proto.Fumanoid;
 import touchline.transport.Envelope;
+import touchline.transport.Origin;
 
 import java.net.InetSocketAddress;
 
@@ -9,6 +10,7 @@ import java.net.InetSocketAddress;
 final class Robot {
 
     final int id;
+    final Origin origin;
     final long firstSeenMicros;
     long lastSeenMicros;
     boolean online;
@@ -19,8 +21,9 @@ final class Robot {
     final RateWindow rate = new RateWindow();
     Fumanoid.Status status = Fumanoid.Status.getDefaultInstance();
 
-    Robot(int id, long firstSeenMicros) {
+    Robot(int id, Origin origin, long firstSeenMicros) {
         this.id = id;
+        this.origin = origin;
         this.firstSeenMicros = firstSeenMicros;
     }
 
@@ -53,6 +56,6 @@ final class Robot {
                 s.getActiveRole(), s.getCurrentState(), s.getGameState(),
                 s.getRobotPosition().getX(), s.getRobotPosition().getY(), s.getRobotPosition().getTheta(), hasPosition,
                 s.getTimeOnline(), firstSeenMicros, lastSeenMicros, online, packets,
-                rate.perSecond(now), rate.bytesPerSecond(now), malformed, addressChanges, address);
+                rate.perSecond(now), rate.bytesPerSecond(now), malformed, addressChanges, address, origin);
     }
 }

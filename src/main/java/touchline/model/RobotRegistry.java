@@ -3,6 +3,7 @@ package touchline.model;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.MicrosClock;
+import touchline.transport.Origin;
 
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
@@ -18,6 +19,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * Every robot ever seen (one packet is enough), online while its keep-alives arrive, with
  * per-robot counters; and every sender address with its malformed datagrams. Fed by the
  * Envelope stream on the network thread, read by views and commands from any thread.
+ * Live and replayed robots are kept apart: robot 3 of a recording is not robot 3 on the
+ * field, is online by the replay's clock, and never tells the presence listeners (which
+ * talk to live robots) anything.
  */
 public final class RobotRegistry implements touchline.transport.EnvelopeSink {
 
@@ -31,9 +35,12 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     private static final int MAX_NOTES = 200;
 
     private final MicrosClock clock;
+    private final MicrosClock replayClock;
     private final long offlineAfterMicros;
     private final Map<Integer, Robot> robots = new TreeMap<>();
+    private final Map<Integer, Robot> replayed = new TreeMap<>();
     private final Map<InetSocketAddress, Source> sources = new LinkedHashMap<>();
+    private final Map<InetSocketAddress, Source> replayedSources = new LinkedHashMap<>();
     private final List<RobotPresence> presence = new CopyOnWriteArrayList<>();
     private final List<String> notes = new ArrayList<>();
     private long version;
@@ -50,7 +57,13 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     }
 
     public RobotRegistry(MicrosClock clock, long offlineAfterMicros) {
+        this(clock, clock, offlineAfterMicros);
+    }
+
+    /** @param replayClock the replay's position: replayed robots are online by it */
+    public RobotRegistry(MicrosClock clock, MicrosClock replayClock, long offlineAfterMicros) {
         this.clock = clock;
+        this.replayClock = replayClock;
         this.offlineAfterMicros = offlineAfterMicros;
     }
 
@@ -68,20 +81,21 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
         synchronized (this) {
             Source source = null;
             if (e.peer() != null) {
-                source = sources.computeIfAbsent(e.peer(), a -> new Source());
+                source = (e.replayed() ? replayedSources : sources).computeIfAbsent(e.peer(), a -> new Source());
                 source.packets++;
                 source.lastSeen = e.timeMicros();
             }
             if (e.isMalformed() && source != null) {
                 source.malformed++;
                 source.lastError = e.error();
-                attributeMalformed(e.peer());
+                attributeMalformed(e.peer(), e.replayed() ? replayed : robots);
             }
             if (e.robotId() >= 0 && !e.isMalformed()) {
-                Robot robot = robots.get(e.robotId());
+                Map<Integer, Robot> of = e.replayed() ? replayed : robots;
+                Robot robot = of.get(e.robotId());
                 if (robot == null) {
-                    robot = new Robot(e.robotId(), e.timeMicros());
-                    robots.put(e.robotId(), robot);
+                    robot = new Robot(e.robotId(), e.origin(), e.timeMicros());
+                    of.put(e.robotId(), robot);
                     first = true;
                 }
                 String note = robot.take(e);
@@ -90,7 +104,7 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
                 }
                 if (!robot.online) {
                     robot.online = true;
-                    cameOnline = robot.id;
+                    cameOnline = e.replayed() ? Envelope.NO_ROBOT : robot.id;
                 }
             }
             version++;
@@ -103,7 +117,7 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     }
 
     /** A malformed datagram from a known robot's address also counts against that robot. */
-    private void attributeMalformed(InetSocketAddress peer) {
+    private static void attributeMalformed(InetSocketAddress peer, Map<Integer, Robot> robots) {
         for (Robot r : robots.values()) {
             if (peer.equals(r.address)) {
                 r.malformed++;
@@ -114,12 +128,19 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     /** Marks robots offline whose keep-alives stopped; call a few times a second. */
     public void tick() {
         long now = clock.nowMicros();
+        long replayNow = replayClock.nowMicros();
         List<Integer> wentOffline = new ArrayList<>();
         synchronized (this) {
             for (Robot r : robots.values()) {
                 if (r.online && now - r.lastSeenMicros > offlineAfterMicros) {
                     r.online = false;
                     wentOffline.add(r.id);
+                    version++;
+                }
+            }
+            for (Robot r : replayed.values()) {
+                if (r.online && replayNow - r.lastSeenMicros > offlineAfterMicros) {
+                    r.online = false;
                     version++;
                 }
             }
@@ -138,24 +159,50 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
         }
     }
 
+    /** Live robots by ID, then replayed robots by ID. */
     public synchronized List<RobotSnapshot> robots() {
         long now = clock.nowMicros();
-        List<RobotSnapshot> out = new ArrayList<>(robots.size());
+        long replayNow = replayClock.nowMicros();
+        List<RobotSnapshot> out = new ArrayList<>(robots.size() + replayed.size());
         for (Robot r : robots.values()) {
             out.add(r.snapshot(now));
+        }
+        for (Robot r : replayed.values()) {
+            out.add(r.snapshot(replayNow));
         }
         return out;
     }
 
-    public synchronized Optional<RobotSnapshot> robot(int id) {
-        Robot r = robots.get(id);
-        return r == null ? Optional.empty() : Optional.of(r.snapshot(clock.nowMicros()));
+    /** The live robot with this ID. */
+    public Optional<RobotSnapshot> robot(int id) {
+        return robot(id, Origin.LIVE);
+    }
+
+    public synchronized Optional<RobotSnapshot> robot(int id, Origin origin) {
+        Robot r = (origin == Origin.REPLAY ? replayed : robots).get(id);
+        return r == null ? Optional.empty()
+                : Optional.of(r.snapshot(origin == Origin.REPLAY ? replayClock.nowMicros() : clock.nowMicros()));
+    }
+
+    /**
+     * Forgets the replayed robots and senders (the replay jumped or closed): they appear again, counted
+     * afresh, with the next envelope the replay plays. Live robots are untouched.
+     */
+    public synchronized void forgetReplayed() {
+        if (!replayed.isEmpty() || !replayedSources.isEmpty()) {
+            replayed.clear();
+            replayedSources.clear();
+            version++;
+        }
     }
 
     public synchronized List<SourceSnapshot> sources() {
         List<SourceSnapshot> out = new ArrayList<>();
-        sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen)));
-        out.sort(Comparator.comparing(s -> s.address().toString()));
+        sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen,
+                Origin.LIVE)));
+        replayedSources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError,
+                s.lastSeen, Origin.REPLAY)));
+        out.sort(Comparator.comparing(SourceSnapshot::origin).thenComparing(s -> s.address().toString()));
         return out;
     }
 

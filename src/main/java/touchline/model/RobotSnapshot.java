@@ -1,17 +1,29 @@
 package touchline.model;
 
+import touchline.transport.Origin;
+
 import java.net.InetSocketAddress;
 
 /**
  * One robot as the views show it, frozen at one moment. Times are microseconds since the
  * epoch; {@code timeOnlineSeconds} is what the robot reports, {@code firstSeenMicros} what the
- * console saw.
+ * console saw. A replayed robot ({@code origin} REPLAY) is a different robot from the live
+ * one with the same ID; views say which is which ({@link #label()}).
  */
 public record RobotSnapshot(int id, String name, int teamId, int batteryPercent, String role, String state,
                             String gameState, double x, double y, double theta, boolean hasPosition,
                             long timeOnlineSeconds, long firstSeenMicros, long lastSeenMicros, boolean online,
                             long packets, double packetsPerSecond, double bytesPerSecond, long malformed,
-                            long addressChanges, InetSocketAddress address) {
+                            long addressChanges, InetSocketAddress address, Origin origin) {
 
     public static final int UNKNOWN = -1;
+
+    public boolean replayed() {
+        return origin == Origin.REPLAY;
+    }
+
+    /** The robot's name as views show it: {@code "robot 3"}, or {@code "robot 3 (replay)"} for a replayed one. */
+    public String label() {
+        return replayed() ? name + " (replay)" : name;
+    }
 }

@@ -122,6 +122,9 @@ public final class TeamMessageBudget implements EnvelopeSink {
 
     @Override
     public synchronized void accept(Envelope e) {
+        if (e.replayed()) {
+            return; // a replay's messages are last match's, never this game's budget
+        }
         if (e.channel() == Channel.GAMECONTROLLER && e.direction() == Direction.IN && e.error() == null) {
             hearGameController(e.raw());
         } else if (e.channel() == Channel.TEAM_MESSAGE && e.direction() == Direction.IN) {

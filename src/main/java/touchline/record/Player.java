@@ -13,6 +13,10 @@ import java.util.Optional;
  * are thread-safe and may be called from the UI thread; envelopes are delivered on the
  * player's own thread ({@link #start()}) or on whichever thread calls {@link #pump()}.
  * The position advances with the clock: recording time = anchor + wall time elapsed x speed.
+ * Every envelope it delivers is marked {@linkplain Envelope#asReplayed() replayed}, so nothing
+ * that acts on the live field reacts to it. Whenever the position jumps (a seek, a loop going
+ * round, playing again from the start) the {@code jumped} callback runs before the next
+ * envelope is delivered, so what was built from the replay can start again from there.
  */
 public final class Player implements AutoCloseable {
 
@@ -27,6 +31,7 @@ public final class Player implements AutoCloseable {
     private final Recording recording;
     private final EnvelopeSink sink;
     private final PlaybackClock clock;
+    private final Runnable jumped;
     private Recording.Cursor cursor;
     private Envelope pending;
     private long position;
@@ -42,9 +47,18 @@ public final class Player implements AutoCloseable {
     private Thread thread;
 
     public Player(Recording recording, EnvelopeSink sink, PlaybackClock clock) {
+        this(recording, sink, clock, () -> { });
+    }
+
+    /**
+     * @param jumped run (under the player's lock, before anything from the new position is
+     *               delivered) each time the position jumps instead of advancing
+     */
+    public Player(Recording recording, EnvelopeSink sink, PlaybackClock clock, Runnable jumped) {
         this.recording = recording;
         this.sink = sink;
         this.clock = clock;
+        this.jumped = jumped;
         this.position = recording.startMicros();
         this.cursor = recording.cursor(position);
     }
@@ -132,7 +146,7 @@ public final class Player implements AutoCloseable {
     private void deliver(Envelope e) {
         emitted++;
         try {
-            sink.accept(e);
+            sink.accept(e.asReplayed());
         } catch (RuntimeException failed) {
             // a failing consumer must not stop the replay, but what it skipped is said
             recording.note("showing a replayed envelope failed (" + failed + "); such envelopes are skipped");
@@ -153,6 +167,7 @@ public final class Player implements AutoCloseable {
         cursor = recording.cursor(position);
         pending = null;
         reanchor();
+        jumped.run();
     }
 
     public synchronized void play() {

@@ -20,9 +20,10 @@ import java.util.Objects;
  * @param message      the decoded protobuf message, or null when there is none
  * @param raw          the exact bytes on the wire (never null)
  * @param error        why the bytes could not be decoded, or null when they could
+ * @param origin       live traffic, or a recording played back (which must never act on the live field)
  */
 public record Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
-                       int robotId, String kind, Message message, byte[] raw, String error) {
+                       int robotId, String kind, Message message, byte[] raw, String error, Origin origin) {
 
     public static final int NO_ROBOT = -1;
 
@@ -31,6 +32,24 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         Objects.requireNonNull(channel, "channel");
         Objects.requireNonNull(kind, "kind");
         Objects.requireNonNull(raw, "raw");
+        Objects.requireNonNull(origin, "origin");
+    }
+
+    /** A live envelope: what the transports and the console's own senders publish. */
+    public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                    int robotId, String kind, Message message, byte[] raw, String error) {
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.LIVE);
+    }
+
+    /** The same envelope marked as played back from a recording. */
+    public Envelope asReplayed() {
+        return origin == Origin.REPLAY ? this
+                : new Envelope(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.REPLAY);
+    }
+
+    /** True when a recording played this envelope back: it must never cause a datagram or change match mode. */
+    public boolean replayed() {
+        return origin == Origin.REPLAY;
     }
 
     /**
@@ -66,7 +85,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
     @Override
     public boolean equals(Object o) {
         return o instanceof Envelope e && timeMicros == e.timeMicros && robotId == e.robotId
-                && direction == e.direction && channel == e.channel && Objects.equals(peer, e.peer)
+                && direction == e.direction && channel == e.channel && origin == e.origin && Objects.equals(peer, e.peer)
                 && kind.equals(e.kind) && Objects.equals(error, e.error) && Arrays.equals(raw, e.raw);
     }
 
@@ -77,7 +96,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
 
     @Override
     public String toString() {
-        return "Envelope[" + direction + " " + channel + " " + kind + " robot=" + robotId + " peer=" + peer
-                + " bytes=" + raw.length + (error == null ? "" : " error=" + error) + "]";
+        return "Envelope[" + (origin == Origin.REPLAY ? "replayed " : "") + direction + " " + channel + " " + kind
+                + " robot=" + robotId + " peer=" + peer + " bytes=" + raw.length + (error == null ? "" : " error=" + error) + "]";
     }
 }

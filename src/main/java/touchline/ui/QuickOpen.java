@@ -48,9 +48,10 @@ public final class QuickOpen {
             }
         }
         for (RobotSnapshot r : context.console().robots().robots()) {
-            for (OptionState o : context.console().options().options(r.id()).options()) {
+            String robot = "robot " + r.id() + (r.replayed() ? " (replay)" : "");
+            for (OptionState o : context.console().options().options(r.id(), r.origin()).options()) {
                 context.registry().forKind(o.kind()).ifPresent(spec -> out.add(new Choice(
-                        spec.title() + ": robot " + r.id() + " · " + o.name(), spec, new ViewSource(r.id(), o.name()))));
+                        spec.title() + ": " + robot + " · " + o.name(), spec, new ViewSource(r.id(), o.name()))));
             }
         }
         return out;

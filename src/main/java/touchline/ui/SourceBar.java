@@ -67,9 +67,9 @@ public final class SourceBar extends HBox {
         seenRobotsVersion = rv;
         List<ViewSource> found = new ArrayList<>();
         for (RobotSnapshot r : context.console().robots().robots()) {
-            RobotOptions ro = context.console().options().options(r.id());
+            RobotOptions ro = context.console().options().options(r.id(), r.origin());
             for (OptionState o : ro.options()) {
-                if (kinds.contains(o.kind())) {
+                if (kinds.contains(o.kind()) && !found.contains(new ViewSource(r.id(), o.name()))) {
                     found.add(new ViewSource(r.id(), o.name()));
                 }
             }

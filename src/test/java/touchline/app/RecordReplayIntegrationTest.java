@@ -60,10 +60,11 @@ class RecordReplayIntegrationTest {
             Await.until("replay finished", 20_000, () -> replay.state().finished());
             assertEquals(live.size(), replayed.size());
             for (int i = 0; i < live.size(); i++) {
-                assertEquals(live.get(i), replayed.get(i), "envelope " + i);
+                assertEquals(live.get(i).asReplayed(), replayed.get(i), "envelope " + i);
             }
             List<Integer> ids = new ArrayList<>(console.robots().robots().stream().map(RobotSnapshot::id).toList());
             assertEquals(List.of(1, 2), ids, "the replayed robots are in the model");
+            assertTrue(console.robots().robots().stream().allMatch(RobotSnapshot::replayed), "and marked as replayed");
         }
     }
 }

@@ -25,6 +25,8 @@ class PlayerTest {
     private final AtomicLong now = new AtomicLong(1_000_000_000L);
     private final List<Envelope> got = new CopyOnWriteArrayList<>();
     private List<Envelope> sent;
+    /** How many envelopes had been delivered at each jump. */
+    private final List<Integer> jumps = new CopyOnWriteArrayList<>();
     private Recording recording;
     private Player player;
 
@@ -33,8 +35,9 @@ class PlayerTest {
         sent = RecordingFixture.team(3, 60);
         Path file = dir.resolve("p.mcap");
         RecordingFixture.write(file, sent, new EnvelopeWriter.Options(0, 0, 16 * 1024, List.of()));
+        sent = sent.stream().map(Envelope::asReplayed).toList(); // what a player delivers is marked as replayed
         recording = Recording.open(file);
-        player = new Player(recording, got::add, now::get);
+        player = new Player(recording, got::add, now::get, () -> jumps.add(got.size()));
     }
 
     @AfterEach
@@ -90,6 +93,7 @@ class PlayerTest {
         long target = recording.startMicros() + 30_000_000L;
         player.seek(target);
         assertEquals(target, player.snapshot().positionMicros());
+        assertEquals(List.of(0), jumps, "the jump is announced before anything plays from there");
         player.play();
         advanceMillis(1_000);
         List<Envelope> expected = sent.stream()
@@ -129,6 +133,7 @@ class PlayerTest {
         assertTrue(got.stream().allMatch(e -> e.timeMicros() >= from && e.timeMicros() <= to));
         long firstLap = sent.stream().filter(e -> e.timeMicros() >= from && e.timeMicros() <= to).count();
         assertTrue(got.size() > 2 * firstLap, got.size() + " vs a lap of " + firstLap);
+        assertTrue(jumps.size() >= 3, "into the range, then each lap going round: " + jumps);
 
         player.clearLoop();
         got.clear();
@@ -142,7 +147,21 @@ class PlayerTest {
     void headlessRunDeliversEverythingInOrder() {
         assertEquals(sent.size(), player.runToEnd());
         assertEquals(sent, got);
+        assertTrue(got.stream().allMatch(Envelope::replayed), "every envelope a player delivers is marked");
         assertTrue(player.snapshot().finished());
+        assertEquals(List.of(), jumps, "playing straight through never jumps");
+    }
+
+    @Test
+    void seekingBackAnnouncesTheJumpBeforeTheEarlierEnvelopesPlayAgain() {
+        player.play();
+        advanceMillis(3_000);
+        int before = got.size();
+        player.seek(recording.startMicros());
+        assertEquals(List.of(before), jumps);
+        advanceMillis(1_000);
+        assertEquals(sentUpTo(recording.startMicros() + 1_000_000), got.subList(before, got.size()),
+                "after the jump it plays as if from the start");
     }
 
     @Test

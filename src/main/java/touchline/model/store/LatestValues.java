@@ -76,4 +76,10 @@ public final class LatestValues implements EnvelopeSink {
     public long version() {
         return version.get();
     }
+
+    /** Drops every value; the version goes on counting, so a view notices the next value. */
+    public void clear() {
+        latest.clear();
+        version.incrementAndGet();
+    }
 }

@@ -39,4 +39,9 @@ public final class NetworkLog implements EnvelopeSink {
     public int capacity() {
         return envelopes.capacity();
     }
+
+    /** Drops what is kept; sequence numbers go on (views following the log see only what comes next). */
+    public void forget() {
+        envelopes.forget();
+    }
 }

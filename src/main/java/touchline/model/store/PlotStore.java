@@ -36,10 +36,15 @@ public final class PlotStore implements EnvelopeSink {
         long bursts;
         long version;
         long lastTimeMicros;
+
+        /** A plot made after a {@link #restart} carries on from the store's version, so a view sees it changed. */
+        Plot(long version) {
+            this.version = version;
+        }
     }
 
     private final int pointsPerSeries;
-    private final long originMicros;
+    private long originMicros;
     private final Map<LatestValues.Key, Plot> plots = new HashMap<>();
     private long version;
 
@@ -57,7 +62,7 @@ public final class PlotStore implements EnvelopeSink {
     }
 
     synchronized void add(int robotId, Fumanoid.DebugPlot p, long timeMicros) {
-        Plot plot = plots.computeIfAbsent(new LatestValues.Key(robotId, p.getOption()), k -> new Plot());
+        Plot plot = plots.computeIfAbsent(new LatestValues.Key(robotId, p.getOption()), k -> new Plot(version));
         double x = (timeMicros - originMicros) / 1e6;
         if (oneSamplePerSeries(p)) {
             // the usual message (one value per series): straight into the rings, nothing allocated
@@ -143,6 +148,16 @@ public final class PlotStore implements EnvelopeSink {
             ring.add(x0, minAt <= maxAt ? min : max);
             ring.add(x1, minAt <= maxAt ? max : min);
         }
+    }
+
+    /**
+     * Drops every plot and counts times from {@code originMicros} from now on (a replay jumped:
+     * the plots show what was played since, as if played from there). Versions keep growing.
+     */
+    public synchronized void restart(long originMicros) {
+        plots.clear();
+        this.originMicros = originMicros;
+        version++;
     }
 
     /** Copies one plot's series; {@code null} when the robot never sent that option. */

@@ -16,6 +16,7 @@ public final class SequencedRing<T> {
 
     private final Object[] items;
     private long next = 1; // sequence number of the next append
+    private long first = 1; // sequence number of the oldest entry not forgotten
 
     public SequencedRing(int capacity) {
         if (capacity <= 0) {
@@ -40,13 +41,13 @@ public final class SequencedRing<T> {
     }
 
     public synchronized int size() {
-        return (int) Math.min(next - 1, items.length);
+        return (int) Math.min(next - first, items.length);
     }
 
     /** Entries after {@code afterSeq} that match, oldest first, at most {@code max} (the newest ones). */
     @SuppressWarnings("unchecked")
     public synchronized List<Entry<T>> since(long afterSeq, int max, Predicate<? super T> filter) {
-        long oldest = Math.max(1, next - items.length);
+        long oldest = Math.max(first, next - items.length);
         long from = Math.max(afterSeq + 1, oldest);
         List<Entry<T>> out = new ArrayList<>();
         for (long s = next - 1; s >= from && out.size() < max; s--) {
@@ -66,5 +67,15 @@ public final class SequencedRing<T> {
     public synchronized void clear() {
         java.util.Arrays.fill(items, null);
         next = 1;
+        first = 1;
+    }
+
+    /**
+     * Drops every entry but keeps numbering on, so a reader that remembers the last sequence
+     * number it saw simply gets what is appended from now on.
+     */
+    public synchronized void forget() {
+        java.util.Arrays.fill(items, null);
+        first = next;
     }
 }

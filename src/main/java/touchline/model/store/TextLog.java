@@ -44,4 +44,9 @@ public final class TextLog implements EnvelopeSink {
     public int size() {
         return lines.size();
     }
+
+    /** Drops what is kept; sequence numbers go on (views following the log see only what comes next). */
+    public void forget() {
+        lines.forget();
+    }
 }

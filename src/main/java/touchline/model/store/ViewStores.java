@@ -3,37 +3,89 @@ package touchline.model.store;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 
+import java.util.function.BooleanSupplier;
+
 /**
  * The bounded stores the views read, fed together from the Envelope stream on the network
  * thread. Subscribe this one sink to the bus; views pull from the stores once per frame.
+ * Live and replayed envelopes fill separate stores, so a replayed robot's plot never mixes
+ * with the live robot of the same number, and a seek can start the replay's stores afresh
+ * ({@link #restartReplay}) without touching live data. The accessors return the stores the
+ * views show: the replay's while {@code showReplay} says so (the console: while a replay is
+ * open), else the live ones.
  */
 public final class ViewStores implements EnvelopeSink {
 
-    private final TextLog text;
-    private final PlotStore plots;
-    private final LatestValues latest = new LatestValues();
-    private final NetworkLog network;
+    /** One set of stores: what the views read of one origin. */
+    public record Shelf(TextLog text, PlotStore plots, LatestValues latest, NetworkLog network) implements EnvelopeSink {
+
+        Shelf(int textLines, int plotPoints, int networkEnvelopes, long originMicros) {
+            this(new TextLog(textLines), new PlotStore(plotPoints, originMicros), new LatestValues(),
+                    new NetworkLog(networkEnvelopes));
+        }
+
+        /** Empties every store; versions and sequence numbers go on, so views notice. */
+        void restart(long originMicros) {
+            plots.restart(originMicros);
+            latest.clear();
+            text.forget();
+            network.forget();
+        }
+
+        @Override
+        public void accept(Envelope e) {
+            network.accept(e);
+            text.accept(e);
+            plots.accept(e);
+            latest.accept(e);
+        }
+    }
+
+    private final Shelf live;
+    private final Shelf replay;
+    private final BooleanSupplier showReplay;
 
     public ViewStores(long originMicros) {
-        this(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS, NetworkLog.DEFAULT_CAPACITY, originMicros);
+        this(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS, NetworkLog.DEFAULT_CAPACITY, originMicros, () -> false);
     }
 
     public ViewStores(int textLines, int plotPoints, int networkEnvelopes, long originMicros) {
-        this.text = new TextLog(textLines);
-        this.plots = new PlotStore(plotPoints, originMicros);
-        this.network = new NetworkLog(networkEnvelopes);
+        this(textLines, plotPoints, networkEnvelopes, originMicros, () -> false);
+    }
+
+    /** @param showReplay whether the views show the replay's stores rather than the live ones */
+    public ViewStores(int textLines, int plotPoints, int networkEnvelopes, long originMicros,
+                      BooleanSupplier showReplay) {
+        this.live = new Shelf(textLines, plotPoints, networkEnvelopes, originMicros);
+        this.replay = new Shelf(textLines, plotPoints, networkEnvelopes, originMicros);
+        this.showReplay = showReplay;
     }
 
     @Override
     public void accept(Envelope e) {
-        network.accept(e);
-        text.accept(e);
-        plots.accept(e);
-        latest.accept(e);
+        (e.replayed() ? replay : live).accept(e);
     }
 
-    public TextLog text() { return text; }
-    public PlotStore plots() { return plots; }
-    public LatestValues latest() { return latest; }
-    public NetworkLog network() { return network; }
+    /**
+     * Empties the replay's stores (a replay opened, or it jumped): what the views show of it
+     * from now on is as if it had been played from here. Plot times count from
+     * {@code originMicros} (the recording's start). Live stores are untouched.
+     */
+    public void restartReplay(long originMicros) {
+        replay.restart(originMicros);
+    }
+
+    /** The live stores, whatever the views show. */
+    public Shelf live() { return live; }
+    /** The replay's stores, whatever the views show. */
+    public Shelf replay() { return replay; }
+
+    private Shelf shown() {
+        return showReplay.getAsBoolean() ? replay : live;
+    }
+
+    public TextLog text() { return shown().text(); }
+    public PlotStore plots() { return shown().plots(); }
+    public LatestValues latest() { return shown().latest(); }
+    public NetworkLog network() { return shown().network(); }
 }

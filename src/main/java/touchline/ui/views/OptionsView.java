@@ -36,7 +36,12 @@ import java.util.Optional;
 public final class OptionsView implements View {
 
     /** A tree row: a robot (option == null) or one of its options. */
-    public record Row(int robotId, String label, OptionState option) { }
+    /** @param replayed the row belongs to a replayed robot: shown only, never switched (it is not on the field) */
+    public record Row(int robotId, String label, OptionState option, boolean replayed) {
+        Row(int robotId, String label, OptionState option) {
+            this(robotId, label, option, false);
+        }
+    }
 
     private final ViewContext context;
     private final TreeView<Row> tree = new TreeView<>(new TreeItem<>(new Row(-1, "robots", null)));
@@ -99,6 +104,10 @@ public final class OptionsView implements View {
     /** Flips the selected option's wanted state through the model (which sends the request). */
     public void toggleSelected() {
         selectedOption().ifPresent(r -> {
+            if (r.replayed()) {
+                status.setText(r.option().name() + ": a replayed robot's option is only shown, never switched");
+                return;
+            }
             SendResult result = context.console().setOption(r.robotId(), r.option().name(), !r.option().wanted());
             status.setText("Switching " + r.option().name() + (r.option().wanted() ? " off" : " on") + " for robot "
                     + r.robotId() + ": " + result.describe());
@@ -138,6 +147,9 @@ public final class OptionsView implements View {
         String list = o.listReceived() ? o.options().size() + " options"
                 : "requesting option list (" + o.listRequests() + " requests)";
         String held = o.lastHoldReason() == null || o.lastHoldReason().isBlank() ? "" : " · waiting: " + o.lastHoldReason();
+        if (r.replayed()) {
+            return "Robot " + r.id() + name + " (replay)" + " — " + o.options().size() + " options";
+        }
         return "Robot " + r.id() + name + (r.online() ? "" : " (offline)") + " — " + list + held;
     }
 
@@ -166,14 +178,14 @@ public final class OptionsView implements View {
         List<TreeItem<Row>> robots = new java.util.ArrayList<>();
         TreeItem<Row> reselect = null;
         for (RobotSnapshot r : context.console().robots().robots()) {
-            RobotOptions ro = context.console().options().options(r.id());
-            TreeItem<Row> robotItem = new TreeItem<>(new Row(r.id(), robotLabel(r, ro), null));
+            RobotOptions ro = context.console().options().options(r.id(), r.origin());
+            TreeItem<Row> robotItem = new TreeItem<>(new Row(r.id(), robotLabel(r, ro), null, r.replayed()));
             robotItem.setExpanded(!collapsed.getOrDefault(r.id(), false) || !needle.isEmpty());
             for (OptionState o : ro.options()) {
                 if (!needle.isEmpty() && !o.name().toLowerCase(Locale.ROOT).contains(needle)) {
                     continue;
                 }
-                TreeItem<Row> item = new TreeItem<>(new Row(r.id(), label(o), o));
+                TreeItem<Row> item = new TreeItem<>(new Row(r.id(), label(o), o, r.replayed()));
                 robotItem.getChildren().add(item);
                 if (keep != null && keep.option() != null && keep.robotId() == r.id()
                         && keep.option().name().equals(o.name())) {

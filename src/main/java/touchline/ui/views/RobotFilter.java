@@ -36,7 +36,9 @@ final class RobotFilter extends ComboBox<String> {
         List<String> items = new ArrayList<>();
         items.add(ALL);
         for (RobotSnapshot r : context.console().robots().robots()) {
-            items.add("robot " + r.id());
+            if (!items.contains("robot " + r.id())) { // a replayed robot 3 beside the live one: one filter entry
+                items.add("robot " + r.id());
+            }
         }
         if (!items.equals(getItems())) {
             String keep = getValue();

@@ -50,14 +50,15 @@ public final class RobotsView implements View {
         });
         table.getColumns().add(online);
         table.getColumns().add(column("ID", r -> Integer.toString(r.id()), 44));
-        table.getColumns().add(column("Name", r -> text(r.name()), 100));
+        table.getColumns().add(column("Name", r -> text(r.label()), 100)); // "robot 3 (replay)" for a replayed one
         table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
         table.getColumns().add(column("Role", r -> text(r.role()), 90));
         table.getColumns().add(column("State", r -> text(r.state()), 90));
         table.getColumns().add(column("Game", r -> text(r.gameState()), 80));
         table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
-        table.getColumns().add(column("Last seen", r -> ago(context.console().modelClock().nowMicros() - r.lastSeenMicros()), 76));
+        table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.console().replayClock()
+                : context.console().clock()).nowMicros() - r.lastSeenMicros()), 76));
         table.getColumns().add(column("Status", r -> r.online() ? "online" : "offline", 64));
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
@@ -120,7 +121,7 @@ public final class RobotsView implements View {
         StringBuilder p = new StringBuilder();
         for (SourceSnapshot s : context.console().robots().sources()) {
             if (s.malformed() > 0) {
-                p.append(s.address()).append(": ").append(s.malformed()).append(" malformed of ").append(s.packets())
+                p.append(s.label()).append(": ").append(s.malformed()).append(" malformed of ").append(s.packets())
                         .append(s.lastError() == null ? "" : " — last: " + s.lastError()).append('\n');
             }
         }

@@ -1,0 +1,11 @@
+package touchline.transport;
+
+/**
+ * Where an {@link Envelope} comes from: the live field (a socket, a call, the console's own
+ * sending) or a recording played back. A replay never acts on the live field, so everything
+ * that sends to robots or decides match mode listens to {@link #LIVE} envelopes only.
+ */
+public enum Origin {
+    LIVE,
+    REPLAY
+}
