@@ -69,8 +69,9 @@ class ReplaySandboxIntegrationTest {
             }
             Await.until("the robot reports PLAYING", 5000,
                     () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
-            long plots = count(seen, "debugPlot");
-            Await.until("more plots during play", 5000, () -> count(seen, "debugPlot") >= plots + 10);
+            // during play the robot keeps to the league's debug limit: one status a second, no option data
+            long statuses = count(seen, "status");
+            Await.until("statuses during play", 5000, () -> count(seen, "status") >= statuses + 2);
             console.stopRecording();
         }
         assertTrue(seen.stream().anyMatch(e -> e.channel() == Channel.GAMECONTROLLER), "the GameController is recorded");
@@ -150,7 +151,18 @@ class ReplaySandboxIntegrationTest {
             throws Exception {
         PlotStore plots = console.stores().replay().plots();
         int playedThrough = plots.snapshot(8, PLOT).series().get(0).count();
-        long from = replay.state().startMicros() + (replay.state().endMicros() - replay.state().startMicros()) / 2;
+        // the middle of the plotting (during play the robot keeps to the debug limit and plots nothing)
+        long from;
+        try (Recording recording = Recording.open(file)) {
+            List<Long> plotTimes = new java.util.ArrayList<>();
+            Recording.Cursor c = recording.cursor(replay.state().startMicros());
+            for (Envelope e = c.next(); e != null; e = c.next()) {
+                if (e.kind().equals("debugPlot") && e.robotId() == 8) {
+                    plotTimes.add(e.timeMicros());
+                }
+            }
+            from = plotTimes.get(plotTimes.size() / 2);
+        }
 
         replay.seek(from);
         assertNull(plots.snapshot(8, PLOT), "nothing of the first playing is left");

@@ -34,6 +34,8 @@ class RecordingRoundTripTest {
                 null, Envelope.NO_ROBOT, "jpeg", null, new byte[]{(byte) 0xFF, (byte) 0xD8, 0, 0}, null));
         sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.FUMANOID,
                 null, Envelope.NO_ROBOT, "malformed", null, new byte[0], "empty datagram"));
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.TEAM_MESSAGE,
+                new InetSocketAddress("127.0.0.1", 40013), Envelope.NO_ROBOT, "team.message", null, new byte[]{7, 7, 7}, null));
         byte[] flagged = sent.stream().filter(e -> e.kind().equals("status") && e.robotId() == 1).findFirst()
                 .orElseThrow().raw().clone();
         flagged[2] = 1; // legacy header with a flag set: kept as raw bytes, still replayed exactly

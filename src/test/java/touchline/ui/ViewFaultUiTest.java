@@ -208,7 +208,12 @@ class ViewFaultUiTest {
                 ((TextField) naoView.lookup("#nao-rpc-port")).setText(Integer.toString(nao.port()));
                 ((ToggleButton) naoView.lookup("#nao-connect")).fire();
             });
-            ui.await(30, () -> ((Label) naoView.lookup("#nao-state")).getText().startsWith("online"));
+            try {
+                ui.await(30, () -> ((Label) naoView.lookup("#nao-state")).getText().startsWith("online"));
+            } catch (java.util.concurrent.TimeoutException e) {
+                throw new AssertionError("the NAO never came online: '" + ui.fx(() -> ((Label) naoView.lookup("#nao-state"))
+                        .getText()) + "', rpc port " + nao.port(), e);
+            }
             ui.fxRun(() -> ui.window.open("network", ViewSource.NONE));
             String peer = "127.0.0.1:" + nao.port();
             ui.await(30, () -> ui.robot.lookup("#network-table").lookup(".table-cell").queryAll().stream()
