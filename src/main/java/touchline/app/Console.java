@@ -14,6 +14,7 @@ import touchline.transport.gamecontroller.MonitorRegistrations;
 import touchline.transport.gamecontroller.GcConfig;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
+import touchline.model.DebugRateGuard;
 import touchline.model.RuleProfile;
 import touchline.model.TeamMessageBudget;
 import touchline.model.TrafficMeter;
@@ -75,6 +76,8 @@ public final class Console implements AutoCloseable {
     private TeamMessageListener teamMessages;
     private AutoCloseable budgetSubscription;
     private TeamMessageBudget budget;
+    private DebugRateGuard debugRate;
+    private AutoCloseable debugRateSubscription;
     private final touchline.model.store.ViewStores stores;
 
     public Console(ConsoleConfig config) {
@@ -330,6 +333,8 @@ public final class Console implements AutoCloseable {
         stopGuardingTeamMessages();
         budget = new TeamMessageBudget(modelClock, profile, team);
         budgetSubscription = bus.subscribe(budget);
+        debugRate = new DebugRateGuard(clock, profile);
+        debugRateSubscription = bus.subscribe(debugRate);
         teamMessages = new TeamMessageListener(bind, live, clock);
         return budget;
     }
@@ -343,6 +348,11 @@ public final class Console implements AutoCloseable {
         }
     }
 
+    /** Robots over the profile's debug-packet limit during play, if the guard was started. */
+    public synchronized Optional<DebugRateGuard> debugRateGuard() {
+        return Optional.ofNullable(debugRate);
+    }
+
     /** The budget guard, if started. */
     public synchronized Optional<TeamMessageBudget> teamMessageBudget() {
         return Optional.ofNullable(budget);
@@ -353,15 +363,19 @@ public final class Console implements AutoCloseable {
             teamMessages.close();
             teamMessages = null;
         }
-        if (budgetSubscription != null) {
+        for (AutoCloseable subscription : new AutoCloseable[]{budgetSubscription, debugRateSubscription}) {
             try {
-                budgetSubscription.close();
+                if (subscription != null) {
+                    subscription.close();
+                }
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-            budgetSubscription = null;
         }
+        budgetSubscription = null;
+        debugRateSubscription = null;
         budget = null;
+        debugRate = null;
     }
 
     @Override

@@ -122,7 +122,13 @@ public final class StatusBar extends HBox {
         boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED;
         boolean warn = s.verdict() == touchline.model.TeamMessageBudget.Verdict.RUNS_OUT_BEFORE_THE_END;
         meter.setStyle(alarm ? "-fx-accent: #cf222e;" : warn ? "-fx-accent: #bf8700;" : "-fx-accent: #2da44e;");
-        meterText.setText(s.describe());
+        java.util.List<touchline.model.DebugRateGuard.OverLimit> over = console.debugRateGuard()
+                .map(touchline.model.DebugRateGuard::overLimit).orElse(java.util.List.of());
+        alarm |= !over.isEmpty();
+        StringBuilder text = new StringBuilder(s.describe());
+        over.forEach(o -> text.append(" · ").append(o.describe()).append(" (limit ")
+                .append(s.profile().debugPacketsPerSecond().describe()).append(")"));
+        meterText.setText(text.toString());
         meterText.setStyle(alarm ? "-fx-text-fill: #cf222e;" : warn ? "-fx-text-fill: #bf8700;" : "");
         StringBuilder tip = new StringBuilder("Team " + s.team() + "'s messages under " + s.profile().name()
                 + ": budget " + s.profile().teamMessageBudget().describe() + " per game, at most "

@@ -56,7 +56,24 @@ final class ConsoleWindowFixture implements AutoCloseable {
      */
     void await(int seconds, Callable<Boolean> condition) throws Exception {
         long millis = Math.max(seconds * 1000L, touchline.testing.Await.FLOOR_MILLIS);
-        WaitForAsyncUtils.waitFor(millis, TimeUnit.MILLISECONDS, () -> fx(condition));
+        // A node a condition looks up may not be in the scene yet (a view's skin joins a pulse
+        // later): that is "not yet", not a failure. The last such error is the timeout's cause.
+        Exception[] last = {null};
+        try {
+            WaitForAsyncUtils.waitFor(millis, TimeUnit.MILLISECONDS, () -> {
+                try {
+                    return fx(condition);
+                } catch (Exception e) {
+                    last[0] = e;
+                    return false;
+                }
+            });
+        } catch (java.util.concurrent.TimeoutException e) {
+            if (last[0] != null) {
+                e.initCause(last[0]);
+            }
+            throw e;
+        }
     }
 
     /** The options tree's cell for one option, or null while it is not shown. */
