@@ -80,12 +80,6 @@ public final class NaoLink implements AutoCloseable {
     static final int HEARTBEAT_TIMEOUT_MS = 1500;
     static final int HEARTBEAT_TTL_MS = 3000;
     static final int HANDSHAKE_IVL_MS = 2000;
-    /**
-     * A connection attempt that has not seen the ZMTP handshake after this long is started over
-     * with a new socket: the handshake is only learnt from the socket monitor, and a monitor event
-     * lost at the start (seen in the UI test that opens every view) left the link CONNECTING for good.
-     */
-    static final long CONNECT_RESTART_MS = 5000;
 
     private final String host;
     private final int port;
@@ -121,7 +115,6 @@ public final class NaoLink implements AutoCloseable {
     // Under lock.
     private ZMQ.Socket dealer;
     private ZMQ.Socket monitor;
-    private long socketOpenedNanos;
     private boolean socketsReplaced;
     // Link thread only.
     private Selector selector;
@@ -453,7 +446,6 @@ public final class NaoLink implements AutoCloseable {
     }
 
     private void openSocket() throws IOException {
-        socketOpenedNanos = System.nanoTime();
         dealer = zmq.createSocket(SocketType.DEALER);
         dealer.setLinger(0);
         dealer.setImmediate(false);
@@ -683,17 +675,6 @@ public final class NaoLink implements AutoCloseable {
     }
 
     private void runTimers(long now) {
-        if ((state == ConnectionState.CONNECTING || state == ConnectionState.LOST)
-                && now - socketOpenedNanos > TimeUnit.MILLISECONDS.toNanos(CONNECT_RESTART_MS)) {
-            LOG.info("NAO link to {}:{}: no handshake after {} ms, starting the connection over", host, port,
-                    CONNECT_RESTART_MS);
-            closeSocket();
-            try {
-                openSocket();
-            } catch (IOException e) {
-                throw new java.io.UncheckedIOException(e);
-            }
-        }
         for (Iterator<Map.Entry<Long, Pending>> it = pending.entrySet().iterator(); it.hasNext(); ) {
             Pending p = it.next().getValue();
             if (now - p.attemptDeadlineNanos >= 0) {
