@@ -211,8 +211,17 @@ class ViewFaultUiTest {
             try {
                 ui.await(30, () -> ((Label) naoView.lookup("#nao-state")).getText().startsWith("online"));
             } catch (java.util.concurrent.TimeoutException e) {
+                StringBuilder threads = new StringBuilder();
+                Thread.getAllStackTraces().forEach((t, stack) -> {
+                    if (t.getName().startsWith("nao-")) {
+                        threads.append("\n").append(t.getName()).append(' ').append(t.getState());
+                        for (int i = 0; i < Math.min(8, stack.length); i++) {
+                            threads.append("\n    at ").append(stack[i]);
+                        }
+                    }
+                });
                 throw new AssertionError("the NAO never came online: '" + ui.fx(() -> ((Label) naoView.lookup("#nao-state"))
-                        .getText()) + "', rpc port " + nao.port(), e);
+                        .getText()) + "', rpc port " + nao.port() + ", sim output: " + nao.stdout() + threads, e);
             }
             ui.fxRun(() -> ui.window.open("network", ViewSource.NONE));
             String peer = "127.0.0.1:" + nao.port();
