@@ -1,0 +1,97 @@
+package touchline.ui.gamecontroller;
+
+import javafx.scene.Node;
+import javafx.scene.control.ComboBox;
+import javafx.scene.control.Label;
+import javafx.scene.layout.FlowPane;
+import touchline.game.hsl.Competition;
+import touchline.game.hsl.HslGame;
+import touchline.protocol.gamecontroller.TeamColour;
+import touchline.transport.gamecontroller.GcProfile;
+
+/**
+ * The setup of an HSL game in the tab: the competition and each team's field player and
+ * goalkeeper colour (the official launcher's defaults), shown only for the HSL formats. The
+ * colours are checked by the official clash rule of {@link HslGame#colourConflict}.
+ */
+final class HslSetup {
+
+    private final ComboBox<Competition> competition = new ComboBox<>();
+    private final ComboBox<TeamColour> fieldA = colours("gc-colour-a", TeamColour.RED);
+    private final ComboBox<TeamColour> keeperA = colours("gc-goalkeeper-colour-a", TeamColour.PURPLE);
+    private final ComboBox<TeamColour> fieldB = colours("gc-colour-b", TeamColour.BLUE);
+    private final ComboBox<TeamColour> keeperB = colours("gc-goalkeeper-colour-b", TeamColour.YELLOW);
+    private final FlowPane pane;
+
+    HslSetup() {
+        competition.getItems().addAll(Competition.values());
+        competition.setValue(Competition.MIDDLE_ADVANCED);
+        competition.setId("gc-competition");
+        pane = new FlowPane(8, 8, new Label("Competition"), competition, new Label("Team A colours: players"), fieldA,
+                new Label("goalkeeper"), keeperA, new Label("Team B colours: players"), fieldB, new Label("goalkeeper"),
+                keeperB);
+    }
+
+    private static ComboBox<TeamColour> colours(String id, TeamColour initial) {
+        ComboBox<TeamColour> box = new ComboBox<>();
+        box.getItems().addAll(TeamColour.values());
+        box.setValue(initial);
+        box.setId(id);
+        return box;
+    }
+
+    Node node() {
+        return pane;
+    }
+
+    /** Shown for the HSL formats only (the older ones have no competition and one colour). */
+    void showFor(GcProfile profile) {
+        boolean on = profile != null && profile.hsl();
+        pane.setVisible(on);
+        pane.setManaged(on);
+    }
+
+    Competition competition() {
+        return competition.getValue();
+    }
+
+    TeamColour[] coloursA() {
+        return new TeamColour[]{fieldA.getValue(), keeperA.getValue()};
+    }
+
+    TeamColour[] coloursB() {
+        return new TeamColour[]{fieldB.getValue(), keeperB.getValue()};
+    }
+
+    /** Why these colours cannot play each other, or null. */
+    String conflict() {
+        return HslGame.colourConflict(coloursA(), coloursB());
+    }
+
+    /** Values to remember, by key. */
+    java.util.Map<String, String> values() {
+        return java.util.Map.of("competition", competition().name(), "colourA", fieldA.getValue().name(),
+                "goalkeeperColourA", keeperA.getValue().name(), "colourB", fieldB.getValue().name(),
+                "goalkeeperColourB", keeperB.getValue().name());
+    }
+
+    /** Restores remembered values; a value that no longer names anything is left as it is. */
+    void restore(java.util.function.Function<String, String> remembered) {
+        set(competition, Competition.class, remembered.apply("competition"));
+        set(fieldA, TeamColour.class, remembered.apply("colourA"));
+        set(keeperA, TeamColour.class, remembered.apply("goalkeeperColourA"));
+        set(fieldB, TeamColour.class, remembered.apply("colourB"));
+        set(keeperB, TeamColour.class, remembered.apply("goalkeeperColourB"));
+    }
+
+    private static <E extends Enum<E>> void set(ComboBox<E> box, Class<E> type, String name) {
+        if (name == null) {
+            return;
+        }
+        try {
+            box.setValue(Enum.valueOf(type, name));
+        } catch (IllegalArgumentException e) {
+            // edited by hand or from another release: keep the default
+        }
+    }
+}
