@@ -32,6 +32,11 @@ final class GameControllerTabDriver {
         ui.await(30, () -> ui.console.gameController().isPresent());
     }
 
+    /** The tab's node, for reading its labels. */
+    Node node() {
+        return tab;
+    }
+
     void press(String id) throws Exception {
         ui.fxRun(() -> ((ButtonBase) tab.lookup(id)).fire());
     }

@@ -112,7 +112,7 @@ public final class HslRefereeView implements View {
         stopResume.setId("gc-stop-resume");
         stopResume.setPrefSize(300, 56);
         stopResume.setMinSize(300, 56);
-        stopResume.setOnAction(e -> model.perform(model.stopOrResume()));
+        stopResume.setOnAction(e -> act(() -> model.perform(model.stopOrResume())));
         bound.add(new Bound(stopResume, model::stopOrResume));
         HBox flow = new HBox(4, button("gc-ready", "Ready (R)", model::ready), button("gc-set", "Set (S)", model::set),
                 button("gc-play", "Play (P)", model::play), button("gc-ballfree", "Ball free (B)", model::ballFree));
@@ -123,7 +123,7 @@ public final class HslRefereeView implements View {
         more.setAlignment(Pos.CENTER);
         Button undo = new Button("Undo (Ctrl+Z)");
         undo.setId("gc-undo");
-        undo.setOnAction(e -> model.undo());
+        undo.setOnAction(e -> act(model::undo));
         HBox halves = new HBox(4, button("gc-finish", "Finish half", model::finishHalf),
                 button("gc-second-half", "Second half", model::secondHalf), undo);
         halves.setAlignment(Pos.CENTER);
@@ -139,7 +139,7 @@ public final class HslRefereeView implements View {
             t.setUserData(call);
             t.setPrefWidth(128);
             t.setMinWidth(128);
-            t.setOnAction(e -> model.choose(call));
+            t.setOnAction(e -> act(() -> model.choose(call)));
             calls.add(t);
             penalties.add(t, i % 3, i / 3);
         }
@@ -150,10 +150,16 @@ public final class HslRefereeView implements View {
         return centre;
     }
 
+    /** Does what the referee asked and shows it at once (the next robot button is enabled without waiting a frame). */
+    private void act(Runnable referee) {
+        referee.run();
+        refresh(null);
+    }
+
     private Button button(String id, String text, Supplier<HslAction> action) {
         Button b = new Button(text);
         b.setId(id);
-        b.setOnAction(e -> model.perform(action.get()));
+        b.setOnAction(e -> act(() -> model.perform(action.get())));
         bound.add(new Bound(b, action));
         return b;
     }
@@ -207,7 +213,7 @@ public final class HslRefereeView implements View {
             line.setStyle(MONO);
             line.setMinWidth(Region.USE_PREF_SIZE);
             Button press = button("gc-robot-" + side + "-" + n, "", () -> model.robotAction(side, player));
-            press.setOnAction(e -> model.pressRobot(side, player));
+            press.setOnAction(e -> act(() -> model.pressRobot(side, player)));
             press.setPrefWidth(112);
             press.setMinWidth(112);
             texts.add(() -> {
@@ -263,7 +269,7 @@ public final class HslRefereeView implements View {
             return; // the tab is hidden, or the user types a number somewhere
         }
         if (e.isShortcutDown() && e.getCode() == KeyCode.Z) {
-            model.undo();
+            act(model::undo);
             e.consume();
             return;
         }
@@ -281,10 +287,10 @@ public final class HslRefereeView implements View {
             default -> null;
         };
         if (e.getCode() == KeyCode.ESCAPE && model.chosen() != null) {
-            model.choose(null);
+            act(() -> model.choose(null));
             e.consume();
         } else if (action != null) {
-            model.perform(action);
+            act(() -> model.perform(action));
             e.consume();
         }
     }

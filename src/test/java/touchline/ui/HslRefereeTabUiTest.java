@@ -1,0 +1,161 @@
+package touchline.ui;
+
+import javafx.scene.Node;
+import javafx.scene.control.Label;
+import javafx.scene.control.TableView;
+import javafx.scene.input.KeyCode;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.HslGameState20;
+import touchline.protocol.gamecontroller.HslPenalty;
+import touchline.ui.layout.LayoutNode;
+
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetSocketAddress;
+import java.net.SocketTimeoutException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Predicate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The GameController tab refereeing an HSL 2026 game in the real window, sending hsl20 to a
+ * loopback socket standing in for the robots, every datagram decoded as the robots would:
+ * the keys drive the game while another view has the keyboard (kick-off R, set S, play P,
+ * Space stop/resume), a penalty is called and then given to a robot, a goal counts, a second
+ * caution sends off, an illegal key says why in the tab, and the setup is remembered.
+ */
+@Tag("ui")
+class HslRefereeTabUiTest {
+
+    @TempDir
+    Path layouts;
+    private ConsoleWindowFixture ui;
+    private DatagramSocket field;
+    private final AtomicReference<GameControlData> heard = new AtomicReference<>();
+    private Thread listening;
+
+    @BeforeEach
+    void open() throws Exception {
+        ui = new ConsoleWindowFixture(layouts);
+        field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+        field.setSoTimeout(200);
+        listening = new Thread(this::listen, "test-field");
+        listening.setDaemon(true);
+        listening.start();
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        listening.interrupt();
+        ui.close();
+        field.close();
+        listening.join(5000);
+    }
+
+    /** The robots' side: every datagram decoded as v20 (a datagram of another size fails the decode). */
+    private void listen() {
+        HslGameState20 format = new HslGameState20();
+        byte[] buffer = new byte[2048];
+        while (!Thread.currentThread().isInterrupted() && !field.isClosed()) {
+            DatagramPacket p = new DatagramPacket(buffer, buffer.length);
+            try {
+                field.receive(p);
+            } catch (SocketTimeoutException e) {
+                continue;
+            } catch (Exception e) {
+                return;
+            }
+            GameControlData d = format.decode(Arrays.copyOf(p.getData(), p.getLength())).value();
+            if (d != null) {
+                heard.set(d);
+            }
+        }
+    }
+
+    private void awaitHeard(Predicate<GameControlData> condition) throws Exception {
+        ui.await(30, () -> heard.get() != null && condition.test(heard.get()));
+    }
+
+    private String text(Node tab, String id) throws Exception {
+        return ui.fx(() -> ((Label) tab.lookup(id)).getText());
+    }
+
+    /** Gives the keyboard to the Robots view's table, outside the GameController tab. */
+    private void focusElsewhere() throws Exception {
+        ui.fxRun(() -> {
+            ui.window.scene().getWindow().requestFocus();
+            tableOfRobots().requestFocus();
+        });
+        ui.await(30, () -> ui.window.scene().getWindow().isFocused()
+                && ui.window.scene().getFocusOwner() == tableOfRobots());
+    }
+
+    private TableView<?> tableOfRobots() {
+        return (TableView<?>) ui.window.shell().openViews().stream().filter(v -> v.spec().id().equals("robots"))
+                .findFirst().orElseThrow().view().node().lookup(".table-view");
+    }
+
+    private void key(KeyCode code) throws Exception {
+        ui.robot.type(code);
+    }
+
+    @Test
+    void refereesAnHsl20GameWithKeysAndButtonsWhileAnotherViewHasTheKeyboard() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Branch(false, List.of(0.3), List.of(
+                new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("robots", ""))),
+                new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", ""))))))));
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        gc.start(field); // hsl20 is the default: teams 13 (left, kicks off) and 7
+        awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
+        Node tab = gc.node();
+
+        focusElsewhere();
+        key(KeyCode.R);
+        awaitHeard(d -> d.state() == GameControlData.STATE_READY && d.kickOffTeam() == 13);
+        key(KeyCode.S);
+        awaitHeard(d -> d.state() == GameControlData.STATE_SET);
+        key(KeyCode.P);
+        ui.await(30, () -> text(tab, "#gc-state").startsWith("PLAYING"));
+        // robots see SET for 10 s after the whistle; stopping play ends that at once
+        key(KeyCode.SPACE);
+        awaitHeard(d -> d.state() == GameControlData.STATE_PLAYING && d.stopped());
+        assertTrue(ui.fx(() -> ui.window.scene().getFocusOwner() == tableOfRobots()), "the keyboard stayed where it was");
+        key(KeyCode.SPACE);
+        awaitHeard(d -> d.state() == GameControlData.STATE_PLAYING && !d.stopped());
+
+        // the call first, then the robot
+        gc.press("#gc-call-pushing");
+        gc.press("#gc-robot-1-3");
+        awaitHeard(d -> HslPenalty.ofNeutral(d.team(7).player(3).penalty()) == HslPenalty.PUSHING);
+        assertTrue(text(tab, "#gc-robot-text-1-3").contains("pushing wait"), text(tab, "#gc-robot-text-1-3"));
+
+        gc.press("#gc-goal-0");
+        awaitHeard(d -> d.team(13).score() == 1 && d.state() == GameControlData.STATE_READY && d.kickOffTeam() == 7);
+        assertEquals("1", text(tab, "#gc-score-0"));
+
+        gc.press("#gc-call-cautioned");
+        gc.press("#gc-robot-0-2");
+        awaitHeard(d -> d.team(13).player(2).cautions() == 1);
+        gc.press("#gc-call-cautioned");
+        gc.press("#gc-robot-0-2");
+        awaitHeard(d -> HslPenalty.ofNeutral(d.team(13).player(2).penalty()) == HslPenalty.SENT_OFF);
+
+        focusElsewhere();
+        key(KeyCode.P); // no whistle in READY
+        ui.await(30, () -> text(tab, "#gc-message").startsWith("illegal now: "));
+
+        ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
+                .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
+    }
+}
