@@ -20,9 +20,19 @@ final class GameControllerTabDriver {
                 .findFirst().orElseThrow().view().node());
     }
 
-    /** Starts refereeing towards {@code field} (a loopback socket standing in for the robots). */
+    /**
+     * Starts refereeing an HL game (hl12) towards {@code field} (a loopback socket standing in for
+     * the robots): the tests written before the HSL tab drive its buttons.
+     */
     void start(DatagramSocket field) throws Exception {
+        start(field, "hl12");
+    }
+
+    /** Starts refereeing in {@code format} (hsl20, hsl19, hl12 …) towards {@code field}. */
+    @SuppressWarnings("unchecked")
+    void start(DatagramSocket field, String format) throws Exception {
         ui.fxRun(() -> {
+            ((javafx.scene.control.ComboBox<String>) tab.lookup("#gc-format")).setValue(format);
             ((TextField) tab.lookup("#gc-dest")).setText("127.0.0.1:" + field.getLocalPort());
             // return packets on an OS-chosen port: tests never bind the fixed 3939
             ((Parent) tab).lookupAll(".text-field").stream().map(n -> (TextField) n)

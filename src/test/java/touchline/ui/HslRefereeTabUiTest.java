@@ -116,7 +116,7 @@ class HslRefereeTabUiTest {
                 new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("robots", ""))),
                 new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", ""))))))));
         GameControllerTabDriver gc = new GameControllerTabDriver(ui);
-        gc.start(field); // hsl20 is the default: teams 13 (left, kicks off) and 7
+        gc.start(field, "hsl20"); // teams 13 (left, kicks off) and 7
         awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
         Node tab = gc.node();
 
@@ -157,5 +157,52 @@ class HslRefereeTabUiTest {
 
         ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
                 .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
+    }
+
+    @Test
+    void hsl20IsTheDefaultAndTheRefereeBoxFitsA1280By720WindowWithoutScrolling() throws Exception {
+        ui.fxRun(() -> {
+            javafx.stage.Window w = ui.window.scene().getWindow();
+            w.setX(0);
+            w.setY(0);
+            w.setWidth(1280);
+            w.setHeight(650); // a 1280x720 screen less a panel and the title bar, as in ViewsFitUiTest
+            ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", "")))));
+        });
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        assertEquals("hsl20", ui.fx(() -> ((javafx.scene.control.ComboBox<?>) gc.node().lookup("#gc-format")).getValue()));
+        gc.start(field, "hsl20");
+        Node tab = gc.node();
+        ui.await(30, () -> tab.lookup("#gamecontroller-hsl") != null);
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 35);
+        List<String> problems = ui.fx(() -> {
+            List<String> out = new java.util.ArrayList<>();
+            javafx.geometry.Bounds status = ui.window.status().localToScene(ui.window.status().getLayoutBounds());
+            Node menu = ui.window.scene().getRoot().lookup(".menu-bar");
+            javafx.geometry.Bounds menuBounds = menu.localToScene(menu.getLayoutBounds());
+            Node box = tab.lookup("#gamecontroller-hsl");
+            javafx.geometry.Bounds b = box.localToScene(box.getLayoutBounds());
+            if (b.getMinY() < menuBounds.getMaxY() - 0.5 || b.getMaxY() > status.getMinY() + 0.5 || b.getMaxX() > 1280.5) {
+                out.add("referee box " + b + " not between the menu " + menuBounds + " and the status bar " + status);
+            }
+            Node up = tab;
+            while (up != null && !(up instanceof javafx.scene.control.ScrollPane)) {
+                up = up.getParent();
+            }
+            if (up instanceof javafx.scene.control.ScrollPane sp) {
+                javafx.geometry.Bounds content = sp.getContent().getLayoutBounds();
+                if (content.getHeight() > sp.getViewportBounds().getHeight() + 0.5
+                        || content.getWidth() > sp.getViewportBounds().getWidth() + 0.5) {
+                    javafx.scene.layout.BorderPane bp = (javafx.scene.layout.BorderPane) box;
+                    out.add("the tab scrolls: " + content + " in " + sp.getViewportBounds() + "; left "
+                            + bp.getLeft().getLayoutBounds().getHeight() + ", centre " + bp.getCenter().getLayoutBounds().getHeight()
+                            + ", box " + box.getLayoutBounds().getHeight());
+                }
+            }
+            ViewsFitUiTest.collect(box, "gamecontroller-hsl", out);
+            return out;
+        });
+        assertEquals(List.of(), problems);
     }
 }

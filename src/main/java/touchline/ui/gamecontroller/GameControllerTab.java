@@ -106,8 +106,8 @@ public final class GameControllerTab implements View {
         override.setOnAction(e -> toggleOverride());
         matchNotice.setId("match-notice");
         matchNotice.setWrapText(true);
-        VBox bottom = new VBox(4, matchNotice, new FlowPane(8, 8, override, overrideReason));
-        bottom.setPadding(new Insets(8));
+        FlowPane bottom = new FlowPane(8, 4, matchNotice, override, overrideReason);
+        bottom.setPadding(new Insets(4, 8, 4, 8));
         root.setCenter(setup);
         root.setBottom(bottom);
         remembered.restore(format, teamA, teamB, destinations, returnPort, hsl);

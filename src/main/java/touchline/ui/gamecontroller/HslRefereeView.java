@@ -46,6 +46,8 @@ public final class HslRefereeView implements View {
 
     private static final String BIG = "-fx-font-size: 15px;";
     private static final String MONO = "-fx-font-family: monospace;";
+    /** Team and robot buttons: two teams of seven robots and nine set plays fit a 1280×720 window. */
+    private static final String COMPACT = "-fx-padding: 2 6 2 6;";
 
     private final HslRefereeModel model;
     private final EmbeddedGameController gc;
@@ -86,7 +88,7 @@ public final class HslRefereeView implements View {
         root.setCenter(centre());
         message.setId("gc-message");
         message.setWrapText(true);
-        message.setMinHeight(36);
+        message.setMinHeight(20);
         root.setBottom(message);
         root.sceneProperty().addListener((o, was, now) -> {
             if (was != null) {
@@ -102,16 +104,14 @@ public final class HslRefereeView implements View {
     private Node centre() {
         state.setId("gc-state");
         state.setStyle("-fx-font-size: 14px; -fx-font-weight: bold;");
-        state.setWrapText(true);
-        state.setMinHeight(40);
         state.setAlignment(Pos.CENTER);
         clock.setId("gc-clock");
         clock.setStyle("-fx-font-size: 40px; -fx-font-weight: bold; " + MONO);
         secondary.setId("gc-secondary");
         secondary.setStyle("-fx-font-size: 22px; " + MONO);
         stopResume.setId("gc-stop-resume");
-        stopResume.setPrefSize(300, 56);
-        stopResume.setMinSize(300, 56);
+        stopResume.setPrefSize(300, 46);
+        stopResume.setMinSize(300, 46);
         stopResume.setOnAction(e -> act(() -> model.perform(model.stopOrResume())));
         bound.add(new Bound(stopResume, model::stopOrResume));
         HBox flow = new HBox(4, button("gc-ready", "Ready (R)", model::ready), button("gc-set", "Set (S)", model::set),
@@ -143,8 +143,10 @@ public final class HslRefereeView implements View {
             calls.add(t);
             penalties.add(t, i % 3, i / 3);
         }
-        Label penaltyTitle = new Label("Penalty: choose the call, then the robot (Esc cancels)");
-        VBox centre = new VBox(6, state, clock, secondary, stopResume, flow, more, halves, penaltyTitle, penalties);
+        HBox clocks = new HBox(16, clock, secondary);
+        clocks.setAlignment(Pos.BASELINE_CENTER);
+        // the hint "call first, then the robot" is the message line once a call is chosen
+        VBox centre = new VBox(5, state, clocks, stopResume, flow, more, halves, penalties);
         centre.setAlignment(Pos.TOP_CENTER);
         centre.setPadding(new Insets(0, 8, 0, 8));
         return centre;
@@ -172,7 +174,7 @@ public final class HslRefereeView implements View {
         Label colours = new Label();
         Label score = new Label();
         score.setId("gc-score-" + side);
-        score.setStyle("-fx-font-size: 40px; -fx-font-weight: bold; " + MONO);
+        score.setStyle("-fx-font-size: 32px; -fx-font-weight: bold; " + MONO);
         Label budget = new Label();
         budget.setId("gc-budget-" + side);
         budget.setStyle(MONO);
@@ -201,6 +203,7 @@ public final class HslRefereeView implements View {
             Button b = button("gc-" + kinds[i][0] + "-" + side, kinds[i][1], action);
             b.setPrefWidth(140);
             b.setMinWidth(140);
+            b.setStyle(COMPACT);
             plays.add(b, i % 2, i / 2);
         }
         GridPane robots = new GridPane();
@@ -216,6 +219,7 @@ public final class HslRefereeView implements View {
             press.setOnAction(e -> act(() -> model.pressRobot(side, player)));
             press.setPrefWidth(112);
             press.setMinWidth(112);
+            press.setStyle(COMPACT);
             texts.add(() -> {
                 line.setText(model.robotText(side, player, liveness.status(model.teamNumber(side), player)));
                 press.setText(model.robotButtonText(side, player));
