@@ -173,6 +173,9 @@ public final class GameControllerTab implements View {
         VBox running = new VBox(4, header, referee.node());
         running.setPadding(new Insets(4));
         root.setCenter(running);
+        // the pressed Start button is gone: keep the keyboard in this tab, or it would go to the
+        // first field of another view, and the dock would show that view instead of this one
+        referee.node().requestFocus();
     }
 
     private void stop() {
@@ -180,6 +183,7 @@ public final class GameControllerTab implements View {
         referee = null;
         shown = null;
         root.setCenter(setup);
+        format.requestFocus();
         setupMessage.setText("stopped");
     }
 

@@ -273,6 +273,15 @@ public final class HslRefereeModel {
         };
     }
 
+    /** At most 16 characters, for the call buttons. */
+    public static String buttonLabel(HslPenalty call) {
+        return switch (call) {
+            case ILLEGAL_POSITIONING -> "illegal position";
+            case LEAVING_THE_FIELD -> "leaving field";
+            default -> label(call);
+        };
+    }
+
     /** At most 12 characters, for the robot rows. */
     static String shortLabel(HslPenalty call) {
         return switch (call) {

@@ -89,6 +89,9 @@ public final class HslRefereeView implements View {
         message.setId("gc-message");
         message.setWrapText(true);
         message.setMinHeight(20);
+        message.setMaxWidth(Double.MAX_VALUE);
+        message.setAlignment(Pos.CENTER);
+        message.setStyle("-fx-font-size: 14px;");
         root.setBottom(message);
         root.sceneProperty().addListener((o, was, now) -> {
             if (was != null) {
@@ -134,11 +137,12 @@ public final class HslRefereeView implements View {
         List<HslPenalty> all = model.calls();
         for (int i = 0; i < all.size(); i++) {
             HslPenalty call = all.get(i);
-            ToggleButton t = new ToggleButton(HslRefereeModel.label(call));
+            ToggleButton t = new ToggleButton(HslRefereeModel.buttonLabel(call));
+            t.setStyle(COMPACT);
             t.setId("gc-call-" + call.name().toLowerCase(Locale.ROOT));
             t.setUserData(call);
-            t.setPrefWidth(128);
-            t.setMinWidth(128);
+            t.setPrefWidth(134);
+            t.setMinWidth(134);
             t.setOnAction(e -> act(() -> model.choose(call)));
             calls.add(t);
             penalties.add(t, i % 3, i / 3);
@@ -217,8 +221,8 @@ public final class HslRefereeView implements View {
             line.setMinWidth(Region.USE_PREF_SIZE);
             Button press = button("gc-robot-" + side + "-" + n, "", () -> model.robotAction(side, player));
             press.setOnAction(e -> act(() -> model.pressRobot(side, player)));
-            press.setPrefWidth(112);
-            press.setMinWidth(112);
+            press.setPrefWidth(100);
+            press.setMinWidth(100);
             press.setStyle(COMPACT);
             texts.add(() -> {
                 line.setText(model.robotText(side, player, liveness.status(model.teamNumber(side), player)));
@@ -336,6 +340,7 @@ public final class HslRefereeView implements View {
             t.setDisable(!model.penaltyLegal(call));
         }
         message.setText(model.message());
-        message.setStyle(model.refused() ? "-fx-text-fill: #e03030; -fx-font-weight: bold;" : "");
+        message.setStyle(model.refused() ? "-fx-font-size: 14px; -fx-text-fill: #e03030; -fx-font-weight: bold;"
+                : "-fx-font-size: 14px;");
     }
 }

@@ -4,6 +4,8 @@ import javafx.scene.Node;
 import javafx.scene.control.ComboBox;
 import javafx.scene.control.Label;
 import javafx.scene.layout.FlowPane;
+import javafx.scene.layout.HBox;
+import javafx.util.StringConverter;
 import touchline.game.hsl.Competition;
 import touchline.game.hsl.HslGame;
 import touchline.protocol.gamecontroller.TeamColour;
@@ -27,9 +29,28 @@ final class HslSetup {
         competition.getItems().addAll(Competition.values());
         competition.setValue(Competition.MIDDLE_ADVANCED);
         competition.setId("gc-competition");
-        pane = new FlowPane(8, 8, new Label("Competition"), competition, new Label("Team A colours: players"), fieldA,
-                new Label("goalkeeper"), keeperA, new Label("Team B colours: players"), fieldB, new Label("goalkeeper"),
-                keeperB);
+        competition.setConverter(lowerCase(Competition.class));
+        pane = new FlowPane(16, 8, new HBox(8, new Label("Competition"), competition),
+                new HBox(8, new Label("Team A wears"), fieldA, new Label("goalkeeper"), keeperA),
+                new HBox(8, new Label("Team B wears"), fieldB, new Label("goalkeeper"), keeperB));
+        for (Node row : pane.getChildren()) {
+            ((HBox) row).setAlignment(javafx.geometry.Pos.CENTER_LEFT);
+        }
+    }
+
+    /** Names as the CLI and the official launcher write them: {@code middle_advanced}, {@code red}. */
+    private static <E extends Enum<E>> StringConverter<E> lowerCase(Class<E> type) {
+        return new StringConverter<>() {
+            @Override
+            public String toString(E value) {
+                return value == null ? "" : value.name().toLowerCase(java.util.Locale.ROOT);
+            }
+
+            @Override
+            public E fromString(String text) {
+                return Enum.valueOf(type, text.toUpperCase(java.util.Locale.ROOT));
+            }
+        };
     }
 
     private static ComboBox<TeamColour> colours(String id, TeamColour initial) {
@@ -37,6 +58,7 @@ final class HslSetup {
         box.getItems().addAll(TeamColour.values());
         box.setValue(initial);
         box.setId(id);
+        box.setConverter(lowerCase(TeamColour.class));
         return box;
     }
 
