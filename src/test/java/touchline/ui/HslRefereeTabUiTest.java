@@ -1,6 +1,7 @@
 package touchline.ui;
 
 import javafx.scene.Node;
+import javafx.scene.Parent;
 import javafx.scene.control.Label;
 import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
@@ -93,6 +94,7 @@ class HslRefereeTabUiTest {
 
     /** Gives the keyboard to the Robots view's table, outside the GameController tab. */
     private void focusElsewhere() throws Exception {
+        ui.await(30, () -> tableOfRobots() != null && FramePulse.showing(tableOfRobots())); // skinned and shown
         ui.fxRun(() -> {
             ui.window.scene().getWindow().requestFocus();
             tableOfRobots().requestFocus();
@@ -157,6 +159,34 @@ class HslRefereeTabUiTest {
 
         ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
                 .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void keysRestWhileTheTabIsHiddenAndClashingColoursDoNotStart() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(
+                new LayoutNode.Entry("gamecontroller", ""), new LayoutNode.Entry("robots", ""))))));
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        Node tab = gc.node();
+        ui.fxRun(() -> ((javafx.scene.control.ComboBox<touchline.protocol.gamecontroller.TeamColour>) tab
+                .lookup("#gc-colour-b")).setValue(touchline.protocol.gamecontroller.TeamColour.PURPLE));
+        gc.start(field, "hsl20", false);
+        ui.await(30, () -> ((Parent) tab).lookupAll(".label").stream().anyMatch(n -> n instanceof Label l
+                && l.getText().equals("cannot start: a team's field players wear the other goalkeeper's colour")));
+        assertTrue(ui.console.gameController().isEmpty());
+        ui.fxRun(() -> ((javafx.scene.control.ComboBox<touchline.protocol.gamecontroller.TeamColour>) tab
+                .lookup("#gc-colour-b")).setValue(touchline.protocol.gamecontroller.TeamColour.BLUE));
+        gc.start(field, "hsl20");
+        awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
+        ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE)); // hides the GameController tab
+        ui.await(30, () -> !FramePulse.showing(tab));
+        focusElsewhere();
+        key(KeyCode.R);
+        ui.fxRun(() -> ui.window.open("gamecontroller", ViewSource.NONE));
+        ui.await(30, () -> FramePulse.showing(tab));
+        assertEquals(GameControlData.STATE_INITIAL, heard.get().state(), "R went nowhere while the tab was hidden");
+        key(KeyCode.R);
+        awaitHeard(d -> d.state() == GameControlData.STATE_READY);
     }
 
     @Test
