@@ -39,7 +39,8 @@ final class GameControllerTabDriver {
         ui.fxRun(() -> {
             ((javafx.scene.control.ComboBox<String>) tab.lookup("#gc-format")).setValue(format);
             ((TextField) tab.lookup("#gc-dest")).setText("127.0.0.1:" + field.getLocalPort());
-            // return packets on an OS-chosen port: tests never bind the fixed 3939
+            // return packets and monitor requests on OS-chosen ports: tests never bind the fixed 3939 or 3636
+            ((TextField) tab.lookup("#gc-monitor-port")).setText("0");
             ((Parent) tab).lookupAll(".text-field").stream().map(n -> (TextField) n)
                     .filter(t -> "default".equals(t.getPromptText())).findFirst().orElseThrow().setText("0");
         });

@@ -121,6 +121,8 @@ class HslRefereeTabUiTest {
         gc.start(field, "hsl20"); // teams 13 (left, kicks off) and 7
         awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
         Node tab = gc.node();
+        String monitors = text(tab, "#gc-monitors");
+        assertTrue(monitors.startsWith("monitors register on UDP ") && !monitors.endsWith(" 0"), monitors);
 
         focusElsewhere();
         key(KeyCode.R);

@@ -19,6 +19,7 @@ import touchline.game.MatchMode;
 import touchline.game.RefereedGame;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
+import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
@@ -63,6 +64,7 @@ public final class GameControllerTab implements View {
     private final TextField overrideReason = new TextField();
     private final VBox setup;
     private View referee;
+    private String monitorLine = "";
     private EmbeddedGameController shown;
 
     public GameControllerTab(ViewContext context, ViewSource source) {
@@ -149,12 +151,25 @@ public final class GameControllerTab implements View {
             } else {
                 game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
             }
+            Integer monitors = profile.hsl() ? hsl.monitorPort() : null;
             remembered.save(format, teamA, teamB, destinations, returnPort, hsl);
-            show(console.startGameController(game, config));
+            EmbeddedGameController gc = console.startGameController(game, config);
+            monitorLine = monitors == null ? "" : serveMonitors(gc, monitors);
+            show(gc);
         } catch (NumberFormatException e) {
             setupMessage.setText("team numbers and ports are whole numbers: " + e.getMessage());
         } catch (IOException | RuntimeException e) {
             setupMessage.setText("cannot start: " + e.getMessage());
+        }
+    }
+
+    /** Answers monitors as the official GameController does; a busy port costs only that (said in the tab). */
+    private static String serveMonitors(EmbeddedGameController gc, int port) {
+        try {
+            return "monitors register on UDP " + gc.serveMonitors(new InetSocketAddress("0.0.0.0", port),
+                    GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT).requestAddress().getPort();
+        } catch (IOException e) {
+            return "no monitors: cannot listen on UDP " + port + " (" + e.getMessage() + ")";
         }
     }
 
@@ -167,8 +182,10 @@ public final class GameControllerTab implements View {
         stop.setId("gc-stop");
         stop.setOnAction(e -> stop());
         priority.setText("");
+        Label monitors = new Label(monitorLine);
+        monitors.setId("gc-monitors");
         HBox header = new HBox(12, stop, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
-                priority);
+                priority, monitors);
         header.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
         VBox running = new VBox(4, header, referee.node());
         running.setPadding(new Insets(4));
@@ -217,6 +234,7 @@ public final class GameControllerTab implements View {
                 shown = null;
                 root.setCenter(setup);
             } else {
+                monitorLine = ""; // started elsewhere: whoever started it serves monitors or not
                 show(running);
             }
         }

@@ -12,8 +12,9 @@ import touchline.protocol.gamecontroller.TeamColour;
 import touchline.transport.gamecontroller.GcProfile;
 
 /**
- * The setup of an HSL game in the tab: the competition and each team's field player and
- * goalkeeper colour (the official launcher's defaults), shown only for the HSL formats. The
+ * The setup of an HSL game in the tab: the competition, each team's field player and
+ * goalkeeper colour (the official launcher's defaults) and the monitors' port, shown only for
+ * the HSL formats. The
  * colours are checked by the official clash rule of {@link HslGame#colourConflict}.
  */
 final class HslSetup {
@@ -23,6 +24,8 @@ final class HslSetup {
     private final ComboBox<TeamColour> keeperA = colours("gc-goalkeeper-colour-a", TeamColour.PURPLE);
     private final ComboBox<TeamColour> fieldB = colours("gc-colour-b", TeamColour.BLUE);
     private final ComboBox<TeamColour> keeperB = colours("gc-goalkeeper-colour-b", TeamColour.YELLOW);
+    private final javafx.scene.control.TextField monitorPort = new javafx.scene.control.TextField(
+            Integer.toString(touchline.protocol.gamecontroller.MonitorRequest.PORT));
     private final FlowPane pane;
 
     HslSetup() {
@@ -32,7 +35,11 @@ final class HslSetup {
         competition.setConverter(lowerCase(Competition.class));
         pane = new FlowPane(16, 8, new HBox(8, new Label("Competition"), competition),
                 new HBox(8, new Label("Team A wears"), fieldA, new Label("goalkeeper"), keeperA),
-                new HBox(8, new Label("Team B wears"), fieldB, new Label("goalkeeper"), keeperB));
+                new HBox(8, new Label("Team B wears"), fieldB, new Label("goalkeeper"), keeperB),
+                new HBox(8, new Label("Monitors register on UDP"), monitorPort));
+        monitorPort.setId("gc-monitor-port");
+        monitorPort.setPrefColumnCount(5);
+        monitorPort.setPromptText("none");
         for (Node row : pane.getChildren()) {
             ((HBox) row).setAlignment(javafx.geometry.Pos.CENTER_LEFT);
         }
@@ -85,6 +92,17 @@ final class HslSetup {
         return new TeamColour[]{fieldB.getValue(), keeperB.getValue()};
     }
 
+    /**
+     * The port where monitor applications (the official TeamCommunicationMonitor, a console with
+     * --gc-monitor) register, as with the official GameController; null for none (left empty).
+     *
+     * @throws NumberFormatException when it is not a whole number
+     */
+    Integer monitorPort() {
+        String t = monitorPort.getText().strip();
+        return t.isEmpty() ? null : Integer.parseInt(t);
+    }
+
     /** Why these colours cannot play each other, or null. */
     String conflict() {
         return HslGame.colourConflict(coloursA(), coloursB());
@@ -94,7 +112,7 @@ final class HslSetup {
     java.util.Map<String, String> values() {
         return java.util.Map.of("competition", competition().name(), "colourA", fieldA.getValue().name(),
                 "goalkeeperColourA", keeperA.getValue().name(), "colourB", fieldB.getValue().name(),
-                "goalkeeperColourB", keeperB.getValue().name());
+                "goalkeeperColourB", keeperB.getValue().name(), "monitorPort", monitorPort.getText().strip());
     }
 
     /** Restores remembered values; a value that no longer names anything is left as it is. */
@@ -104,6 +122,10 @@ final class HslSetup {
         set(keeperA, TeamColour.class, remembered.apply("goalkeeperColourA"));
         set(fieldB, TeamColour.class, remembered.apply("colourB"));
         set(keeperB, TeamColour.class, remembered.apply("goalkeeperColourB"));
+        String port = remembered.apply("monitorPort");
+        if (port != null) {
+            monitorPort.setText(port);
+        }
     }
 
     private static <E extends Enum<E>> void set(ComboBox<E> box, Class<E> type, String name) {
