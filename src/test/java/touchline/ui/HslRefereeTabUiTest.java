@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.HslGameState19;
 import touchline.protocol.gamecontroller.HslGameState20;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.ui.layout.LayoutNode;
@@ -44,6 +45,7 @@ class HslRefereeTabUiTest {
     private ConsoleWindowFixture ui;
     private DatagramSocket field;
     private final AtomicReference<GameControlData> heard = new AtomicReference<>();
+    private final java.util.concurrent.atomic.AtomicInteger heardVersion = new java.util.concurrent.atomic.AtomicInteger();
     private Thread listening;
 
     @BeforeEach
@@ -64,9 +66,10 @@ class HslRefereeTabUiTest {
         listening.join(5000);
     }
 
-    /** The robots' side: every datagram decoded as v20 (a datagram of another size fails the decode). */
+    /** The robots' side: every datagram decoded as v20, else as v19 (a datagram of another size fails both). */
     private void listen() {
         HslGameState20 format = new HslGameState20();
+        HslGameState19 v19 = new HslGameState19();
         byte[] buffer = new byte[2048];
         while (!Thread.currentThread().isInterrupted() && !field.isClosed()) {
             DatagramPacket p = new DatagramPacket(buffer, buffer.length);
@@ -77,9 +80,12 @@ class HslRefereeTabUiTest {
             } catch (Exception e) {
                 return;
             }
-            GameControlData d = format.decode(Arrays.copyOf(p.getData(), p.getLength())).value();
-            if (d != null) {
-                heard.set(d);
+            byte[] datagram = Arrays.copyOf(p.getData(), p.getLength());
+            GameControlData d = format.decode(datagram).value();
+            GameControlData old = d == null ? v19.decode(datagram).value() : null;
+            if (d != null || old != null) {
+                heardVersion.set(d != null ? HslGameState20.VERSION : HslGameState19.VERSION);
+                heard.set(d != null ? d : old);
             }
         }
     }
@@ -120,6 +126,7 @@ class HslRefereeTabUiTest {
         GameControllerTabDriver gc = new GameControllerTabDriver(ui);
         gc.start(field, "hsl20"); // teams 13 (left, kicks off) and 7
         awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
+        assertEquals(HslGameState20.VERSION, heardVersion.get());
         Node tab = gc.node();
         String monitors = text(tab, "#gc-monitors");
         assertTrue(monitors.startsWith("monitors register on UDP ") && !monitors.endsWith(" 0"), monitors);
@@ -161,6 +168,20 @@ class HslRefereeTabUiTest {
 
         ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
                 .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
+    }
+
+    @Test
+    void refereesAnHsl19GameWithoutCautions() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(
+                new LayoutNode.Entry("gamecontroller", ""))))));
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        gc.start(field, "hsl19");
+        awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL && heardVersion.get() == HslGameState19.VERSION);
+        Node tab = gc.node();
+        assertTrue(ui.fx(() -> tab.lookup("#gc-call-cautioned") == null && tab.lookup("#gc-call-pushing") != null),
+                "6.0.x has no cautions");
+        gc.press("#gc-ready");
+        awaitHeard(d -> d.state() == GameControlData.STATE_READY && heardVersion.get() == HslGameState19.VERSION);
     }
 
     @Test
