@@ -114,6 +114,12 @@ class HslRefereeTabUiTest {
                 .findFirst().orElseThrow().view().node().lookup(".table-view");
     }
 
+    /** Where the clock, the big button, a state button and a robot's button are in the window. */
+    private List<javafx.geometry.Bounds> places(Node tab) throws Exception {
+        return ui.fx(() -> java.util.stream.Stream.of("#gc-clock", "#gc-stop-resume", "#gc-set", "#gc-robot-1-3")
+                .map(id -> tab.lookup(id)).map(n -> n.localToScene(n.getLayoutBounds())).toList());
+    }
+
     private void key(KeyCode code) throws Exception {
         ui.robot.type(code);
     }
@@ -131,9 +137,12 @@ class HslRefereeTabUiTest {
         String monitors = text(tab, "#gc-monitors");
         assertTrue(monitors.startsWith("monitors register on UDP ") && !monitors.endsWith(" 0"), monitors);
 
+        List<javafx.geometry.Bounds> before = places(tab);
         focusElsewhere();
         key(KeyCode.R);
         awaitHeard(d -> d.state() == GameControlData.STATE_READY && d.kickOffTeam() == 13);
+        ui.await(30, () -> text(tab, "#gc-secondary").strip().matches("0:4\\d")); // READY's countdown shows
+        assertEquals(before, places(tab), "nothing moves when a countdown starts");
         key(KeyCode.S);
         awaitHeard(d -> d.state() == GameControlData.STATE_SET);
         key(KeyCode.P);
