@@ -7,6 +7,7 @@ import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.game.Game;
+import touchline.game.RefereedGame;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GameStateWatch;
 import touchline.transport.gamecontroller.GcMonitor;
@@ -280,6 +281,15 @@ public final class Console implements AutoCloseable {
      * sends. One at a time; a running one is stopped first.
      */
     public synchronized EmbeddedGameController startGameController(Game game, GcConfig gcConfig) throws IOException {
+        return startGameController((RefereedGame) game, gcConfig);
+    }
+
+    /**
+     * Starts refereeing a game of any rules: an {@link touchline.game.hsl.HslGame} in the HSL
+     * formats, an HL {@link Game} in the others (a mismatch is refused with the reason).
+     */
+    public synchronized EmbeddedGameController startGameController(RefereedGame game, GcConfig gcConfig)
+            throws IOException {
         stopGameController();
         EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode);
         try {

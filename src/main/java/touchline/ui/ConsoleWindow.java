@@ -56,7 +56,8 @@ public final class ConsoleWindow {
         this.places = settings.windowPlaces();
         this.dark = settings.dark();
         Shell[] holder = new Shell[1];
-        this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src));
+        this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src),
+                settings.layoutDir());
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(console);

@@ -53,7 +53,7 @@ public final class FramePulse extends AnimationTimer {
     }
 
     /** On screen: in a shown window and neither it nor any ancestor hidden. */
-    static boolean showing(javafx.scene.Node node) {
+    public static boolean showing(javafx.scene.Node node) {
         if (node.getScene() == null || node.getScene().getWindow() == null || !node.getScene().getWindow().isShowing()) {
             return false;
         }

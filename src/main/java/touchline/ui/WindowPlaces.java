@@ -3,16 +3,8 @@ package touchline.ui;
 import javafx.geometry.Rectangle2D;
 import javafx.stage.Screen;
 import javafx.stage.Stage;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 
-import java.io.IOException;
-import java.io.Reader;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.Optional;
 import java.util.Properties;
@@ -27,19 +19,17 @@ import java.util.Properties;
  */
 public final class WindowPlaces {
 
-    private static final Logger LOG = LoggerFactory.getLogger(WindowPlaces.class);
     /** A first start fills a laptop's screen (up to the caller's maximum, centred on a larger one). */
     static final double FIRST_START_FRACTION = 1.0;
 
-    private final Path file;
-    private boolean warned;
+    private final SettingsFile settings;
 
     public WindowPlaces(Path file) {
-        this.file = file;
+        this.settings = new SettingsFile(file, "the window sizes");
     }
 
     public Path file() {
-        return file;
+        return settings.file();
     }
 
     public synchronized Optional<WindowPlace> get(String window) {
@@ -61,16 +51,7 @@ public final class WindowPlaces {
         p.setProperty(window + ".width", Double.toString(place.width()));
         p.setProperty(window + ".height", Double.toString(place.height()));
         p.setProperty(window + ".maximized", Boolean.toString(place.maximized()));
-        try {
-            Files.createDirectories(file.toAbsolutePath().getParent());
-            Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
-            try (Writer w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
-                p.store(w, "Touchline window sizes and places");
-            }
-            Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING);
-        } catch (IOException e) {
-            warnOnce("could not remember the window's size in " + file + ": " + e);
-        }
+        settings.write(p, "Touchline window sizes and places");
     }
 
     /**
@@ -109,21 +90,6 @@ public final class WindowPlaces {
     }
 
     private Properties read() {
-        Properties p = new Properties();
-        if (Files.isRegularFile(file)) {
-            try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-                p.load(r);
-            } catch (IOException | IllegalArgumentException e) {
-                warnOnce("could not read the window sizes in " + file + ": " + e);
-            }
-        }
-        return p;
-    }
-
-    private void warnOnce(String text) {
-        if (!warned) {
-            warned = true;
-            LOG.warn(text);
-        }
+        return settings.read();
     }
 }

@@ -20,16 +20,39 @@ final class GameControllerTabDriver {
                 .findFirst().orElseThrow().view().node());
     }
 
-    /** Starts refereeing towards {@code field} (a loopback socket standing in for the robots). */
+    /**
+     * Starts refereeing an HL game (hl12) towards {@code field} (a loopback socket standing in for
+     * the robots): the tests written before the HSL tab drive its buttons.
+     */
     void start(DatagramSocket field) throws Exception {
+        start(field, "hl12");
+    }
+
+    /** Starts refereeing in {@code format} (hsl20, hsl19, hl12 …) towards {@code field}. */
+    void start(DatagramSocket field, String format) throws Exception {
+        start(field, format, true);
+    }
+
+    /** Presses Start; with {@code expectRunning} waits until the GameController runs. */
+    @SuppressWarnings("unchecked")
+    void start(DatagramSocket field, String format, boolean expectRunning) throws Exception {
         ui.fxRun(() -> {
+            ((javafx.scene.control.ComboBox<String>) tab.lookup("#gc-format")).setValue(format);
             ((TextField) tab.lookup("#gc-dest")).setText("127.0.0.1:" + field.getLocalPort());
-            // return packets on an OS-chosen port: tests never bind the fixed 3939
+            // return packets and monitor requests on OS-chosen ports: tests never bind the fixed 3939 or 3636
+            ((TextField) tab.lookup("#gc-monitor-port")).setText("0");
             ((Parent) tab).lookupAll(".text-field").stream().map(n -> (TextField) n)
                     .filter(t -> "default".equals(t.getPromptText())).findFirst().orElseThrow().setText("0");
         });
         press("#gc-start");
-        ui.await(30, () -> ui.console.gameController().isPresent());
+        if (expectRunning) {
+            ui.await(30, () -> ui.console.gameController().isPresent());
+        }
+    }
+
+    /** The tab's node, for reading its labels. */
+    Node node() {
+        return tab;
     }
 
     void press(String id) throws Exception {

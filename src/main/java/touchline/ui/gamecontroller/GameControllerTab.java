@@ -9,12 +9,17 @@ import javafx.scene.control.Label;
 import javafx.scene.control.TextField;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.FlowPane;
+import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
 import touchline.app.Console;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
 import touchline.game.MatchMode;
+import touchline.game.RefereedGame;
+import touchline.game.hsl.HslGame;
+import touchline.game.hsl.HslRules;
+import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
@@ -30,9 +35,11 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The GameController tab: set up a practice game (format, teams, where to send), start the
- * console's embedded GameController and referee it with {@link GameControllerView}; and, always,
- * match mode's state with its explicit, logged override switch.
+ * The GameController tab: set up a practice game (format, teams, for HSL the competition and
+ * colours, where to send; remembered for the next start), start the console's embedded
+ * GameController and referee it with {@link HslRefereeView} (HSL 2026, the default) or
+ * {@link GameControllerView} (the older formats); and, always, match mode's state with its
+ * explicit, logged override switch.
  */
 public final class GameControllerTab implements View {
 
@@ -48,22 +55,28 @@ public final class GameControllerTab implements View {
             GcConfig.DEFAULT_BROADCAST + ":" + GcProfile.GAME_STATE_PORT));
     private final TextField returnPort = new TextField("");
     private final CheckBox realtime = new CheckBox("Real-time priority for the sender");
+    private final HslSetup hsl = new HslSetup();
+    private final RememberedSetup remembered;
     private final Label setupMessage = new Label();
     private final Label priority = new Label();
     private final Label matchNotice = new Label();
     private final CheckBox override = new CheckBox("Override match mode (logged)");
     private final TextField overrideReason = new TextField();
     private final VBox setup;
-    private GameControllerView referee;
+    private View referee;
+    private String monitorLine = "";
     private EmbeddedGameController shown;
 
     public GameControllerTab(ViewContext context, ViewSource source) {
         this.console = context.console();
+        this.remembered = new RememberedSetup(context.settingsDir());
         root.setId("gamecontroller-tab");
         for (GcProfile p : GcProfile.values()) {
             format.getItems().add(p.cliName());
         }
-        format.setValue(GcProfile.HL12.cliName());
+        // HSL 2026 first: GcProfile lists hsl20 first, the official GameController's format since RoboCup 2026
+        format.setValue(GcProfile.values()[0].cliName());
+        format.valueProperty().addListener((o, was, now) -> hsl.showFor(GcProfile.parse(now)));
         format.setId("gc-format");
         teamA.setId("gc-team-a");
         teamB.setId("gc-team-b");
@@ -83,7 +96,9 @@ public final class GameControllerTab implements View {
         realtime.setId("gc-realtime");
         priority.setId("gc-priority");
         setup = new VBox(8,
-                new FlowPane(8, 8, new Label("Format"), format, new Label("Team A"), teamA, new Label("Team B"), teamB),
+                new FlowPane(8, 8, new Label("Format"), format, new Label("Team A (left, kicks off)"), teamA,
+                        new Label("Team B"), teamB),
+                hsl.node(),
                 new FlowPane(8, 8, new Label("Send to (host:port, comma separated)"), destinations,
                         new Label("Return port"), returnPort),
                 realtime, start, setupMessage);
@@ -93,15 +108,21 @@ public final class GameControllerTab implements View {
         override.setOnAction(e -> toggleOverride());
         matchNotice.setId("match-notice");
         matchNotice.setWrapText(true);
-        VBox bottom = new VBox(4, matchNotice, new FlowPane(8, 8, override, overrideReason));
-        bottom.setPadding(new Insets(8));
+        FlowPane bottom = new FlowPane(8, 4, matchNotice, override, overrideReason);
+        bottom.setPadding(new Insets(4, 8, 4, 8));
         root.setCenter(setup);
         root.setBottom(bottom);
+        remembered.restore(format, teamA, teamB, destinations, returnPort, hsl);
+        hsl.showFor(GcProfile.parse(format.getValue()));
     }
 
     private void start() {
         try {
             GcProfile profile = GcProfile.parse(format.getValue());
+            if (profile == null) {
+                setupMessage.setText("choose a format");
+                return;
+            }
             List<InetSocketAddress> dests = new ArrayList<>();
             for (String d : destinations.getText().split(",")) {
                 if (!d.isBlank()) {
@@ -118,8 +139,23 @@ public final class GameControllerTab implements View {
             int returns = returnPort.getText().isBlank() ? profile.defaultReturnPort() : Integer.parseInt(returnPort.getText().strip());
             GcConfig config = new GcConfig(profile, false, dests, null, new InetSocketAddress("0.0.0.0", returns),
                     defaults.rivalBind(), GcConfig.INTERVAL_MS, realtime.isSelected());
-            Game game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
-            show(console.startGameController(game, config));
+            RefereedGame game;
+            if (profile.hsl()) {
+                String wrong = a == b ? "the two teams need different numbers" : hsl.conflict();
+                if (wrong != null) {
+                    setupMessage.setText("cannot start: " + wrong);
+                    return;
+                }
+                game = new HslGame(HslRules.forVersion(profile.hslVersion(), hsl.competition()), a, hsl.coloursA(), b,
+                        hsl.coloursB(), GameClock.system());
+            } else {
+                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
+            }
+            Integer monitors = profile.hsl() ? hsl.monitorPort() : null;
+            remembered.save(format, teamA, teamB, destinations, returnPort, hsl);
+            EmbeddedGameController gc = console.startGameController(game, config);
+            monitorLine = monitors == null ? "" : serveMonitors(gc, monitors);
+            show(gc);
         } catch (NumberFormatException e) {
             setupMessage.setText("team numbers and ports are whole numbers: " + e.getMessage());
         } catch (IOException | RuntimeException e) {
@@ -127,18 +163,36 @@ public final class GameControllerTab implements View {
         }
     }
 
+    /** Answers monitors as the official GameController does; a busy port costs only that (said in the tab). */
+    private static String serveMonitors(EmbeddedGameController gc, int port) {
+        try {
+            return "monitors register on UDP " + gc.serveMonitors(new InetSocketAddress("0.0.0.0", port),
+                    GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT).requestAddress().getPort();
+        } catch (IOException e) {
+            return "no monitors: cannot listen on UDP " + port + " (" + e.getMessage() + ")";
+        }
+    }
+
     /** Shows the referee controls of a running GameController (started here or elsewhere). */
     private void show(EmbeddedGameController gc) {
         shown = gc;
-        referee = new GameControllerView(gc.game(), gc);
+        referee = gc.referee() instanceof HslGame h ? new HslRefereeView(new HslRefereeModel(h), gc, console)
+                : new GameControllerView(gc.game(), gc);
         Button stop = new Button("Stop GameController");
         stop.setId("gc-stop");
         stop.setOnAction(e -> stop());
         priority.setText("");
-        VBox running = new VBox(6, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
-                priority, stop, referee.node());
+        Label monitors = new Label(monitorLine);
+        monitors.setId("gc-monitors");
+        HBox header = new HBox(12, stop, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
+                priority, monitors);
+        header.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
+        VBox running = new VBox(4, header, referee.node());
         running.setPadding(new Insets(4));
         root.setCenter(running);
+        // the pressed Start button is gone: keep the keyboard in this tab, or it would go to the
+        // first field of another view, and the dock would show that view instead of this one
+        referee.node().requestFocus();
     }
 
     private void stop() {
@@ -146,6 +200,7 @@ public final class GameControllerTab implements View {
         referee = null;
         shown = null;
         root.setCenter(setup);
+        format.requestFocus();
         setupMessage.setText("stopped");
     }
 
@@ -179,6 +234,7 @@ public final class GameControllerTab implements View {
                 shown = null;
                 root.setCenter(setup);
             } else {
+                monitorLine = ""; // started elsewhere: whoever started it serves monitors or not
                 show(running);
             }
         }

@@ -48,6 +48,7 @@ class GameControllerTabTest {
     }
 
     @Test
+    @SuppressWarnings("unchecked")
     void refereesAGameFromTheTab() throws Exception {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start(); DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
@@ -63,6 +64,8 @@ class GameControllerTabTest {
                 GameControllerTab t = new GameControllerTab(context, null);
                 new Scene((javafx.scene.Parent) t.node());
                 ((TextField) t.node().lookup("#gc-dest")).setText("127.0.0.1:" + robot.getLocalPort());
+                // hsl20 is the tab's default since the 2026 season; this test referees an HL game
+                ((javafx.scene.control.ComboBox<String>) t.node().lookup("#gc-format")).setValue("hl12");
                 return t;
             });
             fx(() -> {
@@ -73,7 +76,7 @@ class GameControllerTabTest {
                 return null;
             });
             byte[] first = receive(robot);
-            assertEquals(688, first.length, "HL v12 by default");
+            assertEquals(688, first.length, "HL v12 as chosen");
             assertEquals('R', first[0]);
             assertEquals(0, first[9], "INITIAL");
             assertTrue(console.gameController().isPresent());

@@ -1,0 +1,270 @@
+package touchline.ui;
+
+import javafx.scene.Node;
+import javafx.scene.Parent;
+import javafx.scene.control.Label;
+import javafx.scene.control.TableView;
+import javafx.scene.input.KeyCode;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.HslGameState19;
+import touchline.protocol.gamecontroller.HslGameState20;
+import touchline.protocol.gamecontroller.HslPenalty;
+import touchline.ui.layout.LayoutNode;
+
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetSocketAddress;
+import java.net.SocketTimeoutException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Predicate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The GameController tab refereeing an HSL 2026 game in the real window, sending hsl20 to a
+ * loopback socket standing in for the robots, every datagram decoded as the robots would:
+ * the keys drive the game while another view has the keyboard (kick-off R, set S, play P,
+ * Space stop/resume), a penalty is called and then given to a robot, a goal counts, a second
+ * caution sends off, an illegal key says why in the tab, and the setup is remembered.
+ */
+@Tag("ui")
+class HslRefereeTabUiTest {
+
+    @TempDir
+    Path layouts;
+    private ConsoleWindowFixture ui;
+    private DatagramSocket field;
+    private final AtomicReference<GameControlData> heard = new AtomicReference<>();
+    private final java.util.concurrent.atomic.AtomicInteger heardVersion = new java.util.concurrent.atomic.AtomicInteger();
+    private Thread listening;
+
+    @BeforeEach
+    void open() throws Exception {
+        ui = new ConsoleWindowFixture(layouts);
+        field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+        field.setSoTimeout(200);
+        listening = new Thread(this::listen, "test-field");
+        listening.setDaemon(true);
+        listening.start();
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        listening.interrupt();
+        ui.close();
+        field.close();
+        listening.join(5000);
+    }
+
+    /** The robots' side: every datagram decoded as v20, else as v19 (a datagram of another size fails both). */
+    private void listen() {
+        HslGameState20 format = new HslGameState20();
+        HslGameState19 v19 = new HslGameState19();
+        byte[] buffer = new byte[2048];
+        while (!Thread.currentThread().isInterrupted() && !field.isClosed()) {
+            DatagramPacket p = new DatagramPacket(buffer, buffer.length);
+            try {
+                field.receive(p);
+            } catch (SocketTimeoutException e) {
+                continue;
+            } catch (Exception e) {
+                return;
+            }
+            byte[] datagram = Arrays.copyOf(p.getData(), p.getLength());
+            GameControlData d = format.decode(datagram).value();
+            GameControlData old = d == null ? v19.decode(datagram).value() : null;
+            if (d != null || old != null) {
+                heardVersion.set(d != null ? HslGameState20.VERSION : HslGameState19.VERSION);
+                heard.set(d != null ? d : old);
+            }
+        }
+    }
+
+    private void awaitHeard(Predicate<GameControlData> condition) throws Exception {
+        ui.await(30, () -> heard.get() != null && condition.test(heard.get()));
+    }
+
+    private String text(Node tab, String id) throws Exception {
+        return ui.fx(() -> ((Label) tab.lookup(id)).getText());
+    }
+
+    /** Gives the keyboard to the Robots view's table, outside the GameController tab. */
+    private void focusElsewhere() throws Exception {
+        ui.await(30, () -> tableOfRobots() != null && FramePulse.showing(tableOfRobots())); // skinned and shown
+        ui.fxRun(() -> {
+            ui.window.scene().getWindow().requestFocus();
+            tableOfRobots().requestFocus();
+        });
+        ui.await(30, () -> ui.window.scene().getWindow().isFocused()
+                && ui.window.scene().getFocusOwner() == tableOfRobots());
+    }
+
+    private TableView<?> tableOfRobots() {
+        return (TableView<?>) ui.window.shell().openViews().stream().filter(v -> v.spec().id().equals("robots"))
+                .findFirst().orElseThrow().view().node().lookup(".table-view");
+    }
+
+    /** Where the clock, the big button, a state button and a robot's button are in the window. */
+    private List<javafx.geometry.Bounds> places(Node tab) throws Exception {
+        return ui.fx(() -> java.util.stream.Stream.of("#gc-clock", "#gc-stop-resume", "#gc-set", "#gc-robot-1-3")
+                .map(id -> tab.lookup(id)).map(n -> n.localToScene(n.getLayoutBounds())).toList());
+    }
+
+    private void key(KeyCode code) throws Exception {
+        ui.robot.type(code);
+    }
+
+    @Test
+    void refereesAnHsl20GameWithKeysAndButtonsWhileAnotherViewHasTheKeyboard() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Branch(false, List.of(0.3), List.of(
+                new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("robots", ""))),
+                new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", ""))))))));
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        gc.start(field, "hsl20"); // teams 13 (left, kicks off) and 7
+        awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
+        assertEquals(HslGameState20.VERSION, heardVersion.get());
+        Node tab = gc.node();
+        String monitors = text(tab, "#gc-monitors");
+        assertTrue(monitors.startsWith("monitors register on UDP ") && !monitors.endsWith(" 0"), monitors);
+
+        List<javafx.geometry.Bounds> before = places(tab);
+        focusElsewhere();
+        key(KeyCode.R);
+        awaitHeard(d -> d.state() == GameControlData.STATE_READY && d.kickOffTeam() == 13);
+        ui.await(30, () -> text(tab, "#gc-secondary").strip().matches("0:4\\d")); // READY's countdown shows
+        assertEquals(before, places(tab), "nothing moves when a countdown starts");
+        key(KeyCode.S);
+        awaitHeard(d -> d.state() == GameControlData.STATE_SET);
+        key(KeyCode.P);
+        ui.await(30, () -> text(tab, "#gc-state").startsWith("PLAYING"));
+        // robots see SET for 10 s after the whistle; stopping play ends that at once
+        key(KeyCode.SPACE);
+        awaitHeard(d -> d.state() == GameControlData.STATE_PLAYING && d.stopped());
+        assertTrue(ui.fx(() -> ui.window.scene().getFocusOwner() == tableOfRobots()), "the keyboard stayed where it was");
+        key(KeyCode.SPACE);
+        awaitHeard(d -> d.state() == GameControlData.STATE_PLAYING && !d.stopped());
+
+        // the call first, then the robot
+        gc.press("#gc-call-pushing");
+        gc.press("#gc-robot-1-3");
+        awaitHeard(d -> HslPenalty.ofNeutral(d.team(7).player(3).penalty()) == HslPenalty.PUSHING);
+        assertTrue(text(tab, "#gc-robot-text-1-3").contains("pushing wait"), text(tab, "#gc-robot-text-1-3"));
+
+        gc.press("#gc-goal-0");
+        awaitHeard(d -> d.team(13).score() == 1 && d.state() == GameControlData.STATE_READY && d.kickOffTeam() == 7);
+        assertEquals("1", text(tab, "#gc-score-0"));
+
+        gc.press("#gc-call-cautioned");
+        gc.press("#gc-robot-0-2");
+        awaitHeard(d -> d.team(13).player(2).cautions() == 1);
+        gc.press("#gc-call-cautioned");
+        gc.press("#gc-robot-0-2");
+        awaitHeard(d -> HslPenalty.ofNeutral(d.team(13).player(2).penalty()) == HslPenalty.SENT_OFF);
+
+        focusElsewhere();
+        key(KeyCode.P); // no whistle in READY
+        ui.await(30, () -> text(tab, "#gc-message").startsWith("illegal now: "));
+
+        ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
+                .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
+    }
+
+    @Test
+    void refereesAnHsl19GameWithoutCautions() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(
+                new LayoutNode.Entry("gamecontroller", ""))))));
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        gc.start(field, "hsl19");
+        awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL && heardVersion.get() == HslGameState19.VERSION);
+        Node tab = gc.node();
+        assertTrue(ui.fx(() -> tab.lookup("#gc-call-cautioned") == null && tab.lookup("#gc-call-pushing") != null),
+                "6.0.x has no cautions");
+        gc.press("#gc-ready");
+        awaitHeard(d -> d.state() == GameControlData.STATE_READY && heardVersion.get() == HslGameState19.VERSION);
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void keysRestWhileTheTabIsHiddenAndClashingColoursDoNotStart() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(
+                new LayoutNode.Entry("gamecontroller", ""), new LayoutNode.Entry("robots", ""))))));
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        Node tab = gc.node();
+        ui.fxRun(() -> ((javafx.scene.control.ComboBox<touchline.protocol.gamecontroller.TeamColour>) tab
+                .lookup("#gc-colour-b")).setValue(touchline.protocol.gamecontroller.TeamColour.PURPLE));
+        gc.start(field, "hsl20", false);
+        ui.await(30, () -> ((Parent) tab).lookupAll(".label").stream().anyMatch(n -> n instanceof Label l
+                && l.getText().equals("cannot start: a team's field players wear the other goalkeeper's colour")));
+        assertTrue(ui.console.gameController().isEmpty());
+        ui.fxRun(() -> ((javafx.scene.control.ComboBox<touchline.protocol.gamecontroller.TeamColour>) tab
+                .lookup("#gc-colour-b")).setValue(touchline.protocol.gamecontroller.TeamColour.BLUE));
+        gc.start(field, "hsl20");
+        awaitHeard(d -> d.state() == GameControlData.STATE_INITIAL);
+        ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE)); // hides the GameController tab
+        ui.await(30, () -> !FramePulse.showing(tab));
+        focusElsewhere();
+        key(KeyCode.R);
+        ui.fxRun(() -> ui.window.open("gamecontroller", ViewSource.NONE));
+        ui.await(30, () -> FramePulse.showing(tab));
+        assertEquals(GameControlData.STATE_INITIAL, heard.get().state(), "R went nowhere while the tab was hidden");
+        key(KeyCode.R);
+        awaitHeard(d -> d.state() == GameControlData.STATE_READY);
+    }
+
+    @Test
+    void hsl20IsTheDefaultAndTheRefereeBoxFitsA1280By720WindowWithoutScrolling() throws Exception {
+        ui.fxRun(() -> {
+            javafx.stage.Window w = ui.window.scene().getWindow();
+            w.setX(0);
+            w.setY(0);
+            w.setWidth(1280);
+            w.setHeight(650); // a 1280x720 screen less a panel and the title bar, as in ViewsFitUiTest
+            ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", "")))));
+        });
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        assertEquals("hsl20", ui.fx(() -> ((javafx.scene.control.ComboBox<?>) gc.node().lookup("#gc-format")).getValue()));
+        gc.start(field, "hsl20");
+        Node tab = gc.node();
+        ui.await(30, () -> tab.lookup("#gamecontroller-hsl") != null);
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 35);
+        List<String> problems = ui.fx(() -> {
+            List<String> out = new java.util.ArrayList<>();
+            javafx.geometry.Bounds status = ui.window.status().localToScene(ui.window.status().getLayoutBounds());
+            Node menu = ui.window.scene().getRoot().lookup(".menu-bar");
+            javafx.geometry.Bounds menuBounds = menu.localToScene(menu.getLayoutBounds());
+            Node box = tab.lookup("#gamecontroller-hsl");
+            javafx.geometry.Bounds b = box.localToScene(box.getLayoutBounds());
+            if (b.getMinY() < menuBounds.getMaxY() - 0.5 || b.getMaxY() > status.getMinY() + 0.5 || b.getMaxX() > 1280.5) {
+                out.add("referee box " + b + " not between the menu " + menuBounds + " and the status bar " + status);
+            }
+            Node up = tab;
+            while (up != null && !(up instanceof javafx.scene.control.ScrollPane)) {
+                up = up.getParent();
+            }
+            if (up instanceof javafx.scene.control.ScrollPane sp) {
+                javafx.geometry.Bounds content = sp.getContent().getLayoutBounds();
+                if (content.getHeight() > sp.getViewportBounds().getHeight() + 0.5
+                        || content.getWidth() > sp.getViewportBounds().getWidth() + 0.5) {
+                    javafx.scene.layout.BorderPane bp = (javafx.scene.layout.BorderPane) box;
+                    out.add("the tab scrolls: " + content + " in " + sp.getViewportBounds() + "; left "
+                            + bp.getLeft().getLayoutBounds().getHeight() + ", centre " + bp.getCenter().getLayoutBounds().getHeight()
+                            + ", box " + box.getLayoutBounds().getHeight());
+                }
+            }
+            ViewsFitUiTest.collect(box, "gamecontroller-hsl", out);
+            return out;
+        });
+        assertEquals(List.of(), problems);
+    }
+}
