@@ -27,7 +27,8 @@ final class JerseyLiveness {
      */
     JerseyLiveness(List<RobotSnapshot> robots, RobotLiveness returns, long nowMs) {
         for (RobotSnapshot r : robots) {
-            if (r.teamId() != RobotSnapshot.UNKNOWN) {
+            // a replayed robot is last match's, never a robot on this field
+            if (r.teamId() != RobotSnapshot.UNKNOWN && r.origin() == touchline.transport.Origin.LIVE) {
                 robotsView.put(key(r.teamId(), r.id()), r.online());
             }
         }

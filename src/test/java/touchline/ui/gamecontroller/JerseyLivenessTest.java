@@ -13,7 +13,7 @@ class JerseyLivenessTest {
 
     private static RobotSnapshot robot(int id, int team, boolean online) {
         return new RobotSnapshot(id, "r" + id, team, 80, "", "", "", 0, 0, 0, false, 10, 0, 0, online, 1, 1, 1, 0, 0,
-                null);
+                null, touchline.transport.Origin.LIVE);
     }
 
     @Test
