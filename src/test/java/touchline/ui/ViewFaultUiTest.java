@@ -199,11 +199,18 @@ class ViewFaultUiTest {
         ui.fxRun(() -> ui.window.open("nao", ViewSource.NONE));
         try (RobotProcess nao = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start()) {
+            // both ports, as a user types them: the simulator prints its camera port after the RPC port
+            touchline.testing.Await.until("the simulator's camera port", 10_000,
+                    () -> nao.stdout().contains("camera listening on port "));
+            java.util.regex.Matcher cam = java.util.regex.Pattern.compile("camera listening on port (\\d+)")
+                    .matcher(nao.stdout());
+            int camPort = cam.find() ? Integer.parseInt(cam.group(1)) : 0;
             Node naoView = ui.fx(() -> ui.window.shell().openViews().stream()
                     .filter(v -> v.spec().id().equals("nao")).findFirst().orElseThrow().view().node());
             ui.fxRun(() -> {
                 ((TextField) naoView.lookup("#nao-host")).setText("127.0.0.1");
                 ((TextField) naoView.lookup("#nao-rpc-port")).setText(Integer.toString(nao.port()));
+                ((TextField) naoView.lookup("#nao-cam-port")).setText(Integer.toString(camPort));
                 ((ToggleButton) naoView.lookup("#nao-connect")).fire();
             });
             try {
