@@ -193,10 +193,12 @@ class ViewFaultUiTest {
     @Test
     void aNaoWithEveryViewOpenShowsInTheNetworkConsole() throws Exception {
         touchline.testing.Requirement.robotSide("touchline-nao-sim");
-        // The NAO is connected first, then every view opens while its envelopes stream in: with
-        // every view open first, the link stayed "connecting" in about one run in three on two
-        // loaded cores (not understood yet; docs/testing.md).
-        ui.fxRun(() -> ui.window.open("nao", ViewSource.NONE));
+        ui.fxRun(() -> {
+            for (ViewSpec s : ui.window.registry().all()) {
+                ui.window.shell().open(s, ViewSource.NONE);
+            }
+            ui.window.open("nao", ViewSource.NONE);
+        });
         try (RobotProcess nao = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start()) {
             // both ports, as a user types them: the simulator prints its camera port after the RPC port
@@ -228,12 +230,7 @@ class ViewFaultUiTest {
                 throw new AssertionError("the NAO never came online: '" + ui.fx(() -> ((Label) naoView.lookup("#nao-state"))
                         .getText()) + "', rpc port " + nao.port() + ", sim output: " + nao.stdout() + threads, e);
             }
-            ui.fxRun(() -> {
-                for (ViewSpec s : ui.window.registry().all()) {
-                    ui.window.shell().open(s, ViewSource.NONE);
-                }
-                ui.window.open("network", ViewSource.NONE);
-            });
+            ui.fxRun(() -> ui.window.open("network", ViewSource.NONE));
             String peer = "127.0.0.1:" + nao.port();
             ui.await(30, () -> ui.robot.lookup("#network-table").lookup(".table-cell").queryAll().stream()
                     .anyMatch(c -> c instanceof javafx.scene.control.TableCell<?, ?> cell && peer.equals(cell.getText())
