@@ -207,8 +207,11 @@ class ViewFaultUiTest {
             java.util.regex.Matcher cam = java.util.regex.Pattern.compile("camera listening on port (\\d+)")
                     .matcher(nao.stdout());
             int camPort = cam.find() ? Integer.parseInt(cam.group(1)) : 0;
+            // "every view" opened one NAO view already and open("nao") another: the one on screen is
+            // the one refreshed (a view in a hidden tab is not), so that is the one to use
             Node naoView = ui.fx(() -> ui.window.shell().openViews().stream()
-                    .filter(v -> v.spec().id().equals("nao")).findFirst().orElseThrow().view().node());
+                    .filter(v -> v.spec().id().equals("nao") && FramePulse.showing(v.view().node()))
+                    .findFirst().orElseThrow().view().node());
             ui.fxRun(() -> {
                 ((TextField) naoView.lookup("#nao-host")).setText("127.0.0.1");
                 ((TextField) naoView.lookup("#nao-rpc-port")).setText(Integer.toString(nao.port()));
