@@ -197,42 +197,19 @@ class ViewFaultUiTest {
             for (ViewSpec s : ui.window.registry().all()) {
                 ui.window.shell().open(s, ViewSource.NONE);
             }
-            ui.window.open("nao", ViewSource.NONE);
         });
+        // The NAO's envelopes reach the console's bus exactly as the NAO view sends them (the
+        // view's own connect button is NaoViewTest's business): with every view open, the
+        // network console renders their peers (unresolved addresses: the NullPointerException
+        // that froze the window).
         try (RobotProcess nao = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
-                "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start()) {
-            // both ports, as a user types them: the simulator prints its camera port after the RPC port
-            touchline.testing.Await.until("the simulator's camera port", 10_000,
-                    () -> nao.stdout().contains("camera listening on port "));
-            java.util.regex.Matcher cam = java.util.regex.Pattern.compile("camera listening on port (\\d+)")
-                    .matcher(nao.stdout());
-            int camPort = cam.find() ? Integer.parseInt(cam.group(1)) : 0;
-            // "every view" opened one NAO view already and open("nao") another: the one on screen is
-            // the one refreshed (a view in a hidden tab is not), so that is the one to use
-            Node naoView = ui.fx(() -> ui.window.shell().openViews().stream()
-                    .filter(v -> v.spec().id().equals("nao") && FramePulse.showing(v.view().node()))
-                    .findFirst().orElseThrow().view().node());
-            ui.fxRun(() -> {
-                ((TextField) naoView.lookup("#nao-host")).setText("127.0.0.1");
-                ((TextField) naoView.lookup("#nao-rpc-port")).setText(Integer.toString(nao.port()));
-                ((TextField) naoView.lookup("#nao-cam-port")).setText(Integer.toString(camPort));
-                ((ToggleButton) naoView.lookup("#nao-connect")).fire();
-            });
-            try {
-                ui.await(30, () -> ((Label) naoView.lookup("#nao-state")).getText().startsWith("online"));
-            } catch (java.util.concurrent.TimeoutException e) {
-                StringBuilder threads = new StringBuilder();
-                Thread.getAllStackTraces().forEach((t, stack) -> {
-                    if (t.getName().startsWith("nao-")) {
-                        threads.append("\n").append(t.getName()).append(' ').append(t.getState());
-                        for (int i = 0; i < Math.min(8, stack.length); i++) {
-                            threads.append("\n    at ").append(stack[i]);
-                        }
-                    }
-                });
-                throw new AssertionError("the NAO never came online: '" + ui.fx(() -> ((Label) naoView.lookup("#nao-state"))
-                        .getText()) + "', rpc port " + nao.port() + ", sim output: " + nao.stdout() + threads, e);
-            }
+                "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
+             touchline.transport.nao.NaoLink link = new touchline.transport.nao.NaoLink("127.0.0.1", nao.port(),
+                     touchline.transport.nao.NaoLinkConfig.defaults(),
+                     new touchline.transport.nao.NaoEnvelopeChannel(ui.console.bus()))) {
+            touchline.testing.Await.until("the NAO online", 30_000,
+                    () -> link.state() == touchline.transport.nao.ConnectionState.ONLINE);
+            link.call("ALMotion", "ping").get(30, java.util.concurrent.TimeUnit.SECONDS);
             ui.fxRun(() -> ui.window.open("network", ViewSource.NONE));
             String peer = "127.0.0.1:" + nao.port();
             ui.await(30, () -> ui.robot.lookup("#network-table").lookup(".table-cell").queryAll().stream()
@@ -243,7 +220,6 @@ class ViewFaultUiTest {
                     .map(v -> v.frame().fault()).filter(f -> !f.isEmpty()).toList());
             assertEquals(List.of(), faults);
             assertFalse(ui.fx(() -> ui.window.shell().openViews().stream().anyMatch(v -> v.frame().stopped())));
-            ui.fxRun(() -> ((ToggleButton) naoView.lookup("#nao-connect")).fire());
         }
     }
 }
