@@ -125,7 +125,8 @@ public final class TeamMessageBudget implements EnvelopeSink {
         if (e.replayed()) {
             return; // a replay's messages are last match's, never this game's budget
         }
-        if (e.channel() == Channel.GAMECONTROLLER && e.direction() == Direction.IN && e.error() == null) {
+        // IN: the field's GameController; OUT: this console's own, when it referees the game
+        if (e.channel() == Channel.GAMECONTROLLER && e.error() == null) {
             hearGameController(e.raw());
         } else if (e.channel() == Channel.TEAM_MESSAGE && e.direction() == Direction.IN) {
             count(e);

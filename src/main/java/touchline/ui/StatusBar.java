@@ -61,6 +61,7 @@ public final class StatusBar extends HBox {
         waiting.setId("status-waiting");
         waiting.setTooltip(waitingTip);
         meterText.setId("status-meter");
+        meterName.setMinWidth(Region.USE_PREF_SIZE);
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
         getChildren().addAll(silence, rates, bad, waiting, meterName, meter, meterText, message, grow, fps);

@@ -98,6 +98,16 @@ class TeamMessageBudgetTest {
     }
 
     @Test
+    void theConsolesOwnGameControllerIsHeardToo() throws IOException {
+        TeamMessageBudget budget = new TeamMessageBudget(() -> now[0], hsl, TEAM);
+        Envelope in = gc(golden("07-playing-after-delay.bin"));
+        budget.accept(new Envelope(in.timeMicros(), Direction.OUT, in.channel(), in.peer(), in.robotId(), in.kind(),
+                null, in.raw(), null));
+        send(budget, 10, 10);
+        assertTrue(budget.snapshot().leftFromGc(), "the tab's own GameController gives the budget");
+    }
+
+    @Test
     void messagesOutsideReadySetPlayingDoNotCount() throws IOException {
         TeamMessageBudget budget = new TeamMessageBudget(() -> now[0], hsl, TEAM);
         budget.accept(gc(golden("00-initial.bin")));
