@@ -58,6 +58,9 @@ public final class WindowPlaces {
      * Sizes and places {@code stage} (not yet shown) as it was last closed, or at a share of the
      * screen at most {@code maxWidth} by {@code maxHeight}, and remembers it when it hides.
      */
+    /** How long after showing a shrink by the window manager is undone. */
+    static final double SHRINK_GUARD_SECONDS = 5;
+
     public void keep(Stage stage, String window, double maxWidth, double maxHeight) {
         Rectangle2D screen = Screen.getPrimary().getVisualBounds();
         List<Rectangle2D> screens = Screen.getScreens().stream().map(Screen::getVisualBounds).toList();
@@ -69,15 +72,30 @@ public final class WindowPlaces {
         stage.setHeight(place.height());
         stage.setMaximized(place.maximized());
         // JavaFX 21 on Linux (JDK-8316423, fixed in 22) lets the window manager shrink a window
-        // shown with a size to about 200x200: set it again once the window is mapped
-        stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_SHOWN, e -> javafx.application.Platform.runLater(() -> {
-            if (!stage.isMaximized() && (stage.getWidth() != place.width() || stage.getHeight() != place.height())) {
-                stage.setWidth(place.width());
-                stage.setHeight(place.height());
-                stage.setX(place.x());
-                stage.setY(place.y());
-            }
-        }));
+        // shown with a size to about 200x200, sometimes well after it is mapped (seen on a
+        // loaded machine): for the first seconds a shrink to under half the size is undone.
+        stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_SHOWN, e -> {
+            Runnable restore = () -> {
+                if (!stage.isMaximized() && (stage.getWidth() < place.width() / 2
+                        || stage.getHeight() < place.height() / 2)) {
+                    stage.setWidth(place.width());
+                    stage.setHeight(place.height());
+                    stage.setX(place.x());
+                    stage.setY(place.y());
+                }
+            };
+            javafx.beans.InvalidationListener undoShrink = o -> javafx.application.Platform.runLater(restore);
+            stage.widthProperty().addListener(undoShrink);
+            stage.heightProperty().addListener(undoShrink);
+            javafx.application.Platform.runLater(restore);
+            javafx.animation.PauseTransition settled = new javafx.animation.PauseTransition(
+                    javafx.util.Duration.seconds(SHRINK_GUARD_SECONDS));
+            settled.setOnFinished(done -> {
+                stage.widthProperty().removeListener(undoShrink);
+                stage.heightProperty().removeListener(undoShrink);
+            });
+            settled.play();
+        });
         stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_HIDING, e -> put(window, placeOf(stage, place)));
     }
 
