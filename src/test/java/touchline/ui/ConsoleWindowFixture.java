@@ -23,8 +23,16 @@ final class ConsoleWindowFixture implements AutoCloseable {
     final FxRobot robot = new FxRobot();
 
     ConsoleWindowFixture(Path layoutDir) throws Exception {
-        console = new Console(ConsoleConfig.defaults().withUdp(
-                UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+        this(layoutDir, loopback());
+    }
+
+    /** The console on a loopback port the OS chose. */
+    static ConsoleConfig loopback() {
+        return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+    }
+
+    ConsoleWindowFixture(Path layoutDir, ConsoleConfig config) throws Exception {
+        console = new Console(config).start();
         Stage stage = FxToolkit.registerPrimaryStage();
         window = WaitForAsyncUtils.asyncFx(() -> new ConsoleWindow(console, new UiSettings(layoutDir, true, false))
                 .show(stage)).get(30, TimeUnit.SECONDS);

@@ -131,6 +131,26 @@ public final class GcMonitor implements AutoCloseable {
         return new TreeMap<>(lastSeen);
     }
 
+    /**
+     * Each robot as the GameController sees it, one line a robot ("5/2 10.0.0.12 GOOD upright
+     * pose (...) ball ..."), then one line per source of bad forwarded packets: for the
+     * {@code listen} command and the window's "GameController's robots" view alike.
+     */
+    public java.util.List<String> describe(long nowMs) {
+        java.util.List<String> lines = new java.util.ArrayList<>();
+        robots().forEach((key, seen) -> {
+            ReturnPacket.V4 p = seen.packet();
+            lines.add(String.format(java.util.Locale.ROOT, "%-6s %-15s %-7s %s pose (%.0f, %.0f, %.2f) ball %s", key,
+                    seen.robotHost(), liveness.status(key.team(), key.player(), nowMs),
+                    p.fallen() == 1 ? "FALLEN " : "upright", p.poseX(), p.poseY(), p.poseTheta(),
+                    p.ballAge() < 0 ? "never seen" : String.format(java.util.Locale.ROOT, "(%.0f, %.0f) %.1f s ago",
+                            p.ballX(), p.ballY(), p.ballAge())));
+        });
+        badPackets.bySource().forEach((src, t) ->
+                lines.add("bad forwarded packets from " + src + ": " + t.count() + " (last: " + t.lastReason() + ")"));
+        return lines;
+    }
+
     /** Forwarded datagrams that did not decode, per source with the last reason. */
     public BadPackets badPackets() {
         return badPackets;

@@ -1,0 +1,61 @@
+package touchline.ui.views;
+
+import javafx.scene.Node;
+import javafx.scene.control.Label;
+import javafx.scene.control.TextArea;
+import javafx.scene.layout.BorderPane;
+import touchline.transport.gamecontroller.GcMonitor;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.util.List;
+
+/**
+ * Each robot as the field's HSL GameController sees it: its forwarded return packet (fallen,
+ * pose, ball) and liveness, when the console registered as a monitor ({@code --gc-monitor
+ * HOST}). Pulls twice a second; the lines are the same as {@code listen}'s.
+ */
+public final class GcRobotsView implements View {
+
+    private final ViewContext context;
+    private final Label status = new Label();
+    private final TextArea lines = new TextArea();
+    private final BorderPane root = new BorderPane();
+    private List<String> shown = List.of();
+
+    public GcRobotsView(ViewContext context) {
+        this.context = context;
+        lines.setEditable(false);
+        lines.setId("gc-robots-text");
+        lines.setStyle("-fx-font-family: monospace;");
+        status.setId("gc-robots-status");
+        status.setStyle("-fx-padding: 4 8 4 8;");
+        root.setTop(status);
+        root.setCenter(lines);
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        if (frame.frame() % 30 != 0) {
+            return;
+        }
+        GcMonitor monitor = context.console().gcMonitor();
+        if (monitor == null) {
+            status.setText("Not a monitor of the field's GameController: start with --gc-monitor HOST to see the "
+                    + "robots as the referee sees them.");
+            return;
+        }
+        List<String> now = monitor.describe(System.currentTimeMillis());
+        status.setText("The field's GameController sees " + monitor.robots().size() + " robot(s)");
+        if (!now.equals(shown)) {
+            shown = now;
+            lines.setText(String.join("\n", now));
+        }
+    }
+}
