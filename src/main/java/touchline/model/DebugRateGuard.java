@@ -78,30 +78,15 @@ public final class DebugRateGuard implements EnvelopeSink {
 
     /** One robot's packets in the last ten seconds (two-second buckets) and its reported game state. */
     private static final class Counts {
-        final long[] start = new long[BUCKETS];
-        final long[] count = new long[BUCKETS];
+        final TimeBuckets packets = new TimeBuckets(WINDOW_MICROS, BUCKETS);
         String gameState;
 
         void add(long now) {
-            long slot = Math.floorDiv(now, WINDOW_MICROS / BUCKETS);
-            int i = (int) Math.floorMod(slot, BUCKETS);
-            if (start[i] != slot) {
-                start[i] = slot;
-                count[i] = 0;
-            }
-            count[i]++;
+            packets.add(now);
         }
 
-        /** Over the full buckets of the window (the current, partial one left out). */
         double perSecond(long now) {
-            long slot = Math.floorDiv(now, WINDOW_MICROS / BUCKETS);
-            long total = 0;
-            for (int i = 0; i < BUCKETS; i++) {
-                if (start[i] >= slot - (BUCKETS - 1) && start[i] < slot) {
-                    total += count[i];
-                }
-            }
-            return total / ((BUCKETS - 1) * (WINDOW_MICROS / BUCKETS) / 1e6);
+            return packets.perSecondOfFullBuckets(now);
         }
     }
 }

@@ -96,8 +96,7 @@ public final class TeamMessageBudget implements EnvelopeSink {
     private final MicrosClock clock;
     private final RuleProfile profile;
     private final int team;
-    private final long[] bucketStart = new long[BUCKETS];
-    private final long[] bucketCount = new long[BUCKETS];
+    private final TimeBuckets teamRate = new TimeBuckets(WINDOW_MICROS, BUCKETS);
     private final Map<String, SenderCount> senders = new LinkedHashMap<>();
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private long used;
@@ -160,8 +159,8 @@ public final class TeamMessageBudget implements EnvelopeSink {
         }
         used++;
         s.messages++;
-        s.add(now);
-        add(bucketStart, bucketCount, now);
+        s.rate.add(now);
+        teamRate.add(now);
     }
 
     /** The official GameController counts only in READY, SET and PLAYING, never in a shoot-out. */
@@ -176,14 +175,14 @@ public final class TeamMessageBudget implements EnvelopeSink {
 
     public synchronized Snapshot snapshot() {
         long now = clock.nowMicros();
-        double perSecond = sum(bucketStart, bucketCount, now) / (WINDOW_MICROS / 1e6);
+        double perSecond = teamRate.inWindow(now) / (WINDOW_MICROS / 1e6);
         long left = budgetLeft();
         long secondsLeftInGame = secondsLeftInGame();
         long toEmpty = left >= 0 && perSecond > 0 ? (long) Math.floor(left / perSecond) : -1;
         Verdict verdict = verdict(left, perSecond, toEmpty, secondsLeftInGame);
         List<Sender> rows = new ArrayList<>();
         for (SenderCount s : senders.values()) {
-            rows.add(new Sender(s.name, s.messages, sum(s.bucketStart, s.bucketCount, now), s.oversize, s.largest));
+            rows.add(new Sender(s.name, s.messages, s.rate.inWindow(now), s.oversize, s.largest));
         }
         rows.sort(Comparator.comparingLong(Sender::messages).reversed());
         return new Snapshot(profile, team, used, left, left >= 0 && gcBudget() >= 0, perSecond * 60,
@@ -241,42 +240,16 @@ public final class TeamMessageBudget implements EnvelopeSink {
         return rest;
     }
 
-    private static void add(long[] start, long[] count, long now) {
-        long slot = Math.floorDiv(now, WINDOW_MICROS / BUCKETS);
-        int i = (int) Math.floorMod(slot, BUCKETS);
-        if (start[i] != slot) {
-            start[i] = slot;
-            count[i] = 0;
-        }
-        count[i]++;
-    }
-
-    private static double sum(long[] start, long[] count, long now) {
-        long slot = Math.floorDiv(now, WINDOW_MICROS / BUCKETS);
-        long total = 0;
-        for (int i = 0; i < BUCKETS; i++) {
-            if (start[i] > slot - BUCKETS && start[i] <= slot) {
-                total += count[i];
-            }
-        }
-        return total;
-    }
-
     /** One sender's counts; the per-minute rate uses the same one-minute window as the team's. */
     private static final class SenderCount {
         final String name;
-        final long[] bucketStart = new long[BUCKETS];
-        final long[] bucketCount = new long[BUCKETS];
+        final TimeBuckets rate = new TimeBuckets(WINDOW_MICROS, BUCKETS);
         long messages;
         long oversize;
         int largest;
 
         SenderCount(String name) {
             this.name = name;
-        }
-
-        void add(long now) {
-            TeamMessageBudget.add(bucketStart, bucketCount, now);
         }
     }
 }
