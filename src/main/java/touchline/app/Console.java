@@ -35,11 +35,13 @@ import touchline.transport.UdpTransport;
 import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
 import touchline.record.RecorderStats;
-import touchline.record.Recording;
+import touchline.record.ReplaySession;
 import touchline.record.RecordingException;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
@@ -249,11 +251,22 @@ public final class Console implements AutoCloseable {
      * jump of the replay (a seek, a loop going round) starts its robots and stores afresh.
      */
     public synchronized Replay openReplay(Path file) throws RecordingException {
+        return openReplay(List.of(file), Map.of());
+    }
+
+    /**
+     * Opens several recordings (the laptop's and robots' own logs) as one replay on one
+     * timeline, as {@link #openReplay(Path)} does one: each file's clock is moved onto the first
+     * file's by the offset given in {@code offsets} (µs, the file's clock minus the first's) or
+     * else by the GameController packets both files heard (this reads each file once: call it
+     * off the UI thread). A robot heard in two files is one replayed robot.
+     */
+    public synchronized Replay openReplay(List<Path> files, Map<Path, Long> offsets) throws RecordingException {
         closeReplay();
-        Recording recording = Recording.open(file, kinds);
-        long start = recording.startMicros();
+        ReplaySession session = ReplaySession.open(files, offsets, kinds);
+        long start = session.startMicros();
         stores.restartReplay(start);
-        replay = new Replay(recording, bus, () -> {
+        replay = new Replay(session, bus, () -> {
             stores.restartReplay(start);
             robots.forgetReplayed();
         });

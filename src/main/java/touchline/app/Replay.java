@@ -3,7 +3,7 @@ package touchline.app;
 import touchline.record.Player;
 import touchline.record.PlayerState;
 import touchline.record.PlaybackClock;
-import touchline.record.Recording;
+import touchline.record.ReplaySession;
 import touchline.record.TimelineEvent;
 import touchline.transport.EnvelopeSink;
 
@@ -17,7 +17,7 @@ import java.util.Optional;
  */
 public final class Replay implements AutoCloseable {
 
-    private final Recording recording;
+    private final ReplaySession session;
     private final Player player;
     private final Thread pump;
     private volatile boolean running = true;
@@ -27,9 +27,9 @@ public final class Replay implements AutoCloseable {
     private record Seen(PlayerState state, long nanos) { }
 
     /** @param jumped run when the position jumps (a seek, a loop going round), before anything plays from there */
-    Replay(Recording recording, EnvelopeSink sink, Runnable jumped) {
-        this.recording = recording;
-        this.player = new Player(recording, sink, PlaybackClock.system(), jumped);
+    Replay(ReplaySession session, EnvelopeSink sink, Runnable jumped) {
+        this.session = session;
+        this.player = new Player(session, sink, PlaybackClock.system(), jumped);
         remember();
         this.pump = new Thread(this::loop, "touchline-replay");
         pump.setDaemon(true);
@@ -97,7 +97,9 @@ public final class Replay implements AutoCloseable {
 
     public List<TimelineEvent> events() { return player.events(); }
     /** What could not be read from the file (a cut-off end, a corrupt chunk, a schema that does not parse). */
-    public List<String> problems() { return recording.problems(); }
+    public List<String> problems() { return session.problems(); }
+    /** The files played (one, or several on one timeline) and how each file's clock was aligned to the first's. */
+    public List<ReplaySession.Part> files() { return session.parts(); }
 
     @Override
     public void close() {
@@ -109,6 +111,6 @@ public final class Replay implements AutoCloseable {
             Thread.currentThread().interrupt();
         }
         player.close();
-        recording.close();
+        session.close();
     }
 }

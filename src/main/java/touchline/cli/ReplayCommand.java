@@ -6,26 +6,40 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import touchline.record.PlaybackClock;
 import touchline.record.Player;
-import touchline.record.Recording;
+import touchline.protocol.MessageKinds;
 import touchline.record.RecordingException;
+import touchline.record.ReplaySession;
 import touchline.record.TimelineEvent;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 
 /**
- * {@code touchline replay FILE}: plays a recording through the same Envelope stream as live
- * traffic. Here, without a window, each envelope becomes one text line, as {@code listen}
+ * {@code touchline replay FILE...}: plays one recording, or several (the laptop's and robots'
+ * own logs) as one session in one merged order of time, through the same Envelope stream as
+ * live traffic. Here, without a window, each envelope becomes one text line, as {@code listen}
  * prints live traffic; {@code --headless} plays as fast as possible, otherwise at
- * {@code --speed} times real time. Problems with the file are reported, what is readable plays.
+ * {@code --speed} times real time. Several files: each file's clock is aligned to the first's
+ * by {@code --offset FILE=SECONDS} or else by the GameController packets both heard, and how
+ * well is printed per file. Problems with the files are reported, what is readable plays.
  */
 @Command(name = "replay", mixinStandardHelpOptions = true,
-        description = "Replay an MCAP recording, printing one line per envelope.")
+        description = "Replay MCAP recordings (several files: one session on one timeline), printing one line per envelope.")
 public final class ReplayCommand implements Callable<Integer> {
 
-    @Parameters(index = "0", paramLabel = "FILE", description = "the recording (.mcap)")
-    Path file;
+    @Parameters(index = "0..*", arity = "1..*", paramLabel = "FILE",
+            description = "the recording(s) (.mcap); several play as one session, aligned to the first file's clock")
+    List<Path> files;
+
+    @Option(names = "--offset", paramLabel = "FILE=SECONDS",
+            description = "FILE's clock minus the first file's, e.g. robot3.mcap=+1.250 (instead of aligning by the "
+                    + "GameController packets both files heard)")
+    Map<String, String> offsets = new LinkedHashMap<>();
 
     @Option(names = "--speed", defaultValue = "1", description = "playback speed, 0.1 to 50 (default: ${DEFAULT-VALUE})")
     double speed;
@@ -46,24 +60,49 @@ public final class ReplayCommand implements Callable<Integer> {
     public Integer call() throws InterruptedException {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        Recording recording;
+        Map<Path, Long> given = new HashMap<>();
+        for (Map.Entry<String, String> o : offsets.entrySet()) {
+            Path file = files.stream().filter(f -> f.toString().equals(o.getKey())
+                    || f.getFileName().toString().equals(o.getKey())).findFirst().orElse(null);
+            if (file == null) {
+                err.println("touchline replay: --offset " + o.getKey() + "=...: " + o.getKey() + " is not one of the files");
+                return 2;
+            }
+            try {
+                given.put(file, Math.round(Double.parseDouble(o.getValue().trim()) * 1e6));
+            } catch (NumberFormatException e) {
+                err.println("touchline replay: --offset " + o.getKey() + "=" + o.getValue()
+                        + ": the offset is seconds, e.g. +1.250 or -0.3");
+                return 2;
+            }
+        }
+        ReplaySession session;
         try {
-            recording = Recording.open(file);
+            session = ReplaySession.open(files, given, new MessageKinds());
         } catch (RecordingException e) {
             err.println("touchline replay: " + e.getMessage());
             return 1;
         }
-        try (recording) {
-            java.util.Set<String> noted = new java.util.HashSet<>(recording.problems());
-            recording.problems().forEach(p -> err.println("note: " + p));
-            EnvelopeLine text = new EnvelopeLine();
-            if (events) {
-                for (TimelineEvent e : recording.events()) {
-                    out.printf("event %+.1f s %s %s%n", (e.timeMicros() - recording.startMicros()) / 1e6, e.type(), e.label());
+        try (session) {
+            boolean several = session.parts().size() > 1;
+            if (several) {
+                for (ReplaySession.Part p : session.parts()) {
+                    err.println("file " + p.name() + ": " + p.offset().describe());
                 }
             }
-            Player player = new Player(recording, e -> out.println(text.format(e)), PlaybackClock.system());
-            player.seek(recording.startMicros() + (long) (from * 1e6));
+            java.util.Set<String> noted = new java.util.HashSet<>(session.problems());
+            session.problems().forEach(p -> err.println("note: " + p));
+            EnvelopeLine text = new EnvelopeLine();
+            if (events) {
+                for (TimelineEvent e : session.events()) {
+                    out.printf("event %+.1f s %s %s%n", (e.timeMicros() - session.startMicros()) / 1e6, e.type(), e.label());
+                }
+            }
+            Player[] playing = new Player[1];
+            Player player = new Player(session, e -> out.println(several
+                    ? text.format(e) + " file=" + playing[0].deliveringSource() : text.format(e)), PlaybackClock.system());
+            playing[0] = player;
+            player.seek(session.startMicros() + (long) (from * 1e6));
             long n;
             if (headless) {
                 n = player.runToEnd();
@@ -81,8 +120,9 @@ public final class ReplayCommand implements Callable<Integer> {
             }
             out.flush();
             // what playing found (a corrupt chunk, a channel of another tool): said, never dropped
-            recording.problems().stream().filter(noted::add).forEach(p -> err.println("note: " + p));
-            err.printf("replayed %d envelopes, %.1f s of recording%n", n, recording.durationMicros() / 1e6);
+            session.problems().stream().filter(noted::add).forEach(p -> err.println("note: " + p));
+            err.printf("replayed %d envelopes, %.1f s of recording%s%n", n, session.durationMicros() / 1e6,
+                    several ? " from " + session.parts().size() + " files" : "");
             return 0;
         }
     }

@@ -28,12 +28,14 @@ public final class Player implements AutoCloseable {
     /** A loop over a range with no envelopes must not spin forever inside one pump. */
     private static final int MAX_LAPS_PER_PUMP = 1000;
 
-    private final Recording recording;
+    private final ReplaySession session;
     private final EnvelopeSink sink;
     private final PlaybackClock clock;
     private final Runnable jumped;
-    private Recording.Cursor cursor;
+    private ReplaySession.Cursor cursor;
     private Envelope pending;
+    private String pendingSource = "";
+    private String delivering = "";
     private long position;
     private long anchorRecording;
     private long anchorWall;
@@ -55,12 +57,22 @@ public final class Player implements AutoCloseable {
      *               delivered) each time the position jumps instead of advancing
      */
     public Player(Recording recording, EnvelopeSink sink, PlaybackClock clock, Runnable jumped) {
-        this.recording = recording;
+        this(ReplaySession.of(recording), sink, clock, jumped);
+    }
+
+    /** Plays a session of one or several files (merged by time, each on the first file's clock). */
+    public Player(ReplaySession session, EnvelopeSink sink, PlaybackClock clock) {
+        this(session, sink, clock, () -> { });
+    }
+
+    /** @see #Player(Recording, EnvelopeSink, PlaybackClock, Runnable) */
+    public Player(ReplaySession session, EnvelopeSink sink, PlaybackClock clock, Runnable jumped) {
+        this.session = session;
         this.sink = sink;
         this.clock = clock;
         this.jumped = jumped;
-        this.position = recording.startMicros();
-        this.cursor = recording.cursor(position);
+        this.position = session.startMicros();
+        this.cursor = session.cursor(position);
     }
 
     /** Starts the delivery thread (not needed when the caller pumps, e.g. in tests or headless). */
@@ -104,13 +116,14 @@ public final class Player implements AutoCloseable {
         while (delivered < BATCH && laps < MAX_LAPS_PER_PUMP) {
             if (pending == null) {
                 pending = cursor.next();
+                pendingSource = cursor.source();
                 if (pending == null) {
                     if (loopFrom >= 0) {
-                        target = wrap(target, Math.min(loopTo, recording.endMicros()));
+                        target = wrap(target, Math.min(loopTo, session.endMicros()));
                         laps++;
                         continue;
                     }
-                    position = Math.max(position, recording.endMicros());
+                    position = Math.max(position, session.endMicros());
                     playing = false;
                     finished = true;
                     return Long.MAX_VALUE;
@@ -124,11 +137,11 @@ public final class Player implements AutoCloseable {
             if (pending.timeMicros() > target) {
                 break;
             }
-            deliver(pending);
+            deliver(pending, pendingSource);
             pending = null;
             delivered++;
         }
-        position = Math.max(position, Math.min(target, recording.endMicros()));
+        position = Math.max(position, Math.min(target, session.endMicros()));
         if (delivered >= BATCH || pending == null) {
             return 0;
         }
@@ -143,13 +156,14 @@ public final class Player implements AutoCloseable {
         return loopFrom + excess;
     }
 
-    private void deliver(Envelope e) {
+    private void deliver(Envelope e, String source) {
         emitted++;
+        delivering = source;
         try {
             sink.accept(e.asReplayed());
         } catch (RuntimeException failed) {
             // a failing consumer must not stop the replay, but what it skipped is said
-            recording.note("showing a replayed envelope failed (" + failed + "); such envelopes are skipped");
+            session.note("showing a replayed envelope failed (" + failed + "); such envelopes are skipped");
         }
     }
 
@@ -163,8 +177,8 @@ public final class Player implements AutoCloseable {
     }
 
     private void reposition(long micros) {
-        position = Math.max(recording.startMicros(), Math.min(micros, recording.endMicros()));
-        cursor = recording.cursor(position);
+        position = Math.max(session.startMicros(), Math.min(micros, session.endMicros()));
+        cursor = session.cursor(position);
         pending = null;
         reanchor();
         jumped.run();
@@ -172,7 +186,7 @@ public final class Player implements AutoCloseable {
 
     public synchronized void play() {
         if (finished) {
-            reposition(loopFrom >= 0 ? loopFrom : recording.startMicros());
+            reposition(loopFrom >= 0 ? loopFrom : session.startMicros());
             finished = false;
         }
         if (!playing) {
@@ -184,7 +198,7 @@ public final class Player implements AutoCloseable {
 
     public synchronized void pause() {
         if (playing) {
-            position = Math.max(position, Math.min(targetPosition(), recording.endMicros()));
+            position = Math.max(position, Math.min(targetPosition(), session.endMicros()));
             playing = false;
             notifyAll();
         }
@@ -250,13 +264,13 @@ public final class Player implements AutoCloseable {
             synchronized (this) {
                 int batch = 0;
                 if (pending != null) {
-                    deliver(pending);
+                    deliver(pending, pendingSource);
                     pending = null;
                     n++;
                 }
                 int limit = (int) Math.min(BATCH, max - n);
                 for (Envelope e = null; batch < limit && (e = cursor.next()) != null; batch++) {
-                    deliver(e);
+                    deliver(e, cursor.source());
                     position = e.timeMicros();
                 }
                 n += batch;
@@ -266,7 +280,7 @@ public final class Player implements AutoCloseable {
                 if (batch < limit) {
                     finished = true;
                     playing = false;
-                    position = recording.endMicros();
+                    position = session.endMicros();
                     return n;
                 }
             }
@@ -274,9 +288,9 @@ public final class Player implements AutoCloseable {
     }
 
     public synchronized PlayerState snapshot() {
-        long pos = playing ? Math.max(position, Math.min(targetPosition(), recording.endMicros())) : position;
-        return new PlayerState(pos, recording.startMicros(), recording.endMicros(), playing, finished, speed,
-                loopFrom, loopTo, emitted, recording.problems());
+        long pos = playing ? Math.max(position, Math.min(targetPosition(), session.endMicros())) : position;
+        return new PlayerState(pos, session.startMicros(), session.endMicros(), playing, finished, speed,
+                loopFrom, loopTo, emitted, session.problems());
     }
 
     /**
@@ -284,11 +298,20 @@ public final class Player implements AutoCloseable {
      * recorded hour), so a UI calls it off the FX thread; later calls return the cached list.
      */
     public List<TimelineEvent> events() {
-        return recording.events();
+        return session.events();
     }
 
-    public Recording recording() {
-        return recording;
+    /** The files played, with their clock offsets. */
+    public ReplaySession session() {
+        return session;
+    }
+
+    /**
+     * The name of the file the envelope being delivered comes from ("" for a single file);
+     * valid inside the sink, on the delivering thread.
+     */
+    public synchronized String deliveringSource() {
+        return delivering;
     }
 
     @Override

@@ -1,0 +1,239 @@
+package touchline.record;
+
+import touchline.protocol.MessageKinds;
+import touchline.protocol.gamecontroller.KnownGameStateFormats;
+import touchline.transport.Channel;
+import touchline.transport.Envelope;
+
+import java.io.Closeable;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+/**
+ * One replay from one or several recordings (the laptop's and robots' own logs) on one
+ * timeline: the files' envelopes in one merged order of time, each file's times moved onto
+ * the first file's clock by its {@linkplain ClockAlignment.Offset offset}. The offset is the
+ * one the user gives, or else estimated from the GameController packets both files heard
+ * ({@link ClockAlignment}); without either the file plays unaligned (offset 0) and says so.
+ * A robot heard in two files is one robot: the envelopes carry its robot number, nothing of
+ * the file; which file an envelope came from is {@link Cursor#source()}.
+ */
+public final class ReplaySession implements Closeable {
+
+    /** One file of the session: its name (as shown), the recording and how its clock was aligned. */
+    public record Part(String name, Recording recording, ClockAlignment.Offset offset) { }
+
+    private final List<Part> parts;
+    private final CopyOnWriteArrayList<String> notes = new CopyOnWriteArrayList<>();
+    private volatile List<TimelineEvent> events;
+
+    private ReplaySession(List<Part> parts) {
+        this.parts = List.copyOf(parts);
+    }
+
+    /** A session of one recording, on its own clock. */
+    public static ReplaySession of(Recording recording) {
+        return new ReplaySession(List.of(new Part("", recording, ClockAlignment.Offset.REFERENCE)));
+    }
+
+    /**
+     * Opens {@code files} as one session. A file's offset in {@code given} (its clock minus
+     * the first file's, in µs; keyed by the path as given) wins; the others are estimated from
+     * the GameController packets they share with the first file (one pass over each file).
+     */
+    public static ReplaySession open(List<Path> files, Map<Path, Long> given, MessageKinds kinds)
+            throws RecordingException {
+        if (files.isEmpty()) {
+            throw new IllegalArgumentException("a session needs at least one file");
+        }
+        List<Recording> opened = new ArrayList<>();
+        try {
+            for (Path f : files) {
+                try {
+                    opened.add(Recording.open(f, kinds));
+                } catch (RecordingException e) {
+                    throw files.size() == 1 ? e : new RecordingException(f.getFileName() + ": " + e.getMessage());
+                }
+            }
+        } catch (RecordingException | RuntimeException e) {
+            opened.forEach(Recording::close);
+            throw e;
+        }
+        if (files.size() == 1 && !given.containsKey(files.get(0))) {
+            return of(opened.get(0));
+        }
+        ClockAlignment alignment = new ClockAlignment();
+        List<ClockAlignment.Packet> reference = null;
+        List<Part> parts = new ArrayList<>();
+        for (int i = 0; i < files.size(); i++) {
+            Path f = files.get(i);
+            Long offset = given.get(f);
+            ClockAlignment.Offset o;
+            if (offset != null) {
+                o = ClockAlignment.Offset.given(offset);
+            } else if (i == 0) {
+                o = ClockAlignment.Offset.REFERENCE;
+            } else {
+                if (reference == null) {
+                    reference = gameControllerPackets(opened.get(0));
+                }
+                o = alignment.estimate(reference, gameControllerPackets(opened.get(i)));
+            }
+            parts.add(new Part(f.getFileName().toString(), opened.get(i), o));
+        }
+        return new ReplaySession(parts);
+    }
+
+    /** Every GameController game-state datagram in {@code r} (any format Touchline recognises), in file order. */
+    static List<ClockAlignment.Packet> gameControllerPackets(Recording r) {
+        List<ClockAlignment.Packet> packets = new ArrayList<>();
+        Recording.Cursor c = r.cursor(Long.MIN_VALUE);
+        for (Envelope e = c.next(); e != null; e = c.next()) {
+            if (e.channel() == Channel.GAMECONTROLLER && !e.isMalformed() && KnownGameStateFormats.isGameState(e.raw())) {
+                packets.add(new ClockAlignment.Packet(e.timeMicros(), e.raw()));
+            }
+        }
+        return packets;
+    }
+
+    public List<Part> parts() {
+        return parts;
+    }
+
+    /** The first file's recording (the one whose clock the session keeps). */
+    public Recording first() {
+        return parts.get(0).recording();
+    }
+
+    public long startMicros() {
+        long start = Long.MAX_VALUE;
+        for (Part p : parts) {
+            start = Math.min(start, p.recording().startMicros() - p.offset().offsetMicros());
+        }
+        return start;
+    }
+
+    public long endMicros() {
+        long end = Long.MIN_VALUE;
+        for (Part p : parts) {
+            end = Math.max(end, p.recording().endMicros() - p.offset().offsetMicros());
+        }
+        return end;
+    }
+
+    public long durationMicros() {
+        return endMicros() - startMicros();
+    }
+
+    /** Problems with the files and with what was read so far; prefixed with the file's name in a session of several. */
+    public List<String> problems() {
+        List<String> all = new ArrayList<>();
+        for (Part p : parts) {
+            for (String problem : p.recording().problems()) {
+                all.add(parts.size() > 1 ? p.name() + ": " + problem : problem);
+            }
+        }
+        all.addAll(notes);
+        return all;
+    }
+
+    /** Adds a problem found while playing (once per distinct sentence). */
+    void note(String problem) {
+        if (parts.size() == 1) {
+            first().note(problem);
+        } else {
+            notes.addIfAbsent(problem);
+        }
+    }
+
+    /** Timeline events of the merged stream (one pass over every file, done once). */
+    public List<TimelineEvent> events() {
+        if (parts.size() == 1 && parts.get(0).offset().offsetMicros() == 0) {
+            return first().events();
+        }
+        List<TimelineEvent> e = events;
+        if (e == null) {
+            EventDetector detector = new EventDetector();
+            Cursor c = cursor(Long.MIN_VALUE);
+            for (Envelope env = c.next(); env != null; env = c.next()) {
+                detector.accept(env);
+            }
+            e = detector.finish();
+            events = e;
+        }
+        return e;
+    }
+
+    /** Envelopes of every file from the first with (session) time >= {@code fromMicros}, merged by time. */
+    public Cursor cursor(long fromMicros) {
+        return new Cursor(fromMicros);
+    }
+
+    /** The merged envelopes; {@link #next()} returns null at the end. One thread per cursor. */
+    public final class Cursor {
+        private record Head(Envelope envelope, int part) { }
+
+        private final Recording.Cursor[] cursors = new Recording.Cursor[parts.size()];
+        private final PriorityQueue<Head> heads = new PriorityQueue<>((a, b) -> {
+            int c = Long.compare(a.envelope().timeMicros(), b.envelope().timeMicros());
+            return c != 0 ? c : Integer.compare(a.part(), b.part());
+        });
+        private final boolean single;
+        private String source = "";
+
+        private Cursor(long fromMicros) {
+            single = parts.size() == 1 && parts.get(0).offset().offsetMicros() == 0;
+            for (int i = 0; i < cursors.length; i++) {
+                long offset = parts.get(i).offset().offsetMicros();
+                long from = fromMicros <= Long.MIN_VALUE / 2 ? Long.MIN_VALUE : fromMicros + offset;
+                cursors[i] = parts.get(i).recording().cursor(from);
+                if (!single) {
+                    refill(i);
+                }
+            }
+            if (single) {
+                source = parts.get(0).name();
+            }
+        }
+
+        private void refill(int i) {
+            Envelope e = cursors[i].next();
+            if (e != null) {
+                long offset = parts.get(i).offset().offsetMicros();
+                heads.add(new Head(offset == 0 ? e : shifted(e, -offset), i));
+            }
+        }
+
+        public Envelope next() {
+            if (single) {
+                return cursors[0].next();
+            }
+            Head h = heads.poll();
+            if (h == null) {
+                return null;
+            }
+            refill(h.part());
+            source = parts.get(h.part()).name();
+            return h.envelope();
+        }
+
+        /** The name of the file the envelope last returned came from ("" for a session of one file). */
+        public String source() {
+            return source;
+        }
+    }
+
+    private static Envelope shifted(Envelope e, long byMicros) {
+        return new Envelope(e.timeMicros() + byMicros, e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(),
+                e.message(), e.raw(), e.error(), e.origin());
+    }
+
+    @Override
+    public void close() {
+        parts.forEach(p -> p.recording().close());
+    }
+}
