@@ -7,6 +7,7 @@ import picocli.CommandLine;
 import touchline.protocol.FrameCodec;
 import touchline.protocol.Framing;
 import touchline.proto.Fumanoid;
+import touchline.record.EnvelopeWriter;
 import touchline.record.Recording;
 import touchline.bench.record.SyntheticTeam;
 import touchline.transport.Channel;
@@ -74,6 +75,52 @@ class RecordCommandsTest {
         Run r = run(new ReplayCommand(), text.toString(), "--headless");
         assertEquals(1, r.exit());
         assertTrue(r.err().contains("is not an MCAP recording"), r.err());
+    }
+
+    /** The laptop's recording and robot 2's own log (its traffic and the GC it heard) on a clock {@code ahead} µs ahead. */
+    private Path[] laptopAndRobot(long ahead) throws Exception {
+        List<Envelope> team = new ArrayList<>();
+        new SyntheticTeam(3, 1_000_000_000_000L, 1).generate(30, team::add);
+        Path laptop = dir.resolve("laptop.mcap");
+        Path robot = dir.resolve("robot2.mcap");
+        try (EnvelopeWriter w = new EnvelopeWriter(laptop, EnvelopeWriter.Options.defaults())) {
+            for (Envelope e : team) {
+                w.write(e);
+            }
+        }
+        try (EnvelopeWriter w = new EnvelopeWriter(robot, EnvelopeWriter.Options.defaults())) {
+            for (Envelope e : team) {
+                if (e.robotId() == 2 || e.channel() == Channel.GAMECONTROLLER) {
+                    w.write(new Envelope(e.timeMicros() + ahead, e.direction(), e.channel(), e.peer(), e.robotId(),
+                            e.kind(), e.message(), e.raw(), e.error()));
+                }
+            }
+        }
+        return new Path[]{laptop, robot};
+    }
+
+    @Test
+    void replayOfSeveralFilesSaysEachFilesOffsetAndPlaysOneMergedOrder() throws Exception {
+        Path[] f = laptopAndRobot(2_500_000);
+        Run r = run(new ReplayCommand(), f[0].toString(), f[1].toString(), "--headless");
+        assertEquals(0, r.exit(), r.err());
+        assertTrue(r.err().contains("file laptop.mcap: reference clock"), r.err());
+        assertTrue(r.err().contains("file robot2.mcap: +2.500 s, 60 GC packets matched, agree within 1 ms"), r.err());
+        List<String> lines = r.out().lines().toList();
+        assertTrue(lines.stream().anyMatch(l -> l.contains("robot 2") && l.endsWith(" file=robot2.mcap")), lines.get(0));
+        assertTrue(lines.stream().noneMatch(l -> l.contains("robot 1") && l.endsWith(" file=robot2.mcap")));
+        List<String> times = lines.stream().map(l -> l.substring(0, l.indexOf(' '))).toList();
+        assertEquals(times.stream().sorted().toList(), times, "one order of time over both files");
+        assertTrue(r.err().contains("from 2 files"), r.err());
+
+        Run given = run(new ReplayCommand(), f[0].toString(), f[1].toString(), "--headless", "--offset",
+                "robot2.mcap=+2.0");
+        assertEquals(0, given.exit(), given.err());
+        assertTrue(given.err().contains("file robot2.mcap: +2.000 s (given)"), given.err());
+
+        Run wrong = run(new ReplayCommand(), f[0].toString(), f[1].toString(), "--offset", "other.mcap=1");
+        assertEquals(2, wrong.exit());
+        assertTrue(wrong.err().contains("other.mcap is not one of the files"), wrong.err());
     }
 
     @Test
