@@ -2,6 +2,7 @@ package touchline.record;
 
 import touchline.proto.Fumanoid;
 import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.transport.Channel;
@@ -18,7 +19,7 @@ import java.util.Map;
  * Finds timeline events in an envelope stream: GameController state changes and goals (any
  * game-state format the console recognises on the network, HL v12 to HSL v20; once an HSL
  * GameController's true data for monitors is recorded, it replaces the robots' copy, which
- * shows SET for 10 s after each whistle), game-state changes the robots report in their Status
+ * shows SET for 10 s after each whistle), players penalised (in any of those formats), game-state changes the robots report in their Status
  * when no GameController packets are recorded, robots silent for longer than
  * {@link #LOST_AFTER_MICROS}, and link events whose kind says "lost".
  */
@@ -36,6 +37,9 @@ final class EventDetector {
     // scores by team number: the teams swap slots at half time
     @SuppressWarnings("unchecked")
     private final Map<Integer, Integer>[] scores = new Map[]{new HashMap<>(), new HashMap<>()};
+    // per direction: each team's players' penalty codes (key team number * 1000 + player number)
+    @SuppressWarnings("unchecked")
+    private final Map<Integer, Integer>[] penalties = new Map[]{new HashMap<>(), new HashMap<>()};
     private boolean sawGc;
     private boolean sawTrueData;
     private String robotState;
@@ -98,7 +102,22 @@ final class EventDetector {
                                 + b.score() + " " + b.teamNumber() + ")"));
             }
         }
+        for (TeamInfo team : data.teams()) {
+            for (int n = 1; n <= team.players().size(); n++) {
+                int penalty = team.player(n).penalty();
+                Integer before = penalties[d].put(team.teamNumber() * 1000 + n, penalty);
+                if (before != null && before == 0 && penalty != 0) {
+                    events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.PENALTY, -1,
+                            who + "team " + team.teamNumber() + " player " + n + " penalised: " + penaltyName(penalty)));
+                }
+            }
+        }
         gcState[d] = state;
+    }
+
+    private static String penaltyName(int neutralCode) {
+        HslPenalty p = HslPenalty.ofNeutral(neutralCode);
+        return p == null ? "penalty " + neutralCode : p.name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
     }
 
     private static String stateName(int s) {

@@ -1,7 +1,7 @@
 package touchline.record;
 
 /**
- * Something worth jumping to in a recording: a goal, a game state change, a robot lost.
+ * Something worth jumping to in a recording: a goal, a game state change, a player penalised, a robot lost.
  *
  * @param timeMicros when it happened, microseconds since the epoch (the envelopes' clock)
  * @param type       what kind of event
@@ -11,5 +11,5 @@ package touchline.record;
 public record TimelineEvent(long timeMicros, Type type, int robotId, String label) {
 
     /** Event categories the timeline shows and seeks by. */
-    public enum Type { GOAL, STATE_CHANGE, ROBOT_LOST }
+    public enum Type { GOAL, STATE_CHANGE, PENALTY, ROBOT_LOST }
 }

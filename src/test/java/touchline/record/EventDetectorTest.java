@@ -91,4 +91,50 @@ class EventDetectorTest {
                 .map(e -> e.timeMicros() + " " + e.label()).toList();
         assertEquals(List.of("2 GC: SET → PLAYING"), states);
     }
+
+    /** The numbered game-state packets (not the monitors' true data) of a golden directory, one a second. */
+    private static List<TimelineEvent> eventsOf(String dir, String kind) throws Exception {
+        Path golden = Path.of("src/test/resources/golden/gamecontroller", dir);
+        List<Path> packets;
+        try (Stream<Path> files = Files.list(golden)) {
+            packets = files.map(Path::getFileName).map(Path::toString)
+                    .filter(f -> f.matches("\\d\\d-.*\\.bin") && !f.contains("monitor")).sorted()
+                    .map(golden::resolve).toList();
+        }
+        EventDetector detector = new EventDetector();
+        long t = 0;
+        for (Path p : packets) {
+            detector.accept(new Envelope(t += 1_000_000, Direction.IN, Channel.GAMECONTROLLER, null, Envelope.NO_ROBOT,
+                    kind, null, Files.readAllBytes(p), null));
+        }
+        return detector.finish();
+    }
+
+    private static List<String> labels(List<TimelineEvent> events, TimelineEvent.Type type) {
+        return events.stream().filter(e -> e.type() == type).map(e -> e.timeMicros() / 1_000_000 + " " + e.label())
+                .toList();
+    }
+
+    @Test
+    void anHslVersion19GameGivesItsStateChangesGoalsAndPenalties() throws Exception {
+        List<TimelineEvent> events = eventsOf("hsl19", "gc.hsl19");
+        // the file names say what happened: 13-goal-team5, 33-goal-team14, 50-goal-team5 (the 1st file is at 1 s)
+        assertEquals(List.of("14 GC: goal for team 5 (5 1:0 14)", "34 GC: goal for team 14 (5 1:1 14)",
+                "51 GC: goal for team 5 (14 1:2 5)"), labels(events, TimelineEvent.Type.GOAL));
+        // 18-motion-in-set-team14-player2, 21-pushing-team14-player3, 26-arms-hands-team5-player2,
+        // 31-incapable-robot-team5-player4
+        assertEquals(List.of("19 GC: team 14 player 2 penalised: motion in set",
+                "22 GC: team 14 player 3 penalised: pushing",
+                "27 GC: team 5 player 2 penalised: playing with arms hands",
+                "32 GC: team 5 player 4 penalised: incapable robot"), labels(events, TimelineEvent.Type.PENALTY));
+        List<String> states = labels(events, TimelineEvent.Type.STATE_CHANGE);
+        assertEquals("2 GC: INITIAL → READY", states.get(0));
+        assertTrue(states.contains("36 GC: READY → FINISHED"), "35-finished-first-half: " + states);
+    }
+
+    @Test
+    void anHslVersion20GameGivesItsPenalties() throws Exception {
+        List<String> penalties = labels(eventsOf("hsl20", "gc.hsl20"), TimelineEvent.Type.PENALTY);
+        assertTrue(penalties.contains("23 GC: team 14 player 3 penalised: pushing"), penalties.toString());
+    }
 }

@@ -124,17 +124,19 @@ public final class ReplayView implements View {
         Button goal = button("replay-next-goal", "Next goal", () -> next(TimelineEvent.Type.GOAL));
         Button change = button("replay-next-state", "Next state change", () -> next(TimelineEvent.Type.STATE_CHANGE));
         Button lost = button("replay-next-lost", "Next robot lost", () -> next(TimelineEvent.Type.ROBOT_LOST));
+        Button penalty = button("replay-next-penalty", "Next penalty", () -> next(TimelineEvent.Type.PENALTY));
         goal.setStyle("-fx-border-color: #d4a72c; -fx-border-width: 0 0 3 0;");
         change.setStyle("-fx-border-color: #2f81f7; -fx-border-width: 0 0 3 0;");
         lost.setStyle("-fx-border-color: #cf222e; -fx-border-width: 0 0 3 0;");
+        penalty.setStyle("-fx-border-color: #8250df; -fx-border-width: 0 0 3 0;");
         Button a = button("replay-loop-a", "Loop A", this::setLoopA);
         Button b = button("replay-loop-b", "Loop B", this::setLoopB);
         Button clear = button("replay-loop-clear", "Clear loop", this::clearLoop);
         // wraps on a narrow window, so the file row above keeps its Open button in view
         javafx.scene.layout.FlowPane controls = new javafx.scene.layout.FlowPane(8, 6, play, new Label("Speed"), speed,
-                goal, change, lost, a, b, clear, loop);
+                goal, change, penalty, lost, a, b, clear, loop);
         controls.setStyle("-fx-alignment: center-left;");
-        replayControls.addAll(List.of(play, speed, goal, change, lost, a, b, clear, close));
+        replayControls.addAll(List.of(play, speed, goal, change, penalty, lost, a, b, clear, close));
 
         position.setId("replay-position");
         live.setId("replay-live");

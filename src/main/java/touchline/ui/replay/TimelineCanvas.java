@@ -27,6 +27,7 @@ final class TimelineCanvas {
     static final Color GOAL = Color.web("#d4a72c");
     static final Color STATE_CHANGE = Color.web("#2f81f7");
     static final Color ROBOT_LOST = Color.web("#cf222e");
+    static final Color PENALTY = Color.web("#8250df");
 
     private final ResizableCanvas pane = new ResizableCanvas(this::draw);
     private final Tooltip tip = new Tooltip();
@@ -94,6 +95,7 @@ final class TimelineCanvas {
         return switch (type) {
             case GOAL -> GOAL;
             case STATE_CHANGE -> STATE_CHANGE;
+            case PENALTY -> PENALTY;
             case ROBOT_LOST -> ROBOT_LOST;
         };
     }
@@ -123,6 +125,7 @@ final class TimelineCanvas {
         String what = switch (ev.type()) {
             case GOAL -> "Goal";
             case STATE_CHANGE -> "State change";
+            case PENALTY -> "Penalty";
             case ROBOT_LOST -> "Robot lost";
         };
         return what + (ev.robotId() >= 0 ? " (robot " + ev.robotId() + ")" : "")
