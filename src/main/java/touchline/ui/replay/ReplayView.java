@@ -54,6 +54,7 @@ public final class ReplayView implements View {
     private final ComboBox<Double> speed = new ComboBox<>();
     private final Label position = new Label("No recording open.");
     private final Label loop = new Label();
+    private final Label files = new Label();
     private final CheckBox live = new CheckBox("Live listening");
     private final ListView<String> schemaList = new ListView<>();
     private final List<Node> replayControls = new ArrayList<>();
@@ -81,14 +82,19 @@ public final class ReplayView implements View {
 
     private Node replayPane() {
         path.setId("replay-path");
-        path.setPromptText("recording.mcap");
+        path.setPromptText("recording.mcap  (several: laptop.mcap; robot3.mcap or robot3.mcap=+1.250 with its clock offset)");
         path.setOnAction(e -> open());
         HBox.setHgrow(path, Priority.ALWAYS);
         Button browse = new Button("Browse…");
         browse.setOnAction(e -> browse());
         Button open = button("replay-open", "Open", this::open);
+        Button add = button("replay-add", "Add file…", this::addFiles);
         Button close = button("replay-close", "Close replay", () -> work.run(console::closeReplay));
-        HBox fileRow = row(new Label("File"), path, browse, open, close);
+        HBox fileRow = row(new Label("File"), path, browse, open, add, close);
+        files.setId("replay-files");
+        files.setWrapText(true);
+        files.setVisible(false);
+        files.setManaged(false);
 
         message.setId("replay-message");
         message.setWrapText(true);
@@ -146,7 +152,7 @@ public final class ReplayView implements View {
         hint.setStyle("-fx-opacity: 0.7;");
         Label title = new Label("Replay");
         title.setStyle("-fx-font-weight: bold;");
-        return new VBox(6, title, fileRow, message, problems, timeline.node(), position, controls, row(live, hint));
+        return new VBox(6, title, fileRow, message, problems, timeline.node(), files, position, controls, row(live, hint));
     }
 
     private Node schemaPane() {
@@ -191,33 +197,57 @@ public final class ReplayView implements View {
 
     // ---- actions (FX thread); anything slow goes to the work queue ----
 
+    /** Chooses one or several recordings (several play as one session) and opens them. */
     private void browse() {
-        FileChooser chooser = new FileChooser();
-        chooser.setTitle("Open recording");
-        chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("MCAP recordings", "*.mcap"),
-                new FileChooser.ExtensionFilter("All files", "*"));
-        java.io.File f = chooser.showOpenDialog(root.getScene().getWindow());
-        if (f != null) {
-            path.setText(f.toString());
+        List<Path> chosen = choose("Open recording(s)");
+        if (!chosen.isEmpty()) {
+            path.setText(new SessionFiles(chosen, java.util.Map.of()).text());
             open();
         }
     }
 
-    /** Opens the file named in the path field (paused at its start). */
+    /** Adds recordings to the files in the field (the open session) and opens them all as one session. */
+    private void addFiles() {
+        List<Path> chosen = choose("Add recording(s) to the session");
+        if (!chosen.isEmpty()) {
+            path.setText(SessionFiles.parse(path.getText()).plus(chosen).text());
+            open();
+        }
+    }
+
+    private List<Path> choose(String title) {
+        FileChooser chooser = new FileChooser();
+        chooser.setTitle(title);
+        chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("MCAP recordings", "*.mcap"),
+                new FileChooser.ExtensionFilter("All files", "*"));
+        List<java.io.File> f = chooser.showOpenMultipleDialog(root.getScene().getWindow());
+        return f == null ? List.of() : f.stream().map(java.io.File::toPath).toList();
+    }
+
+    /**
+     * Opens the file(s) named in the path field (paused at the start): several, separated by
+     * {@code ;}, play as one session on one timeline ({@link SessionFiles}).
+     */
     void open() {
-        String text = path.getText().trim();
-        if (text.isEmpty()) {
+        SessionFiles chosen;
+        try {
+            chosen = SessionFiles.parse(path.getText());
+        } catch (java.nio.file.InvalidPathException e) {
+            fail("Not a file name: " + e.getMessage());
+            return;
+        }
+        if (chosen.files().isEmpty()) {
             fail("Type or choose a recording to open.");
             return;
         }
-        Path file = Path.of(text);
-        say("Opening " + file + " …");
+        String names = chosen.names();
+        say("Opening " + names + (chosen.files().size() > 1 ? " (aligning their clocks) …" : " …"));
         work.run(() -> {
             try {
-                console.openReplay(file);
-                work.handOff(() -> say("Opened " + file.getFileName() + "."));
+                console.openReplay(chosen.files(), chosen.offsets());
+                work.handOff(() -> say("Opened " + names + "."));
             } catch (RecordingException e) {
-                work.handOff(() -> fail("Cannot replay " + file.getFileName() + ": " + e.getMessage()));
+                work.handOff(() -> fail("Cannot replay " + names + ": " + e.getMessage()));
             }
         });
     }
@@ -365,6 +395,14 @@ public final class ReplayView implements View {
         loopA = -1;
         loop.setText("");
         replayControls.forEach(n -> n.setDisable(r == null));
+        List<String> aligned = r == null || r.files().size() < 2 ? List.of()
+                : r.files().stream().map(f -> f.name() + " " + f.offset().describe()).toList();
+        files.setText(String.join("\n", aligned));
+        files.setTooltip(aligned.isEmpty() ? null : new javafx.scene.control.Tooltip(
+                "Each file's clock moved onto the first file's: by the GameController packets both heard "
+                        + "(median difference; 'agree within' = 95% of them), or by the offset given as file=+seconds"));
+        files.setVisible(!aligned.isEmpty());
+        files.setManaged(!aligned.isEmpty());
         if (r != null) {
             scans.run(() -> {
                 List<TimelineEvent> ev = r.events();
@@ -413,6 +451,11 @@ public final class ReplayView implements View {
     /** The timeline's events as shown now (FX thread; for tests). */
     List<TimelineEvent> shownEvents() {
         return timeline.events();
+    }
+
+    /** The per-file alignment lines under the timeline (FX thread; for tests). */
+    String filesText() {
+        return files.isVisible() ? files.getText() : "";
     }
 
     TimelineCanvas timeline() {

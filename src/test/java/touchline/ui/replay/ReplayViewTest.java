@@ -250,10 +250,48 @@ class ReplayViewTest {
         await(10, () -> robot.lookup("#replay-live").tryQuery().map(n -> n.getScene() != null).orElse(false));
     }
 
+    @Test
+    void severalFilesOpenAsOneSessionAndTheTimelineSaysHowTheirClocksWereAligned() throws Exception {
+        // robot 2's own log: its traffic and the GameController packets it heard, on a clock 0.8 s ahead
+        Path robotLog = dir.resolve("robot2.mcap");
+        try (Recording sample = Recording.open(SAMPLE);
+             touchline.record.EnvelopeWriter w = new touchline.record.EnvelopeWriter(robotLog,
+                     touchline.record.EnvelopeWriter.Options.defaults())) {
+            Recording.Cursor c = sample.cursor(Long.MIN_VALUE);
+            for (touchline.transport.Envelope e = c.next(); e != null; e = c.next()) {
+                if (e.robotId() == 2 || e.channel() == touchline.transport.Channel.GAMECONTROLLER) {
+                    w.write(new touchline.transport.Envelope(e.timeMicros() + 800_000, e.direction(), e.channel(),
+                            e.peer(), e.robotId(), e.kind(), e.message(), e.raw(), e.error()));
+                }
+            }
+        }
+        openText(SAMPLE + "; " + robotLog);
+        await(20, () -> view.filesText().contains("robot2.mcap +0.800 s"));
+        String text = fx(view::filesText);
+        assertTrue(text.startsWith("demo-team.mcap reference clock"), text);
+        assertTrue(text.matches("(?s).*robot2\\.mcap \\+0\\.800 s, \\d+ GC packets matched, agree within 1 ms.*"), text);
+        try (Recording sample = Recording.open(SAMPLE)) {
+            assertEquals(sample.startMicros(), state().startMicros(), "the robot's log lies inside the laptop's on its clock");
+        }
+
+        // a given offset wins over the packets
+        openText(SAMPLE + "; " + robotLog + "=+0.5");
+        await(20, () -> view.filesText().contains("robot2.mcap +0.500 s (given)"));
+    }
+
     private void clickTimeline(long micros) throws Exception {
         Point2D p = fx(() -> view.timeline().node().localToScreen(view.timeline().xOf(micros),
                 view.timeline().node().getLayoutBounds().getHeight() / 2));
         robot.clickOn(p);
+    }
+
+    /** Types {@code text} into the file field and opens it (as Enter in the field does). */
+    private void openText(String text) throws Exception {
+        fx(() -> {
+            robot.lookup("#replay-path").queryAs(TextField.class).setText(text);
+            view.open();
+            return null;
+        });
     }
 
     private void openFile(Path file) throws Exception {
