@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
                 IngestBenchCommand.class,
                 UiBenchCommand.class,
                 touchline.bench.record.RecordBenchmark.class,
+                touchline.bench.record.ReplayBenchmark.class,
                 NaoBenchCommand.class,
                 GcBenchCommand.class,
                 touchline.bench.serve.ServeBenchmark.class,

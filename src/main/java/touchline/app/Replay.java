@@ -67,6 +67,15 @@ public final class Replay implements AutoCloseable {
         remember();
         return s;
     }
+    /**
+     * Delivers up to {@code max} envelopes from the position on the calling thread, as fast as
+     * the consumers take them (headless tools and the replay benchmark); returns how many.
+     */
+    public long runFor(long max) {
+        long n = player.runFor(max);
+        remember();
+        return n;
+    }
     public void setLoop(long fromMicros, long toMicros) { player.setLoop(fromMicros, toMicros); remember(); }
     public void clearLoop() { player.clearLoop(); remember(); }
 
