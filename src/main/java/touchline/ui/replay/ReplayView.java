@@ -134,7 +134,7 @@ public final class ReplayView implements View {
         goal.setStyle("-fx-border-color: #d4a72c; -fx-border-width: 0 0 3 0;");
         change.setStyle("-fx-border-color: #2f81f7; -fx-border-width: 0 0 3 0;");
         lost.setStyle("-fx-border-color: #cf222e; -fx-border-width: 0 0 3 0;");
-        penalty.setStyle("-fx-border-color: #8250df; -fx-border-width: 0 0 3 0;");
+        penalty.setStyle("-fx-border-color: #e16f24; -fx-border-width: 0 0 3 0;");
         Button a = button("replay-loop-a", "Loop A", this::setLoopA);
         Button b = button("replay-loop-b", "Loop B", this::setLoopB);
         Button clear = button("replay-loop-clear", "Clear loop", this::clearLoop);

@@ -27,7 +27,7 @@ final class TimelineCanvas {
     static final Color GOAL = Color.web("#d4a72c");
     static final Color STATE_CHANGE = Color.web("#2f81f7");
     static final Color ROBOT_LOST = Color.web("#cf222e");
-    static final Color PENALTY = Color.web("#8250df");
+    static final Color PENALTY = Color.web("#e16f24");
 
     private final ResizableCanvas pane = new ResizableCanvas(this::draw);
     private final Tooltip tip = new Tooltip();
