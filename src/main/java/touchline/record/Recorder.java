@@ -82,6 +82,9 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     /** On the disk thread: writes an old open chunk, refreshes the byte count, picks up disk errors. */
     private void tick() {
+        if (writer == null) {
+            return; // the disk thread started in the constructor can tick before the writer is set
+        }
         synchronized (writer) {
             if (stopping) {
                 return;
