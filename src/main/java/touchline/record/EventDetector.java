@@ -45,6 +45,15 @@ final class EventDetector {
     private String robotState;
     private long lastTime = Long.MIN_VALUE;
 
+    /** The events of a whole envelope stream, read with {@code next} until it returns null. */
+    static List<TimelineEvent> scan(java.util.function.Supplier<Envelope> next) {
+        EventDetector detector = new EventDetector();
+        for (Envelope e = next.get(); e != null; e = next.get()) {
+            detector.accept(e);
+        }
+        return detector.finish();
+    }
+
     void accept(Envelope e) {
         lastTime = Math.max(lastTime, e.timeMicros());
         if (e.channel() == Channel.GAMECONTROLLER) {

@@ -106,12 +106,7 @@ public final class Recording implements Closeable {
     public List<TimelineEvent> events() {
         List<TimelineEvent> e = events;
         if (e == null) {
-            EventDetector detector = new EventDetector();
-            Cursor c = cursor(Long.MIN_VALUE);
-            for (Envelope env = c.next(); env != null; env = c.next()) {
-                detector.accept(env);
-            }
-            e = detector.finish();
+            e = EventDetector.scan(cursor(Long.MIN_VALUE)::next);
             events = e;
         }
         return e;

@@ -29,7 +29,7 @@ public final class ReplaySession implements Closeable {
 
     private final List<Part> parts;
     private final CopyOnWriteArrayList<String> notes = new CopyOnWriteArrayList<>();
-    private volatile List<TimelineEvent> events;
+    private List<TimelineEvent> events; // guarded by this
 
     private ReplaySession(List<Part> parts) {
         this.parts = List.copyOf(parts);
@@ -151,21 +151,14 @@ public final class ReplaySession implements Closeable {
     }
 
     /** Timeline events of the merged stream (one pass over every file, done once). */
-    public List<TimelineEvent> events() {
+    public synchronized List<TimelineEvent> events() {
         if (parts.size() == 1 && parts.get(0).offset().offsetMicros() == 0) {
             return first().events();
         }
-        List<TimelineEvent> e = events;
-        if (e == null) {
-            EventDetector detector = new EventDetector();
-            Cursor c = cursor(Long.MIN_VALUE);
-            for (Envelope env = c.next(); env != null; env = c.next()) {
-                detector.accept(env);
-            }
-            e = detector.finish();
-            events = e;
+        if (events == null) { // read once, by the first caller; later callers wait for it rather than read again
+            events = EventDetector.scan(cursor(Long.MIN_VALUE)::next);
         }
-        return e;
+        return events;
     }
 
     /** Envelopes of every file from the first with (session) time >= {@code fromMicros}, merged by time. */

@@ -83,14 +83,9 @@ public final class RecordBenchmark implements Callable<Integer> {
         long delivered = 0;
         for (int round = 0; round < 3; round++) {
             readSeconds = Math.min(readSeconds, readBytes(file));
-            try (Recording r = Recording.open(file)) {
-                AtomicLong n = new AtomicLong();
-                Player p = new Player(r, e -> n.incrementAndGet(), PlaybackClock.system());
-                long t0 = System.nanoTime();
-                p.runToEnd();
-                replaySeconds = Math.min(replaySeconds, (System.nanoTime() - t0) / 1e9);
-                delivered = n.get();
-            }
+            UnpacedReplay run = UnpacedReplay.intoNothing(file);
+            replaySeconds = Math.min(replaySeconds, run.seconds());
+            delivered = run.envelopes();
         }
         System.out.printf("replay headless: %d envelopes of one hour in %.2f s = %.0fx real time "
                 + "(reading the file's bytes alone: %.2f s, ratio %.1f)%n", delivered, replaySeconds, 3600 / replaySeconds,

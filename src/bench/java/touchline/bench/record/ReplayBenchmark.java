@@ -5,8 +5,6 @@ import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.app.Replay;
 import touchline.record.EnvelopeWriter;
-import touchline.record.PlaybackClock;
-import touchline.record.Player;
 import touchline.record.Recording;
 import touchline.record.ReplaySession;
 import touchline.transport.Channel;
@@ -104,14 +102,9 @@ public final class ReplayBenchmark implements Callable<Integer> {
             double best = Double.MAX_VALUE;
             long delivered = 0;
             for (int round = 0; round < 3; round++) { // alternating, so both get the same warm-up
-                try (Recording rec = Recording.open(laptop)) {
-                    AtomicLong n = new AtomicLong();
-                    Player p = new Player(rec, e -> n.incrementAndGet(), PlaybackClock.system());
-                    long t0 = System.nanoTime();
-                    p.runToEnd();
-                    baseline = Math.min(baseline, (System.nanoTime() - t0) / 1e9);
-                    baselineCount = n.get();
-                }
+                UnpacedReplay run = UnpacedReplay.intoNothing(laptop);
+                baseline = Math.min(baseline, run.seconds());
+                baselineCount = run.envelopes();
                 Replay r = console.openReplay(List.of(laptop), Map.of());
                 long t0 = System.nanoTime();
                 delivered = r.runFor(Long.MAX_VALUE);
