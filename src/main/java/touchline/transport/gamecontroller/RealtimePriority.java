@@ -51,7 +51,7 @@ public final class RealtimePriority {
             return "switched off (-D" + PROPERTY + "=off)";
         }
         if (!osName.startsWith("Linux")) {
-            return "not on " + (osName.isBlank() ? "this system" : osName) + ": normal priority";
+            return "real-time priority only on Linux, this is " + (osName.isBlank() ? "another system" : osName);
         }
         return "";
     }
