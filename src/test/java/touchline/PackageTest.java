@@ -137,7 +137,6 @@ class PackageTest {
         Path out = Files.createTempFile(scratch, "out", ".txt");
         ProcessBuilder pb = new ProcessBuilder(new ArrayList<>(command)).redirectErrorStream(true)
                 .redirectOutput(out.toFile());
-        pb.environment().put("TOUCHLINE_MVN_OFFLINE", "1");
         for (int i = 0; i + 1 < env.length; i += 2) {
             pb.environment().put(env[i], env[i + 1]);
         }
