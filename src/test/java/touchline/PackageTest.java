@@ -27,7 +27,8 @@ import static org.junit.jupiter.api.Assertions.fail;
  * with {@code dpkg -i} into the real system when CI runs as root (removed again with
  * {@code dpkg -r}), else with {@code dpkg -x} into a scratch root — and the installed
  * {@code touchline} answers {@code --version}, a headless {@code listen} decodes the packaged
- * simulated robot on loopback, and {@code replay --headless} plays the packaged sample. The
+ * simulated robot on loopback, {@code record} records it and {@code replay --headless} plays
+ * that recording and the packaged sample. The
  * installed size stays within the 120 MB budget. About two minutes (one to build, the jlinked
  * runtime cached in target/package), so it is tagged slow; {@code ./touchline test} runs it.
  */
@@ -96,6 +97,14 @@ class PackageTest {
                 assertTrue(listen.output().contains("listening on UDP port " + port), listen.output());
                 assertTrue(listen.output().lines().anyMatch(l -> l.startsWith("4 ") && l.contains("robot-4")
                         && l.contains("online")), "the installed listen decoded robot 4:\n" + listen.output());
+
+                Path match = scratch.resolve("match.mcap");
+                Result record = run(List.of(touchline.toString(), "record", "--bind", "127.0.0.1", "--port",
+                        Integer.toString(port), "--seconds", "4", "--out", match.toString()), 120);
+                assertEquals(0, record.exit(), record.output());
+                Result played = run(List.of(touchline.toString(), "replay", "--headless", match.toString()), 120);
+                assertEquals(0, played.exit(), tail(played.output()));
+                assertTrue(played.output().contains(" robot 4 "), "the recording holds robot 4:\n" + tail(played.output()));
             }
 
             Result replay = run(List.of(touchline.toString(), "replay", "--headless",
