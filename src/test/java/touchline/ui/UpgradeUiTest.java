@@ -65,6 +65,19 @@ class UpgradeUiTest {
             javafx.scene.control.Label platform = ui.fx(() ->
                     (javafx.scene.control.Label) ui.window.scene().lookup("#status-platform"));
             assertEquals(ui.console.runtime().portability(), ui.fx(platform::getText));
+
+            // Help → About Touchline… says the version, the transport and the sender's priority
+            ui.fxRun(() -> ((javafx.scene.control.MenuBar) ((javafx.scene.layout.BorderPane) ui.window.scene().getRoot())
+                    .getTop()).getMenus().stream().flatMap(m -> m.getItems().stream())
+                    .filter(i -> "help-about".equals(i.getId())).findFirst().orElseThrow().fire());
+            ui.await(10, () -> javafx.stage.Window.getWindows().stream()
+                    .anyMatch(w -> w.getScene() != null && w.getScene().lookup("#help-about-text") != null));
+            String about = ui.fx(() -> javafx.stage.Window.getWindows().stream()
+                    .map(w -> w.getScene() == null ? null : w.getScene().lookup("#help-about-text"))
+                    .filter(java.util.Objects::nonNull).map(n -> ((javafx.scene.control.Label) n).getText())
+                    .findFirst().orElseThrow());
+            assertTrue(about.contains("UDP transport: " + ui.console.udp().backend().describe()), about);
+            assertTrue(about.contains("GameController sender: " + ui.console.runtime().priority()), about);
         } finally {
             ui.close();
         }
