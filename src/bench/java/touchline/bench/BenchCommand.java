@@ -18,6 +18,7 @@ import picocli.CommandLine.Command;
                 NaoBenchCommand.class,
                 GcBenchCommand.class,
                 touchline.bench.serve.ServeBenchmark.class,
+                StartBenchCommand.class,
         })
 public final class BenchCommand implements Runnable {
 

@@ -200,6 +200,12 @@ public final class Console implements AutoCloseable {
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
     public UdpTransport udp() { return udp; }
+
+    /** The version, runtime and portable fallbacks in use (the window's Help → About and status bar). */
+    public RuntimeReport runtime() {
+        return RuntimeReport.ofThisProcess(udp.backend(),
+                new touchline.transport.gamecontroller.RealtimePriority(10).unavailable());
+    }
     public ReliableStreamHandler reliable() { return reliable; }
 
     /** Match mode and the like: what may go to robots right now (GameController packets aside). */

@@ -49,6 +49,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
             console.start();
             var guard = budget.guard(console, udp.bind);
             System.err.println("listening on UDP port " + console.udp().localPort()
+                    + " (transport: " + console.udp().backend().describe() + ")"
                     + guard.map(g -> ", team " + g.team() + "'s messages under " + g.profile().name()).orElse(""));
             long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
             while (System.nanoTime() < deadline) {

@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
  * The headless face of Touchline: every command the UI offers for data, for scripts, CI and
  * match-day recording on a machine without a screen. {@code ./touchline <command>} lands here.
  */
-@Command(name = "touchline", mixinStandardHelpOptions = true, version = "Touchline 0.1",
+@Command(name = "touchline", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "Pitch-side debug console for RoboCup robot teams.",
         subcommands = {
                 ListenCommand.class,

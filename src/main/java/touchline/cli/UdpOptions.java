@@ -29,6 +29,25 @@ final class UdpOptions {
             description = "port the GameController forwards return packets to (default ${DEFAULT-VALUE})")
     int gcForwardPort;
 
+    @Option(names = "--transport", paramLabel = "auto|epoll-mmsg|epoll|nio", converter = TransportName.class,
+            defaultValue = "${sys:touchline.udp:-auto}",
+            description = "the UDP transport: auto (default) takes epoll with recvmmsg on Linux and NIO, the portable "
+                    + "fallback, elsewhere; the choice is printed at start and shown in the window")
+    String transport;
+
+    /** Checks the name when the command line is parsed: a wrong one is a usage error, not a crash. */
+    static final class TransportName implements picocli.CommandLine.ITypeConverter<String> {
+        @Override
+        public String convert(String value) {
+            try {
+                touchline.transport.UdpBackend.choose(value, true, "");
+                return value;
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
     /** A started Console on these options; a port in use fails with one sentence naming it. */
     touchline.app.Console startConsole() throws InterruptedException, StartFailure {
         touchline.app.Console console = new touchline.app.Console(config());
@@ -45,7 +64,7 @@ final class UdpOptions {
 
     ConsoleConfig config() {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port)
-                .withBindAddress(bind).withRobotPort(robotPort));
+                .withBindAddress(bind).withRobotPort(robotPort).withTransport(transport));
         return gcMonitor == null ? config
                 : config.withGcMonitor(new InetSocketAddress(gcMonitor, MonitorRequest.PORT), gcForwardPort);
     }

@@ -39,6 +39,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     private final ChannelHandler[] extraInbound;
     private EventLoopGroup group;
     private DatagramChannel channel;
+    private volatile UdpBackend backend;
 
     /**
      * @param extraInbound handlers placed before the FUmanoids decoder (e.g. the reliable stream),
@@ -55,11 +56,10 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     }
 
     public UdpTransport start() throws InterruptedException {
-        // Linux's epoll transport with recvmmsg (up to 32 datagrams per system call) reads with
-        // far less overhead than NIO; "epoll" reads one datagram per call, "nio" everywhere else.
-        String mode = System.getProperty("touchline.udp", "epoll-mmsg");
-        boolean epoll = !mode.equals("nio") && io.netty.channel.epoll.Epoll.isAvailable();
-        boolean mmsg = epoll && mode.equals("epoll-mmsg");
+        // epoll + recvmmsg on Linux, NIO as the portable fallback (UdpBackend says which and why)
+        backend = UdpBackend.onThisMachine(config.transport());
+        boolean epoll = backend.epoll();
+        boolean mmsg = backend.recvmmsg();
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
                 : NioIoHandler.newFactory());
         Bootstrap bootstrap = new Bootstrap()
@@ -96,6 +96,12 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
      */
     public void setReading(boolean on) throws InterruptedException {
         channel.eventLoop().submit(() -> channel.config().setAutoRead(on)).sync();
+    }
+
+    /** The transport this endpoint runs on and why (before {@link #start()}: what it would choose). */
+    public UdpBackend backend() {
+        UdpBackend b = backend;
+        return b != null ? b : UdpBackend.onThisMachine(config.transport());
     }
 
     public int localPort() {

@@ -77,7 +77,7 @@ public final class ConsoleWindow {
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
         places.keep(stage, "main", 1400, 900);
-        stage.setTitle("Touchline — UDP port " + console.udp().localPort());
+        stage.setTitle(console.runtime().version().title() + " — UDP port " + console.udp().localPort());
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         shell.restore(last.orElseGet(DemoLayout::standard));
         stage.setOnHiding(e -> {
@@ -226,7 +226,24 @@ public final class ConsoleWindow {
             places.keep((Stage) a.getDialogPane().getScene().getWindow(), "help", 760, 600);
             a.show();
         });
-        help.getItems().add(about);
+        MenuItem aboutTouchline = new MenuItem("About Touchline…");
+        aboutTouchline.setId("help-about");
+        aboutTouchline.setOnAction(e -> {
+            touchline.app.RuntimeReport report = console.runtime();
+            Alert a = new Alert(Alert.AlertType.INFORMATION);
+            a.initOwner(stage);
+            a.setTitle("About Touchline");
+            a.setHeaderText(report.version().title());
+            javafx.scene.control.Label text = new javafx.scene.control.Label(
+                    String.join("\n", report.lines().subList(1, report.lines().size())));
+            text.setId("help-about-text");
+            text.setWrapText(true);
+            a.getDialogPane().setContent(text);
+            a.setResizable(true);
+            places.keep((Stage) a.getDialogPane().getScene().getWindow(), "about", 560, 260);
+            a.show();
+        });
+        help.getItems().addAll(about, aboutTouchline);
         return new MenuBar(layoutMenu, views, theme, help);
     }
 

@@ -32,6 +32,7 @@ public final class StatusBar extends HBox {
     private final Tooltip meterTip = new Tooltip("Team traffic (IP/UDP included) against the 1 Mbit/s league limit");
     private final Label fps = new Label();
     private final Label message = new Label();
+    private final Label platform = new Label();
     private long lastMicros;
     private long lastIn;
     private long lastBytesIn;
@@ -64,7 +65,13 @@ public final class StatusBar extends HBox {
         meterName.setMinWidth(Region.USE_PREF_SIZE);
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
-        getChildren().addAll(silence, rates, bad, waiting, meterName, meter, meterText, message, grow, fps);
+        // the transport and priority in use: epoll + recvmmsg on Linux, NIO / normal priority as the portable fallback
+        touchline.app.RuntimeReport runtime = console.runtime();
+        platform.setId("status-platform");
+        platform.setText(runtime.portability());
+        platform.setMinWidth(Region.USE_PREF_SIZE);
+        platform.setTooltip(new Tooltip(String.join("\n", runtime.lines())));
+        getChildren().addAll(silence, rates, bad, waiting, meterName, meter, meterText, message, grow, platform, fps);
     }
 
     public double packetsPerSecond() {

@@ -1,0 +1,156 @@
+#!/usr/bin/env bash
+# ./touchline package [--platform linux|win|mac]: Touchline as a desktop application (docs/install.md).
+#
+#   linux (default)  target/package/touchline_<version>_amd64.deb   desktop entry, icon, `touchline` on the PATH,
+#                                                                  its own jlinked Java runtime (no JDK, no Maven)
+#                    target/package/touchline-<version>-linux-x64.tar.gz   the same app image to unpack anywhere
+#   win | mac        target/package/touchline-<version>-<platform>.zip|.tar.gz   the console's jars with that
+#                    platform's JavaFX (Maven classifier) and a start script (touchline.cmd / touchline);
+#                    built here, not run here: the user's Java 17+ runs it.
+#
+# The launcher (./touchline) has already built the console (target/classes, the jar) and the robot side.
+# The jlinked runtime is cached in target/package/runtime-<key>/ and reused while the JDK and the module
+# list stay the same.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+say() { printf '\033[1;34m[touchline package]\033[0m %s\n' "$*" >&2; }
+die() { printf '\033[1;31m[touchline package]\033[0m %s\n' "$*" >&2; exit 1; }
+
+PLATFORM=linux
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --platform) PLATFORM=${2:-}; shift 2 ;;
+    --platform=*) PLATFORM=${1#*=}; shift ;;
+    *) die "unknown option $1 (use --platform linux|win|mac)" ;;
+  esac
+done
+case "$PLATFORM" in linux|win|mac) ;; *) die "unknown platform '$PLATFORM' (linux, win or mac)" ;; esac
+
+VERSION=$(sed -n 's/^version=//p' target/classes/touchline/version.properties 2>/dev/null || true)
+[ -n "$VERSION" ] || die "target/classes/touchline/version.properties missing: build the console first (./touchline build)"
+[ -f CHANGELOG.md ] || die "CHANGELOG.md missing"
+OUT=target/package
+BIN="${TOUCHLINE_ROBOTSIDE_BIN:-$ROOT/robot-side/build/bin}"
+mkdir -p "$OUT"
+
+# The product's jars: runtime scope, without the benchmark harness (jmh and its dependencies are on the
+# compile class path for src/bench only). -Djavafx.platform picks the JavaFX classifier jars.
+copy_jars() { # dir javafx-platform
+  rm -rf "$1"; mkdir -p "$1"
+  mvn -q -B -ntp ${TOUCHLINE_MVN_OFFLINE:+-o} dependency:copy-dependencies -DincludeScope=runtime \
+    -DoutputDirectory="$1" -DexcludeArtifactIds=jmh-core,jopt-simple,commons-math3 -Djavafx.platform="$2"
+  # the console's own jar, from target/classes (the package test runs before Maven's package phase)
+  jar --create --file "$1/touchline-$VERSION.jar" -C target/classes .
+}
+
+if [ "$PLATFORM" != linux ]; then
+  NAME="touchline-$VERSION-$PLATFORM"
+  STAGE="$OUT/$NAME"
+  say "assembling the $PLATFORM app layout (JavaFX classifier '$PLATFORM') in $STAGE"
+  rm -rf "$STAGE"; mkdir -p "$STAGE"
+  copy_jars "$STAGE/lib" "$PLATFORM"
+  # only this platform's JavaFX natives: drop the Linux classifier jars a Linux build resolves as well
+  find "$STAGE/lib" -name 'javafx-*-linux.jar' -delete
+  ls "$STAGE/lib"/javafx-graphics-*-"$PLATFORM".jar >/dev/null 2>&1 || die "no javafx-graphics jar for '$PLATFORM' was resolved"
+  cp README.md CHANGELOG.md "$STAGE/"
+  cp -r samples "$STAGE/samples"
+  if [ "$PLATFORM" = win ]; then
+    # CRLF line ends for cmd.exe
+    sed 's/$/\r/' packaging/windows/touchline.cmd >"$STAGE/touchline.cmd"
+    rm -f "$OUT/$NAME.zip"
+    (cd "$OUT" && python3 -m zipfile -c "$NAME.zip" "$NAME")
+    say "done: $OUT/$NAME.zip (unzip, then touchline.cmd console; needs Java 17+ on the PATH)"
+  else
+    install -m 755 packaging/mac/touchline "$STAGE/touchline"
+    tar -C "$OUT" -czf "$OUT/$NAME.tar.gz" "$NAME"
+    say "done: $OUT/$NAME.tar.gz (unpack, then ./touchline console; needs Java 17+)"
+  fi
+  exit 0
+fi
+
+command -v jpackage >/dev/null || die "jpackage missing: it comes with the JDK (openjdk-17-jdk-headless)"
+for t in fakeroot dpkg-deb; do command -v "$t" >/dev/null || die "$t missing (./touchline package installs it)"; done
+for b in touchline-robot touchline-nao-sim; do
+  [ -x "$BIN/$b" ] || die "$BIN/$b missing: build the robot side first (./touchline build)"
+done
+
+START=$(date +%s)
+STAGE="$OUT/input"
+say "collecting the console's jars (Linux JavaFX) in $STAGE"
+copy_jars "$STAGE" linux
+# the simulated team and NAO come with the package where they run (Linux x86-64)
+mkdir -p "$STAGE/robot-side"
+install -m 755 -s "$BIN/touchline-robot" "$BIN/touchline-nao-sim" "$STAGE/robot-side/"
+cp -r samples "$STAGE/samples"
+
+# A trimmed Java runtime: only the modules the console and its libraries use (the class path is not
+# modular, so the list is fixed here and checked by the package test: a missing module fails there).
+MODULES=java.base,java.desktop,java.logging,java.management,java.naming,java.net.http,java.scripting,java.sql,java.xml,jdk.crypto.ec,jdk.jfr,jdk.unsupported,jdk.unsupported.desktop,jdk.zipfs,jdk.charsets
+KEY=$( { java -version 2>&1; echo "$MODULES"; } | sha1sum | cut -c1-12)
+RUNTIME="$OUT/runtime-$KEY"
+if [ ! -x "$RUNTIME/bin/java" ]; then
+  say "linking a trimmed Java runtime (jlink) into $RUNTIME"
+  rm -rf "$OUT"/runtime-*
+  jlink --add-modules "$MODULES" --strip-debug --no-man-pages --no-header-files --compress=2 \
+    --generate-cds-archive --output "$RUNTIME"
+else
+  say "reusing the Java runtime in $RUNTIME"
+fi
+
+IMAGE="$OUT/image"
+rm -rf "$IMAGE"
+say "building the app image (jpackage)"
+# $APPDIR is the installed lib/app directory (jpackage expands it in the launcher's configuration)
+jpackage --type app-image --name touchline --dest "$IMAGE" --input "$STAGE" \
+  --main-jar "touchline-$VERSION.jar" --main-class touchline.cli.Main --runtime-image "$RUNTIME" \
+  --app-version "$VERSION" --vendor "Touchline" --icon packaging/linux/touchline.png \
+  --description "Pitch-side debug console for RoboCup robot teams" \
+  --java-options '-XX:+UseZGC' --java-options '-Dtouchline.robotside.bin=$APPDIR/robot-side'
+chmod 755 "$IMAGE/touchline/lib/app/robot-side/"*
+cp CHANGELOG.md "$IMAGE/touchline/"
+
+TARBALL="$OUT/touchline-$VERSION-linux-x64.tar.gz"
+say "writing $TARBALL"
+tar -C "$IMAGE" -czf "$TARBALL" touchline
+
+# The .deb: the app image under /opt/touchline, the command on the PATH, the desktop entry and the
+# icon as plain files of the package (no maintainer scripts: `dpkg -x` into a scratch root gives the
+# same tree as `dpkg -i`). Written with dpkg-deb directly: jpackage --type deb took 7 minutes here
+# (it compresses with xz and asks dpkg about every native library) and left the PATH to a postinst.
+say "building the Debian package"
+TREE="$OUT/deb-tree"
+rm -rf "$TREE"
+mkdir -p "$TREE/DEBIAN" "$TREE/opt" "$TREE/usr/bin" "$TREE/usr/share/applications" \
+  "$TREE/usr/share/icons/hicolor/256x256/apps" "$TREE/usr/share/doc/touchline"
+cp -a "$IMAGE/touchline" "$TREE/opt/touchline"
+ln -s /opt/touchline/bin/touchline "$TREE/usr/bin/touchline"
+ln -s /opt/touchline/lib/app/robot-side/touchline-robot "$TREE/usr/bin/touchline-robot"
+ln -s /opt/touchline/lib/app/robot-side/touchline-nao-sim "$TREE/usr/bin/touchline-nao-sim"
+install -m 644 packaging/linux/touchline.desktop "$TREE/usr/share/applications/touchline.desktop"
+install -m 644 packaging/linux/touchline.png "$TREE/usr/share/icons/hicolor/256x256/apps/touchline.png"
+install -m 644 CHANGELOG.md "$TREE/usr/share/doc/touchline/CHANGELOG.md"
+SIZE_KB=$(du -sk "$TREE" | cut -f1)
+# JavaFX's natives (inside its jars) need GTK 3 and OpenGL; the Java runtime X11, fonts and zlib;
+# the robot side ZeroMQ, protobuf and TurboJPEG.
+cat >"$TREE/DEBIAN/control" <<EOF
+Package: touchline
+Version: $VERSION
+Section: devel
+Priority: optional
+Architecture: amd64
+Maintainer: Touchline <touchline@localhost>
+Installed-Size: $SIZE_KB
+Depends: libc6, zlib1g, libstdc++6, libgtk-3-0, libgl1, libx11-6, libxext6, libxi6, libxrender1, libxtst6, libxxf86vm1, libfreetype6, libfontconfig1, libzmq5, libprotobuf32, libturbojpeg0
+Recommends: libgl1-mesa-dri, fonts-dejavu-core
+Description: Pitch-side debug console for RoboCup robot teams
+ Watch every robot of a team during a match, toggle debug outputs, record and
+ replay sessions, referee a practice game with the embedded GameController and
+ drive NAO robots. Carries its own trimmed Java runtime; the simulated robot
+ (touchline-robot) and NAO (touchline-nao-sim) come with it.
+EOF
+DEB="$OUT/touchline_${VERSION}_amd64.deb"
+rm -f "$DEB"
+fakeroot dpkg-deb -Zgzip -z6 -b "$TREE" "$DEB" >/dev/null
+rm -rf "$TREE"
+say "done in $(( $(date +%s) - START )) s: $DEB ($(du -h "$DEB" | cut -f1), installed $((SIZE_KB / 1024)) MB), $TARBALL"

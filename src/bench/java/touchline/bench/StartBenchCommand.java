@@ -1,0 +1,125 @@
+package touchline.bench;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Issue 17's start budget: from a click on the desktop entry to the window, ≤ 3 s, the same as
+ * the console's own start. The .deb is unpacked ({@code dpkg -x}) into a scratch root, its
+ * desktop entry's Exec line is started (with the scratch root's path), and the time until a
+ * window titled "Touchline …" is mapped and visible is taken by polling {@code xdotool search
+ * --onlyvisible} every 20 ms. Baseline, alternating in the same run: the console as the
+ * developer launcher starts it ({@code java -XX:+UseZGC -Xmx512m -cp target/classes:… console}).
+ * Both get {@code --port 0} so a running demo's port 11011 does not stop them. Needs a display:
+ * {@code xvfb-run -a ./touchline bench start}.
+ */
+@Command(name = "start", mixinStandardHelpOptions = true,
+        description = "Desktop entry to window: the packaged console's start against the developer launcher's.")
+final class StartBenchCommand implements Callable<Integer> {
+
+    @Option(names = "--deb", description = "the package (default: target/package/touchline_<version>_amd64.deb)")
+    Path deb;
+
+    @Option(names = "--rounds", defaultValue = "5", description = "starts of each (default ${DEFAULT-VALUE})")
+    int rounds;
+
+    @Override
+    public Integer call() throws Exception {
+        if (System.getenv("DISPLAY") == null) {
+            System.err.println("bench start needs a display: xvfb-run -a ./touchline bench start");
+            return 2;
+        }
+        String version = touchline.app.ProductVersion.ofThisBuild().version();
+        Path pkg = deb != null ? deb : Path.of("target/package/touchline_" + version + "_amd64.deb");
+        if (!Files.isRegularFile(pkg)) {
+            System.err.println(pkg + " missing: ./touchline package builds it");
+            return 2;
+        }
+        Path root = Files.createTempDirectory("touchline-start-bench");
+        run(List.of("dpkg", "-x", pkg.toString(), root.toString()));
+        String exec = Files.readAllLines(root.resolve("usr/share/applications/touchline.desktop")).stream()
+                .filter(l -> l.startsWith("Exec=")).findFirst().orElseThrow().substring(5);
+        List<String> packaged = new ArrayList<>(Arrays.asList(exec.replace("/opt/touchline", root + "/opt/touchline")
+                .split(" ")));
+        packaged.addAll(List.of("--port", "0"));
+        List<String> developer = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:+UseZGC", "-Xmx512m", "-cp", "target/classes:" + Files.readString(Path.of("target/classpath.txt")).trim(),
+                "touchline.cli.Main", "console", "--port", "0");
+        // one start of each first, unmeasured: JavaFX unpacks its natives into ~/.openjfx/cache once
+        windowAfter(packaged);
+        windowAfter(developer);
+        double[] pkgSeconds = new double[rounds];
+        double[] devSeconds = new double[rounds];
+        for (int i = 0; i < rounds; i++) {
+            pkgSeconds[i] = windowAfter(packaged);
+            devSeconds[i] = windowAfter(developer);
+            System.out.printf("round %d: desktop entry %.2f s, developer launcher %.2f s%n", i + 1, pkgSeconds[i],
+                    devSeconds[i]);
+        }
+        double pkgMedian = median(pkgSeconds);
+        double devMedian = median(devSeconds);
+        System.out.printf("desktop entry to window: median %.2f s (max %.2f s), budget 3 s: %s%n", pkgMedian,
+                Arrays.stream(pkgSeconds).max().orElse(0), pkgMedian <= 3 ? "met" : "MISSED");
+        System.out.printf("developer launcher (baseline): median %.2f s; ratio %.2f%n", devMedian, pkgMedian / devMedian);
+        run(List.of("rm", "-rf", root.toString()));
+        return 0;
+    }
+
+    /** Seconds from starting {@code command} until its window is visible; the process is stopped after. */
+    private static double windowAfter(List<String> command) throws Exception {
+        long t0 = System.nanoTime();
+        Process p = new ProcessBuilder(command).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            long deadline = t0 + TimeUnit.SECONDS.toNanos(60);
+            while (System.nanoTime() < deadline) {
+                if (visible()) {
+                    return (System.nanoTime() - t0) / 1e9;
+                }
+                if (!p.isAlive()) {
+                    throw new IOException(String.join(" ", command) + " ended with " + p.exitValue()
+                            + " before its window showed");
+                }
+                TimeUnit.MILLISECONDS.sleep(20); // polling interval of the measurement, not synchronisation
+            }
+            throw new IOException("no window within 60 s: " + String.join(" ", command));
+        } finally {
+            p.descendants().forEach(ProcessHandle::destroy);
+            p.destroy();
+            if (!p.waitFor(10, TimeUnit.SECONDS)) {
+                p.destroyForcibly().waitFor();
+            }
+        }
+    }
+
+    private static boolean visible() throws IOException, InterruptedException {
+        Process x = new ProcessBuilder("xdotool", "search", "--onlyvisible", "--name", "^Touchline ")
+                .redirectErrorStream(true).start();
+        String out = new String(x.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        x.waitFor();
+        return x.exitValue() == 0 && !out.isEmpty();
+    }
+
+    private static void run(List<String> command) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder(command).inheritIO().start();
+        if (p.waitFor() != 0) {
+            throw new IOException(String.join(" ", command) + " failed");
+        }
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+}

@@ -1,0 +1,48 @@
+package touchline.app;
+
+import touchline.transport.UdpBackend;
+
+import java.util.List;
+
+/**
+ * What this Touchline runs on, said in the window (Help → About, the status bar) and by
+ * {@code --version}: the version, the Java runtime and system, the UDP transport (epoll with
+ * recvmmsg on Linux, NIO as the portable fallback) and whether the GameController's sender can
+ * get real-time priority (Linux) or keeps normal priority (the portable fallback).
+ *
+ * @param version          the product version
+ * @param java             e.g. "Java 17.0.15 (Debian)"
+ * @param system           e.g. "Linux 6.1 amd64"
+ * @param udp              the console's UDP transport and why
+ * @param realtimeUnavailable "" when real-time priority may be had here, else why normal priority
+ */
+public record RuntimeReport(ProductVersion version, String java, String system, UdpBackend udp,
+                            String realtimeUnavailable) {
+
+    /** This process, for a console on {@code udp}. */
+    public static RuntimeReport ofThisProcess(UdpBackend udp, String realtimeUnavailable) {
+        return new RuntimeReport(ProductVersion.ofThisBuild(),
+                "Java " + System.getProperty("java.runtime.version", System.getProperty("java.version", "?"))
+                        + " (" + System.getProperty("java.vendor", "?") + ")",
+                System.getProperty("os.name", "?") + " " + System.getProperty("os.version", "") + " "
+                        + System.getProperty("os.arch", ""),
+                udp, realtimeUnavailable);
+    }
+
+    /** The GameController sender's priority in a few words. */
+    public String priority() {
+        return realtimeUnavailable.isEmpty() ? "real-time priority when the system grants it (Linux, CAP_SYS_NICE)"
+                : "normal priority (" + realtimeUnavailable + ")";
+    }
+
+    /** One short phrase for the status bar, e.g. "NIO · normal priority". */
+    public String portability() {
+        return udp.kind().title() + " · " + (realtimeUnavailable.isEmpty() ? "real-time capable" : "normal priority");
+    }
+
+    /** The lines of Help → About and of {@code --version}. */
+    public List<String> lines() {
+        return List.of(version.title(), java + ", " + system.trim(), "UDP transport: " + udp.describe(),
+                "GameController sender: " + priority());
+    }
+}
