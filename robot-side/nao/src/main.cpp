@@ -112,11 +112,12 @@ int main(int argc, char** argv) {
       std::cerr << "touchline-nao-sim: " << e.what() << "\n";
       return 2;
     }
-    logLine("CURVE on: " + std::to_string(rpc.curve->allowedClients.size()) + " console key(s) allowed");
-  } else {
-    logLine("insecure: no --curve-secret, any client on the network may call and fetch frames "
-            "(docs/security.md)");
   }
+  // Logged after the "listening" lines: readers of the merged output take the ports from its first lines.
+  std::string security = rpc.curve ? "CURVE on: " + std::to_string(rpc.curve->allowedClients.size()) +
+                                         " console key(s) allowed, others refused"
+                                   : "insecure: no --curve-secret, any client on the network may call and fetch "
+                                     "frames (docs/security.md)";
 
   try {
     std::unique_ptr<EchoServer> echo;
@@ -130,6 +131,7 @@ int main(int argc, char** argv) {
     CameraServer cameraServer(cam);
     std::cout << "rpc listening on port " << rpcServer.port() << "\n"
               << "camera listening on port " << cameraServer.port() << std::endl;
+    logLine(security);
     int signal = 0;
     sigwait(&stopSignals, &signal);
     logLine(std::string("stopping on ") + strsignal(signal));
