@@ -33,6 +33,16 @@ class GameControllerSourcesTest {
     private final ManualClock clock = new ManualClock(1000);
     private final KnownGameStateFormats known = new KnownGameStateFormats();
 
+    private interface FormatCheck {
+        void run(String format) throws Exception;
+    }
+
+    private static void inEveryFormat(FormatCheck check) throws Exception {
+        for (String format : FORMATS) {
+            check.run(format);
+        }
+    }
+
     /** Builds datagrams of one format from its golden PLAYING packet. */
     private final class Datagrams {
         final GameStateFormat format;
@@ -68,9 +78,7 @@ class GameControllerSourcesTest {
 
     @Test
     void theFirstSourceIsPinnedAndAnotherIsAnIntruderShownInWords() throws Exception {
-        for (String format : FORMATS) {
-            theFirstSourceIsPinnedAndAnotherIsAnIntruderShownInWords(format);
-        }
+        inEveryFormat(this::theFirstSourceIsPinnedAndAnotherIsAnIntruderShownInWords);
     }
 
     private void theFirstSourceIsPinnedAndAnotherIsAnIntruderShownInWords(String format) throws Exception {
@@ -103,9 +111,7 @@ class GameControllerSourcesTest {
 
     @Test
     void packetNumbersCountGapsAndRepeatsAndFlagGoingBack() throws Exception {
-        for (String format : FORMATS) {
-            packetNumbersCountGapsAndRepeatsAndFlagGoingBack(format);
-        }
+        inEveryFormat(this::packetNumbersCountGapsAndRepeatsAndFlagGoingBack);
     }
 
     private void packetNumbersCountGapsAndRepeatsAndFlagGoingBack(String format) throws Exception {
@@ -139,9 +145,7 @@ class GameControllerSourcesTest {
 
     @Test
     void impossibleJumpsAreFlagged() throws Exception {
-        for (String format : FORMATS) {
-            impossibleJumpsAreFlagged(format);
-        }
+        inEveryFormat(this::impossibleJumpsAreFlagged);
     }
 
     private void impossibleJumpsAreFlagged(String format) throws Exception {

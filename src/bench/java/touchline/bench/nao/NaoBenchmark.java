@@ -147,7 +147,7 @@ public final class NaoBenchmark {
              NaoLink curve = link(ports(secure)[0], NaoClientKeys.load(keys))) {
             NaoCall ping = NaoCall.of("ALMotion", "ping");
             // warm-up: long enough for the JIT to compile JeroMQ's pure-Java CURVE crypto too
-            for (int i = 0; i < 20_000; i++) {
+            for (int i = 0; i < 5_000; i++) {
                 plain.call(ping).get();
                 curve.call(ping).get();
             }
