@@ -120,7 +120,9 @@ public final class NaoCommand implements Runnable {
             }
             if (link.state() != ConnectionState.ONLINE) {
                 err().println("no NAO RPC module answering at " + t.host() + ":" + t.port()
-                        + " within " + connectTimeoutMs + " ms");
+                        + " within " + connectTimeoutMs + " ms" + (keys == null
+                        ? " (insecure: a NAO that runs with CURVE keys does not answer an insecure console; "
+                          + "without --insecure the keys are used — see docs/security.md)" : ""));
                 link.close();
                 return null;
             }

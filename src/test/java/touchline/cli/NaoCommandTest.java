@@ -54,6 +54,8 @@ class NaoCommandTest {
         }
         assertEquals(1, runInsecure("call", "127.0.0.1:" + port, "--connect-timeout", "300", "ALMotion.ping"));
         assertTrue(err.toString().contains("no NAO RPC module answering"), err.toString());
+        assertTrue(err.toString().contains("a NAO that runs with CURVE keys does not answer an insecure console"),
+                err.toString());
     }
 
     @Test
