@@ -17,6 +17,10 @@ CameraServer::CameraServer(CameraOptions options)
   socket_.set(zmq::sockopt::maxmsgsize, std::int64_t{1} << 20);  // requests are a few bytes
   socket_.set(zmq::sockopt::heartbeat_ivl, 1000);
   socket_.set(zmq::sockopt::heartbeat_timeout, 3000);
+  if (options_.curve) {
+    zap_ = std::make_unique<ZapHandler>(context_, options_.curve->allowedClients, "camera");
+    makeCurveServer(socket_, *options_.curve);
+  }
   socket_.bind(tcpEndpoint(options_.bind, options_.port));
   port_ = boundPort(socket_);
   thread_ = std::thread([this] { loop(); });

@@ -8,11 +8,13 @@
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <thread>
 
 #include "camera_config.h"
+#include "curve_security.h"
 #include "jpeg_encoder.h"
 #include "scene_renderer.h"
 
@@ -21,6 +23,8 @@ namespace touchline::nao {
 struct CameraOptions {
   std::string bind = "127.0.0.1";
   int port = 5556;  // 0: chosen by the OS, see port()
+  // CURVE server keys and the allowed consoles; null: insecure (any client may fetch frames).
+  std::shared_ptr<const CurveServerKeys> curve;
 };
 
 struct CameraCounters {
@@ -40,6 +44,8 @@ class CameraServer {
   int port() const { return port_; }
   void stop();
   const CameraCounters& counters() const { return counters_; }
+  // The ZAP handler's counts (accepted, refused clients); null when insecure.
+  const ZapCounters* zapCounters() const { return zap_ ? &zap_->counters() : nullptr; }
 
   // Turns one request payload into reply bytes (server thread only; exposed for tests).
   std::string handle(const std::string& payload);
@@ -51,6 +57,7 @@ class CameraServer {
 
   CameraOptions options_;
   zmq::context_t context_;
+  std::unique_ptr<ZapHandler> zap_;  // before the socket: destroyed after it, before the context
   zmq::socket_t socket_;
   int port_ = 0;
   std::atomic<bool> stopping_{false};

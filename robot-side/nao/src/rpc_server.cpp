@@ -31,6 +31,10 @@ RpcServer::RpcServer(NaoqiBroker& broker, RpcCounters& counters, RpcOptions opti
   // Server-side heartbeats notice dead clients; clients run their own for dead servers.
   frontend_.set(zmq::sockopt::heartbeat_ivl, 1000);
   frontend_.set(zmq::sockopt::heartbeat_timeout, 3000);
+  if (options_.curve) {
+    zap_ = std::make_unique<ZapHandler>(context_, options_.curve->allowedClients, "rpc");
+    makeCurveServer(frontend_, *options_.curve);
+  }
   frontend_.bind(tcpEndpoint(options_.bind, options_.port));
   port_ = boundPort(frontend_);
   backend_.set(zmq::sockopt::linger, 0);

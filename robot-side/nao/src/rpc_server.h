@@ -15,9 +15,11 @@
 #include <cstddef>
 #include <string>
 #include <deque>
+#include <memory>
 #include <thread>
 #include <vector>
 
+#include "curve_security.h"
 #include "naoqi_broker.h"
 #include "rpc_counters.h"
 
@@ -31,6 +33,8 @@ struct RpcOptions {
   std::size_t maxRequestBytes = 16u << 20;
   // Transport hard limit (ZMQ_MAXMSGSIZE): libzmq drops a peer that sends more.
   std::int64_t maxMessageBytes = 64ll << 20;
+  // CURVE server keys and the allowed consoles; null: insecure (any client may call).
+  std::shared_ptr<const CurveServerKeys> curve;
 };
 
 // Requests above this size are not parsed on the broker thread, whatever the method.
@@ -49,6 +53,8 @@ class RpcServer {
   RpcServer& operator=(const RpcServer&) = delete;
 
   int port() const { return port_; }
+  // The ZAP handler's counts (accepted, refused clients); null when insecure.
+  const ZapCounters* zapCounters() const { return zap_ ? &zap_->counters() : nullptr; }
   // Stops the broker thread and the workers (waking blocking calls) and joins them.
   void stop();
 
@@ -70,6 +76,7 @@ class RpcServer {
   RpcCounters& counters_;
   RpcOptions options_;
   zmq::context_t context_;
+  std::unique_ptr<ZapHandler> zap_;  // before the sockets: destroyed after them, before the context
   zmq::socket_t frontend_;
   zmq::socket_t backend_;
   int port_ = 0;

@@ -1,6 +1,7 @@
 package touchline.app;
 
 import touchline.game.GameClock;
+import touchline.game.GameControllerSources;
 import touchline.game.MatchMode;
 import touchline.model.DebugOptionSession;
 import touchline.transport.Channel;
@@ -73,6 +74,7 @@ public final class Console implements AutoCloseable {
     private final ScheduledExecutorService ticker;
     private final MatchMode matchMode = new MatchMode(GameClock.system());
     private GameStateWatch gcWatch;
+    private final GameControllerSources gcSources;
     private final MonitorRegistrations monitorRegistrations = new MonitorRegistrations();
     private GcMonitor gcMonitor;
     private EmbeddedGameController gameController;
@@ -95,6 +97,7 @@ public final class Console implements AutoCloseable {
     public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
+        this.gcSources = new GameControllerSources(GameClock.system(), pinnedGameController(config));
         // The traffic meter's "now" follows a replay while one plays with live listening paused,
         // so its rates are the recording's rates.
         modelClock = () -> {
@@ -150,7 +153,7 @@ public final class Console implements AutoCloseable {
         }
         try {
             gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
-                    live, matchMode, monitorRegistrations);
+                    live, matchMode, monitorRegistrations, gcSources);
             // started in the middle of a game, the console must hear the GameController before it talks
             matchMode.listenFirst(MatchMode.LISTEN_FIRST_MS);
         } catch (IOException e) {
@@ -177,6 +180,31 @@ public final class Console implements AutoCloseable {
         }
     }
 
+    /** The GameController host to believe: the one given, else the monitored one, else null (the first heard). */
+    private static String pinnedGameController(ConsoleConfig config) {
+        if (config.gcAddress() != null) {
+            java.net.InetAddress a;
+            try {
+                a = java.net.InetAddress.getByName(config.gcAddress());
+            } catch (java.net.UnknownHostException e) {
+                org.slf4j.LoggerFactory.getLogger(Console.class).warn("--gc-address {}: unknown host; believing no "
+                        + "GameController until it resolves", config.gcAddress());
+                return config.gcAddress();
+            }
+            return a.getHostAddress();
+        }
+        return config.gcMonitor() == null || config.gcMonitor().getAddress() == null ? null
+                : config.gcMonitor().getAddress().getHostAddress();
+    }
+
+    /**
+     * Which GameController the console believes (pinned: the first heard, or {@code --gc-address}),
+     * the other sources sending game states, and what looked wrong (docs/security.md).
+     */
+    public GameControllerSources gcSources() {
+        return gcSources;
+    }
+
     /** The monitor of the field's GameController, or null when not asked for (or its port was taken). */
     public GcMonitor gcMonitor() {
         return gcMonitor;
@@ -186,6 +214,7 @@ public final class Console implements AutoCloseable {
         try {
             robots.tick();
             options.tick();
+            matchMode.refresh(); // a claim of play expires with time: held requests go out then
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }

@@ -14,12 +14,24 @@ import java.net.InetSocketAddress;
  * @param gcMonitor           the field's HSL GameController to register with as a monitor
  *                            ({@code --gc-monitor HOST}, its port 3636), or null
  * @param gcForwardPort       where that GameController forwards the robots' return packets (3940)
+ * @param gcAddress           the field's GameController's host ({@code --gc-address}): the only source of
+ *                            game states believed; null pins the first heard (or the {@code gcMonitor} host)
  */
 public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
-                            int gcForwardPort) {
+                            int gcForwardPort, String gcAddress) {
 
     public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort) {
-        this(udp, tickMillis, gameControllerPort, null, ForwardedReturnPacket.PORT);
+        this(udp, tickMillis, gameControllerPort, null, ForwardedReturnPacket.PORT, null);
+    }
+
+    public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
+                         int gcForwardPort) {
+        this(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, null);
+    }
+
+    /** Believes game states only from {@code host} (an IP address or name), null: the first heard. */
+    public ConsoleConfig withGcAddress(String host) {
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, host);
     }
 
     public static ConsoleConfig defaults() {
@@ -29,15 +41,15 @@ public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPo
     /** Also stops listening for GameControllers unless the port is set again: tests must not bind fixed ports. */
     public ConsoleConfig withUdp(UdpConfig udp) {
         return new ConsoleConfig(udp, tickMillis, udp.listenPort() == 0 ? 0 : gameControllerPort, gcMonitor,
-                gcForwardPort);
+                gcForwardPort, gcAddress);
     }
 
     public ConsoleConfig withGameControllerPort(int port) {
-        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort);
+        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort, gcAddress);
     }
 
     /** Registers with this GameController (monitor requests to {@code gameController}, forwards on {@code forwardPort}). */
     public ConsoleConfig withGcMonitor(InetSocketAddress gameController, int forwardPort) {
-        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort);
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort, gcAddress);
     }
 }

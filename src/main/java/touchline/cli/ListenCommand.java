@@ -60,6 +60,11 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
                     monitorTable.print(out, console.gcMonitor(), System.currentTimeMillis());
+                    out.println(console.gcSources().describe());
+                    String gcWarning = console.gcSources().warning();
+                    if (!gcWarning.isEmpty()) {
+                        out.println(gcWarning);
+                    }
                     guard.ifPresent(g -> out.println(g.snapshot().describe()));
                     console.debugRateGuard().ifPresent(d -> d.overLimit().forEach(o -> out.println(
                             "OVER THE DEBUG LIMIT (" + d.limit().describe() + "/s during play): " + o.describe())));

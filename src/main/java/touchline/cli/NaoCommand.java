@@ -9,6 +9,8 @@ import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
 import touchline.transport.nao.CameraSettings;
 import touchline.transport.nao.ConnectionState;
+import touchline.transport.nao.KeyFileException;
+import touchline.transport.nao.NaoClientKeys;
 import touchline.transport.nao.NaoCall;
 import touchline.transport.nao.NaoCameraStream;
 import touchline.transport.nao.NaoLink;
@@ -30,7 +32,8 @@ import java.util.concurrent.TimeUnit;
  * when the robot answered with an error or could not be reached, 2 on a usage error.
  */
 @Command(name = "nao", mixinStandardHelpOptions = true,
-        description = "Call NAOqi methods and fetch camera frames from a NAO (RPC port 5555, camera 5556).",
+        description = "Call NAOqi methods and fetch camera frames from a NAO (RPC port 5555, camera 5556), "
+                + "encrypted with CURVE keys (--keys DIR) unless --insecure.",
         subcommands = {NaoCommand.Call.class, NaoCommand.Methods.class, NaoCommand.Cam.class})
 public final class NaoCommand implements Runnable {
 
@@ -67,6 +70,9 @@ public final class NaoCommand implements Runnable {
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
 
+        @CommandLine.Mixin
+        NaoKeyOptions security;
+
         @Option(names = "--config", description = "link rules (timeouts, intervals, idempotent methods), e.g. samples/nao.properties")
         Path config;
 
@@ -92,16 +98,31 @@ public final class NaoCommand implements Runnable {
             return spec.commandLine().getErr();
         }
 
-        /** Null (after printing why) when the robot did not come online in time. */
+        /** Null (after printing why) when the keys are unusable or the robot did not come online in time. */
         NaoLink connect(Target t) throws InterruptedException {
-            NaoLink link = new NaoLink(t.host(), t.port(), loadConfig(), envelope -> { });
+            NaoClientKeys keys;
+            try {
+                keys = security.load();
+            } catch (KeyFileException e) {
+                err().println(e.getMessage());
+                return null;
+            }
+            NaoLink link = new NaoLink(t.host(), t.port(), loadConfig(), envelope -> { }, keys);
             long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(connectTimeoutMs);
-            while (link.state() != ConnectionState.ONLINE && System.nanoTime() < end) {
+            while (link.state() != ConnectionState.ONLINE && link.state() != ConnectionState.REFUSED
+                    && System.nanoTime() < end) {
                 Thread.sleep(10);
+            }
+            if (link.state() == ConnectionState.REFUSED) {
+                err().println(t.host() + ":" + t.port() + ": " + link.securityProblem());
+                link.close();
+                return null;
             }
             if (link.state() != ConnectionState.ONLINE) {
                 err().println("no NAO RPC module answering at " + t.host() + ":" + t.port()
-                        + " within " + connectTimeoutMs + " ms");
+                        + " within " + connectTimeoutMs + " ms" + (keys == null
+                        ? " (insecure: a NAO that runs with CURVE keys does not answer an insecure console; "
+                          + "without --insecure the keys are used — see docs/security.md)" : ""));
                 link.close();
                 return null;
             }
@@ -179,6 +200,8 @@ public final class NaoCommand implements Runnable {
     static final class Cam implements Callable<Integer> {
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
+        @CommandLine.Mixin
+        NaoKeyOptions security;
         @Parameters(index = "0", paramLabel = "HOST[:PORT]")
         String target;
         @Option(names = "--save", required = true, description = "where to write the JPEG")
@@ -196,6 +219,7 @@ public final class NaoCommand implements Runnable {
         public Integer call() throws Exception {
             CameraSettings settings;
             Target t;
+            NaoClientKeys keys;
             try {
                 settings = new CameraSettings(resolution, colorSpace, fps);
                 t = Target.parse(target, CAM_PORT);
@@ -203,7 +227,13 @@ public final class NaoCommand implements Runnable {
                 spec.commandLine().getErr().println(e.getMessage());
                 return 2;
             }
-            try (NaoCameraStream stream = new NaoCameraStream(t.host(), t.port(), envelope -> { })) {
+            try {
+                keys = security.load();
+            } catch (KeyFileException e) {
+                spec.commandLine().getErr().println(e.getMessage());
+                return 1;
+            }
+            try (NaoCameraStream stream = new NaoCameraStream(t.host(), t.port(), envelope -> { }, keys)) {
                 stream.configure(settings);
                 try (AutoCloseable viewer = stream.subscribe()) {
                     long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);

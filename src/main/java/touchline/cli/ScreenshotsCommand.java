@@ -112,7 +112,12 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             System.err.println("no NAO screenshot: " + sim + " is missing");
             return;
         }
-        Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0").redirectErrorStream(true).start();
+        // the NAO tab as every user sees it: the link encrypted with CURVE keys (made for the shot)
+        java.nio.file.Path keys = Files.createTempDirectory("touchline-shot-keys");
+        new touchline.transport.nao.CurveKeyFiles().write(keys, true);
+        Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0", "--curve-secret",
+                keys.resolve("nao-server.secret").toString(), "--curve-clients", keys.resolve("console.public").toString())
+                .redirectErrorStream(true).start();
         try {
             java.io.BufferedReader lines = new java.io.BufferedReader(new java.io.InputStreamReader(nao.getInputStream()));
             String rpc = lines.readLine().replaceAll("\\D+", "");
@@ -124,6 +129,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 javafx.scene.Scene scene = window.scene();
                 ((javafx.scene.control.TextField) scene.lookup("#nao-rpc-port")).setText(rpc);
                 ((javafx.scene.control.TextField) scene.lookup("#nao-cam-port")).setText(cam);
+                ((javafx.scene.control.TextField) scene.lookup("#nao-keys")).setText(keys.toString());
                 ((javafx.scene.control.ToggleButton) scene.lookup("#nao-connect")).fire();
             });
             Thread.sleep(1500);

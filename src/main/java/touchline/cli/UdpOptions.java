@@ -25,6 +25,11 @@ final class UdpOptions {
                     + "and the robots' return packets as it sees them (it refuses hosts that send return packets)")
     String gcMonitor;
 
+    @Option(names = "--gc-address", paramLabel = "HOST",
+            description = "the field's GameController: believe game states only from HOST (default: the first "
+                    + "GameController heard); any other source is shown as a warning")
+    String gcAddress;
+
     @Option(names = "--gc-forward-port", defaultValue = "3940",
             description = "port the GameController forwards return packets to (default ${DEFAULT-VALUE})")
     int gcForwardPort;
@@ -65,6 +70,7 @@ final class UdpOptions {
     ConsoleConfig config() {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port)
                 .withBindAddress(bind).withRobotPort(robotPort).withTransport(transport));
+        config = config.withGcAddress(gcAddress);
         return gcMonitor == null ? config
                 : config.withGcMonitor(new InetSocketAddress(gcMonitor, MonitorRequest.PORT), gcForwardPort);
     }

@@ -16,7 +16,10 @@ import java.util.function.Consumer;
 /**
  * The tournament rule "during play only the GameController talks to the robots": while any
  * game state heard on the network (or sent by our own GameController) within the last
- * {@link #STALE_MS} ms is READY, SET or PLAYING, {@link #mayConsoleSend()} is false and the
+ * {@link #STALE_MS} ms is READY, SET or PLAYING, or any source at all claimed READY, SET or
+ * PLAYING within the last {@link #PLAY_MEMORY_MS} ms (the strictest claim wins: a forged
+ * FINISHED or INITIAL, from another source or with the GameController's own address, never
+ * releases the console while a GameController keeps saying PLAYING), {@link #mayConsoleSend()} is false and the
  * console's outbound path must hold back debug requests, reliable-stream data and NAO
  * commands (reporting each with {@link #hold}). When play stops, listeners hear
  * {@code true} and held-back requests may resume. The referee-approved exception is an
@@ -26,6 +29,12 @@ public final class MatchMode {
 
     /** A source not heard for this long no longer counts (a GameController sends every 500 ms). */
     public static final long STALE_MS = 5000;
+    /**
+     * A claim of READY, SET or PLAYING from any source keeps match mode on for this long, whatever
+     * is heard after it: four GameController intervals, so three lost packets in a row do not
+     * let a forged FINISHED through. The price: a true FINISHED releases the console 2 s late.
+     */
+    public static final long PLAY_MEMORY_MS = 2000;
     /**
      * How long a console that starts listening to the field holds robot traffic back: one
      * GameController interval (500 ms) and its jitter, so a console started in the middle of a
@@ -52,6 +61,7 @@ public final class MatchMode {
 
     private final GameClock clock;
     private final Map<String, Heard> heard = new HashMap<>();
+    private final Map<String, Heard> lastPlayClaim = new HashMap<>();
     private final Deque<String> held = new ArrayDeque<>();
     private final List<OverrideEntry> overrideLog = new ArrayList<>();
     private final List<Consumer<Boolean>> listeners = new CopyOnWriteArrayList<>();
@@ -87,7 +97,11 @@ public final class MatchMode {
     /** Records a game state byte (0 INITIAL ... 4 FINISHED) heard from, or sent by, {@code source}. */
     public void observe(int gameState, String source) {
         synchronized (this) {
-            heard.put(source, new Heard(gameState, clock.millis()));
+            Heard h = new Heard(gameState, clock.millis());
+            heard.put(source, h);
+            if (isPlay(gameState)) {
+                lastPlayClaim.put(source, h);
+            }
         }
         refresh();
     }
@@ -173,7 +187,13 @@ public final class MatchMode {
             if (source == null) {
                 return override || !listening() ? "" : "listening for a GameController before talking to robots";
             }
-            return "game is " + GameControlData.stateName(heard.get(source).state) + " (" + source + ")";
+            Heard now = heard.get(source);
+            if (isPlay(now.state)) {
+                return "game is " + GameControlData.stateName(now.state) + " (" + source + ")";
+            }
+            return "game was " + GameControlData.stateName(lastPlayClaim.get(source).state) + " " + (clock.millis()
+                    - lastPlayClaim.get(source).atMs) + " ms ago (" + source + "), now says "
+                    + GameControlData.stateName(now.state) + "; silent until " + PLAY_MEMORY_MS + " ms after play";
         }
     }
 
@@ -201,12 +221,21 @@ public final class MatchMode {
         return clock.millis() < listeningUntilMs;
     }
 
+    private static boolean isPlay(int state) {
+        return state >= GameControlData.STATE_READY && state <= GameControlData.STATE_PLAYING;
+    }
+
+    /** The source whose claim of play keeps match mode on (as "source", or "source, earlier"), or null. */
     private String playingSource() {
         long now = clock.millis();
         for (Map.Entry<String, Heard> e : heard.entrySet()) {
             Heard h = e.getValue();
-            if (now - h.atMs <= STALE_MS && h.state >= GameControlData.STATE_READY
-                    && h.state <= GameControlData.STATE_PLAYING) {
+            if (now - h.atMs <= STALE_MS && isPlay(h.state)) {
+                return e.getKey();
+            }
+        }
+        for (Map.Entry<String, Heard> e : lastPlayClaim.entrySet()) {
+            if (now - e.getValue().atMs <= PLAY_MEMORY_MS) {
                 return e.getKey();
             }
         }

@@ -33,6 +33,10 @@ public final class ConsoleStatus {
                     ? "MATCH MODE OVERRIDDEN: " + play + ", the console sends anyway"
                     : "Silent: match mode, " + play);
         }
+        String gc = console.gcSources().warning();
+        if (!gc.isEmpty()) {
+            append(s, gc);
+        }
         Optional<Replay> replay = console.replay();
         if (replay.isPresent()) {
             append(s, "Replay: views show the recording" + (replay.get().state().playing() ? " (playing)" : " (paused)")

@@ -38,6 +38,8 @@ class MatchModeTest {
         assertFalse(mode.mayConsoleSend());
         mode.hold("nao command");
         mode.observe(4, "gc");
+        assertFalse(mode.mayConsoleSend(), "a claim of play holds for PLAY_MEMORY_MS");
+        clock.advance(MatchMode.PLAY_MEMORY_MS + 1);
         assertTrue(mode.mayConsoleSend());
         assertEquals(List.of(false, true), heard);
         assertTrue(mode.heldBack().isEmpty(), "held-back list is cleared when they may resume");
@@ -51,6 +53,23 @@ class MatchModeTest {
         clock.advance(MatchMode.STALE_MS + 1);
         mode.observe(0, "ours");
         assertTrue(mode.mayConsoleSend(), "a GameController not heard for 5 s no longer counts");
+    }
+
+    @Test
+    void aForgedFinishedNeverReleasesWhileAnySourceSaidPlayingRecently() {
+        mode.observe(3, "GameController at 10.0.0.2:3838");
+        // the forger uses the GameController's own address: the latest state of that source is FINISHED
+        mode.observe(4, "GameController at 10.0.0.2:3838");
+        assertFalse(mode.mayConsoleSend());
+        assertTrue(mode.play().contains("game was PLAYING"), mode.play());
+        clock.advance(MatchMode.PLAY_MEMORY_MS / 2);
+        mode.observe(3, "GameController at 10.0.0.2:3838");
+        mode.observe(4, "other source at 10.0.0.66:40000");
+        mode.observe(0, "GameController at 10.0.0.2:3838");
+        clock.advance(MatchMode.PLAY_MEMORY_MS / 2 + 1);
+        assertFalse(mode.mayConsoleSend(), "PLAYING heard 1 s ago");
+        clock.advance(MatchMode.PLAY_MEMORY_MS / 2);
+        assertTrue(mode.mayConsoleSend(), "no claim of play within PLAY_MEMORY_MS: released");
     }
 
     @Test

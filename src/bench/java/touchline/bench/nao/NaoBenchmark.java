@@ -7,6 +7,8 @@ import touchline.proto.Nao.HAWActorRPCRequest;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraSettings;
 import touchline.transport.nao.ConnectionState;
+import touchline.transport.nao.CurveKeyFiles;
+import touchline.transport.nao.NaoClientKeys;
 import touchline.transport.nao.NaoCall;
 import touchline.transport.nao.NaoCameraStream;
 import touchline.transport.nao.NaoLink;
@@ -36,9 +38,12 @@ import java.util.regex.Pattern;
  * context, and on the client's context, where one I/O thread serves both ends), and to the
  * simulator itself; (2) short-call latency while long {@code say} calls occupy
  * half the workers; (3) camera frames per second and bytes per frame delivered to a viewer
- * at 640x480 and 1280x960. Prints a Markdown table for docs/benchmarks.md.
+ * at 640x480 and 1280x960; (4) the cost of CURVE: {@code ALMotion.ping} through NaoLink with
+ * CURVE keys to a second simulator started with {@code --curve-secret}, against the same call
+ * without CURVE to the first, alternating call by call (budget: p50 ratio ≤ 1.2). Prints a
+ * Markdown table for docs/benchmarks.md.
  *
- * <p>Usage: {@code NaoBenchmark [--bin robot-side/build/bin] [--seconds 4]}
+ * <p>Usage: {@code NaoBenchmark [--bin robot-side/build/bin] [--seconds 4] [--curve-only]}
  */
 public final class NaoBenchmark {
 
@@ -48,10 +53,17 @@ public final class NaoBenchmark {
 
     private final Path binary;
     private final int seconds;
+    private final boolean curveOnly;
 
     public NaoBenchmark(Path binary, int seconds) {
+        this(binary, seconds, false);
+    }
+
+    /** @param curveOnly measure only the cost of CURVE (part 4) */
+    public NaoBenchmark(Path binary, int seconds, boolean curveOnly) {
         this.binary = binary;
         this.seconds = seconds;
+        this.curveOnly = curveOnly;
     }
 
     /** Runs from the command line's arguments; returns the exit status (1: the simulator is not built). */
@@ -70,7 +82,7 @@ public final class NaoBenchmark {
             System.err.println("touchline-nao-sim not found at " + binary + "; build the robot side first");
             return 1;
         }
-        new NaoBenchmark(binary, seconds).run();
+        new NaoBenchmark(binary, seconds, Arrays.asList(args).contains("--curve-only")).run();
         return 0;
     }
 
@@ -81,10 +93,13 @@ public final class NaoBenchmark {
             int[] ports = ports(sim);
             System.out.println("| what | figure (console side, Java) | budget |");
             System.out.println("| --- | --- | --- |");
-            roundTrip(ports[0], ports[2]);
-            shortCallsUnderLoad(ports[0]);
-            camera(ports[1], 2);
-            camera(ports[1], 3);
+            if (!curveOnly) {
+                roundTrip(ports[0], ports[2]);
+                shortCallsUnderLoad(ports[0]);
+                camera(ports[1], 2);
+                camera(ports[1], 3);
+            }
+            curve(ports[0]);
         } finally {
             sim.destroy();
             sim.waitFor(5, TimeUnit.SECONDS);
@@ -117,8 +132,60 @@ public final class NaoBenchmark {
         return new int[] {rpc, cam, echo};
     }
 
+    /**
+     * NaoLink ping with CURVE (a second simulator with keys) against NaoLink ping without, one
+     * call in flight, alternating call by call so machine noise hits both alike.
+     */
+    private void curve(int insecurePort) throws Exception {
+        Path keys = Files.createTempDirectory("touchline-bench-keys");
+        new CurveKeyFiles().write(keys, true);
+        Process secure = new ProcessBuilder(binary.toString(), "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port",
+                "0", "--workers", "4", "--echo-port", "0", "--curve-secret", keys.resolve("nao-server.secret").toString(),
+                "--curve-clients", keys.resolve("console.public").toString())
+                .redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        try (NaoLink plain = link(insecurePort, null);
+             NaoLink curve = link(ports(secure)[0], NaoClientKeys.load(keys))) {
+            NaoCall ping = NaoCall.of("ALMotion", "ping");
+            // warm-up: long enough for the JIT to compile JeroMQ's pure-Java CURVE crypto too
+            for (int i = 0; i < 5_000; i++) {
+                plain.call(ping).get();
+                curve.call(ping).get();
+            }
+            List<Long> plainNs = new ArrayList<>();
+            List<Long> curveNs = new ArrayList<>();
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+            while (System.nanoTime() < end) {
+                for (NaoLink l : List.of(plain, curve)) {
+                    long t0 = System.nanoTime();
+                    CallOutcome outcome = l.call(ping).get();
+                    (l == plain ? plainNs : curveNs).add(System.nanoTime() - t0);
+                    if (!outcome.ok()) {
+                        throw new IllegalStateException("ping failed: " + outcome.describe());
+                    }
+                }
+            }
+            double[] p = percentiles(plainNs);
+            double[] c = percentiles(curveNs);
+            row("NaoLink `ALMotion.ping` without CURVE (baseline), p50 / p99", p, plainNs.size());
+            row("NaoLink `ALMotion.ping` with CURVE (JeroMQ client ↔ libzmq server + ZAP), p50 / p99", c, curveNs.size());
+            System.out.printf("| **ratio p50 with CURVE / without** | **%.2f** | ≤ 1.2 |%n", c[0] / p[0]);
+            System.out.printf("| ratio p99 with CURVE / without | %.2f | — |%n", c[1] / p[1]);
+        } finally {
+            secure.destroy();
+            secure.waitFor(5, TimeUnit.SECONDS);
+            for (String f : CurveKeyFiles.FILES) {
+                Files.deleteIfExists(keys.resolve(f));
+            }
+            Files.deleteIfExists(keys);
+        }
+    }
+
     private NaoLink link(int port) throws InterruptedException {
-        NaoLink link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), e -> { });
+        return link(port, null);
+    }
+
+    private NaoLink link(int port, NaoClientKeys keys) throws InterruptedException {
+        NaoLink link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), e -> { }, keys);
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
         while (link.state() != ConnectionState.ONLINE && System.nanoTime() < end) {
             Thread.sleep(5);

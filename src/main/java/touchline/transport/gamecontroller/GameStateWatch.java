@@ -1,5 +1,6 @@
 package touchline.transport.gamecontroller;
 
+import touchline.game.GameControllerSources;
 import touchline.game.MatchMode;
 import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
@@ -18,7 +19,10 @@ import java.net.InetSocketAddress;
  * {@link MatchMode}, so the console falls silent while the official GameController says READY,
  * SET or PLAYING. A packet no format accepts, or true data from a GameController this console
  * did not register with, is published with its reason and counted in {@link #badPackets()},
- * never thrown and never believed; the next good one is used as usual.
+ * never thrown and never believed; the next good one is used as usual. The field's GameController
+ * is pinned ({@link GameControllerSources}): game states from any other source are published
+ * with the reason they are not believed and counted the same way, yet still heard by match
+ * mode, where a claim of play from anyone keeps the console silent.
  */
 public final class GameStateWatch implements AutoCloseable {
 
@@ -27,6 +31,7 @@ public final class GameStateWatch implements AutoCloseable {
     private final EnvelopeSink sink;
     private final MatchMode matchMode;
     private final MonitorRegistrations registrations;
+    private final GameControllerSources sources;
     private final GcListener listener;
 
     /**
@@ -35,12 +40,23 @@ public final class GameStateWatch implements AutoCloseable {
      * @param matchMode told each decoded state
      */
     public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode) throws IOException {
-        this(bind, sink, matchMode, new MonitorRegistrations());
+        this(bind, sink, matchMode, new MonitorRegistrations(), new GameControllerSources(
+                touchline.game.GameClock.system(), null));
     }
 
     /** @param registrations the GameControllers whose true data ("RGTD") this console asked for */
     public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode,
                           MonitorRegistrations registrations) throws IOException {
+        this(bind, sink, matchMode, registrations, new GameControllerSources(touchline.game.GameClock.system(), null));
+    }
+
+    /**
+     * @param registrations the GameControllers whose true data ("RGTD") this console asked for
+     * @param sources       pins the field's GameController and judges every game state heard
+     */
+    public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode,
+                          MonitorRegistrations registrations, GameControllerSources sources) throws IOException {
+        this.sources = sources;
         this.sink = sink;
         this.matchMode = matchMode;
         this.registrations = registrations;
@@ -50,6 +66,11 @@ public final class GameStateWatch implements AutoCloseable {
     /** Rejected game-state packets, per source with the last reason. */
     public BadPackets badPackets() {
         return badPackets;
+    }
+
+    /** The pinned GameController, intruders and flags. */
+    public GameControllerSources sources() {
+        return sources;
     }
 
     public InetSocketAddress localAddress() throws IOException {
@@ -66,13 +87,21 @@ public final class GameStateWatch implements AutoCloseable {
                 : m.format().isTrueData() && !registrations.isRegisteredWith(from.getAddress())
                 ? "monitor true data (RGTD) from " + from.getAddress().getHostAddress()
                   + ", but this console did not register as its monitor" : null;
+        String host = from.getAddress().getHostAddress();
+        boolean intruder = error == null
+                && sources.heard(host, from.getPort(), m.data()) == GameControllerSources.Verdict.INTRUDER;
+        if (intruder) {
+            error = "game state from " + host + ":" + from.getPort() + ", not the field's GameController ("
+                    + sources.pinnedHost() + "): not believed";
+        }
         if (error != null) {
             badPackets.count(from, error);
         }
         sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 m == null ? "gc.unknown" : m.format().kind(), null, data, error));
-        if (error == null) {
-            matchMode.observe(m.data().state(), "GameController at " + from.getAddress().getHostAddress() + ":"
+        if (m != null && (error == null || intruder)) {
+            // the strictest claim wins: an intruder saying PLAYING silences the console too
+            matchMode.observe(m.data().state(), (intruder ? "other source at " : "GameController at ") + host + ":"
                     + from.getPort());
         }
     }

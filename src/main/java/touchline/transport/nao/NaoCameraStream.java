@@ -35,6 +35,7 @@ public final class NaoCameraStream implements AutoCloseable {
     public static final int REPLY_TIMEOUT_MS = 1000;
     private static final int WINDOW = 30;
 
+    private final NaoClientKeys keys;
     private final String host;
     private final int port;
     private final InetSocketAddress peer;
@@ -55,15 +56,28 @@ public final class NaoCameraStream implements AutoCloseable {
     private final int[] frameBytes = new int[WINDOW];
     private int frameCount;
 
+    /** Insecure (no CURVE), publishing into its own pipeline ending in {@code sink}. */
     public NaoCameraStream(String host, int port, touchline.transport.EnvelopeSink sink) {
-        this(host, port, new NaoEnvelopeChannel(sink), true);
+        this(host, port, new NaoEnvelopeChannel(sink), true, null);
     }
 
+    /** @param keys CURVE client keys, or null: insecure */
+    public NaoCameraStream(String host, int port, touchline.transport.EnvelopeSink sink, NaoClientKeys keys) {
+        this(host, port, new NaoEnvelopeChannel(sink), true, keys);
+    }
+
+    /** Insecure (no CURVE), publishing into a shared pipeline. */
     public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes) {
-        this(host, port, envelopes, false);
+        this(host, port, envelopes, false, null);
     }
 
-    private NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, boolean owns) {
+    /** @param keys CURVE client keys, or null: insecure */
+    public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, NaoClientKeys keys) {
+        this(host, port, envelopes, false, keys);
+    }
+
+    private NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, boolean owns, NaoClientKeys keys) {
+        this.keys = keys;
         this.host = host;
         this.port = port;
         this.peer = InetSocketAddress.createUnresolved(host, port);
@@ -246,6 +260,9 @@ public final class NaoCameraStream implements AutoCloseable {
         s.setSendTimeOut(REPLY_TIMEOUT_MS);
         s.setReconnectIVL(100);
         s.setReconnectIVLMax(1000);
+        if (keys != null) {
+            keys.applyTo(s);
+        }
         s.connect("tcp://" + host + ":" + port);
         return s;
     }
@@ -266,7 +283,9 @@ public final class NaoCameraStream implements AutoCloseable {
         }
         byte[] raw = socket.recv(0);
         if (raw == null) {
-            fail("no reply from the camera server within " + REPLY_TIMEOUT_MS + " ms");
+            fail("no reply from the camera server within " + REPLY_TIMEOUT_MS + " ms" + (keys == null ? ""
+                    : " (with CURVE keys: if the NAO runs, it may have refused our key; give it console.public"
+                      + " — see docs/security.md)"));
             return null;
         }
         while (socket.hasReceiveMore()) {

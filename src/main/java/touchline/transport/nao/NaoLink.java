@@ -89,6 +89,14 @@ public final class NaoLink implements AutoCloseable {
     private final boolean ownsEnvelopes;
     private final MixedValueCodec codec = new MixedValueCodec();
     private final ZContext zmq = new ZContext(1);
+    private final NaoClientKeys keys;
+    private volatile String securityProblem = "";
+    // Link thread only: connections dropped right after the greeting without a reply, with CURVE on.
+    private int disconnectsBeforeHandshake;
+    private long handshakeAtNanos;
+    private boolean repliedSinceHandshake;
+    // Link thread only: when a REFUSED link that connected again counts as online (0: none).
+    private long probationUntilNanos;
     private final ConcurrentLinkedQueue<Submission> submissions = new ConcurrentLinkedQueue<>();
     private final Pipe wakePipe;
     private final AtomicBoolean wakePending = new AtomicBoolean();
@@ -126,17 +134,34 @@ public final class NaoLink implements AutoCloseable {
     private final Map<String, Submission> coalesced = new HashMap<>();
     private final Map<String, Long> lastSentNanos = new HashMap<>();
 
-    /** Connects to {@code host:port} and publishes into its own pipeline ending in {@code sink}. */
+    /** Connects to {@code host:port}, insecure, and publishes into its own pipeline ending in {@code sink}. */
     public NaoLink(String host, int port, NaoLinkConfig config, touchline.transport.EnvelopeSink sink) {
-        this(host, port, config, new NaoEnvelopeChannel(sink), true);
+        this(host, port, config, new NaoEnvelopeChannel(sink), true, null);
     }
 
-    /** Connects to {@code host:port} and publishes into a shared pipeline (e.g. with the camera stream). */
+    /**
+     * Connects to {@code host:port} and publishes into its own pipeline ending in {@code sink}.
+     *
+     * @param keys CURVE client keys (the NAO link encrypted, the robot side checks our key), or null: insecure
+     */
+    public NaoLink(String host, int port, NaoLinkConfig config, touchline.transport.EnvelopeSink sink,
+                   NaoClientKeys keys) {
+        this(host, port, config, new NaoEnvelopeChannel(sink), true, keys);
+    }
+
+    /** Connects to {@code host:port}, insecure, and publishes into a shared pipeline (e.g. with the camera stream). */
     public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes) {
-        this(host, port, config, envelopes, false);
+        this(host, port, config, envelopes, false, null);
     }
 
-    private NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, boolean owns) {
+    /** As above with CURVE client keys, or null for insecure. */
+    public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, NaoClientKeys keys) {
+        this(host, port, config, envelopes, false, keys);
+    }
+
+    private NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, boolean owns,
+                    NaoClientKeys keys) {
+        this.keys = keys;
         this.host = host;
         this.port = port;
         this.peer = InetSocketAddress.createUnresolved(host, port);
@@ -165,6 +190,20 @@ public final class NaoLink implements AutoCloseable {
 
     public NaoLinkConfig config() {
         return config;
+    }
+
+    /** Whether the link uses CURVE (encrypted, our key checked by the robot side). */
+    public boolean secure() {
+        return keys != null;
+    }
+
+    /**
+     * Why the CURVE handshake fails, in words for the user ("the NAO refused our key: give it
+     * console.public — see docs/security.md"); "" when it did not fail. Goes with
+     * {@link ConnectionState#REFUSED}.
+     */
+    public String securityProblem() {
+        return securityProblem;
     }
 
     public ConnectionState state() {
@@ -459,6 +498,9 @@ public final class NaoLink implements AutoCloseable {
         dealer.setReconnectIVLMax(1000);
         dealer.setSndHWM(10_000);
         dealer.setRcvHWM(10_000);
+        if (keys != null) {
+            keys.applyTo(dealer);
+        }
         String monitorAddress = "inproc://nao-link-monitor-" + MONITOR_IDS.incrementAndGet();
         dealer.monitor(monitorAddress, ZMQ.EVENT_ALL);
         monitor = zmq.createSocket(SocketType.PAIR);
@@ -506,6 +548,10 @@ public final class NaoLink implements AutoCloseable {
         }
         if (state == ConnectionState.LOST || state == ConnectionState.CLOSED) {
             lose(s, "robot not connected");
+            return;
+        }
+        if (state == ConnectionState.REFUSED) {
+            lose(s, securityProblem);
             return;
         }
         long interval = config.minIntervalMillis(s.call);
@@ -592,6 +638,8 @@ public final class NaoLink implements AutoCloseable {
             return;
         }
         replies.incrementAndGet();
+        repliedSinceHandshake = true;
+        disconnectsBeforeHandshake = 0;
         p.submission.future.complete(outcomeOf(response));
     }
 
@@ -621,22 +669,75 @@ public final class NaoLink implements AutoCloseable {
         while (monitor != null && (event = ZMQ.Event.recv(monitor, ZMQ.DONTWAIT)) != null) {
             int e = event.getEvent();
             LOG.trace("monitor event {} {} {}", e, event.getAddress(), event.getValue());
-            if (e == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
-                if (state != ConnectionState.ONLINE) {
-                    setState(ConnectionState.ONLINE, "handshake with " + host + ":" + port);
-                    List<Submission> waiting = new ArrayList<>(awaitingOnline);
-                    awaitingOnline.clear();
-                    for (Submission s : waiting) {
-                        send(s, 1);
-                    }
+            if (e == ZMQ.HANDSHAKE_FAILED_AUTH) {
+                refused("the NAO refused our key: give it console.public — see docs/security.md");
+            } else if (e == ZMQ.HANDSHAKE_FAILED_PROTOCOL || e == ZMQ.HANDSHAKE_FAILED_NO_DETAIL) {
+                refused(keys != null ? NO_CURVE_HANDSHAKE
+                        : "no handshake with the NAO: it runs with CURVE keys; give this console its keys (--keys)"
+                          + " — see docs/security.md");
+            } else if (e == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
+                // JeroMQ reports the ZMTP greeting, not the end of the CURVE handshake after it.
+                handshakeAtNanos = System.nanoTime();
+                if (state == ConnectionState.REFUSED) {
+                    probationUntilNanos = handshakeAtNanos + TimeUnit.MILLISECONDS.toNanos(CURVE_PROBATION_MS);
+                } else if (state != ConnectionState.ONLINE) {
+                    goOnline();
                 }
             } else if (e == ZMQ.EVENT_DISCONNECTED) {
+                probationUntilNanos = 0;
                 if (state == ConnectionState.ONLINE) {
+                    // With CURVE, a connection dropped right after the greeting without any reply is a
+                    // failed CURVE handshake (a wrong server key: the robot side just closes).
+                    boolean curveFailed = keys != null && !repliedSinceHandshake
+                            && System.nanoTime() - handshakeAtNanos < TimeUnit.MILLISECONDS.toNanos(CURVE_PROBATION_MS)
+                            && ++disconnectsBeforeHandshake >= 2;
                     goLost("disconnected (peer closed or heartbeat timed out)");
+                    if (curveFailed) {
+                        refused(NO_CURVE_HANDSHAKE);
+                    }
                     return; // the monitor socket was replaced
                 }
             }
         }
+    }
+
+    private void goOnline() {
+        repliedSinceHandshake = false;
+        setState(ConnectionState.ONLINE, "handshake with " + host + ":" + port);
+        List<Submission> waiting = new ArrayList<>(awaitingOnline);
+        awaitingOnline.clear();
+        for (Submission s : waiting) {
+            send(s, 1);
+        }
+    }
+
+    /** A refused link whose new connection stayed up through its probation is online again. Link thread. */
+    private void endProbation(long now) {
+        if (state == ConnectionState.REFUSED && probationUntilNanos != 0 && now - probationUntilNanos >= 0) {
+            probationUntilNanos = 0;
+            disconnectsBeforeHandshake = 0;
+            securityProblem = "";
+            goOnline();
+        }
+    }
+
+    /**
+     * How long a CURVE connection must stay up after the greeting before a refused link counts
+     * as online again: a failed CURVE handshake ends within a round trip, well under this.
+     */
+    static final long CURVE_PROBATION_MS = 1000;
+    private static final String NO_CURVE_HANDSHAKE = "no CURVE handshake with the NAO: it has another key pair than "
+            + "our nao-server.public, or runs without keys (then connect with --insecure) — see docs/security.md";
+
+    /** The CURVE handshake failed: calls fail at once with the reason until a handshake succeeds. Link thread. */
+    private void refused(String why) {
+        securityProblem = why;
+        if (state == ConnectionState.REFUSED) {
+            return;
+        }
+        setState(ConnectionState.REFUSED, why);
+        probationUntilNanos = 0;
+        failAll(new CallOutcome.Lost(why));
     }
 
     private void goLost(String why) {
@@ -675,6 +776,7 @@ public final class NaoLink implements AutoCloseable {
     }
 
     private void runTimers(long now) {
+        endProbation(now);
         for (Iterator<Map.Entry<Long, Pending>> it = pending.entrySet().iterator(); it.hasNext(); ) {
             Pending p = it.next().getValue();
             if (now - p.attemptDeadlineNanos >= 0) {

@@ -58,6 +58,8 @@ public final class NaoView implements View {
     private final TextField camPort = new TextField("5556");
     private final ToggleButton connect = new ToggleButton("Connect");
     private final Label state = new Label("not connected");
+    private final TextField keyDir = new TextField(touchline.transport.nao.KeyDirectory.resolve(null).toString());
+    private final javafx.scene.control.CheckBox insecure = new javafx.scene.control.CheckBox("insecure (old robot)");
     private final ComboBox<String> module = new ComboBox<>();
     private final ListView<String> methods = new ListView<>();
     private final TextField params = new TextField();
@@ -101,6 +103,11 @@ public final class NaoView implements View {
         cameraOn.setId("nao-camera");
         image.setId("nao-image");
         state.setId("nao-state");
+        keyDir.setId("nao-keys");
+        keyDir.setPrefColumnCount(14);
+        keyDir.setTooltip(new javafx.scene.control.Tooltip("key directory: console.secret and nao-server.public "
+                + "(docs/security.md)"));
+        insecure.setId("nao-insecure");
         connect.setOnAction(e -> {
             if (connect.isSelected()) {
                 open();
@@ -109,7 +116,7 @@ public final class NaoView implements View {
             }
         });
         HBox top = new HBox(6, new Label("NAO"), host, new Label("RPC"), rpcPort, new Label("camera"), camPort,
-                connect, state);
+                new Label("keys"), keyDir, insecure, connect, state);
         top.setPadding(new Insets(4));
 
         module.getItems().setAll(MODULES);
@@ -167,14 +174,25 @@ public final class NaoView implements View {
     private void open() {
         try {
             String h = host.getText().strip();
+            int rpc = Integer.parseInt(rpcPort.getText().strip());
+            int cam = Integer.parseInt(camPort.getText().strip());
+            touchline.transport.nao.NaoClientKeys keys;
+            try {
+                keys = insecure.isSelected() ? null
+                        : touchline.transport.nao.NaoClientKeys.load(java.nio.file.Path.of(keyDir.getText().strip()));
+            } catch (touchline.transport.nao.KeyFileException e) {
+                lastResult = e.getMessage() + ". For an old robot side without keys: tick 'insecure'";
+                connect.setSelected(false);
+                return;
+            }
             channel = new NaoEnvelopeChannel(sink);
-            link = new NaoLink(h, Integer.parseInt(rpcPort.getText().strip()), NaoLinkConfig.defaults(), channel);
+            link = new NaoLink(h, rpc, NaoLinkConfig.defaults(), channel, keys);
             if (matchMode != null) {
                 touchline.game.MatchMode mm = matchMode;
                 link.setSendGate(() -> !mm.hold("NAO command"), mm::notice); // no commands to a robot during play
             }
             moves = new NaoMoves(link);
-            camera = new NaoCameraStream(h, Integer.parseInt(camPort.getText().strip()), channel);
+            camera = new NaoCameraStream(h, cam, channel, keys);
             configureCamera();
             toggleCamera();
         } catch (NumberFormatException e) {
@@ -293,8 +311,9 @@ public final class NaoView implements View {
     @Override
     public void refresh(FrameContext frame) {
         NaoLink l = link;
-        state.setText(l == null ? "not connected" : l.state().name().toLowerCase() + "  " + l.stats().sent() + " sent, "
-                + l.stats().replies() + " replies, " + l.stats().timeouts() + " timeouts");
+        state.setText(l == null ? "not connected" : l.state().name().toLowerCase() + (l.secure() ? " (encrypted)"
+                : " (INSECURE)") + "  " + l.stats().sent() + " sent, " + l.stats().replies() + " replies, "
+                + l.stats().timeouts() + " timeouts" + (l.securityProblem().isEmpty() ? "" : " — " + l.securityProblem()));
         if (!lastResult.equals(result.getText())) {
             result.setText(lastResult);
         }

@@ -25,6 +25,8 @@ final class RobotSideProcess implements AutoCloseable {
     private static final Pattern CAM = Pattern.compile("camera listening on port (\\d+)");
 
     private final Process process;
+    /** Every line the process printed (stdout and stderr), in order. */
+    final List<String> output = new java.util.concurrent.CopyOnWriteArrayList<>();
     final int rpcPort;
     final int camPort;
 
@@ -51,6 +53,7 @@ final class RobotSideProcess implements AutoCloseable {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = r.readLine()) != null) {
+                    output.add(line);
                     Matcher m = RPC.matcher(line);
                     if (m.find()) {
                         rpc = Integer.parseInt(m.group(1));

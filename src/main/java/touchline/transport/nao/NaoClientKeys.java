@@ -1,0 +1,34 @@
+package touchline.transport.nao;
+
+import org.zeromq.ZMQ;
+
+import java.nio.file.Path;
+
+/**
+ * What the console needs to talk CURVE to a NAO: its own client key pair ({@code console.secret})
+ * and the NAO's server public key ({@code nao-server.public}), from one key directory.
+ *
+ * @param serverPublic the NAO robot side's public key
+ * @param clientPublic this console's public key (the NAO lets it in when it holds console.public)
+ * @param clientSecret this console's secret key
+ */
+public record NaoClientKeys(CurveKey serverPublic, CurveKey clientPublic, CurveKey clientSecret) {
+
+    public static final String CONSOLE_SECRET = "console.secret";
+    public static final String SERVER_PUBLIC = "nao-server.public";
+
+    /** Reads and checks the two files in {@code dir}; the error names the file and the way out. */
+    public static NaoClientKeys load(Path dir) throws KeyFileException {
+        KeyFileText console = KeyFileText.read(dir.resolve(CONSOLE_SECRET));
+        KeyFileText server = KeyFileText.read(dir.resolve(SERVER_PUBLIC));
+        return new NaoClientKeys(server.curveKey("public-key"), console.curveKey("public-key"),
+                console.curveKey("secret-key"));
+    }
+
+    /** Makes {@code socket} a CURVE client with these keys (before it connects). */
+    public void applyTo(ZMQ.Socket socket) {
+        socket.setCurveServerKey(serverPublic.bytes());
+        socket.setCurvePublicKey(clientPublic.bytes());
+        socket.setCurveSecretKey(clientSecret.bytes());
+    }
+}
