@@ -77,7 +77,8 @@ public final class ConsoleWindow {
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
         places.keep(stage, "main", 1400, 900);
-        stage.setTitle("Touchline — UDP port " + console.udp().localPort());
+        stage.setTitle(console.remote().map(r -> "Touchline — " + r.status().describe().replaceFirst(" \\(.*", ""))
+                .orElse("Touchline — UDP port " + console.udp().localPort()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         shell.restore(last.orElseGet(DemoLayout::standard));
         stage.setOnHiding(e -> {
