@@ -16,14 +16,8 @@ import touchline.serve.ViewerInfo;
 import touchline.transport.UdpConfig;
 
 import java.io.PrintWriter;
-import java.net.Inet4Address;
-import java.net.InetAddress;
-import java.net.NetworkInterface;
-import java.net.SocketException;
 import java.nio.file.Path;
 import java.security.SecureRandom;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -148,8 +142,8 @@ final class ServeCommand implements Callable<Integer> {
                             + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
                 }
                 out.println("serving Foxglove WebSocket (Foxglove/Lichtblick: Open connection → Foxglove WebSocket):");
-                for (String host : hosts(config)) {
-                    out.println("  " + server.url(host));
+                for (String url : server.urls()) {
+                    out.println("  " + url);
                 }
                 out.flush();
                 watch(server, stop, out);
@@ -184,28 +178,5 @@ final class ServeCommand implements Callable<Integer> {
                 return;
             }
         }
-    }
-
-    /** The addresses viewers reach the server as: the bind address, or each of this machine's for a wildcard. */
-    private static List<String> hosts(ServeConfig config) throws SocketException {
-        List<String> hosts = new ArrayList<>();
-        try {
-            if (!InetAddress.getByName(config.bindAddress()).isAnyLocalAddress()) {
-                return List.of(config.bindAddress());
-            }
-        } catch (java.net.UnknownHostException e) {
-            return List.of(config.bindAddress());
-        }
-        for (NetworkInterface n : java.util.Collections.list(NetworkInterface.getNetworkInterfaces())) {
-            for (InetAddress a : java.util.Collections.list(n.getInetAddresses())) {
-                if (a instanceof Inet4Address && !a.isLoopbackAddress()) {
-                    hosts.add(a.getHostAddress());
-                }
-            }
-        }
-        if (hosts.isEmpty()) {
-            hosts.add("127.0.0.1");
-        }
-        return hosts;
     }
 }

@@ -195,6 +195,30 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         return (tls != null ? "wss://" : "ws://") + host + ":" + port() + "/" + (config.token() == null ? "" : "?token=" + config.token());
     }
 
+    /** The URLs viewers open: the bind address's, or one per address of this machine for a wildcard bind. */
+    public java.util.List<String> urls() {
+        return hosts().stream().map(this::url).toList();
+    }
+
+    private java.util.List<String> hosts() {
+        java.util.List<String> hosts = new java.util.ArrayList<>();
+        try {
+            if (!java.net.InetAddress.getByName(config.bindAddress()).isAnyLocalAddress()) {
+                return java.util.List.of(config.bindAddress());
+            }
+            for (java.net.NetworkInterface n : java.util.Collections.list(java.net.NetworkInterface.getNetworkInterfaces())) {
+                for (java.net.InetAddress a : java.util.Collections.list(n.getInetAddresses())) {
+                    if (a instanceof java.net.Inet4Address && !a.isLoopbackAddress()) {
+                        hosts.add(a.getHostAddress());
+                    }
+                }
+            }
+        } catch (java.io.IOException e) { // an unresolvable bind address, or no interfaces to list
+            return java.util.List.of(config.bindAddress());
+        }
+        return hosts.isEmpty() ? java.util.List.of("127.0.0.1") : hosts;
+    }
+
     public ServeStats stats() {
         return new ServeStats(viewers.size(), viewers.subscriptions(), channels.size(), viewers.sent(),
                 viewers.dropped(), refused.get(), badRequests.get(), channels.refused());
@@ -213,6 +237,13 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         }
         timeTicker.cancel(false);
         server.close().syncUninterruptibly();
+        // say goodbye properly, so a viewer shows "closed by the server" rather than a network error
+        java.util.List<io.netty.channel.ChannelFuture> goodbyes = new java.util.ArrayList<>();
+        for (Viewer v : viewers.all()) {
+            goodbyes.add(v.channel().writeAndFlush(new io.netty.handler.codec.http.websocketx.CloseWebSocketFrame(1001,
+                    "Touchline stopped serving")).addListener(io.netty.channel.ChannelFutureListener.CLOSE));
+        }
+        goodbyes.forEach(f -> f.awaitUninterruptibly(500));
         group.shutdownGracefully(0, 2, TimeUnit.SECONDS).syncUninterruptibly();
     }
 }
