@@ -79,7 +79,7 @@ public final class ConsoleWindow {
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
         places.keep(stage, "main", 1400, 900);
-        stage.setTitle(console.remote().map(r -> "Touchline — " + r.status().describe().replaceFirst(" \\(.*", ""))
+        stage.setTitle(console.remote().map(r -> "Touchline — viewing " + r.status().url())
                 .orElse("Touchline — UDP port " + console.udp().localPort()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         shell.restore(last.orElseGet(DemoLayout::standard));

@@ -117,4 +117,15 @@ class RemoteViewerIntegrationTest {
             assertEquals(RemoteStatus.State.LOST, second.remote().orElseThrow().status().state());
         }
     }
+
+    @Test
+    void whatTheServerSaidBeforeClosingIsShown() throws Exception {
+        try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withMaxViewers(0));
+             Console second = viewer()) {
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("told why", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST
+                    && second.remote().orElseThrow().status().detail().contains("too many viewers"));
+            assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
+        }
+    }
 }

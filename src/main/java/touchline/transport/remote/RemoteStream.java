@@ -139,6 +139,10 @@ public final class RemoteStream implements AutoCloseable {
         session = s;
         state = RemoteStatus.State.CONNECTED;
         detail = "";
+    }
+
+    /** The server advertised its channels: it really serves us (one that only says "too many viewers" does not). */
+    private synchronized void welcomed() {
         backoff = FIRST_BACKOFF;
     }
 
@@ -159,6 +163,7 @@ public final class RemoteStream implements AutoCloseable {
         private final StringBuilder text = new StringBuilder();
         private final ByteArrayOutputStream binary = new ByteArrayOutputStream();
         private final AtomicBoolean ended = new AtomicBoolean();
+        private volatile String lastStatus = "";
         private CompletableFuture<WebSocket> sending = CompletableFuture.completedFuture(null);
         WebSocket socket;
 
@@ -188,6 +193,7 @@ public final class RemoteStream implements AutoCloseable {
         private void op(WebSocket ws, JSONObject o) {
             switch (o.optString("op")) {
                 case "advertise" -> {
+                    welcomed();
                     JSONArray list = o.optJSONArray("channels");
                     JSONArray subscribe = new JSONArray();
                     for (int i = 0; list != null && i < list.length(); i++) {
@@ -214,7 +220,10 @@ public final class RemoteStream implements AutoCloseable {
                         channels.remove(ids.optInt(i, -1));
                     }
                 }
-                case "status" -> detail = o.optString("message", "");
+                case "status" -> {
+                    lastStatus = o.optString("message", "");
+                    detail = lastStatus;
+                }
                 default -> { } // serverInfo and ops of newer servers: nothing to do
             }
         }
@@ -277,7 +286,7 @@ public final class RemoteStream implements AutoCloseable {
                 if (socket != null) {
                     socket.abort();
                 }
-                retryLater(why);
+                retryLater(lastStatus.isEmpty() ? why : why + "; the server said: " + lastStatus);
             }
         }
     }
