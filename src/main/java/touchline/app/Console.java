@@ -84,6 +84,10 @@ public final class Console implements AutoCloseable {
     private DebugRateGuard debugRate;
     private AutoCloseable debugRateSubscription;
     private final touchline.model.store.ViewStores stores;
+    private volatile touchline.transport.remote.RemoteStream remote;
+
+    /** Why a console viewing another Touchline's stream sends nothing: every command path says this. */
+    public static final String COMMANDS_OFF = "viewing a remote Touchline: commands are off";
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -221,7 +225,35 @@ public final class Console implements AutoCloseable {
     }
 
     public SendResult setOption(int robotId, String option, boolean on) {
+        if (remote != null) {
+            return SendResult.failed(COMMANDS_OFF);
+        }
         return options.setWanted(robotId, option, on);
+    }
+
+    /**
+     * Watches another Touchline (its {@code touchline serve}, or its window serving to viewers)
+     * instead of the field: its robots' envelopes enter this console's stream marked
+     * {@link touchline.transport.Origin#REMOTE}, so every view works as on live robots, and from
+     * now on every command is refused with {@link #COMMANDS_OFF} (debug options, the reliable
+     * stream, the GameController) — the remote console is the one talking to the robots. The
+     * connection reconnects by itself; its status is {@link #remote()}'s.
+     *
+     * @param tls trust for a {@code wss://} server, or null
+     */
+    public synchronized touchline.transport.remote.RemoteStream viewRemote(java.net.URI url, javax.net.ssl.SSLContext tls) {
+        if (remote != null) {
+            remote.close();
+        }
+        setGate(() -> Optional.of(COMMANDS_OFF));
+        stopGameController();
+        remote = new touchline.transport.remote.RemoteStream(url, tls, codec, live, java.time.Duration.ofSeconds(5));
+        return remote.start();
+    }
+
+    /** The remote Touchline this console views, if it views one. */
+    public Optional<touchline.transport.remote.RemoteStream> remote() {
+        return Optional.ofNullable(remote);
     }
 
     public EnvelopeBus bus() { return bus; }
@@ -239,6 +271,9 @@ public final class Console implements AutoCloseable {
 
     /** Match mode and the like: what may go to robots right now (GameController packets aside). */
     public void setGate(SendGate gate) {
+        if (remote != null) {
+            return; // viewing a remote Touchline: the gate stays shut
+        }
         udp.setGate(gate);
         reliable.setGate(gate);
     }
@@ -338,6 +373,9 @@ public final class Console implements AutoCloseable {
      */
     public synchronized EmbeddedGameController startGameController(RefereedGame game, GcConfig gcConfig)
             throws IOException {
+        if (remote != null) {
+            throw new IOException(COMMANDS_OFF);
+        }
         stopGameController();
         EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode);
         try {
@@ -438,6 +476,9 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        if (remote != null) {
+            remote.close();
+        }
         stopGuardingTeamMessages();
         stopGameController();
         closeReplay();

@@ -28,6 +28,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     @Mixin
     TeamBudgetOptions budget;
 
+    @Mixin
+    RemoteOptions remote;
+
     @Option(names = "--demo", description = "open the demo layout and switch the demo options on for every robot")
     boolean demo;
 
@@ -39,7 +42,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        try (Console console = udp.startConsole()) {
+        try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
             budget.guard(console, udp.bind);
             String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
                     System.getProperty("os.name", ""));

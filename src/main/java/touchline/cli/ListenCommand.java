@@ -21,6 +21,9 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
     @Mixin
     TeamBudgetOptions budget;
 
+    @Mixin
+    RemoteOptions remote;
+
     @Option(names = "--quiet", description = "print only the robot table, not every message")
     boolean quiet;
 
@@ -38,7 +41,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
         MonitorTable monitorTable = new MonitorTable();
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
-        try (Console console = new Console(udp.config())) {
+        try (Console console = remote.remote() ? remote.startViewing() : new Console(udp.config())) {
             if (!quiet) {
                 console.bus().subscribe((Envelope e) -> {
                     synchronized (out) {
@@ -46,17 +49,24 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                     }
                 });
             }
-            console.start();
+            if (!remote.remote()) {
+                console.start();
+            }
             var guard = budget.guard(console, udp.bind);
-            System.err.println("listening on UDP port " + console.udp().localPort()
-                    + " (transport: " + console.udp().backend().describe() + ")"
+            System.err.println(console.remote().map(r -> r.status().describe()).orElse("listening on UDP port "
+                    + console.udp().localPort() + " (transport: " + console.udp().backend().describe() + ")")
                     + guard.map(g -> ", team " + g.team() + "'s messages under " + g.profile().name()).orElse(""));
+            String[] lastRemote = {""};
             long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
             while (System.nanoTime() < deadline) {
                 if (stop.await(Math.min(TimeUnit.SECONDS.toNanos(tableEvery), Math.max(1, deadline - System.nanoTime())),
                         TimeUnit.NANOSECONDS)) {
                     break;
                 }
+                console.remote().map(r -> r.status().describe()).filter(d -> !d.equals(lastRemote[0])).ifPresent(d -> {
+                    lastRemote[0] = d;
+                    System.err.println(d);
+                });
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
                     monitorTable.print(out, console.gcMonitor(), System.currentTimeMillis());

@@ -11,17 +11,13 @@ import touchline.serve.AccessToken;
 import touchline.serve.FoxgloveServer;
 import touchline.serve.ServeConfig;
 import touchline.serve.ServeStats;
+import touchline.serve.Serving;
+import touchline.serve.ViewerInfo;
 import touchline.transport.UdpConfig;
 
 import java.io.PrintWriter;
-import java.net.Inet4Address;
-import java.net.InetAddress;
-import java.net.NetworkInterface;
-import java.net.SocketException;
 import java.nio.file.Path;
 import java.security.SecureRandom;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -63,6 +59,20 @@ final class ServeCommand implements Callable<Integer> {
     @Option(names = "--seconds", description = "stop after this many seconds (default: until Ctrl+C)")
     long seconds;
 
+    @Option(names = "--tls-cert", paramLabel = "FILE", description = "serve wss:// with this PEM certificate (with --tls-key)")
+    Path tlsCert;
+
+    @Option(names = "--tls-key", paramLabel = "FILE", description = "the certificate's PEM private key (PKCS#8, no password)")
+    Path tlsKey;
+
+    @CommandLine.Parameters(arity = "0..1", paramLabel = "FILE.mcap",
+            description = "serve a recording instead of the field (played through the replay pipeline: "
+                    + "nothing goes to robots, no UDP port is taken)")
+    Path replayFile;
+
+    @Option(names = "--speed", defaultValue = "1", description = "with FILE.mcap: playback speed (default ${DEFAULT-VALUE})")
+    double speed;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -73,6 +83,13 @@ final class ServeCommand implements Callable<Integer> {
         ServeConfig config = ServeConfig.defaults().withBind(bind).withPort(port).withToken(token);
         if (token == null && !config.loopbackOnly()) {
             config = config.withToken(AccessToken.generate(new SecureRandom()));
+        }
+        if ((tlsCert == null) != (tlsKey == null)) {
+            err.println("touchline serve: TLS needs both --tls-cert and --tls-key");
+            return 2;
+        }
+        if (tlsCert != null) {
+            config = config.withTls(tlsCert, tlsKey);
         }
         SchemaSet schemas = new SchemaSet();
         if (proto != null) {
@@ -85,13 +102,16 @@ final class ServeCommand implements Callable<Integer> {
         }
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
-        ConsoleConfig consoleConfig = ConsoleConfig.defaults()
-                .withUdp(UdpConfig.defaults().withListenPort(robotsPort).withBindAddress(robotsBind));
+        ConsoleConfig consoleConfig = replayFile != null
+                // a replay is all that is served: no robot port taken, no GameController heard
+                ? ConsoleConfig.defaults().withGameControllerPort(0)
+                        .withUdp(UdpConfig.defaults().withListenPort(0).withBindAddress("127.0.0.1"))
+                : ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(robotsPort).withBindAddress(robotsBind));
         try (Console console = new Console(consoleConfig)) {
             schemas.teamFiles().forEach(f -> console.kinds().add(f).ifPresent(r -> err.println("touchline serve: " + r)));
-            FoxgloveServer server;
+            Serving serving;
             try {
-                server = new FoxgloveServer(config, console.kinds(), console.clock());
+                serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode());
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;
@@ -99,17 +119,31 @@ final class ServeCommand implements Callable<Integer> {
                 err.println("touchline serve: cannot serve on " + bind + ":" + port + ": " + e.getMessage());
                 return 1;
             }
-            server.serveMatchMode(console.matchMode());
-            try (server; AutoCloseable served = console.bus().subscribe(server)) {
+            FoxgloveServer server = serving.server();
+            try (serving) {
                 console.start();
-                if (record != null) {
-                    console.startRecording(record);
+                if (replayFile != null) {
+                    console.setLiveListening(false);
+                    try {
+                        var replay = console.openReplay(replayFile);
+                        replay.setSpeed(speed);
+                        replay.play();
+                        replay.problems().forEach(p -> err.println("touchline serve: " + replayFile + ": " + p));
+                    } catch (RecordingException e) {
+                        err.println("touchline serve: " + e.getMessage());
+                        return 2;
+                    }
+                    out.println("serving the recording " + replayFile.toAbsolutePath() + " at speed " + speed);
+                } else {
+                    if (record != null) {
+                        console.startRecording(record);
+                    }
+                    out.println("hearing robots on UDP port " + console.udp().localPort()
+                            + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
                 }
-                out.println("hearing robots on UDP port " + console.udp().localPort()
-                        + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
                 out.println("serving Foxglove WebSocket (Foxglove/Lichtblick: Open connection → Foxglove WebSocket):");
-                for (String host : hosts(config)) {
-                    out.println("  " + server.url(host));
+                for (String url : server.urls()) {
+                    out.println("  " + url);
                 }
                 out.flush();
                 watch(server, stop, out);
@@ -133,6 +167,10 @@ final class ServeCommand implements Callable<Integer> {
                     now.sent(), (now.sent() - last.sent()) / secs, now.dropped(), (now.dropped() - last.dropped()) / secs,
                     now.refused(), now.badRequests(),
                     now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused());
+            for (ViewerInfo v : server.viewers()) {
+                out.printf("  viewer %s: %d subscriptions, sent %d, dropped %d%n", v.address(), v.topics().size(),
+                        v.sent(), v.dropped());
+            }
             out.flush();
             last = now;
             lastAt = at;
@@ -140,28 +178,5 @@ final class ServeCommand implements Callable<Integer> {
                 return;
             }
         }
-    }
-
-    /** The addresses viewers reach the server as: the bind address, or each of this machine's for a wildcard. */
-    private static List<String> hosts(ServeConfig config) throws SocketException {
-        List<String> hosts = new ArrayList<>();
-        try {
-            if (!InetAddress.getByName(config.bindAddress()).isAnyLocalAddress()) {
-                return List.of(config.bindAddress());
-            }
-        } catch (java.net.UnknownHostException e) {
-            return List.of(config.bindAddress());
-        }
-        for (NetworkInterface n : java.util.Collections.list(NetworkInterface.getNetworkInterfaces())) {
-            for (InetAddress a : java.util.Collections.list(n.getInetAddresses())) {
-                if (a instanceof Inet4Address && !a.isLoopbackAddress()) {
-                    hosts.add(a.getHostAddress());
-                }
-            }
-        }
-        if (hosts.isEmpty()) {
-            hosts.add("127.0.0.1");
-        }
-        return hosts;
     }
 }

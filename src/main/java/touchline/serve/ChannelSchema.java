@@ -51,6 +51,22 @@ final class ChannelSchema {
         return schemaBase64;
     }
 
+    /**
+     * {@code recorded} (the recording's channel metadata of the first envelope) and what the
+     * payload is: {@value #SERVED_EXTENSION} (the extension's own message, to be put back into a
+     * {@code fumanoid.Message} of the channel's robot) or {@value #SERVED_MESSAGE} (the whole
+     * decoded message). Another Touchline rebuilds the envelopes from this.
+     */
+    java.util.Map<String, String> metadata(java.util.Map<String, String> recorded) {
+        java.util.Map<String, String> m = new java.util.LinkedHashMap<>(recorded);
+        m.put(SERVED_KEY, extension != null ? SERVED_EXTENSION : SERVED_MESSAGE);
+        return m;
+    }
+
+    static final String SERVED_KEY = "touchline.served";
+    static final String SERVED_EXTENSION = "extension";
+    static final String SERVED_MESSAGE = "message";
+
     /** The protobuf bytes a viewer decodes with this schema. */
     byte[] payload(Envelope e) {
         Message m = e.message();

@@ -58,7 +58,7 @@ final class ChannelTable {
         }
         ChannelSchema schema = ChannelSchema.of(e, kinds);
         c = new ServedChannel(nextId++, topics.of(e), "protobuf", schema.schemaName(), schema.schemaBase64(), "protobuf",
-                schema);
+                schema, schema.metadata(topics.metadata(e)));
         byKey.put(key, c);
         publish(c);
         return c;
@@ -70,7 +70,7 @@ final class ChannelTable {
             refused.incrementAndGet();
             return null;
         }
-        ServedChannel c = new ServedChannel(nextId++, topic, "json", schemaName, jsonSchema, "jsonschema", null);
+        ServedChannel c = new ServedChannel(nextId++, topic, "json", schemaName, jsonSchema, "jsonschema", null, null);
         publish(c);
         return c;
     }

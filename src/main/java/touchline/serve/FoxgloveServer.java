@@ -42,6 +42,12 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     public static final String SUBPROTOCOLS = "foxglove.websocket.v1,foxglove.sdk.v1";
     static final int MAX_CHANNELS = 4096;
     static final int UPGRADE_SECONDS = 10;
+    /**
+     * Kinds whose newest message is a robot's state rather than an event: a new subscriber gets
+     * it at once, so a viewer joining late (another Touchline) knows each robot's option tree
+     * without asking the robot, which a read-only viewer may not.
+     */
+    static final java.util.Set<String> LATCHED_KINDS = java.util.Set.of("debugOptionList", "status");
 
     private final ServeConfig config;
     private final MicrosClock clock;
@@ -54,6 +60,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final AtomicLong badRequests = new AtomicLong();
     private final AtomicLong stateFailures = new AtomicLong();
     private final AccessToken token;
+    private final io.netty.handler.ssl.SslContext tls; // null: plain ws://
     private final EventLoopGroup group;
     private final Channel server;
     private final ScheduledFuture<?> timeTicker;
@@ -76,6 +83,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.logs = new DebugTextLog(channels);
         this.gameController = new GameControllerState(channels);
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
+        this.tls = config.tls() ? tlsContext(config) : null;
         this.group = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
         try {
             this.server = new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
@@ -96,9 +104,23 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                 config.timeEveryMillis(), TimeUnit.MILLISECONDS);
     }
 
+    /** The server's TLS context from the PEM files; IllegalArgumentException (for the user) when they do not load. */
+    private static io.netty.handler.ssl.SslContext tlsContext(ServeConfig config) {
+        try {
+            return io.netty.handler.ssl.SslContextBuilder.forServer(config.tlsCert().toFile(), config.tlsKey().toFile())
+                    .build();
+        } catch (javax.net.ssl.SSLException | IllegalArgumentException e) {
+            throw new IllegalArgumentException("cannot use the TLS certificate " + config.tlsCert() + " with the key "
+                    + config.tlsKey() + " (PEM, key in PKCS#8 without a password): " + e.getMessage(), e);
+        }
+    }
+
     private void pipeline(ChannelPipeline p) {
         // a connection that never completes its upgrade is closed (ViewerSession removes this once it has)
         p.addLast(ViewerSession.UPGRADE_TIMEOUT, new io.netty.handler.timeout.ReadTimeoutHandler(UPGRADE_SECONDS));
+        if (tls != null) {
+            p.addLast(tls.newHandler(p.channel().alloc()));
+        }
         p.addLast(new HttpServerCodec());
         p.addLast(new HttpObjectAggregator(8192));
         if (token != null) {
@@ -127,11 +149,15 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
             return;
         }
         Subscription[] subscribers = c.subscribers();
-        if (subscribers.length == 0) {
+        boolean latched = LATCHED_KINDS.contains(e.kind());
+        if (subscribers.length == 0 && !latched) {
             return;
         }
         byte[] payload = c.payloads().payload(e);
         long timeNanos = e.timeMicros() * 1000;
+        if (latched) {
+            c.setLatest(payload, timeNanos);
+        }
         for (Subscription s : subscribers) {
             s.viewer().offer(s, timeNanos, payload);
         }
@@ -166,7 +192,31 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     /** The URL a viewer opens, with the token when there is one; {@code host} is what others reach this machine as. */
     public String url(String host) {
-        return "ws://" + host + ":" + port() + "/" + (config.token() == null ? "" : "?token=" + config.token());
+        return (tls != null ? "wss://" : "ws://") + host + ":" + port() + "/" + (config.token() == null ? "" : "?token=" + config.token());
+    }
+
+    /** The URLs viewers open: the bind address's, or one per address of this machine for a wildcard bind. */
+    public java.util.List<String> urls() {
+        return hosts().stream().map(this::url).toList();
+    }
+
+    private java.util.List<String> hosts() {
+        java.util.List<String> hosts = new java.util.ArrayList<>();
+        try {
+            if (!java.net.InetAddress.getByName(config.bindAddress()).isAnyLocalAddress()) {
+                return java.util.List.of(config.bindAddress());
+            }
+            for (java.net.NetworkInterface n : java.util.Collections.list(java.net.NetworkInterface.getNetworkInterfaces())) {
+                for (java.net.InetAddress a : java.util.Collections.list(n.getInetAddresses())) {
+                    if (a instanceof java.net.Inet4Address && !a.isLoopbackAddress()) {
+                        hosts.add(a.getHostAddress());
+                    }
+                }
+            }
+        } catch (java.io.IOException e) { // an unresolvable bind address, or no interfaces to list
+            return java.util.List.of(config.bindAddress());
+        }
+        return hosts.isEmpty() ? java.util.List.of("127.0.0.1") : hosts;
     }
 
     public ServeStats stats() {
@@ -174,10 +224,26 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                 viewers.dropped(), refused.get(), badRequests.get(), channels.refused());
     }
 
+    /** The viewers connected now, with their subscriptions, sent and dropped counts. */
+    public java.util.List<ViewerInfo> viewers() {
+        return viewers.all().stream().map(Viewer::info)
+                .sorted(java.util.Comparator.comparing(ViewerInfo::address)).toList();
+    }
+
     @Override
     public void close() {
+        if (group.isShuttingDown()) {
+            return;
+        }
         timeTicker.cancel(false);
         server.close().syncUninterruptibly();
+        // say goodbye properly, so a viewer shows "closed by the server" rather than a network error
+        java.util.List<io.netty.channel.ChannelFuture> goodbyes = new java.util.ArrayList<>();
+        for (Viewer v : viewers.all()) {
+            goodbyes.add(v.channel().writeAndFlush(new io.netty.handler.codec.http.websocketx.CloseWebSocketFrame(1001,
+                    "Touchline stopped serving")).addListener(io.netty.channel.ChannelFutureListener.CLOSE));
+        }
+        goodbyes.forEach(f -> f.awaitUninterruptibly(500));
         group.shutdownGracefully(0, 2, TimeUnit.SECONDS).syncUninterruptibly();
     }
 }

@@ -14,34 +14,45 @@ import java.net.UnknownHostException;
  * @param queueLimit       messages pending per viewer before the oldest give way
  * @param timeEveryMillis  how often each viewer is sent the server time
  * @param maxViewers       viewers at once; one more is told so and disconnected
+ * @param tlsCert          PEM certificate (chain) to serve {@code wss://} with, or null for plain {@code ws://}
+ * @param tlsKey           the certificate's PEM private key (PKCS#8), or null
  */
 public record ServeConfig(String bindAddress, int port, String token, int maxFrameBytes, int queueLimit,
-                          long timeEveryMillis, int maxViewers) {
+                          long timeEveryMillis, int maxViewers, java.nio.file.Path tlsCert, java.nio.file.Path tlsKey) {
 
     public static final int DEFAULT_PORT = 8765;
 
     public static ServeConfig defaults() {
-        return new ServeConfig("127.0.0.1", DEFAULT_PORT, null, 64 * 1024, 1024, 100, 64);
+        return new ServeConfig("127.0.0.1", DEFAULT_PORT, null, 64 * 1024, 1024, 100, 64, null, null);
     }
 
     public ServeConfig withBind(String address) {
-        return new ServeConfig(address, port, token, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers);
+        return new ServeConfig(address, port, token, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers, tlsCert, tlsKey);
     }
 
     public ServeConfig withPort(int p) {
-        return new ServeConfig(bindAddress, p, token, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers);
+        return new ServeConfig(bindAddress, p, token, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers, tlsCert, tlsKey);
     }
 
     public ServeConfig withToken(String t) {
-        return new ServeConfig(bindAddress, port, t, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers);
+        return new ServeConfig(bindAddress, port, t, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers, tlsCert, tlsKey);
     }
 
     public ServeConfig withQueueLimit(int limit) {
-        return new ServeConfig(bindAddress, port, token, maxFrameBytes, limit, timeEveryMillis, maxViewers);
+        return new ServeConfig(bindAddress, port, token, maxFrameBytes, limit, timeEveryMillis, maxViewers, tlsCert, tlsKey);
     }
 
     public ServeConfig withMaxViewers(int max) {
-        return new ServeConfig(bindAddress, port, token, maxFrameBytes, queueLimit, timeEveryMillis, max);
+        return new ServeConfig(bindAddress, port, token, maxFrameBytes, queueLimit, timeEveryMillis, max, tlsCert, tlsKey);
+    }
+
+    /** Serves {@code wss://} with this PEM certificate and key. */
+    public ServeConfig withTls(java.nio.file.Path cert, java.nio.file.Path key) {
+        return new ServeConfig(bindAddress, port, token, maxFrameBytes, queueLimit, timeEveryMillis, maxViewers, cert, key);
+    }
+
+    public boolean tls() {
+        return tlsCert != null;
     }
 
     /** True when the bind address is a loopback address (only this machine can connect). */

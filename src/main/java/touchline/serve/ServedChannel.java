@@ -18,11 +18,13 @@ final class ServedChannel {
     private final String schema;
     private final String schemaEncoding;
     private final ChannelSchema payloads; // null for the console's JSON state channels
+    private final java.util.Map<String, String> metadata; // null: none advertised
     private volatile Subscription[] subscribers = new Subscription[0];
     private volatile byte[] latest; // a state channel's current value, sent to each new subscriber
+    private volatile long latestTimeNanos;
 
     ServedChannel(int id, String topic, String encoding, String schemaName, String schema, String schemaEncoding,
-                  ChannelSchema payloads) {
+                  ChannelSchema payloads, java.util.Map<String, String> metadata) {
         this.id = id;
         this.topic = topic;
         this.encoding = encoding;
@@ -30,6 +32,7 @@ final class ServedChannel {
         this.schema = schema;
         this.schemaEncoding = schemaEncoding;
         this.payloads = payloads;
+        this.metadata = metadata;
     }
 
     int id() {
@@ -54,6 +57,17 @@ final class ServedChannel {
         latest = value;
     }
 
+    /** A robot's state-like message (its option list, its status): kept with the time it was heard, for new subscribers. */
+    void setLatest(byte[] value, long timeNanos) {
+        latestTimeNanos = timeNanos;
+        latest = value;
+    }
+
+    /** When the latest value was heard, or 0 for a console state (which holds now). */
+    long latestTimeNanos() {
+        return latestTimeNanos;
+    }
+
     Subscription[] subscribers() {
         return subscribers;
     }
@@ -68,9 +82,17 @@ final class ServedChannel {
         subscribers = Arrays.stream(subscribers).filter(x -> x != s).toArray(Subscription[]::new);
     }
 
-    /** The channel as the Advertise op lists it. */
+    /**
+     * The channel as the Advertise op lists it. A robot's channel also carries {@code metadata}
+     * (string to string, as in the recording's channels): an extra field other clients ignore,
+     * from which another Touchline rebuilds the envelopes.
+     */
     JSONObject advertisement() {
-        return new JSONObject().put("id", id).put("topic", topic).put("encoding", encoding)
+        JSONObject a = new JSONObject().put("id", id).put("topic", topic).put("encoding", encoding)
                 .put("schemaName", schemaName).put("schema", schema).put("schemaEncoding", schemaEncoding);
+        if (metadata != null) {
+            a.put("metadata", new JSONObject(metadata));
+        }
+        return a;
     }
 }

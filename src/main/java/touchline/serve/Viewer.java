@@ -92,7 +92,8 @@ final class Viewer {
         byte[] value = c.latest();
         Subscription s = subscriptions.get(id);
         if (value != null && s != null) {
-            offer(s, timeNanos, value);
+            long heard = c.latestTimeNanos();
+            offer(s, heard > 0 ? heard : timeNanos, value);
         }
     }
 
@@ -139,6 +140,14 @@ final class Viewer {
         if (channel.isActive() && channel.isWritable()) {
             channel.writeAndFlush(frames.time(channel.alloc(), timeNanos), channel.voidPromise());
         }
+    }
+
+    ViewerInfo info() {
+        java.net.SocketAddress a = address();
+        String where = a instanceof java.net.InetSocketAddress i ? i.getAddress().getHostAddress() + ":" + i.getPort()
+                : String.valueOf(a);
+        List<String> topics = subscriptions.values().stream().map(s -> s.channel().topic()).sorted().toList();
+        return new ViewerInfo(where, topics, sent(), dropped());
     }
 
     int subscriptionCount() {

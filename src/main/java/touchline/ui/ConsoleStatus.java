@@ -27,9 +27,11 @@ public final class ConsoleStatus {
     /** Why the console does not send or does not listen, in words; "" when it does both. */
     public String silence() {
         StringBuilder s = new StringBuilder();
+        console.remote().ifPresent(r -> s.append(r.status().describe()).append("; ")
+                .append(touchline.app.Console.COMMANDS_OFF));
         String play = console.matchMode().play();
         if (!play.isEmpty()) {
-            s.append(console.matchMode().isOverridden()
+            append(s, console.matchMode().isOverridden()
                     ? "MATCH MODE OVERRIDDEN: " + play + ", the console sends anyway"
                     : "Silent: match mode, " + play);
         }

@@ -46,6 +46,7 @@ public final class ConsoleWindow {
     private final BorderPane root = new BorderPane();
     private final Set<String> demoSwitched = new HashSet<>();
     private final Menu layoutMenu = new Menu("Layout");
+    private final ServeToggle serving;
     private Stage stage;
     private boolean dark;
 
@@ -56,8 +57,9 @@ public final class ConsoleWindow {
         this.places = settings.windowPlaces();
         this.dark = settings.dark();
         Shell[] holder = new Shell[1];
+        this.serving = new ServeToggle(console);
         this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src),
-                settings.layoutDir());
+                settings.layoutDir(), serving);
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(console);
@@ -77,12 +79,14 @@ public final class ConsoleWindow {
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
         places.keep(stage, "main", 1400, 900);
-        stage.setTitle(console.runtime().version().title() + " — UDP port " + console.udp().localPort());
+        stage.setTitle(console.remote().map(r -> console.runtime().version().title() + " — viewing " + r.status().url())
+                .orElse(console.runtime().version().title() + " — UDP port " + console.udp().localPort()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         shell.restore(last.orElseGet(DemoLayout::standard));
         stage.setOnHiding(e -> {
             saveQuietly("last");
             pulse.stop();
+            serving.close();
         });
         stage.show();
         pulse.start();
@@ -96,6 +100,7 @@ public final class ConsoleWindow {
     public WindowPlaces places() { return places; }
     public ViewRegistry registry() { return registry; }
     public ViewContext context() { return context; }
+    public ServeToggle serving() { return serving; }
     public Scene scene() { return root.getScene(); }
 
     public ConsoleWindow open(String viewId, ViewSource source) {
@@ -196,7 +201,15 @@ public final class ConsoleWindow {
         MenuItem quick = new MenuItem("Quick open…");
         quick.setAccelerator(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN));
         quick.setOnAction(e -> quickOpen());
-        views.getItems().addAll(new SeparatorMenuItem(), quick);
+        javafx.scene.control.CheckMenuItem serve = new javafx.scene.control.CheckMenuItem("Serve to viewers");
+        serve.setId("menu-serve");
+        serve.setAccelerator(new KeyCodeCombination(KeyCode.V, KeyCombination.SHORTCUT_DOWN, KeyCombination.SHIFT_DOWN));
+        serve.setOnAction(e -> {
+            status.say(serving.toggle());
+            serve.setSelected(serving.serving());
+        });
+        views.setOnShowing(e -> serve.setSelected(serving.serving()));
+        views.getItems().addAll(new SeparatorMenuItem(), quick, serve);
 
         Menu theme = new Menu("Theme");
         MenuItem darkItem = new MenuItem("Dark");

@@ -62,6 +62,9 @@ public final class ViewRegistry {
                     + "stand/sit/turn head/say, walk with W A S D Q E, camera.", Set.of(), touchline.ui.nao.NaoView::new),
             new ViewSpec("replay", "Record & replay", "Record the session to MCAP; open a recording, play, seek by "
                     + "timeline or event, loop, speed; live listening; load team schemas.", Set.of(), (c, s) -> new ReplayView(c)),
+            new ViewSpec("viewers", "Viewers", "Serve this console to remote viewers (Foxglove, Lichtblick, another "
+                    + "Touchline: console --connect URL); the URL with its token, each viewer's subscriptions, rate and "
+                    + "drops. Ctrl+Shift+V switches serving on and off.", Set.of(), (c, s) -> new touchline.ui.views.ViewersView(c)),
             new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
                     + "text.", Set.of(), RawDataView::new));
 

@@ -59,4 +59,32 @@ class ServeCommandTest {
         assertTrue(run.err().contains("not a protobuf descriptor set"), run.err());
         assertFalse(run.out().contains("ws://"), run.out());
     }
+
+    @Test
+    void aRecordingIsServedThroughTheReplayWithoutTakingTheRobotsPort() {
+        Run run = serve(samples("demo-team.mcap"), "--port", "0",
+                "--speed", "20", "--seconds", "2", "--stats-every", "1");
+        assertEquals(0, run.exit(), run.err());
+        assertTrue(run.out().contains("serving the recording"), run.out());
+        assertFalse(run.out().contains("hearing robots"), run.out());
+        // the recording's robots become channels beside the two console states
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("channels (\\d+)").matcher(run.out());
+        int most = 0;
+        while (m.find()) {
+            most = Math.max(most, Integer.parseInt(m.group(1)));
+        }
+        assertTrue(most > 2, run.out());
+    }
+
+    @Test
+    void tlsNeedsBothItsCertificateAndItsKey() {
+        Run run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--tls-cert", "cert.pem",
+                "--seconds", "1");
+        assertEquals(2, run.exit());
+        assertTrue(run.err().contains("both --tls-cert and --tls-key"), run.err());
+    }
+
+    private static String samples(String name) {
+        return java.nio.file.Path.of("samples", name).toAbsolutePath().toString();
+    }
 }

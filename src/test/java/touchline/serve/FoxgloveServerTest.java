@@ -42,12 +42,23 @@ class FoxgloveServerTest {
             assertEquals("protobuf", channel.getString("encoding"));
             assertEquals("protobuf", channel.getString("schemaEncoding"));
             assertEquals("fumanoid.Status", channel.getString("schemaName"));
+            // what another Touchline needs to rebuild the envelopes, beside the fields every viewer reads
+            JSONObject meta = channel.getJSONObject("metadata");
+            assertEquals("3", meta.getString("touchline.robot"));
+            assertEquals("status", meta.getString("touchline.kind"));
+            assertEquals("IN", meta.getString("touchline.direction"));
+            assertEquals("FUMANOID", meta.getString("touchline.channel"));
+            assertEquals("LENGTH_PREFIX", meta.getString("touchline.framing"));
+            assertEquals("extension", meta.getString("touchline.served"));
+            assertTrue(meta.getString("touchline.peer").startsWith("127.0.0.1:"));
 
             viewer.subscribe(7, channel.getInt("id"));
-            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            // a status is a robot's state: the newest one comes at once, with the time it was heard
+            Await.until("the status heard before subscribing", 5000, () -> !viewer.dataOf(7).isEmpty());
+            assertEquals("50", field(FoxgloveTestClient.decode(channel, viewer.dataOf(7).get(0).payload()), "batteryPercent"));
             field.send(ServedField.status(3, "ada", 77));
-            Await.until("a status for subscription 7", 5000, () -> !viewer.dataOf(7).isEmpty());
-            FoxgloveTestClient.Data d = viewer.dataOf(7).get(0);
+            Await.until("a status for subscription 7", 5000, () -> viewer.dataOf(7).size() >= 2);
+            FoxgloveTestClient.Data d = viewer.dataOf(7).get(1);
             DynamicMessage status = FoxgloveTestClient.decode(channel, d.payload());
             assertEquals("ada", field(status, "robotName"));
             assertEquals("77", field(status, "batteryPercent"));

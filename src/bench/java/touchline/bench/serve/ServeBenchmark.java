@@ -45,6 +45,11 @@ public final class ServeBenchmark implements Callable<Integer> {
     @CommandLine.Option(names = "--stalled", description = "one of the viewers stops reading")
     boolean stalled;
 
+    @CommandLine.Option(names = "--udp", description = "the whole console instead of a bare bus: the team's datagrams "
+            + "sent over loopback UDP to a started Console (model, stores) with the server subscribed as touchline serve "
+            + "does; latency is from the datagram's receive time stamp to the frame")
+    boolean udp;
+
     private final MicrosClock clock = MicrosClock.system();
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
 
@@ -57,6 +62,9 @@ public final class ServeBenchmark implements Callable<Integer> {
         List<Envelope> team = new ArrayList<>();
         new SyntheticTeam(6, clock.nowMicros(), 5).generate(60, team::add);
         team.removeIf(e -> e.message() == null);
+        if (udp) {
+            return new UdpServeRun(clock, team, rate, seconds, rounds, viewerCount, stalled).call();
+        }
         System.out.printf(Locale.ROOT, "serve benchmark: %d rounds x %d s at %d envelopes/s (%d envelopes of a six-robot "
                 + "team cycled), %d viewers%s%n", rounds, seconds, rate, team.size(), viewerCount, stalled ? " (one stalled)" : "");
         EnvelopeBus bus = new EnvelopeBus();

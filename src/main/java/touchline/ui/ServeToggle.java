@@ -1,0 +1,100 @@
+package touchline.ui;
+
+import touchline.app.Console;
+import touchline.serve.AccessToken;
+import touchline.serve.FoxgloveServer;
+import touchline.serve.ServeConfig;
+import touchline.serve.Serving;
+
+import java.security.SecureRandom;
+import java.util.Optional;
+
+/**
+ * The window's "Serve to viewers": starts and stops serving the console's stream with the same
+ * {@link Serving} as {@code touchline serve}, on this machine only or (with a generated token)
+ * to other machines. One per window; the menu, its shortcut and the Viewers view share it.
+ * Errors (a port in use) are sentences, never exceptions.
+ */
+public final class ServeToggle implements AutoCloseable {
+
+    private final Console console;
+    private Serving serving;
+    private int port = ServeConfig.DEFAULT_PORT;
+    private boolean beyondThisMachine;
+    private String said = "Not serving.";
+
+    public ServeToggle(Console console) {
+        this.console = console;
+    }
+
+    public synchronized void setPort(int port) {
+        this.port = port;
+    }
+
+    public synchronized int port() {
+        return port;
+    }
+
+    /** Other machines may watch (all addresses, with a generated token) or only this one (loopback, no token). */
+    public synchronized void setBeyondThisMachine(boolean beyond) {
+        this.beyondThisMachine = beyond;
+    }
+
+    public synchronized boolean beyondThisMachine() {
+        return beyondThisMachine;
+    }
+
+    public synchronized boolean serving() {
+        return serving != null;
+    }
+
+    /** Starts when stopped, stops when serving; returns the sentence to show. */
+    public synchronized String toggle() {
+        return serving != null ? stop() : start();
+    }
+
+    public synchronized String start() {
+        if (serving != null) {
+            return said;
+        }
+        ServeConfig config = ServeConfig.defaults().withPort(port);
+        if (beyondThisMachine) {
+            config = config.withBind("0.0.0.0").withToken(AccessToken.generate(new SecureRandom()));
+        }
+        try {
+            serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode());
+            said = "Serving to viewers: " + String.join("  ", serving.server().urls());
+        } catch (IllegalArgumentException e) {
+            said = "Cannot serve: " + e.getMessage();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            said = "Cannot serve: interrupted";
+        } catch (Exception e) { // the bind's own exception, e.g. the port in use
+            said = "Cannot serve on port " + port + ": " + e.getMessage();
+        }
+        return said;
+    }
+
+    public synchronized String stop() {
+        if (serving != null) {
+            serving.close();
+            serving = null;
+            said = "Stopped serving; the viewers were disconnected.";
+        }
+        return said;
+    }
+
+    /** What the last start or stop came to. */
+    public synchronized String said() {
+        return said;
+    }
+
+    public synchronized Optional<FoxgloveServer> server() {
+        return Optional.ofNullable(serving).map(Serving::server);
+    }
+
+    @Override
+    public synchronized void close() {
+        stop();
+    }
+}

@@ -1,0 +1,156 @@
+package touchline.ui.views;
+
+import javafx.collections.FXCollections;
+import javafx.scene.Node;
+import javafx.scene.control.Button;
+import javafx.scene.control.CheckBox;
+import javafx.scene.control.Label;
+import javafx.scene.control.TableColumn;
+import javafx.scene.control.TableView;
+import javafx.scene.control.TextField;
+import javafx.scene.control.ToggleButton;
+import javafx.scene.control.Tooltip;
+import javafx.scene.input.ClipboardContent;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.HBox;
+import javafx.scene.layout.Priority;
+import javafx.scene.layout.VBox;
+import javafx.beans.property.ReadOnlyStringWrapper;
+import touchline.serve.FoxgloveServer;
+import touchline.serve.ViewerInfo;
+import touchline.ui.FrameContext;
+import touchline.ui.ServeToggle;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * Serving this console to remote viewers (Foxglove, Lichtblick, another Touchline): the switch
+ * (also View → Serve to viewers, Ctrl+Shift+V), the URL with its token to copy, and every viewer
+ * connected with its subscriptions, its rate and what was dropped for it. Pulls twice a second.
+ */
+public final class ViewersView implements View {
+
+    /** One viewer as the table shows it. */
+    public record Row(String address, int subscriptions, String topics, double perSecond, long dropped) { }
+
+    private final ServeToggle toggle;
+    private final ToggleButton serve = new ToggleButton("Serve to viewers");
+    private final TextField port = new TextField();
+    private final CheckBox beyond = new CheckBox("Other machines may watch (with a token)");
+    private final TextField url = new TextField();
+    private final Button copy = new Button("Copy URL");
+    private final Label status = new Label();
+    private final TableView<Row> table = new TableView<>();
+    private final BorderPane root = new BorderPane();
+    private final Map<String, long[]> lastSent = new HashMap<>(); // address -> {sent, micros}
+
+    public ViewersView(ViewContext context) {
+        this.toggle = context.serving();
+        serve.setId("viewers-toggle");
+        port.setId("viewers-port");
+        port.setPrefColumnCount(6);
+        port.setText(Integer.toString(toggle.port()));
+        port.setTooltip(new Tooltip("WebSocket port (0: any free one)"));
+        beyond.setId("viewers-beyond");
+        beyond.setSelected(toggle.beyondThisMachine());
+        url.setId("viewers-url");
+        url.setEditable(false);
+        url.setPromptText("not serving");
+        HBox.setHgrow(url, Priority.ALWAYS);
+        copy.setId("viewers-copy");
+        copy.setOnAction(e -> {
+            ClipboardContent c = new ClipboardContent();
+            c.putString(url.getText());
+            javafx.scene.input.Clipboard.getSystemClipboard().setContent(c);
+            status.setText("URL copied");
+        });
+        status.setId("viewers-status");
+        serve.setOnAction(e -> flip());
+        beyond.setOnAction(e -> toggle.setBeyondThisMachine(beyond.isSelected()));
+        table.setId("viewers-table");
+        table.setPlaceholder(new Label("No viewer connected"));
+        table.getColumns().add(column("Viewer", Row::address));
+        TableColumn<Row, String> subs = column("Subscriptions", r -> Integer.toString(r.subscriptions()));
+        table.getColumns().add(subs);
+        table.getColumns().add(column("Messages/s", r -> String.format("%.0f", r.perSecond())));
+        table.getColumns().add(column("Dropped", r -> Long.toString(r.dropped())));
+        table.getColumns().add(column("Topics", Row::topics));
+        table.setColumnResizePolicy(TableView.CONSTRAINED_RESIZE_POLICY_FLEX_LAST_COLUMN);
+        HBox controls = new HBox(8, serve, new Label("Port"), port, beyond);
+        controls.setStyle("-fx-alignment: center-left;");
+        HBox link = new HBox(8, url, copy);
+        VBox top = new VBox(6, controls, link, status);
+        top.setStyle("-fx-padding: 6 8 6 8;");
+        root.setTop(top);
+        root.setCenter(table);
+    }
+
+    private static TableColumn<Row, String> column(String title, java.util.function.Function<Row, String> value) {
+        TableColumn<Row, String> c = new TableColumn<>(title);
+        c.setCellValueFactory(d -> new ReadOnlyStringWrapper(value.apply(d.getValue())));
+        return c;
+    }
+
+    /** The switch: takes the port and reach from the fields, then starts or stops. */
+    private void flip() {
+        if (!toggle.serving()) {
+            try {
+                toggle.setPort(Integer.parseInt(port.getText().strip()));
+            } catch (NumberFormatException e) {
+                status.setText("Port: a number, 0 for any free one");
+                serve.setSelected(false);
+                return;
+            }
+            toggle.setBeyondThisMachine(beyond.isSelected());
+        }
+        status.setText(toggle.toggle());
+        show();
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        if (frame.frame() % 30 == 0 || serve.isSelected() != toggle.serving()) {
+            show();
+        }
+    }
+
+    private void show() {
+        boolean on = toggle.serving();
+        serve.setSelected(on);
+        port.setDisable(on);
+        beyond.setDisable(on);
+        Optional<FoxgloveServer> server = toggle.server();
+        String shown = server.map(s -> String.join("  ", s.urls())).orElse("");
+        if (!url.getText().equals(shown)) {
+            url.setText(shown);
+        }
+        if (!on && !status.getText().equals(toggle.said()) && !status.getText().startsWith("Port")) {
+            status.setText(toggle.said());
+        }
+        table.getItems().setAll(rows(server.map(FoxgloveServer::viewers).orElse(List.of()), System.nanoTime() / 1000));
+    }
+
+    private List<Row> rows(List<ViewerInfo> viewers, long nowMicros) {
+        Map<String, long[]> next = new HashMap<>();
+        List<Row> rows = FXCollections.observableArrayList();
+        for (ViewerInfo v : viewers) {
+            long[] before = lastSent.get(v.address());
+            double rate = before == null || nowMicros <= before[1] ? 0 : (v.sent() - before[0]) * 1e6 / (nowMicros - before[1]);
+            rows.add(new Row(v.address(), v.topics().size(), String.join(", ", v.topics()), rate, v.dropped()));
+            next.put(v.address(), new long[]{v.sent(), nowMicros});
+        }
+        lastSent.clear();
+        lastSent.putAll(next);
+        return rows;
+    }
+}

@@ -1,0 +1,131 @@
+package touchline.serve;
+
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.model.OptionState;
+import touchline.model.RobotSnapshot;
+import touchline.model.store.TextLine;
+import touchline.testing.Await;
+import touchline.testing.Requirement;
+import touchline.testing.RobotProcess;
+import touchline.transport.Origin;
+import touchline.transport.SendResult;
+import touchline.transport.UdpConfig;
+import touchline.transport.remote.RemoteStatus;
+
+import java.net.URI;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * Touchline as a viewer, end to end: a simulated robot talks to a first Touchline that serves
+ * its stream; a second Touchline connected to it shows the same robot, the same option tree and
+ * the same debug text, refuses every command with the reason, and when the server goes away
+ * says so and comes back by itself once it is there again.
+ */
+@Tag("integration")
+class RemoteViewerIntegrationTest {
+
+    private static final String TEXT = "demo.text";
+
+    private static Console viewer() throws InterruptedException {
+        return new Console(ConsoleConfig.defaults().withGameControllerPort(0)
+                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+    }
+
+    private static List<String> optionNames(Console c, int robot) {
+        return c.options().options(robot).options().stream().map(OptionState::name).sorted().toList();
+    }
+
+    private static List<String> texts(Console c, int robot) {
+        return c.stores().live().text().since(-1, robot, 10_000).stream().map(e -> e.value().text()).toList();
+    }
+
+    @Test
+    void aSecondTouchlineShowsTheSameRobotOptionsAndTextAndSendsNothing() throws Exception {
+        Requirement.robotSide("touchline-robot");
+        try (ServedField field = new ServedField();
+             RobotProcess robot = RobotProcess.robot(4, field.console().udp().localPort()).start();
+             Console second = viewer()) {
+            Console first = field.console();
+            Await.until("the first console has robot 4's option list", 5000,
+                    () -> first.options().options(4).listReceived());
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("connected", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+            assertTrue(first.setOption(4, TEXT, true).isSent());
+            // the robot sends its list again when an option changes, and its text from now on
+            Await.until("robot 4 in the second console", 5000, () -> second.robots().robot(4).isPresent());
+            Await.until("the same option tree", 5000, () -> !optionNames(second, 4).isEmpty()
+                    && optionNames(second, 4).equals(optionNames(first, 4)));
+            Await.until("debug text in the second console", 5000, () -> !texts(second, 4).isEmpty());
+            List<String> seen = texts(second, 4);
+            assertTrue(texts(first, 4).containsAll(seen), "every line the second shows, the first showed: " + seen);
+
+            RobotSnapshot there = first.robots().robot(4).orElseThrow();
+            RobotSnapshot here = second.robots().robot(4).orElseThrow();
+            assertEquals(there.name(), here.name());
+            assertEquals(there.teamId(), here.teamId());
+            assertEquals(Origin.REMOTE, here.origin());
+            assertTrue(second.options().options(4).option(TEXT).orElseThrow().enabledOnRobot());
+
+            SendResult refused = second.setOption(4, TEXT, false);
+            assertFalse(refused.isSent());
+            assertEquals(Console.COMMANDS_OFF, refused.reason());
+            assertThrows(java.io.IOException.class, () -> second.startGameController(
+                    new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 4, 0, 5, 1,
+                            touchline.game.GameClock.system()),
+                    touchline.transport.gamecontroller.GcConfig.defaults(touchline.transport.gamecontroller.GcProfile.HL12)));
+            assertEquals(0, second.udp().counters().datagramsOut(), "the viewing console sent nothing to any robot");
+            assertTrue(first.options().options(4).option(TEXT).orElseThrow().wanted(), "the first console's wish stands");
+        }
+    }
+
+    @Test
+    void aLostServerIsSaidAndTheViewerReconnectsAndSubscribesAgain() throws Exception {
+        try (ServedField field = new ServedField(); Console second = viewer()) {
+            int port = field.server().port();
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            field.publish(ServedField.text(2, "a", "before"), "debugText");
+            Await.until("first text", 5000, () -> {
+                field.publish(ServedField.text(2, "a", "before"), "debugText");
+                return texts(second, 2).contains("before");
+            });
+            field.server().close();
+            Await.until("lost", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST);
+            assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
+            try (FoxgloveServer again = new FoxgloveServer(ServeConfig.defaults().withPort(port),
+                    field.console().kinds(), field.console().clock());
+                 AutoCloseable sub = field.console().bus().subscribe(again)) {
+                Await.until("reconnected and subscribed", 10_000, () -> {
+                    field.publish(ServedField.text(2, "a", "after"), "debugText");
+                    return texts(second, 2).contains("after");
+                });
+                assertEquals(RemoteStatus.State.CONNECTED, second.remote().orElseThrow().status().state());
+            }
+        }
+    }
+
+    @Test
+    void aWrongTokenIsAStatusNotACrash() throws Exception {
+        try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withToken("right"));
+             Console second = viewer()) {
+            second.viewRemote(new URI("ws://127.0.0.1:" + field.server().port() + "/?token=wrong"), null);
+            Await.until("refused", 5000, () -> second.remote().orElseThrow().status().detail().contains("token"));
+            assertEquals(RemoteStatus.State.LOST, second.remote().orElseThrow().status().state());
+        }
+    }
+
+    @Test
+    void whatTheServerSaidBeforeClosingIsShown() throws Exception {
+        try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withMaxViewers(0));
+             Console second = viewer()) {
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("told why", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST
+                    && second.remote().orElseThrow().status().detail().contains("too many viewers"));
+            assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
+        }
+    }
+}
