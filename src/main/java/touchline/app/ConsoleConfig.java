@@ -1,6 +1,7 @@
 package touchline.app;
 
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
+import touchline.security.LinkSecurity;
 import touchline.transport.UdpConfig;
 
 import java.net.InetSocketAddress;
@@ -14,12 +15,23 @@ import java.net.InetSocketAddress;
  * @param gcMonitor           the field's HSL GameController to register with as a monitor
  *                            ({@code --gc-monitor HOST}, its port 3636), or null
  * @param gcForwardPort       where that GameController forwards the robots' return packets (3940)
+ * @param security            the team key for the small robots' link, or off (lab mode)
  */
 public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
-                            int gcForwardPort) {
+                            int gcForwardPort, LinkSecurity security) {
 
     public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort) {
         this(udp, tickMillis, gameControllerPort, null, ForwardedReturnPacket.PORT);
+    }
+
+    public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
+                         int gcForwardPort) {
+        this(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, LinkSecurity.off());
+    }
+
+    /** Tags what goes to the small robots and checks what they send with this team key (or not: off). */
+    public ConsoleConfig withSecurity(LinkSecurity security) {
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, security);
     }
 
     public static ConsoleConfig defaults() {
@@ -29,15 +41,15 @@ public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPo
     /** Also stops listening for GameControllers unless the port is set again: tests must not bind fixed ports. */
     public ConsoleConfig withUdp(UdpConfig udp) {
         return new ConsoleConfig(udp, tickMillis, udp.listenPort() == 0 ? 0 : gameControllerPort, gcMonitor,
-                gcForwardPort);
+                gcForwardPort, security);
     }
 
     public ConsoleConfig withGameControllerPort(int port) {
-        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort);
+        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort, security);
     }
 
     /** Registers with this GameController (monitor requests to {@code gameController}, forwards on {@code forwardPort}). */
     public ConsoleConfig withGcMonitor(InetSocketAddress gameController, int forwardPort) {
-        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort);
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort, security);
     }
 }

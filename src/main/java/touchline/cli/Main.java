@@ -22,6 +22,7 @@ import picocli.CommandLine.Command;
                 GcCommand.class,
                 NaoCommand.class,
                 ServeCommand.class,
+                KeysCommand.class,
         })
 public final class Main implements Runnable {
 
