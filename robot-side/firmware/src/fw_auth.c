@@ -31,22 +31,38 @@ static uint64_t get_u64(const uint8_t *p)
     return v;
 }
 
-void fw_auth_tag(const fw_team_key *k, uint8_t dir, uint8_t robot, uint64_t counter, const uint8_t *payload,
-                 uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
+/* The tag over dir ‖ robot ‖ id_counter (key-id and big-endian counter, 12 bytes, as in the
+ * trailer) ‖ payload: the trailer's own bytes are hashed, nothing is rebuilt. */
+static void mac(const fw_team_key *k, uint8_t dir, uint8_t robot, const uint8_t *id_counter, const uint8_t *payload,
+                uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
 {
-    uint8_t head[2 + FW_AUTH_KEY_ID_SIZE + 8];
+    uint8_t head[2];
     uint8_t full[64];
     uint8_t i;
     head[0] = dir;
     head[1] = robot;
-    for (i = 0; i < FW_AUTH_KEY_ID_SIZE; i++) head[2 + i] = k->key_id[i];
-    put_u64(head + 2 + FW_AUTH_KEY_ID_SIZE, counter);
     crypto_hmac_sha512_init(&g_hmac, k->key, FW_AUTH_KEY_SIZE);
     crypto_hmac_sha512_update(&g_hmac, head, sizeof head);
+    crypto_hmac_sha512_update(&g_hmac, id_counter, FW_AUTH_KEY_ID_SIZE + 8u);
     crypto_hmac_sha512_update(&g_hmac, payload, n);
     crypto_hmac_sha512_final(&g_hmac, full);
     for (i = 0; i < FW_AUTH_TAG_SIZE; i++) tag[i] = full[i];
     crypto_wipe(full, sizeof full);
+}
+
+static void put_id_counter(const fw_team_key *k, uint64_t counter, uint8_t *p)
+{
+    uint8_t i;
+    for (i = 0; i < FW_AUTH_KEY_ID_SIZE; i++) p[i] = k->key_id[i];
+    put_u64(p + FW_AUTH_KEY_ID_SIZE, counter);
+}
+
+void fw_auth_tag(const fw_team_key *k, uint8_t dir, uint8_t robot, uint64_t counter, const uint8_t *payload,
+                 uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
+{
+    uint8_t id_counter[FW_AUTH_KEY_ID_SIZE + 8];
+    put_id_counter(k, counter, id_counter);
+    mac(k, dir, robot, id_counter, payload, n, tag);
 }
 
 uint16_t fw_auth_append(const fw_team_key *k, uint8_t dir, uint8_t robot, uint64_t counter, uint8_t *d, uint16_t n,
@@ -55,9 +71,8 @@ uint16_t fw_auth_append(const fw_team_key *k, uint8_t dir, uint8_t robot, uint64
     uint8_t i;
     if ((uint32_t)n + FW_AUTH_TRAILER > cap) return 0;
     for (i = 0; i < 4; i++) d[n + i] = k_magic[i];
-    for (i = 0; i < FW_AUTH_KEY_ID_SIZE; i++) d[n + 4 + i] = k->key_id[i];
-    put_u64(d + n + 8, counter);
-    fw_auth_tag(k, dir, robot, counter, d, n, d + n + 16);
+    put_id_counter(k, counter, d + n + 4);
+    mac(k, dir, robot, d + n + 4, d, n, d + n + 16);
     return (uint16_t)(n + FW_AUTH_TRAILER);
 }
 
@@ -112,7 +127,7 @@ fw_auth_result fw_auth_check(fw_auth_state *s, uint8_t dir, uint8_t robot, const
         }
     }
     counter = get_u64(t + 8);
-    fw_auth_tag(s->key, dir, robot, counter, d, n, tag);
+    mac(s->key, dir, robot, t + 4, d, n, tag);
     if (crypto_verify16(tag, t + 16) != 0) {
         s->count.bad_tag++;
         return FW_AUTH_BAD_TAG;
@@ -130,16 +145,9 @@ fw_auth_result fw_auth_check(fw_auth_state *s, uint8_t dir, uint8_t robot, const
 
 const char *fw_auth_result_name(fw_auth_result r)
 {
-    switch (r) {
-    case FW_AUTH_OK: return "authenticated";
-    case FW_AUTH_LAB: return "lab mode (no key)";
-    case FW_AUTH_MISSING: return "rejected: no tag";
-    case FW_AUTH_TRUNCATED: return "rejected: truncated tag";
-    case FW_AUTH_WRONG_KEY: return "rejected: another team key";
-    case FW_AUTH_BAD_TAG: return "rejected: bad tag";
-    case FW_AUTH_REPLAYED: return "rejected: replayed or old counter";
-    }
-    return "?";
+    /* short: on the board they are flash, though fw_log prints nothing there */
+    static const char *const names[] = {"ok", "lab", "no tag", "truncated tag", "other key", "bad tag", "replayed"};
+    return (unsigned)r < sizeof names / sizeof names[0] ? names[r] : "?";
 }
 
 static int hex_nibble(char c)

@@ -137,16 +137,10 @@ static void send_status(uint32_t now)
     st->batteryPercent = 100u - (drained % 90u);
     copy_str(st->gameState, sizeof st->gameState, fw_gc_state_name(g_game_state));
     if (g_cfg->team_key != 0) {
+        const fw_auth_counters *c = &g_auth.count;
         st->has_auth = true;
-        st->auth.has_accepted = st->auth.has_noTag = st->auth.has_truncated = true;
-        st->auth.has_wrongKey = st->auth.has_badTag = st->auth.has_replayed = st->auth.has_bootId = true;
-        st->auth.accepted = g_auth.count.accepted;
-        st->auth.noTag = g_auth.count.missing;
-        st->auth.truncated = g_auth.count.truncated;
-        st->auth.wrongKey = g_auth.count.wrong_key;
-        st->auth.badTag = g_auth.count.bad_tag;
-        st->auth.replayed = g_auth.count.replayed;
-        st->auth.bootId = g_cfg->boot_id;
+        st->auth = (fumanoid_AuthCounters){true, c->accepted, true, c->missing, true, c->truncated, true, c->wrong_key,
+                                           true, c->bad_tag, true, c->replayed, true, g_cfg->boot_id};
     }
     send_outgoing();
 }
@@ -205,8 +199,7 @@ static int stream_output(void *ctx, const uint8_t hdr[2], const uint8_t *payload
 {
     uint16_t i;
     uint16_t len;
-    (void)ctx;
-    if ((uint32_t)n + 2u > FW_MAX_DATAGRAM) return 0;
+    (void)ctx; /* n <= RS_MAX_PAYLOAD: header and payload fit into g_tx */
     g_tx[0] = hdr[0];
     g_tx[1] = hdr[1];
     for (i = 0; i < n; i++) g_tx[2 + i] = payload[i];
@@ -293,9 +286,9 @@ static void on_gamecontroller(const uint8_t *d, uint16_t len, const wlan_peer *f
 /* One log line for the 1st, 2nd, 4th, 8th... rejection: a flood of forgeries cannot flood the log. */
 static void log_rejected(fw_auth_result r, uint16_t len)
 {
-    uint32_t n = g_auth.count.missing + g_auth.count.truncated + g_auth.count.wrong_key + g_auth.count.bad_tag +
-                 g_auth.count.replayed;
-    if ((n & (n - 1u)) == 0u) fw_log(fw_auth_result_name(r), "datagram dropped", len);
+    static uint32_t n;
+    n++;
+    if ((n & (n - 1u)) == 0u) fw_log("rejected", fw_auth_result_name(r), len);
 }
 
 void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint32_t now)
