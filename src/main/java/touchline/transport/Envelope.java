@@ -94,11 +94,11 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         return raw.length;
     }
 
+    /** The same datagram at the same moment; the authenticity mark is the console's verdict, not recorded, so not compared. */
     @Override
     public boolean equals(Object o) {
         return o instanceof Envelope e && timeMicros == e.timeMicros && robotId == e.robotId
-                && direction == e.direction && channel == e.channel && origin == e.origin && authenticity == e.authenticity
-                && Objects.equals(peer, e.peer)
+                && direction == e.direction && channel == e.channel && origin == e.origin && Objects.equals(peer, e.peer)
                 && kind.equals(e.kind) && Objects.equals(error, e.error) && Arrays.equals(raw, e.raw);
     }
 
