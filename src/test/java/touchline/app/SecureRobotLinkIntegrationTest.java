@@ -163,4 +163,58 @@ class SecureRobotLinkIntegrationTest {
             assertTrue(lab.isAlive());
         }
     }
+
+    /** The reliable stream under the key, both ways: segments are tagged and checked like every datagram. */
+    @Test
+    void theReliableStreamRunsTaggedBothWays() throws Exception {
+        KeyDir team = keys("team");
+        String line = "a line over the authenticated stream\n".repeat(20);
+        Path file = java.nio.file.Files.writeString(tmp.resolve("stream.txt"), line);
+        String key = team.file(KeyDir.TEAM_KEY).toString();
+        try (Console console = console(team.teamKey());
+             RobotProcess printer = RobotProcess.robot(6, console.udp().localPort(), "--team-key", key,
+                     "--reliable-print").start();
+             RobotProcess sender = RobotProcess.robot(7, console.udp().localPort(), "--team-key", key).start()) {
+            Await.until("robots 6 and 7 verified", 5000, () -> console.robots().robots().stream()
+                    .filter(r -> r.auth().state() == Authenticity.VERIFIED).count() == 2);
+            touchline.transport.ReliableSession toPrinter = console.reliable()
+                    .open(new InetSocketAddress("127.0.0.1", printer.port()));
+            byte[] bytes = line.getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+            for (int off = 0; off < bytes.length; off += 300) {
+                toPrinter.offer(java.util.Arrays.copyOfRange(bytes, off, Math.min(bytes.length, off + 300)));
+            }
+            Await.until("robot 6 printed the whole text", 20_000, () -> printer.stdout().contains(line));
+            // the robot's Status (every 200 ms) reports the segments its verifier accepted
+            Await.until("robot 6 reports the segments as authenticated", 5000,
+                    () -> atRobot(console, 6).getAccepted() > bytes.length / 300);
+            assertEquals(0, atRobot(console, 6).getBadTag() + atRobot(console, 6).getNoTag());
+        }
+        // robot to console: a robot with the key sends a file; the console takes its tagged segments
+        try (Console console = console(team.teamKey())) {
+            java.io.ByteArrayOutputStream got = new java.io.ByteArrayOutputStream();
+            try (RobotProcess sender = RobotProcess.robot(8, console.udp().localPort(), "--team-key", key,
+                    "--reliable-send", file.toString()).start()) {
+                touchline.transport.ReliableSession fromSender = console.reliable()
+                        .open(new InetSocketAddress("127.0.0.1", sender.port()));
+                fromSender.onReceive(p -> {
+                    synchronized (got) {
+                        got.writeBytes(p);
+                    }
+                });
+                Await.until("the console received the whole file", 20_000, () -> {
+                    synchronized (got) {
+                        return got.size() >= bytes(line).length;
+                    }
+                });
+                synchronized (got) {
+                    assertEquals(line, got.toString(java.nio.charset.StandardCharsets.US_ASCII));
+                }
+                assertEquals(0, console.udp().counters().forgedIn(), "no segment was taken for a forgery");
+            }
+        }
+    }
+
+    private static byte[] bytes(String s) {
+        return s.getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+    }
 }
