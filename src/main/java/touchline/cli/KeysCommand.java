@@ -43,9 +43,8 @@ public final class KeysCommand {
         return KeyDir.locate(Optional.ofNullable(option), env);
     }
 
-    @Command(name = "new", mixinStandardHelpOptions = true,
-            description = "Make a new team key and CURVE key pairs (refuses to overwrite without --force).")
-    static final class New implements java.util.concurrent.Callable<Integer> {
+    /** What both subcommands share: the parent (environment), {@code --keys DIR}, the output. */
+    abstract static class Sub implements java.util.concurrent.Callable<Integer> {
         @CommandLine.ParentCommand
         KeysCommand parent;
 
@@ -53,16 +52,24 @@ public final class KeysCommand {
                 + " else ~/.config/touchline/keys)")
         Path keys;
 
-        @Option(names = "--force", description = "overwrite existing keys (every robot then needs the new key)")
-        boolean force;
-
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
+
+        KeyDir dir() {
+            return parent.dir(keys);
+        }
+    }
+
+    @Command(name = "new", mixinStandardHelpOptions = true,
+            description = "Make a new team key and CURVE key pairs (refuses to overwrite without --force).")
+    static final class New extends Sub {
+        @Option(names = "--force", description = "overwrite existing keys (every robot then needs the new key)")
+        boolean force;
 
         @Override
         public Integer call() {
             PrintWriter out = spec.commandLine().getOut();
-            KeyDir dir = parent.dir(keys);
+            KeyDir dir = dir();
             try {
                 TeamKey key = dir.create(force, new SecureRandom(), Instant.now());
                 out.printf("made team key %s and the NAO link's CURVE key pairs in %s (owner-only)%n", key.idHex(),
@@ -79,14 +86,7 @@ public final class KeysCommand {
 
     @Command(name = "show", mixinStandardHelpOptions = true,
             description = "Print the key-id and what each robot needs; or write the firmware's C header or blob.")
-    static final class Show implements java.util.concurrent.Callable<Integer> {
-        @CommandLine.ParentCommand
-        KeysCommand parent;
-
-        @Option(names = "--keys", paramLabel = "DIR", description = "key directory (default: $TOUCHLINE_KEYS,"
-                + " else ~/.config/touchline/keys)")
-        Path keys;
-
+    static final class Show extends Sub {
         @CommandLine.ArgGroup(exclusive = true)
         Export export;
 
@@ -98,14 +98,11 @@ public final class KeysCommand {
             Path blob;
         }
 
-        @CommandLine.Spec
-        CommandLine.Model.CommandSpec spec;
-
         @Override
         public Integer call() {
             PrintWriter out = spec.commandLine().getOut();
             PrintWriter err = spec.commandLine().getErr();
-            KeyDir dir = parent.dir(keys);
+            KeyDir dir = dir();
             try {
                 TeamKey key = dir.teamKey();
                 if (export != null && export.cHeader != null) {
