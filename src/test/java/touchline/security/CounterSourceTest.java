@@ -41,17 +41,16 @@ class CounterSourceTest {
     void theStoreIsWrittenOncePerReservationNotPerCounter() {
         AtomicLong clock = new AtomicLong(1_000_000L);
         int[] saves = {0};
+        CounterSource.Store memory = CounterSource.inMemory();
         CounterSource.Store counting = new CounterSource.Store() {
-            long v;
-
             @Override
             public long load() {
-                return v;
+                return memory.load();
             }
 
             @Override
             public void save(long reservedUpTo) {
-                v = reservedUpTo;
+                memory.save(reservedUpTo);
                 saves[0]++;
             }
         };
