@@ -11,8 +11,8 @@
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
-OUT="$ROOT/robot-side/build/footprint"
-HOSTBUILD="$ROOT/robot-side/build"
+OUT="${FOOTPRINT_OUT:-$ROOT/robot-side/build/footprint}"
+HOSTBUILD="${FOOTPRINT_HOSTBUILD:-$ROOT/robot-side/build}"
 RUN_CALLGRIND=1
 RUN_RELIABLE=1
 for a in "$@"; do
@@ -30,13 +30,28 @@ need python3 python3
 rm -rf "$OUT" && mkdir -p "$OUT/gen" "$OUT/obj"
 nanopb_generator.py -q -I "$ROOT/proto" -f "$HERE/fumanoid.options" -D "$OUT/gen" "$ROOT/proto/fumanoid.proto"
 
+# The board is built with a team key (a fixed, public test key: only its size matters here),
+# so the verifier (fw_auth + Monocypher's HMAC-SHA-512) is in the image and on the receive path.
+python3 - "$OUT/gen/team_key.h" <<'PY'
+import sys
+key = ", ".join(f"0x{(i * 37 + 11) & 0xff:02x}" for i in range(32))
+open(sys.argv[1], "w").write('#include "fw_auth.h"\nstatic const fw_team_key touchline_team_key = {{'
+                             + key + '}, {0x01, 0x02, 0x03, 0x04}};\n')
+PY
 CFLAGS=(-std=c99 -Os -mcpu=cortex-m3 -mthumb -ffunction-sections -fdata-sections -fstack-usage
-        -fcallgraph-info=su -Wall -Wextra -I"$HERE/src" -I"$HERE/third_party/nanopb" -I"$OUT/gen")
-CORE=("$HERE"/src/fw_{framing,registry,gamecontroller,reliable,wlan,robot,gs1500}.c
+        -fcallgraph-info=su -Wall -Wextra -I"$HERE/src" -I"$HERE/third_party/nanopb"
+        -I"$HERE/third_party/monocypher" -I"$OUT/gen")
+CORE=("$HERE"/src/fw_{framing,registry,gamecontroller,reliable,wlan,robot,gs1500,auth}.c
+      "$HERE"/third_party/monocypher/monocypher{,-ed25519}.c
       "$HERE"/third_party/nanopb/pb_{common,encode,decode}.c "$OUT/gen/fumanoid.pb.c" "$HERE/board/board_main.c")
 echo "footprint: $(arm-none-eabi-gcc --version | head -1)" >&2
 for f in "${CORE[@]}"; do
-  arm-none-eabi-gcc "${CFLAGS[@]}" -c "$f" -o "$OUT/obj/$(basename "$f" .c).o"
+  extra=()
+  case "$f" in
+    */board_main.c) extra=(-DTOUCHLINE_TEAM_KEY_HEADER='"team_key.h"') ;;
+    */monocypher*.c) extra=(-Wno-shadow) ;; # vendored as it is
+  esac
+  arm-none-eabi-gcc "${CFLAGS[@]}" "${extra[@]}" -c "$f" -o "$OUT/obj/$(basename "$f" .c).o"
 done
 arm-none-eabi-gcc -mcpu=cortex-m3 -mthumb -Os -specs=nano.specs -specs=nosys.specs -Wl,--gc-sections \
   -Wl,-Map="$OUT/firmware.map" "$OUT"/obj/*.o -o "$OUT/firmware.elf"
@@ -53,10 +68,15 @@ if [ "$RUN_CALLGRIND" = 1 ] || [ "$RUN_RELIABLE" = 1 ]; then
     cmake --build "$HOSTBUILD" --target fw_encode_bench fw_reliable_bench -j 2 >/dev/null
   fi
 fi
+if [ "$RUN_CALLGRIND" = 1 ] && [ ! -x "$HOSTBUILD/bin/fw_auth_bench" ]; then
+  cmake --build "$HOSTBUILD" --target fw_auth_bench -j 2 >/dev/null
+fi
 if [ "$RUN_CALLGRIND" = 1 ]; then
   echo
   if command -v valgrind >/dev/null; then
     python3 "$HERE/tools/encode_cost.py" "$HOSTBUILD/bin/fw_encode_bench" "$OUT"
+    echo
+    python3 "$HERE/tools/auth_cost.py" "$HOSTBUILD/bin/fw_auth_bench" "$OUT"
   else
     echo "footprint: valgrind not found, encode cost skipped" >&2
   fi

@@ -6,6 +6,14 @@
 #include <stdint.h>
 #include "fw_gs1500.h"
 #include "fw_robot.h"
+/* The team key (docs/security.md): `touchline keys show --c-header team_key.h`, built with
+ * -DTOUCHLINE_TEAM_KEY_HEADER='"team_key.h"'. Without it the board runs in lab mode. */
+#ifdef TOUCHLINE_TEAM_KEY_HEADER
+#include TOUCHLINE_TEAM_KEY_HEADER
+#define BOARD_TEAM_KEY (&touchline_team_key)
+#else
+#define BOARD_TEAM_KEY 0
+#endif
 
 #define USART1_SR (*(volatile uint32_t *)0x40013800u)
 #define USART1_DR (*(volatile uint32_t *)0x40013804u)
@@ -63,15 +71,29 @@ static const fw_option_def k_options[] = {
 static gs_module g_module;
 static const gs_serial k_serial = {uart_read, uart_write, 0};
 static const gs_config k_gs = {"fumanoids", {192, 168, 1, 100}, 11011, 3838};
-static const robot_config k_robot = {
+static robot_config g_robot = {
     1, 13, "cm530", FW_FRAMING_LEGACY, 10, k_options, 1, 0, true, RS_DEFAULT_MODULUS, 100, 0, 0,
     FW_GC_RETURN_PERIOD_MS, /* return packets to the GameController's own address (2026 field) */
 };
+
+/* Survives a reset (not a power cycle): counts boots so two boots never share an id. */
+static uint32_t g_boots __attribute__((section(".noinit")));
+
+/* The high word of the robot's own tag counter, different on every boot: the STM32F103 has no
+ * random number generator, so this mixes its 96-bit unique id, the reset counter above and the
+ * power-on garbage of that RAM word (docs/security.md says what this does and does not give). */
+static uint32_t board_boot_id(void)
+{
+    const volatile uint32_t *uid = (const volatile uint32_t *)0x1FFFF7E8u;
+    return (uid[0] ^ uid[1] ^ uid[2]) + ++g_boots * 2654435761u;
+}
 
 int main(void)
 {
     gs_module_init(&g_module, &k_serial, &k_gs);
     wlan_use(&g_module.driver);
-    robot_init(&k_robot, g_ms);
+    g_robot.team_key = BOARD_TEAM_KEY;
+    g_robot.boot_id = board_boot_id();
+    robot_init(&g_robot, g_ms);
     for (;;) robot_poll(g_ms);
 }

@@ -10,15 +10,8 @@
 #include "fw_registry.h"
 #include "fw_robot.h"
 #include "sim_world.h"
+#include "fuzz_driver.h"
 
-void fw_log(const char *what, const char *detail, int32_t value) { (void)what; (void)detail; (void)value; }
-
-static bool drv_init(void *ctx, uint32_t now) { (void)ctx; (void)now; return true; }
-static bool drv_recv(void *ctx, uint8_t *b, uint16_t cap, uint16_t *len, wlan_peer *from)
-{
-    (void)ctx; (void)b; (void)cap; (void)len; (void)from;
-    return false;
-}
 static bool drv_send(void *ctx, const uint8_t *m, uint16_t n, char cid)
 {
     (void)ctx; (void)m; (void)cid;

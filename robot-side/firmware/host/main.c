@@ -7,7 +7,10 @@
  *                   [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]
  *                   [--reliable-peer HOST:PORT] [--seed S] [--rto MS]
  *                   [--gc-return HOST[:PORT]] [--gc-return-rate HZ]
- *                   [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]]
+ *                   [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE]
+ *
+ * --team-key FILE: the team key (`team.key` of `touchline keys new`); without it the robot
+ * runs in lab mode (no tags checked or sent), as before keys existed (docs/security.md).
  *
  * First line on stdout: "listening on port <port>". */
 #define _POSIX_C_SOURCE 200809L
@@ -58,7 +61,7 @@ static void usage(const char *why)
             "                       [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]\n"
             "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n"
             "                       [--gc-return HOST[:PORT]] [--gc-return-rate HZ]\n"
-            "                       [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]]\n",
+            "                       [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE]\n",
             why);
     exit(2);
 }
@@ -163,8 +166,59 @@ static uint8_t *read_file(const char *path, size_t *len)
     return buf;
 }
 
+/* Trims spaces and the line end in place. */
+static char *trim(char *t)
+{
+    char *e;
+    while (*t == ' ' || *t == '\t') t++;
+    e = t + strlen(t);
+    while (e > t && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\n' || e[-1] == '\r')) *--e = '\0';
+    return t;
+}
+
+/* Reads `team.key` (lines "team-key = <64 hex>" and "key-id = <8 hex>", '#' comments);
+ * exits with a clear message when the file is missing, unreadable or wrong. */
+static void read_team_key(const char *path, fw_team_key *out)
+{
+    char line[256], key[80] = "", id[16] = "";
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        fprintf(stderr, "touchline-robot: cannot read the team key %s: %s (make one with `touchline keys new`)\n", path,
+                strerror(errno));
+        exit(2);
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        char *t = trim(line), *eq;
+        if (*t == '#' || *t == '\0') continue;
+        eq = strchr(t, '=');
+        if (eq == NULL) continue;
+        *eq = '\0';
+        if (strcmp(trim(t), "team-key") == 0) snprintf(key, sizeof key, "%s", trim(eq + 1));
+        else if (strcmp(trim(t), "key-id") == 0) snprintf(id, sizeof id, "%s", trim(eq + 1));
+    }
+    fclose(f);
+    if (strlen(key) != 64 || strlen(id) != 8 || fw_auth_parse_hex(key, id, out) != 0) {
+        fprintf(stderr,
+                "touchline-robot: %s is not a team key: it needs 'team-key = ' with 64 hex digits (32 bytes) and "
+                "'key-id = ' with 8 (found %zu and %zu); make a new one with `touchline keys new --force`\n",
+                path, strlen(key), strlen(id));
+        exit(2);
+    }
+}
+
+/* A random boot id (the high word of the robot's own counter): a restart is visible as a new one. */
+static uint32_t random_boot_id(void)
+{
+    uint32_t v = 0;
+    FILE *f = fopen("/dev/urandom", "rb");
+    if (f == NULL || fread(&v, sizeof v, 1, f) != 1) v = (uint32_t)time(NULL) ^ (uint32_t)getpid() << 16;
+    if (f != NULL) fclose(f);
+    return v;
+}
+
 int main(int argc, char **argv)
 {
+    static fw_team_key team_key;
     static robot_config cfg;
     static stream_apps apps;
     static fw_stream_app app;
@@ -234,6 +288,12 @@ int main(int argc, char **argv)
             cfg.team_msg_period_ms = period_of(v, 0.05, 50.0, "--team-msg-rate must be 0 (off) or 0.05..50");
         }
         else if (strcmp(a, "--team-msg-to") == 0) { NEED_VALUE(); team_msg_arg = v; }
+        else if (strcmp(a, "--team-key") == 0) {
+            NEED_VALUE();
+            read_team_key(v, &team_key);
+            cfg.team_key = &team_key;
+            cfg.boot_id = random_boot_id();
+        }
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) usage("help");
         else usage("unknown argument");
 #undef NEED_VALUE
@@ -327,6 +387,13 @@ int main(int argc, char **argv)
                 (unsigned)cfg.gc_return_period_ms);
     }
 
+    if (cfg.team_key != NULL) {
+        fprintf(stderr, "robot %ld: team key %02x%02x%02x%02x: console datagrams checked, own datagrams tagged "
+                "(boot id %08lx)\n", (long)cfg.robot_id, team_key.key_id[0], team_key.key_id[1], team_key.key_id[2],
+                team_key.key_id[3], (unsigned long)cfg.boot_id);
+    } else {
+        fprintf(stderr, "robot %ld: no team key: lab mode (nothing checked or tagged)\n", (long)cfg.robot_id);
+    }
     robot_init(&cfg, now_ms());
     while (!g_stop) {
         struct pollfd p;
@@ -348,6 +415,15 @@ int main(int argc, char **argv)
                 (unsigned long)c->messages_out, (unsigned long)c->bytes_out, (unsigned long)c->send_failures,
                 (unsigned long)c->debug_held, (unsigned long)c->gc_returns_out, (unsigned long)c->team_msgs_out,
                 (unsigned long)c->team_msgs_held);
+        if (cfg.team_key != NULL) {
+            const fw_auth_counters *ac = robot_auth_stats();
+            fprintf(stderr,
+                    "robot %ld: authenticated %lu; rejected: %lu no tag, %lu truncated, %lu wrong key, %lu bad tag, "
+                    "%lu replayed\n",
+                    (long)cfg.robot_id, (unsigned long)ac->accepted, (unsigned long)ac->missing,
+                    (unsigned long)ac->truncated, (unsigned long)ac->wrong_key, (unsigned long)ac->bad_tag,
+                    (unsigned long)ac->replayed);
+        }
     }
     if (wifi_sim) {
         gs_sim_stats ms;

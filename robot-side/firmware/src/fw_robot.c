@@ -21,6 +21,9 @@ static rs_stream g_stream;
 static wlan_peer g_stream_peer;
 static bool g_have_stream_peer;
 static uint32_t g_now; /* time of the current poll or dispatch */
+/* team key: the console's datagrams checked, ours tagged (docs/security.md) */
+static fw_auth_state g_auth;
+static uint32_t g_out_seq;
 /* GameController */
 static fw_gc_info g_gc;
 static bool g_gc_heard;
@@ -55,9 +58,25 @@ static bool str_eq(const char *a, const char *b)
     return *a == *b;
 }
 
+/* The robot's own counter: the boot id in the high word, a sequence in the low word. */
+static uint64_t next_counter(void)
+{
+    return ((uint64_t)g_cfg->boot_id << 32) | (uint64_t)(++g_out_seq);
+}
+
+/* With a team key: appends the trailer to g_tx[0..n); the new length, 0 = no room. */
+static uint16_t tag_outgoing(uint16_t n)
+{
+    if (g_cfg->team_key == 0 || n == 0) return n;
+    return fw_auth_append(g_cfg->team_key, FW_AUTH_DIR_ROBOT, (uint8_t)g_cfg->robot_id, next_counter(), g_tx, n,
+                          FW_MAX_DATAGRAM);
+}
+
 static void send_outgoing(void)
 {
-    uint16_t n = fw_encode_message(g_tx, sizeof g_tx, g_cfg->framing, g_cfg->robot_id, g_out.type, &g_out.m);
+    /* the trailer must fit into the 1400 bytes too (the Wi-Fi module's buffer) */
+    uint16_t room = (uint16_t)(sizeof g_tx - (g_cfg->team_key != 0 ? FW_AUTH_TRAILER : 0u));
+    uint16_t n = tag_outgoing(fw_encode_message(g_tx, room, g_cfg->framing, g_cfg->robot_id, g_out.type, &g_out.m));
     if (n == 0) {
         g_count.send_failures++;
         fw_log("message does not fit into one datagram", 0, 0);
@@ -117,6 +136,12 @@ static void send_status(uint32_t now)
     st->has_batteryPercent = true;
     st->batteryPercent = 100u - (drained % 90u);
     copy_str(st->gameState, sizeof st->gameState, fw_gc_state_name(g_game_state));
+    if (g_cfg->team_key != 0) {
+        const fw_auth_counters *c = &g_auth.count;
+        st->has_auth = true;
+        st->auth = (fumanoid_AuthCounters){true, c->accepted, true, c->missing, true, c->truncated, true, c->wrong_key,
+                                           true, c->bad_tag, true, c->replayed, true, g_cfg->boot_id};
+    }
     send_outgoing();
 }
 
@@ -173,12 +198,15 @@ static const fw_registry_entry k_registry[] = {
 static int stream_output(void *ctx, const uint8_t hdr[2], const uint8_t *payload, uint16_t n)
 {
     uint16_t i;
-    (void)ctx;
+    uint16_t len;
+    (void)ctx; /* n <= RS_MAX_PAYLOAD: header and payload fit into g_tx */
     g_tx[0] = hdr[0];
     g_tx[1] = hdr[1];
     for (i = 0; i < n; i++) g_tx[2 + i] = payload[i];
-    if (g_have_stream_peer && g_stream_peer.port != 0) return sendMsgToPeer(&g_stream_peer, g_tx, (uint16_t)(n + 2));
-    return sendMsgToCon(g_tx, (uint16_t)(n + 2), g_have_stream_peer ? g_stream_peer.cid : WLAN_CID_CONSOLE);
+    len = tag_outgoing((uint16_t)(n + 2));
+    if (len == 0) return 0; /* no room for the tag: the stream counts it as lost and sends again */
+    if (g_have_stream_peer && g_stream_peer.port != 0) return sendMsgToPeer(&g_stream_peer, g_tx, len);
+    return sendMsgToCon(g_tx, len, g_have_stream_peer ? g_stream_peer.cid : WLAN_CID_CONSOLE);
 }
 
 static void stream_deliver(void *ctx, const uint8_t *payload, uint16_t n)
@@ -204,6 +232,8 @@ void robot_init(const robot_config *cfg, uint32_t now)
         g_next_due[i] = 0;
     }
     fw_registry_use(k_registry, sizeof k_registry / sizeof k_registry[0]);
+    fw_auth_init(&g_auth, cfg->team_key);
+    g_out_seq = 0;
     g_have_stream_peer = cfg->reliable_peer != 0;
     if (g_have_stream_peer) g_stream_peer = *cfg->reliable_peer;
     rs_init(&g_stream, cfg->reliable_modulus, cfg->reliable_rto_ms ? cfg->reliable_rto_ms : 100u, 250u,
@@ -253,11 +283,30 @@ static void on_gamecontroller(const uint8_t *d, uint16_t len, const wlan_peer *f
     }
 }
 
+/* One log line for the 1st, 2nd, 4th, 8th... rejection: a flood of forgeries cannot flood the log. */
+static void log_rejected(fw_auth_result r, uint16_t len)
+{
+    static uint32_t n;
+    n++;
+    if ((n & (n - 1u)) == 0u) fw_log("rejected", fw_auth_result_name(r), len);
+}
+
 void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint32_t now)
 {
     fw_datagram_info info;
     g_now = now;
     g_count.datagrams_in++;
+    /* GameController packets are never tagged (league rules); everything else from the
+     * console is checked before it is classified or dispatched */
+    if (!(len >= 2 && d[0] == 'R' && d[1] == 'G')) {
+        uint16_t payload_len = len;
+        fw_auth_result a = fw_auth_check(&g_auth, FW_AUTH_DIR_CONSOLE, (uint8_t)g_cfg->robot_id, d, len, &payload_len);
+        if (a != FW_AUTH_OK && a != FW_AUTH_LAB) {
+            log_rejected(a, len);
+            return;
+        }
+        len = payload_len;
+    }
     fw_classify(d, len, &info);
     switch (info.kind) {
     case FW_DGRAM_FUMANOID: {
@@ -478,6 +527,7 @@ void robot_poll(uint32_t now)
 }
 
 const robot_counters *robot_stats(void) { return &g_count; }
+const fw_auth_counters *robot_auth_stats(void) { return &g_auth.count; }
 const char *robot_game_state(void) { return fw_gc_state_name(g_game_state); }
 bool robot_network_ready(void) { return g_net_ready; }
 rs_stream *robot_stream(void) { return &g_stream; }

@@ -12,6 +12,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "fumanoid.pb.h"
+#include "fw_auth.h"
 #include "fw_framing.h"
 #include "fw_gamecontroller.h"
 #include "fw_reliable.h"
@@ -90,6 +91,11 @@ typedef struct {
     const wlan_peer *team_msg_to;    /* broadcast (or 127.0.0.1) port 10000 + team; NULL = none */
     uint16_t match_debug_period_ms;  /* console traffic in READY/SET/PLAYING; 0 = FW_MATCH_DEBUG_PERIOD_MS */
     fw_ball_fn ball;                 /* may be NULL: ball never seen */
+    /* Team key (docs/security.md): NULL = lab mode, as before keys. With a key every datagram
+     * from the console must carry a right tag and a newer counter (GameController packets are
+     * not tagged: league rules), and the robot tags everything it sends to the console. */
+    const fw_team_key *team_key;
+    uint32_t boot_id;                /* random per boot: the high word of the robot's own counter */
 } robot_config;
 
 typedef struct {
@@ -116,6 +122,8 @@ void robot_poll(uint32_t now);
  * receiver or the reliable stream. Public for tests and fuzzing. */
 void robot_dispatch(const uint8_t *d, uint16_t len, const wlan_peer *from, uint32_t now);
 const robot_counters *robot_stats(void);
+/* What the verifier did with the console's datagrams (all zero in lab mode). */
+const fw_auth_counters *robot_auth_stats(void);
 const char *robot_game_state(void);
 /* The last GameController packet accepted (valid once robot_gc_heard()). */
 const fw_gc_info *robot_gamecontroller(void);

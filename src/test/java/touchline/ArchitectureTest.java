@@ -17,8 +17,8 @@ import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
  */
 class ArchitectureTest {
 
-    private static final String[] LAYERS = {"touchline.proto..", "touchline.protocol..", "touchline.game..",
-            "touchline.transport..", "touchline.model..", "touchline.record..", "touchline.app..", "touchline.serve..",
+    private static final String[] LAYERS = {"touchline.proto..", "touchline.protocol..", "touchline.security..",
+            "touchline.game..", "touchline.transport..", "touchline.model..", "touchline.record..", "touchline.app..", "touchline.serve..",
             "touchline.ui..", "touchline.cli.."};
 
     // Only our compiled classes: scanning every jar on the class path for the package is slow.
@@ -36,6 +36,7 @@ class ArchitectureTest {
     void eachLayerIsUsedOnlyByTheLayersAboveIt() {
         layeredArchitecture().consideringOnlyDependenciesInLayers()
                 .layer("Protocol").definedBy("touchline.proto..", "touchline.protocol..")
+                .layer("Security").definedBy("touchline.security..")
                 .layer("Game").definedBy("touchline.game..")
                 .layer("Transport").definedBy("touchline.transport..")
                 .layer("Model").definedBy("touchline.model..")
@@ -51,8 +52,24 @@ class ArchitectureTest {
                 // the embedded GameController's runtime still lives in transport.gamecontroller
                 .whereLayer("Transport").mayOnlyBeAccessedByLayers("Model", "Record", "App", "Serve", "Faces")
                 .whereLayer("Game").mayOnlyBeAccessedByLayers("Transport", "App", "Serve", "Faces")
+                // keys and tags: below the transport (which tags and checks), never above the faces
+                .whereLayer("Security").mayOnlyBeAccessedByLayers("Transport", "Model", "Record", "App", "Serve", "Faces")
                 .whereLayer("Protocol").mayOnlyBeAccessedByLayers("Game", "Transport", "Model", "Record", "App", "Serve",
                         "Faces")
+                .check(classes);
+    }
+
+    @Test
+    void tagCodeIsPureOnlyKeyFilesTouchTheDisk() {
+        // the tag, trailer and replay logic are pure like the protocol; the key directory does I/O
+        noClasses().that().resideInAPackage("touchline.security..")
+                .and().haveNameNotMatching("touchline\\.security\\.KeyDir(\\$.*)?")
+                .should().dependOnClassesThat().resideInAnyPackage("java.nio.file..", "java.net..", "io.netty..",
+                        "touchline.transport..", "touchline.model..", "touchline.app..")
+                .check(classes);
+        noClasses().that().resideInAPackage("touchline.security..")
+                .should().dependOnClassesThat().resideInAnyPackage("touchline.transport..", "touchline.model..",
+                        "touchline.record..", "touchline.app..", "touchline.serve..", "touchline.ui..", "touchline.cli..")
                 .check(classes);
     }
 

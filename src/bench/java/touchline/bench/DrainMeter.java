@@ -17,12 +17,17 @@ final class DrainMeter {
         void run() throws InterruptedException;
     }
 
-    private final List<byte[]> datagrams;
+    private final java.util.function.LongFunction<byte[]> source;
     private final int batch;
 
     /** @param batch datagrams per filled buffer (made smaller when the kernel does not take a batch whole) */
     DrainMeter(List<byte[]> datagrams, int batch) {
-        this.datagrams = datagrams;
+        this(i -> datagrams.get((int) (i % datagrams.size())), batch);
+    }
+
+    /** @param source the n-th datagram to send (e.g. tagged with a fresh counter); called while the receiver is held */
+    DrainMeter(java.util.function.LongFunction<byte[]> source, int batch) {
+        this.source = source;
         this.batch = batch;
     }
 
@@ -37,7 +42,6 @@ final class DrainMeter {
     IngestResult measure(int port, int secs, DecodedCounter decoded, Step pause, Step resume) throws Exception {
         try (DatagramChannel out = DatagramChannel.open()) {
             out.connect(new InetSocketAddress("127.0.0.1", port));
-            ByteBuffer[] buffers = datagrams.stream().map(ByteBuffer::wrap).toArray(ByteBuffer[]::new);
             pause.run();
             long end = System.nanoTime() + secs * 1_000_000_000L;
             long sent = 0;
@@ -48,9 +52,7 @@ final class DrainMeter {
             while (System.nanoTime() < end) {
                 long before = decoded.sum();
                 for (int i = 0; i < size; i++) {
-                    ByteBuffer b = buffers[(int) (sent % buffers.length)];
-                    b.rewind();
-                    out.write(b);
+                    out.write(ByteBuffer.wrap(source.apply(sent)));
                     sent++;
                 }
                 if (decoded.sum() != before) {

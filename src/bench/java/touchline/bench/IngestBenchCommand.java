@@ -50,6 +50,10 @@ final class IngestBenchCommand implements Callable<Integer> {
             + " (both compete for the two cores) instead of draining a filled socket buffer")
     boolean flood;
 
+    @Option(names = "--tagged", description = "each round also runs the pipeline with a team key, every robot"
+            + " datagram carrying its tag (docs/security.md); budget: >= 0.9 of the untagged pipeline")
+    boolean tagged;
+
     @Option(names = "--batch", defaultValue = "3000", description = "drain mode: datagrams per filled buffer (default ${DEFAULT-VALUE})")
     int batch;
 
@@ -91,29 +95,39 @@ final class IngestBenchCommand implements Callable<Integer> {
         // Two warm-up rounds: with ZGC the first full round still ran at half speed.
         for (int w = 0; w < 2; w++) {
             baseline(seconds);
-            pipeline(seconds, 0, false);
+            pipeline(seconds, 0, false, false);
             if (compareRecording) {
-                pipeline(seconds, 0, true);
+                pipeline(seconds, 0, true, false);
+            }
+            if (tagged) {
+                pipeline(seconds, 0, false, true);
             }
         }
         double bestBaseline = 0;
         double bestPipeline = 0;
         List<Double> ratios = new ArrayList<>();
         List<Double> recordingRatios = new ArrayList<>();
+        List<Double> taggedRatios = new ArrayList<>();
         for (int round = 1; round <= rounds; round++) {
             IngestResult base = baseline(seconds);
             double baseline = base.perSecond();
-            IngestResult pipe = pipeline(seconds, 0, false);
+            IngestResult pipe = pipeline(seconds, 0, false, false);
             double pipeline = pipe.perSecond();
             System.out.printf("  (took %.0f%% of what was sent in the baseline, %.0f%% in the pipeline)%n",
                     100.0 * base.received() / base.sent(), 100.0 * pipe.received() / pipe.sent());
             if (compareRecording) {
-                IngestResult rec = pipeline(seconds, 0, true);
+                IngestResult rec = pipeline(seconds, 0, true, false);
                 double recorded = rec.perSecond();
                 System.out.printf("round %d: pipeline recording %,.0f msg/s, %.2f of the pipeline without"
                         + " (took %.0f%% of what was sent)%n", round, recorded, recorded / pipeline,
                         100.0 * rec.received() / rec.sent());
                 recordingRatios.add(recorded / pipeline);
+            }
+            if (tagged) {
+                double withTags = pipeline(seconds, 0, false, true).perSecond();
+                System.out.printf("round %d: pipeline with tags %,.0f msg/s, %.2f of the pipeline without%n", round,
+                        withTags, withTags / pipeline);
+                taggedRatios.add(withTags / pipeline);
             }
             ratios.add(pipeline / baseline);
             bestBaseline = Math.max(bestBaseline, baseline);
@@ -127,7 +141,11 @@ final class IngestBenchCommand implements Callable<Integer> {
             System.out.printf("recording overhead: median %.1f%% over %d rounds (target <= 10%%)%n",
                     100 * (1 - median(recordingRatios)), recordingRatios.size());
         }
-        IngestResult paced = pipeline(seconds, rate, false);
+        if (tagged) {
+            System.out.printf("tags: median %.2f of the untagged pipeline over %d rounds (target >= 0.90)%n",
+                    median(taggedRatios), taggedRatios.size());
+        }
+        IngestResult paced = pipeline(seconds, rate, false, false);
         System.out.printf("fixed rate %,d msg/s for %d s: sent %,d, decoded %,d, lost %,d (%.4f%%)%n", rate, seconds,
                 paced.sent(), paced.received(), paced.sent() - paced.received(), 100.0 * (paced.sent() - paced.received()) / paced.sent());
         return 0;
@@ -139,10 +157,15 @@ final class IngestBenchCommand implements Callable<Integer> {
         return n == 0 ? Double.NaN : n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
     }
 
-    private IngestResult pipeline(int secs, int pacedRate, boolean record) throws Exception {
+    private IngestResult pipeline(int secs, int pacedRate, boolean record, boolean withTags) throws Exception {
         System.gc(); // the previous phase's garbage is not collected on this one's time
         DecodedCounter decoded = new DecodedCounter();
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+        if (withTags) {
+            config = config.withSecurity(touchline.security.LinkSecurity.with(BENCH_KEY,
+                    new touchline.security.CounterSource(System::currentTimeMillis,
+                            touchline.security.CounterSource.inMemory())));
+        }
         try (Console console = transportOnly ? new Console(config, touchline.transport.MicrosClock.system(), false)
                 : new Console(config)) {
             console.bus().subscribe(e -> {
@@ -157,7 +180,8 @@ final class IngestBenchCommand implements Callable<Integer> {
             console.start();
             try {
                 if (pacedRate == 0 && !flood) {
-                    return new DrainMeter(datagrams, batch).measure(console.udp().localPort(), secs, decoded,
+                    DrainMeter meter = withTags ? new DrainMeter(this::taggedDatagram, batch) : new DrainMeter(datagrams, batch);
+                    return meter.measure(console.udp().localPort(), secs, decoded,
                             () -> console.udp().setReading(false), () -> console.udp().setReading(true));
                 }
                 return drive(console.udp().localPort(), secs, pacedRate, decoded);
@@ -169,6 +193,16 @@ final class IngestBenchCommand implements Callable<Integer> {
                 }
             }
         }
+    }
+
+    private static final touchline.security.TeamKey BENCH_KEY = new touchline.security.TeamKey(new byte[32]);
+    private final touchline.security.MessageTag robotTag = new touchline.security.MessageTag(BENCH_KEY);
+    private long robotCounter = 0x0000_1234_0000_0000L;
+
+    /** The n-th datagram as its robot sends it with a team key: the trailer with a fresh counter (sender side, not timed). */
+    private byte[] taggedDatagram(long n) {
+        int i = (int) (n % datagrams.size());
+        return robotTag.append(touchline.security.MessageTag.FROM_ROBOT, 1 + i / 4, ++robotCounter, datagrams.get(i));
     }
 
     private IngestResult baseline(int secs) throws Exception {

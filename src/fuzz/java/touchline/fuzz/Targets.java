@@ -8,7 +8,7 @@ final class Targets {
 
     private final List<FuzzTarget> all = List.of(new FramingTarget(), new MessageTarget(), new GameStateTarget(),
             new ReturnPacketTarget(), new ReliableStreamTarget(), new MixedValueTarget(), new JpegHeaderTarget(),
-            new ParamSyntaxTarget());
+            new ParamSyntaxTarget(), new TrailerTarget());
 
     List<FuzzTarget> all() {
         return all;

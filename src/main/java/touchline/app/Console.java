@@ -117,7 +117,8 @@ public final class Console implements AutoCloseable {
         this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
-        this.udp = new UdpTransport(config.udp(), codec, live, clock, reliable);
+        this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
+        reliable.useAuth(udp.segmentAuth());
         this.options = new DebugOptionSession(udp, codec, clock, replayClock);
         this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);

@@ -1,6 +1,7 @@
 package touchline.app;
 
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
+import touchline.security.LinkSecurity;
 import touchline.transport.UdpConfig;
 
 import java.net.InetSocketAddress;
@@ -16,22 +17,28 @@ import java.net.InetSocketAddress;
  * @param gcForwardPort       where that GameController forwards the robots' return packets (3940)
  * @param gcAddress           the field's GameController's host ({@code --gc-address}): the only source of
  *                            game states believed; null pins the first heard (or the {@code gcMonitor} host)
+ * @param security            the team key for the small robots' link, or off (lab mode)
  */
 public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
-                            int gcForwardPort, String gcAddress) {
+                            int gcForwardPort, String gcAddress, LinkSecurity security) {
 
     public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort) {
-        this(udp, tickMillis, gameControllerPort, null, ForwardedReturnPacket.PORT, null);
+        this(udp, tickMillis, gameControllerPort, null, ForwardedReturnPacket.PORT);
     }
 
     public ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPort, InetSocketAddress gcMonitor,
                          int gcForwardPort) {
-        this(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, null);
+        this(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, null, LinkSecurity.off());
     }
 
     /** Believes game states only from {@code host} (an IP address or name), null: the first heard. */
     public ConsoleConfig withGcAddress(String host) {
-        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, host);
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, host, security);
+    }
+
+    /** Tags what goes to the small robots and checks what they send with this team key (or not: off). */
+    public ConsoleConfig withSecurity(LinkSecurity security) {
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gcMonitor, gcForwardPort, gcAddress, security);
     }
 
     public static ConsoleConfig defaults() {
@@ -41,15 +48,15 @@ public record ConsoleConfig(UdpConfig udp, long tickMillis, int gameControllerPo
     /** Also stops listening for GameControllers unless the port is set again: tests must not bind fixed ports. */
     public ConsoleConfig withUdp(UdpConfig udp) {
         return new ConsoleConfig(udp, tickMillis, udp.listenPort() == 0 ? 0 : gameControllerPort, gcMonitor,
-                gcForwardPort, gcAddress);
+                gcForwardPort, gcAddress, security);
     }
 
     public ConsoleConfig withGameControllerPort(int port) {
-        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort, gcAddress);
+        return new ConsoleConfig(udp, tickMillis, port, gcMonitor, gcForwardPort, gcAddress, security);
     }
 
     /** Registers with this GameController (monitor requests to {@code gameController}, forwards on {@code forwardPort}). */
     public ConsoleConfig withGcMonitor(InetSocketAddress gameController, int forwardPort) {
-        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort, gcAddress);
+        return new ConsoleConfig(udp, tickMillis, gameControllerPort, gameController, forwardPort, gcAddress, security);
     }
 }

@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
                 NaoCommand.class,
                 ServeCommand.class,
                 DemoKeysCommand.class,
+                KeysCommand.class,
         })
 public final class Main implements Runnable {
 

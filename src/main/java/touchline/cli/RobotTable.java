@@ -10,13 +10,17 @@ import java.util.List;
 final class RobotTable {
 
     void print(PrintStream out, List<RobotSnapshot> robots, List<SourceSnapshot> sources, List<String> notes) {
-        out.printf("%-4s %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6s %8s %8s %5s%n",
-                "ID", "NAME", "TEAM", "BAT", "ROLE", "STATE", "GAME", "ONLINE", "PKTS", "PKT/S", "B/S", "BAD");
+        out.printf("%-4s %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6s %8s %8s %5s %s%n",
+                "ID", "NAME", "TEAM", "BAT", "ROLE", "STATE", "GAME", "ONLINE", "PKTS", "PKT/S", "B/S", "BAD", "AUTH");
         for (RobotSnapshot r : robots) {
-            out.printf("%-4d %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6d %8.1f %8.0f %5d%n", r.id(), r.label(),
+            out.printf("%-4d %-12s %-4s %-4s %-10s %-12s %-9s %-7s %6d %8.1f %8.0f %5d %s%n", r.id(), r.label(),
                     r.teamId() < 0 ? "?" : r.teamId(), r.batteryPercent() < 0 ? "?" : r.batteryPercent() + "%",
                     r.role(), r.state(), r.gameState(), r.online() ? "online" : "OFFLINE", r.packets(),
-                    r.packetsPerSecond(), r.bytesPerSecond(), r.malformed());
+                    r.packetsPerSecond(), r.bytesPerSecond(), r.malformed(), r.auth().describe());
+            if (r.auth().forged() > 0) {
+                out.printf("  robot %d: %d forged datagram(s) dropped; last from %s%n", r.id(), r.auth().forged(),
+                        r.auth().lastForgery());
+            }
         }
         for (SourceSnapshot s : sources) {
             if (s.malformed() > 0) {

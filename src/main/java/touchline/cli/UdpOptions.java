@@ -3,6 +3,7 @@ package touchline.cli;
 import picocli.CommandLine.Option;
 import touchline.app.ConsoleConfig;
 import touchline.protocol.gamecontroller.MonitorRequest;
+import touchline.security.LinkSecurity;
 import touchline.transport.UdpConfig;
 
 import java.net.InetSocketAddress;
@@ -53,6 +54,15 @@ final class UdpOptions {
         }
     }
 
+    @Option(names = "--keys", paramLabel = "DIR",
+            description = "the team's key directory (default: $TOUCHLINE_KEYS, else ~/.config/touchline/keys when it"
+                    + " holds team.key): tags every datagram to the small robots, checks theirs (docs/security.md)")
+    java.nio.file.Path keys;
+
+    @Option(names = "--insecure", description = "no team key even if one is there: nothing tagged or checked, for"
+            + " robots without keys (lab mode)")
+    boolean insecure;
+
     /** A started Console on these options; a port in use fails with one sentence naming it. */
     touchline.app.Console startConsole() throws InterruptedException, StartFailure {
         touchline.app.Console console = new touchline.app.Console(config());
@@ -67,9 +77,15 @@ final class UdpOptions {
         }
     }
 
-    ConsoleConfig config() {
+    /** The team key as these options and the environment say; a bad key file fails with its message. */
+    LinkSecurity security() throws StartFailure {
+        return new KeyChoice(keys, insecure, System.getenv()).security();
+    }
+
+    /** The console's configuration on these options, with the team key they choose. */
+    ConsoleConfig config() throws StartFailure {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(port)
-                .withBindAddress(bind).withRobotPort(robotPort).withTransport(transport));
+                .withBindAddress(bind).withRobotPort(robotPort).withTransport(transport)).withSecurity(security());
         config = config.withGcAddress(gcAddress);
         return gcMonitor == null ? config
                 : config.withGcMonitor(new InetSocketAddress(gcMonitor, MonitorRequest.PORT), gcForwardPort);

@@ -1,6 +1,7 @@
 package touchline.model;
 
 import touchline.proto.Fumanoid;
+import touchline.security.Authenticity;
 import touchline.transport.Envelope;
 import touchline.transport.Origin;
 
@@ -20,6 +21,13 @@ final class Robot {
     InetSocketAddress address;
     final RateWindow rate = new RateWindow();
     Fumanoid.Status status = Fumanoid.Status.getDefaultInstance();
+    Authenticity auth = Authenticity.NOT_CHECKED;
+    long verified;
+    long unverified;
+    long forged;
+    String lastForgery = "";
+    int bootId;
+    boolean hasBootId;
 
     Robot(int id, Origin origin, long firstSeenMicros) {
         this.id = id;
@@ -40,11 +48,36 @@ final class Robot {
         lastSeenMicros = Math.max(lastSeenMicros, e.timeMicros());
         packets++;
         rate.add(e.timeMicros(), e.size());
+        if (e.authenticity() == Authenticity.VERIFIED) {
+            verified++;
+            auth = Authenticity.VERIFIED;
+        } else if (e.authenticity() == Authenticity.UNVERIFIED) {
+            unverified++;
+            auth = Authenticity.UNVERIFIED;
+        }
         Fumanoid.Status reported = e.extension(Fumanoid.status);
         if (reported != null) {
             status = reported;
+            if (reported.hasAuth() && reported.getAuth().hasBootId()) {
+                int boot = reported.getAuth().getBootId();
+                if (hasBootId && boot != bootId && note == null) {
+                    note = "robot " + id + " restarted: counter reset, accepted";
+                }
+                bootId = boot;
+                hasBootId = true;
+            }
         }
         return note;
+    }
+
+    /** A datagram claiming this robot was dropped as forged; true when it is worth a note (1st, 2nd, 4th, 8th...). */
+    boolean forgery(Envelope e) {
+        forged++;
+        lastForgery = e.peerText() + ": " + e.error();
+        if (packets == 0) {
+            auth = Authenticity.FORGED; // nothing genuine from this id yet
+        }
+        return (forged & (forged - 1)) == 0;
     }
 
     RobotSnapshot snapshot(long now) {
@@ -56,6 +89,7 @@ final class Robot {
                 s.getActiveRole(), s.getCurrentState(), s.getGameState(),
                 s.getRobotPosition().getX(), s.getRobotPosition().getY(), s.getRobotPosition().getTheta(), hasPosition,
                 s.getTimeOnline(), firstSeenMicros, lastSeenMicros, online, packets,
-                rate.perSecond(now), rate.bytesPerSecond(now), malformed, addressChanges, address, origin);
+                rate.perSecond(now), rate.bytesPerSecond(now), malformed, addressChanges, address, origin,
+                new RobotAuth(auth, verified, unverified, forged, lastForgery, s.hasAuth() ? s.getAuth() : null));
     }
 }

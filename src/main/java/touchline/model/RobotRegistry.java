@@ -1,5 +1,6 @@
 package touchline.model;
 
+import touchline.security.Authenticity;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.MicrosClock;
@@ -89,6 +90,15 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
                 source.malformed++;
                 source.lastError = e.error();
                 attributeMalformed(e.peer(), e.replayed() ? replayed : robots);
+            }
+            if (e.authenticity() == Authenticity.FORGED && e.robotId() >= 0 && e.robotId() <= 255) {
+                // shown on the robot it claims to be (ids beyond one byte are no robot's), never taken as its data
+                Map<Integer, Robot> of = e.replayed() ? replayed : robots;
+                Robot claimed = of.computeIfAbsent(e.robotId(), id -> new Robot(id, e.origin(), e.timeMicros()));
+                if (claimed.forgery(e)) {
+                    note(claimed.forged + " forged datagram(s) claiming robot " + e.robotId() + "; last from "
+                            + claimed.lastForgery);
+                }
             }
             if (e.robotId() >= 0 && !e.isMalformed()) {
                 Map<Integer, Robot> of = e.replayed() ? replayed : robots;

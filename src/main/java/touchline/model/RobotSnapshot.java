@@ -14,9 +14,20 @@ public record RobotSnapshot(int id, String name, int teamId, int batteryPercent,
                             String gameState, double x, double y, double theta, boolean hasPosition,
                             long timeOnlineSeconds, long firstSeenMicros, long lastSeenMicros, boolean online,
                             long packets, double packetsPerSecond, double bytesPerSecond, long malformed,
-                            long addressChanges, InetSocketAddress address, Origin origin) {
+                            long addressChanges, InetSocketAddress address, Origin origin, RobotAuth auth) {
 
     public static final int UNKNOWN = -1;
+
+    /** A robot whose authenticity nobody checked (tests, views without a link). */
+    public RobotSnapshot(int id, String name, int teamId, int batteryPercent, String role, String state,
+                         String gameState, double x, double y, double theta, boolean hasPosition,
+                         long timeOnlineSeconds, long firstSeenMicros, long lastSeenMicros, boolean online,
+                         long packets, double packetsPerSecond, double bytesPerSecond, long malformed,
+                         long addressChanges, InetSocketAddress address, Origin origin) {
+        this(id, name, teamId, batteryPercent, role, state, gameState, x, y, theta, hasPosition, timeOnlineSeconds,
+                firstSeenMicros, lastSeenMicros, online, packets, packetsPerSecond, bytesPerSecond, malformed,
+                addressChanges, address, origin, RobotAuth.NONE);
+    }
 
     public boolean replayed() {
         return origin == Origin.REPLAY;

@@ -4,6 +4,7 @@ import io.netty.channel.ChannelHandlerContext;
 import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.channel.socket.DatagramPacket;
 import touchline.protocol.DatagramClass;
+import touchline.security.InboundVerifier;
 
 /**
  * The first inbound step: counts each datagram, time-stamps it, copies its bytes off the
@@ -36,7 +37,8 @@ final class DatagramIntake extends ChannelInboundHandlerAdapter {
             packet.release();
         }
         counters.countIn(bytes.length);
+        // classified without an authentication trailer: it would hide the length header
         ctx.fireChannelRead(new ReceivedDatagram(clock.nowMicros(), packet.sender(), bytes,
-                DatagramClass.of(bytes, bytes.length)));
+                DatagramClass.of(bytes, InboundVerifier.payloadLength(bytes))));
     }
 }

@@ -1,6 +1,7 @@
 package touchline.transport;
 
 import com.google.protobuf.Message;
+import touchline.security.Authenticity;
 
 import java.net.InetSocketAddress;
 import java.util.Arrays;
@@ -21,9 +22,12 @@ import java.util.Objects;
  * @param raw          the exact bytes on the wire (never null)
  * @param error        why the bytes could not be decoded, or null when they could
  * @param origin       live traffic, or a recording played back (which must never act on the live field)
+ * @param authenticity whether a robot's datagram carried a right tag of the team key (docs/security.md);
+ *                     {@code NOT_CHECKED} for everything that is not a robot's datagram
  */
 public record Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
-                       int robotId, String kind, Message message, byte[] raw, String error, Origin origin) {
+                       int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
+                       Authenticity authenticity) {
 
     public static final int NO_ROBOT = -1;
 
@@ -33,6 +37,13 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         Objects.requireNonNull(kind, "kind");
         Objects.requireNonNull(raw, "raw");
         Objects.requireNonNull(origin, "origin");
+        Objects.requireNonNull(authenticity, "authenticity");
+    }
+
+    /** An envelope whose authenticity was not checked (outbound, GameController, NAO, older recordings). */
+    public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                    int robotId, String kind, Message message, byte[] raw, String error, Origin origin) {
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, Authenticity.NOT_CHECKED);
     }
 
     /** A live envelope: what the transports and the console's own senders publish. */
@@ -44,7 +55,8 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
     /** The same envelope marked as played back from a recording. */
     public Envelope asReplayed() {
         return origin == Origin.REPLAY ? this
-                : new Envelope(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.REPLAY);
+                : new Envelope(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.REPLAY,
+                        authenticity);
     }
 
     /** True when a recording played this envelope back: it must never cause a datagram or change match mode. */
@@ -82,6 +94,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         return raw.length;
     }
 
+    /** The same datagram at the same moment; the authenticity mark is the console's verdict, not recorded, so not compared. */
     @Override
     public boolean equals(Object o) {
         return o instanceof Envelope e && timeMicros == e.timeMicros && robotId == e.robotId
@@ -96,7 +109,8 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
 
     @Override
     public String toString() {
-        return "Envelope[" + (origin == Origin.REPLAY ? "replayed " : "") + direction + " " + channel + " " + kind
+        return "Envelope[" + (origin == Origin.REPLAY ? "replayed " : "")
+                + (authenticity == Authenticity.NOT_CHECKED ? "" : authenticity.word() + " ") + direction + " " + channel + " " + kind
                 + " robot=" + robotId + " peer=" + peer + " bytes=" + raw.length + (error == null ? "" : " error=" + error) + "]";
     }
 }

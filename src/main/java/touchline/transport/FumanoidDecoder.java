@@ -8,6 +8,10 @@ import touchline.protocol.FrameResult;
 import touchline.protocol.Framing;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageResult;
+import touchline.security.Authenticity;
+import touchline.security.InboundVerifier;
+
+import java.util.Arrays;
 
 /**
  * Turns classified datagrams into Envelopes: FUmanoids frames are decoded (or become a
@@ -22,9 +26,11 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     private final PeerTable peers;
     private final TrafficCounters counters;
     private final EnvelopeSink sink;
+    private final InboundVerifier verifier;
 
     FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters,
-                    EnvelopeSink sink) {
+                    EnvelopeSink sink, InboundVerifier verifier) {
+        this.verifier = verifier;
         this.frames = frames;
         this.messages = messages;
         this.peers = peers;
@@ -52,7 +58,9 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
             return new Envelope(d.timeMicros(), Direction.IN, Channel.GAMECONTROLLER, d.sender(), Envelope.NO_ROBOT,
                     "gc", null, d.bytes(), null);
         }
-        FrameResult frame = frames.decode(d.bytes());
+        byte[] bytes = d.bytes();
+        int payloadLength = InboundVerifier.payloadLength(bytes);
+        FrameResult frame = frames.decode(payloadLength == bytes.length ? bytes : Arrays.copyOf(bytes, payloadLength));
         if (frame instanceof FrameResult.Malformed m) {
             return malformed(d, m.reason());
         }
@@ -63,11 +71,24 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
         }
         MessageResult.Decoded decoded = (MessageResult.Decoded) result;
         int robotId = decoded.message().getRobotID();
+        InboundVerifier.Result auth = verifier.check(robotId, bytes);
+        if (auth.authenticity() == Authenticity.FORGED) {
+            // dropped: neither the robot's address nor its data is taken; counted and shown with its source
+            counters.countForged();
+            return new Envelope(d.timeMicros(), Direction.IN, Channel.FUMANOID, d.sender(), robotId, "forged", null,
+                    bytes, auth.reason() + " (claims robot " + robotId + ")", Origin.LIVE, Authenticity.FORGED);
+        }
+        if (auth.authenticity() == Authenticity.UNVERIFIED) {
+            counters.countUnverified();
+        }
+        if (auth.note() != null) {
+            org.slf4j.LoggerFactory.getLogger(FumanoidDecoder.class).info(auth.note());
+        }
         if (robotId >= 0) {
             peers.learn(robotId, d.sender(), f.framing());
         }
         return new Envelope(d.timeMicros(), Direction.IN, Channel.FUMANOID, d.sender(), robotId, decoded.kind(),
-                decoded.message(), d.bytes(), null);
+                decoded.message(), bytes, null, Origin.LIVE, auth.authenticity());
     }
 
     private Envelope malformed(ReceivedDatagram d, String reason) {

@@ -40,6 +40,16 @@ public final class PeerTable {
                 && java.util.Objects.equals(known.getAddress(), source.getAddress());
     }
 
+    /** The robot last seen at this address (with a fixed robot port: at this host), if any. */
+    public Optional<Integer> robotAt(InetSocketAddress address) {
+        for (Map.Entry<Integer, Peer> e : peers.entrySet()) {
+            if (sameTarget(e.getValue().address(), address)) {
+                return Optional.of(e.getKey());
+            }
+        }
+        return Optional.empty();
+    }
+
     public Optional<Peer> peer(int robotId) {
         return Optional.ofNullable(peers.get(robotId));
     }

@@ -30,6 +30,31 @@ public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
     private volatile SendGate gate = SendGate.open();
     private volatile ChannelHandlerContext ctx;
     private ScheduledFuture<?> poller;
+    private volatile SegmentAuth auth = SegmentAuth.NONE;
+
+    /** Tags segments going out and checks those coming in (the team key; {@link #NONE} without one). */
+    public interface SegmentAuth {
+        SegmentAuth NONE = new SegmentAuth() {
+            @Override
+            public byte[] seal(InetSocketAddress peer, byte[] segment) {
+                return segment;
+            }
+
+            @Override
+            public byte[] open(InetSocketAddress peer, byte[] datagram) {
+                return datagram;
+            }
+        };
+
+        byte[] seal(InetSocketAddress peer, byte[] segment);
+
+        /** The segment without its trailer, or null when it is forged (dropped). */
+        byte[] open(InetSocketAddress peer, byte[] datagram);
+    }
+
+    public void useAuth(SegmentAuth auth) {
+        this.auth = auth;
+    }
 
     public ReliableStreamHandler(EnvelopeSink sink, MicrosClock clock) {
         this.sink = sink;
@@ -78,9 +103,15 @@ public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
         if (msg instanceof ReceivedDatagram d && d.datagramClass() == DatagramClass.RELIABLE_STREAM) {
             ReliableSession s = sessions.get(d.sender());
             if (s != null) {
+                byte[] segment = auth.open(d.sender(), d.bytes());
+                if (segment == null) {
+                    sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
+                            Envelope.NO_ROBOT, "forged", null, d.bytes(), "forged reliable-stream segment: dropped"));
+                    return;
+                }
                 sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
-                        Envelope.NO_ROBOT, d.bytes().length == 2 ? "reliable.ack" : "reliable.data", null, d.bytes(), null));
-                s.input(d.bytes(), d.timeMicros() / 1000);
+                        Envelope.NO_ROBOT, segment.length == 2 ? "reliable.ack" : "reliable.data", null, d.bytes(), null));
+                s.input(segment, d.timeMicros() / 1000);
                 return;
             }
         }
@@ -92,8 +123,9 @@ public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
         if (c == null || gate.holdReason().isPresent()) {
             return; // held: the stop-and-wait machine retransmits once the gate opens
         }
-        c.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(datagram), peer));
+        byte[] wire = auth.seal(peer, datagram);
+        c.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(wire), peer));
         sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, Channel.RELIABLE_STREAM, peer, Envelope.NO_ROBOT,
-                datagram.length == 2 ? "reliable.ack" : "reliable.data", null, datagram, null));
+                datagram.length == 2 ? "reliable.ack" : "reliable.data", null, wire, null));
     }
 }

@@ -11,6 +11,8 @@ public final class TrafficCounters {
     private final LongAdder bytesOut = new LongAdder();
     private final LongAdder malformedIn = new LongAdder();
     private final LongAdder held = new LongAdder();
+    private final LongAdder forgedIn = new LongAdder();
+    private final LongAdder unverifiedIn = new LongAdder();
 
     void countIn(int bytes) {
         datagramsIn.increment();
@@ -26,6 +28,14 @@ public final class TrafficCounters {
         malformedIn.increment();
     }
 
+    void countForged() {
+        forgedIn.increment();
+    }
+
+    void countUnverified() {
+        unverifiedIn.increment();
+    }
+
     void countHeld() {
         held.increment();
     }
@@ -36,4 +46,8 @@ public final class TrafficCounters {
     public long bytesOut() { return bytesOut.sum(); }
     public long malformedIn() { return malformedIn.sum(); }
     public long held() { return held.sum(); }
+    /** Robot datagrams dropped for a wrong, cut or replayed tag (with a team key). */
+    public long forgedIn() { return forgedIn.sum(); }
+    /** Robot datagrams without a tag, taken as unverified. */
+    public long unverifiedIn() { return unverifiedIn.sum(); }
 }

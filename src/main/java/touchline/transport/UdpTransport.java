@@ -16,6 +16,10 @@ import touchline.proto.Fumanoid;
 import touchline.protocol.FrameCodec;
 import touchline.protocol.Framing;
 import touchline.protocol.MessageCodec;
+import touchline.security.Authenticity;
+import touchline.security.InboundVerifier;
+import touchline.security.LinkSecurity;
+import touchline.security.Trailer;
 
 import java.net.InetSocketAddress;
 import java.util.Optional;
@@ -37,6 +41,8 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     private final TrafficCounters counters = new TrafficCounters();
     private volatile SendGate gate = SendGate.open();
     private final ChannelHandler[] extraInbound;
+    private final LinkSecurity security;
+    private final InboundVerifier verifier;
     private EventLoopGroup group;
     private DatagramChannel channel;
     private volatile UdpBackend backend;
@@ -47,6 +53,17 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
      */
     public UdpTransport(UdpConfig config, MessageCodec messages, EnvelopeSink sink, MicrosClock clock,
                         ChannelHandler... extraInbound) {
+        this(config, LinkSecurity.off(), messages, sink, clock, extraInbound);
+    }
+
+    /**
+     * @param security the team key: with one, every datagram to a robot is tagged here (the one
+     *                 send path) and every robot datagram checked before it is decoded further
+     */
+    public UdpTransport(UdpConfig config, LinkSecurity security, MessageCodec messages, EnvelopeSink sink,
+                        MicrosClock clock, ChannelHandler... extraInbound) {
+        this.security = security;
+        this.verifier = security.verifier();
         this.config = config;
         this.messages = messages;
         this.sink = sink;
@@ -79,7 +96,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                         for (int i = 0; i < extraInbound.length; i++) {
                             ch.pipeline().addLast("extra" + i, extraInbound[i]);
                         }
-                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters, sink));
+                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters, sink, verifier));
                     }
                 });
         if (mmsg) {
@@ -145,17 +162,55 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         return sendRaw(target, datagram, Channel.FUMANOID, robotId, kindOf(message), message);
     }
 
-    /** Sends bytes that are already framed (reliable-stream segments); not gated here: callers gate. */
+    /**
+     * Sends bytes that are already framed; not gated here: callers gate. With a team key the
+     * datagram is tagged for {@code robotId} here, so nothing reaches a robot untagged.
+     */
     public SendResult sendRaw(InetSocketAddress target, byte[] datagram, Channel kindChannel, int robotId, String kind,
                               com.google.protobuf.Message decoded) {
         DatagramChannel ch = channel;
         if (ch == null || !ch.isActive()) {
             return SendResult.failed("the console's UDP socket is closed");
         }
+        if (security.tagger().isPresent()) {
+            if (datagram.length + Trailer.SIZE > FrameCodec.MAX_DATAGRAM) {
+                return SendResult.failed("datagram of " + datagram.length + " bytes leaves no room for its "
+                        + Trailer.SIZE + "-byte tag within " + FrameCodec.MAX_DATAGRAM + " bytes");
+            }
+            datagram = security.tagger().get().tag(robotId, datagram);
+        }
         counters.countOut(datagram.length);
         ch.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(datagram), target));
         sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, kindChannel, target, robotId, kind, decoded, datagram, null));
         return SendResult.sent();
+    }
+
+    public LinkSecurity security() {
+        return security;
+    }
+
+    /**
+     * The reliable stream's segments under the same key: tagged for the robot last seen at the
+     * peer's address on the way out, checked (and the trailer taken off) on the way in; null =
+     * forged, dropped and counted.
+     */
+    public ReliableStreamHandler.SegmentAuth segmentAuth() {
+        return new ReliableStreamHandler.SegmentAuth() {
+            @Override
+            public byte[] seal(InetSocketAddress peer, byte[] segment) {
+                return security.tagger().map(t -> t.tag(peers.robotAt(peer).orElse(0xFF), segment)).orElse(segment);
+            }
+
+            @Override
+            public byte[] open(InetSocketAddress peer, byte[] datagram) {
+                InboundVerifier.Result r = verifier.check(peers.robotAt(peer).orElse(0xFF), datagram);
+                if (r.authenticity() == Authenticity.FORGED) {
+                    counters.countForged();
+                    return null;
+                }
+                return r.payloadLength() == datagram.length ? datagram : java.util.Arrays.copyOf(datagram, r.payloadLength());
+            }
+        };
     }
 
     private String kindOf(Fumanoid.Message message) {

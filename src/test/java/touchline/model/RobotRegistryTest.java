@@ -59,6 +59,54 @@ class RobotRegistryTest {
         assertEquals(1, registry.robot(2).orElseThrow().malformed());
     }
 
+    private Envelope withAuth(Envelope e, touchline.security.Authenticity auth) {
+        return new Envelope(e.timeMicros(), e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(), e.message(),
+                e.raw(), e.error(), e.origin(), auth);
+    }
+
+    private Envelope statusWithBoot(int id, int boot, int badTags) {
+        Fumanoid.Message m = Fumanoid.Message.newBuilder().setRobotID(id).setExtension(Fumanoid.status,
+                Fumanoid.Status.newBuilder().setTeamID(13).setAuth(Fumanoid.AuthCounters.newBuilder().setAccepted(4)
+                        .setBadTag(badTags).setReplayed(1).setBootId(boot)).build()).build();
+        return withAuth(new Envelope(now[0], Direction.IN, Channel.FUMANOID, a, id, "status", m, new byte[40], null),
+                touchline.security.Authenticity.VERIFIED);
+    }
+
+    @Test
+    void forgeriesAreShownOnTheRobotTheyClaimWithTheirSourceAndNeverTakenAsItsData() {
+        InetSocketAddress attacker = new InetSocketAddress("10.0.0.66", 5000);
+        Envelope forged = new Envelope(now[0], Direction.IN, Channel.FUMANOID, attacker, 7, "forged", null, new byte[60],
+                "forged: bad tag (claims robot 7)", touchline.transport.Origin.LIVE, touchline.security.Authenticity.FORGED);
+        registry.accept(forged);
+        registry.accept(forged);
+        RobotSnapshot r = registry.robot(7).orElseThrow();
+        assertFalse(r.online());
+        assertEquals(0, r.packets());
+        assertEquals(touchline.security.Authenticity.FORGED, r.auth().state());
+        assertEquals(2, r.auth().forged());
+        assertTrue(r.auth().lastForgery().startsWith("10.0.0.66:5000: forged: bad tag"), r.auth().lastForgery());
+        assertEquals("forged ×2", r.auth().describe());
+        assertEquals(2, registry.notes().size(), "the 1st and 2nd forgery are noted (then the 4th, 8th...)");
+        registry.accept(forged);
+        assertEquals(2, registry.notes().size());
+        registry.accept(forged);
+        assertEquals(3, registry.notes().size());
+        assertEquals(1, registry.sources().size(), "counted against its source");
+        assertEquals(4, registry.sources().get(0).malformed());
+    }
+
+    @Test
+    void verifiedDataTheRobotsOwnRejectionsAndARestartAreShown() {
+        registry.accept(statusWithBoot(3, 0x11, 3));
+        RobotSnapshot r = registry.robot(3).orElseThrow();
+        assertEquals(touchline.security.Authenticity.VERIFIED, r.auth().state());
+        assertEquals("verified; robot rejected: 3 bad tag, 1 replayed", r.auth().describe());
+        registry.accept(statusWithBoot(3, 0x22, 0));
+        assertTrue(registry.notes().contains("robot 3 restarted: counter reset, accepted"), registry.notes().toString());
+        registry.accept(withAuth(status(5, a, "goalie"), touchline.security.Authenticity.UNVERIFIED));
+        assertEquals("unverified", registry.robot(5).orElseThrow().auth().describe());
+    }
+
     @Test
     void robotChangingAddressIsNoted() {
         registry.accept(status(2, a, "striker"));

@@ -8,15 +8,23 @@ import touchline.protocol.FrameCodec;
 import touchline.protocol.Framing;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
+import touchline.security.Authenticity;
+import touchline.security.CounterSource;
+import touchline.security.LinkSecurity;
+import touchline.security.MessageTag;
+import touchline.security.TeamKey;
+import touchline.security.Trailer;
 
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.util.Arrays;
 import java.util.HexFormat;
 import java.util.Optional;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -40,6 +48,18 @@ class UdpTransportTest {
     void stop() {
         transport.close();
         robot.close();
+    }
+
+    private final TeamKey key = new TeamKey(new byte[32]);
+    private final MessageTag robotSide = new MessageTag(key);
+    private final AtomicLong clock = new AtomicLong(1_000_000L);
+
+    /** The same transport, restarted with a team key whose counter follows a fake clock. */
+    private void useTeamKey() throws Exception {
+        transport.close();
+        transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
+                LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
+                new MessageCodec(new MessageKinds()), received::add, MicrosClock.system()).start();
     }
 
     private void send(byte[] bytes) throws Exception {
@@ -145,5 +165,56 @@ class UdpTransportTest {
         SendResult r = transport.send(99, new MessageCodec(new MessageKinds()).optionListRequest());
         assertEquals(SendResult.Outcome.FAILED, r.outcome());
         assertTrue(r.reason().contains("not been seen"));
+    }
+
+    @Test
+    void withATeamKeyTaggedRobotDataIsVerifiedInBothFramingsAndForgeriesAreDroppedWithTheirSource() throws Exception {
+        useTeamKey();
+        send(robotSide.append(MessageTag.FROM_ROBOT, 3, 1, status(3, Framing.LENGTH_PREFIX)));
+        Envelope ok = next();
+        assertEquals(Authenticity.VERIFIED, ok.authenticity());
+        assertEquals("status", ok.kind(), "the length header is read without the trailer");
+        send(robotSide.append(MessageTag.FROM_ROBOT, 3, 2, status(3, Framing.LEGACY)));
+        assertEquals(Authenticity.VERIFIED, next().authenticity());
+
+        send(robotSide.append(MessageTag.FROM_ROBOT, 3, 2, status(3, Framing.LEGACY))); // replayed
+        Envelope replay = next();
+        assertEquals(Authenticity.FORGED, replay.authenticity());
+        assertNull(replay.message(), "a forgery's data is not passed on");
+        assertTrue(replay.error().contains("replayed"), replay.error());
+        send(robotSide.append(MessageTag.FROM_ROBOT, 4, 3, status(3, Framing.LEGACY))); // tagged for robot 4
+        assertTrue(next().error().contains("bad tag"));
+        send(status(3, Framing.LEGACY)); // untagged in the name of a robot that tags
+        assertTrue(next().error().contains("untagged"));
+        send(status(5, Framing.LEGACY)); // a robot without a key
+        assertEquals(Authenticity.UNVERIFIED, next().authenticity());
+        assertEquals(3, transport.counters().forgedIn());
+        assertEquals(1, transport.counters().unverifiedIn());
+    }
+
+    @Test
+    void withATeamKeyEverythingSentToARobotIsTaggedForThatRobotWithIncreasingCounters() throws Exception {
+        useTeamKey();
+        send(robotSide.append(MessageTag.FROM_ROBOT, 3, 1, status(3, Framing.LEGACY)));
+        next();
+        Fumanoid.Message request = Fumanoid.Message.newBuilder().setRobotID(0)
+                .setExtension(Fumanoid.debugOptionListRequest, Fumanoid.DebugOptionListRequest.getDefaultInstance()).build();
+        long[] counters = new long[2];
+        for (int i = 0; i < 2; i++) {
+            assertTrue(transport.send(3, request).isSent());
+            Envelope out = next();
+            assertEquals(Direction.OUT, out.direction());
+            DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
+            robot.receive(p);
+            byte[] wire = Arrays.copyOf(p.getData(), p.getLength());
+            assertArrayEquals(wire, out.raw(), "the envelope shows what went out, tag included");
+            Trailer t = Trailer.of(wire);
+            assertInstanceOf(Trailer.Present.class, t);
+            assertEquals(MessageTag.Check.OK, robotSide.check(MessageTag.TO_ROBOT, 3, wire, t));
+            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.TO_ROBOT, 4, wire, t));
+            counters[i] = ((Trailer.Present) t).counter();
+        }
+        assertTrue(counters[1] > counters[0]);
+        assertEquals(1_000_000L, counters[0], "the counter follows the (fake) clock");
     }
 }

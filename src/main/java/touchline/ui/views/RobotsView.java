@@ -63,6 +63,7 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
         table.getColumns().add(column("Malformed", r -> Long.toString(r.malformed()), 72));
+        table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 150));
         table.getColumns().add(columns.column("Address", r -> r.address() == null ? "" : r.address().getHostString()
                 + ":" + r.address().getPort(), 130, "127.000.000.100:65535"));
         problems.setEditable(false);

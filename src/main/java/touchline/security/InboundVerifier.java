@@ -1,0 +1,78 @@
+package touchline.security;
+
+/**
+ * The console's check of the small robots' datagrams: strips the trailer, checks the tag with
+ * the team key and the counter with a {@link ReplayGuard}. Without a key every datagram is
+ * {@link Authenticity#UNVERIFIED} (a tagged one has its trailer taken off). A robot that has sent
+ * verified data is expected to go on tagging: untagged data claiming its id is then forged.
+ * Pure; called on the network thread.
+ */
+public final class InboundVerifier {
+
+    /**
+     * @param payloadLength the datagram's length without the trailer (decode only these bytes)
+     * @param reason        why it is forged, else null
+     * @param note          a remark to show once (a robot's restart), else null
+     */
+    public record Result(Authenticity authenticity, int payloadLength, String reason, String note) { }
+
+    private final MessageTag tag;
+    private final ReplayGuard guard = new ReplayGuard();
+    private final boolean[] tagged = new boolean[256];
+
+    /** @param key the team key, or null for a console without one (everything unverified) */
+    public InboundVerifier(TeamKey key) {
+        this.tag = key == null ? null : new MessageTag(key);
+    }
+
+    public boolean hasKey() {
+        return tag != null;
+    }
+
+    /** Where the payload ends: robots' datagrams are decoded from these bytes, before {@link #check}. */
+    public static int payloadLength(byte[] datagram) {
+        return Trailer.of(datagram) instanceof Trailer.Present p ? p.payloadLength() : datagram.length;
+    }
+
+    /** The verdict on a datagram whose payload said it comes from {@code robotId}. */
+    public synchronized Result check(int robotId, byte[] datagram) {
+        Trailer trailer = Trailer.of(datagram);
+        int payload = trailer instanceof Trailer.Present p ? p.payloadLength() : datagram.length;
+        if (tag == null) {
+            return new Result(Authenticity.UNVERIFIED, payload, null, null);
+        }
+        int id = robotId & 0xFF;
+        MessageTag.Check c = tag.check(MessageTag.FROM_ROBOT, robotId, datagram, trailer);
+        switch (c) {
+            case NO_TAG -> {
+                return tagged[id]
+                        ? forged(payload, "untagged data claiming robot " + robotId + ", which tags its datagrams")
+                        : new Result(Authenticity.UNVERIFIED, payload, null, null);
+            }
+            case TRUNCATED -> {
+                return forged(payload, "tag cut short (" + ((Trailer.Truncated) trailer).bytes() + " of 32 trailer bytes)");
+            }
+            case WRONG_KEY -> {
+                return forged(payload, "tagged with another team key (key-id "
+                        + java.util.HexFormat.of().formatHex(datagram, payload + 4, payload + 8) + ", ours "
+                        + tag.key().idHex() + ")");
+            }
+            case BAD_TAG -> {
+                return forged(payload, "bad tag");
+            }
+            default -> { }
+        }
+        long counter = ((Trailer.Present) trailer).counter();
+        ReplayGuard.Verdict v = guard.check(robotId, counter);
+        if (!v.accepted()) {
+            return forged(payload, "replayed or old counter " + Long.toUnsignedString(counter, 16));
+        }
+        tagged[id] = true;
+        return new Result(Authenticity.VERIFIED, payload, null,
+                v.restarted() ? "robot " + robotId + " restarted: counter reset, accepted" : null);
+    }
+
+    private static Result forged(int payload, String reason) {
+        return new Result(Authenticity.FORGED, payload, "forged: " + reason, null);
+    }
+}

@@ -1,0 +1,189 @@
+package touchline.security;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.security.SecureRandom;
+import java.time.Instant;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The key directory (docs/security.md): {@code team.key} for the small robots' tags and the
+ * CURVE key pairs of the NAO link ({@code nao-server.secret/.public}, {@code console.secret/.public}),
+ * made with owner-only permissions (directory 0700, files 0600, the {@code .public} files 0644),
+ * plus {@code console.counter}, the reservation of the console's tag counter.
+ */
+public final class KeyDir {
+
+    public static final String TEAM_KEY = "team.key";
+    public static final String NAO_SERVER_SECRET = "nao-server.secret";
+    public static final String NAO_SERVER_PUBLIC = "nao-server.public";
+    public static final String CONSOLE_SECRET = "console.secret";
+    public static final String CONSOLE_PUBLIC = "console.public";
+    public static final String COUNTER = "console.counter";
+    static final List<String> FILES = List.of(TEAM_KEY, NAO_SERVER_SECRET, NAO_SERVER_PUBLIC, CONSOLE_SECRET, CONSOLE_PUBLIC);
+
+    private static final Set<PosixFilePermission> OWNER_ONLY = PosixFilePermissions.fromString("rw-------");
+    private static final Set<PosixFilePermission> READABLE = PosixFilePermissions.fromString("rw-r--r--");
+
+    private final Path dir;
+
+    public KeyDir(Path dir) {
+        this.dir = dir;
+    }
+
+    /** {@code --keys DIR}, else {@code TOUCHLINE_KEYS}, else {@code ${XDG_CONFIG_HOME:-$HOME/.config}/touchline/keys}. */
+    public static KeyDir locate(Optional<Path> option, Map<String, String> env) {
+        if (option.isPresent()) {
+            return new KeyDir(option.get());
+        }
+        String fromEnv = env.get("TOUCHLINE_KEYS");
+        if (fromEnv != null && !fromEnv.isBlank()) {
+            return new KeyDir(Path.of(fromEnv));
+        }
+        String xdg = env.get("XDG_CONFIG_HOME");
+        Path config = xdg != null && !xdg.isBlank() ? Path.of(xdg)
+                : Path.of(env.getOrDefault("HOME", System.getProperty("user.home")), ".config");
+        return new KeyDir(config.resolve("touchline").resolve("keys"));
+    }
+
+    public Path path() {
+        return dir;
+    }
+
+    public Path file(String name) {
+        return dir.resolve(name);
+    }
+
+    public boolean hasTeamKey() {
+        return Files.isRegularFile(file(TEAM_KEY));
+    }
+
+    /** The team key, or a message saying what is wrong and how to recover. */
+    public TeamKey teamKey() throws KeyException {
+        return read(TEAM_KEY, true).teamKey();
+    }
+
+    /** A key file, checked for owner-only permissions when it holds a secret. */
+    public KeyFile read(String name, boolean secret) throws KeyException {
+        Path f = file(name);
+        try {
+            if (secret) {
+                checkOwnerOnly(f);
+            }
+            return KeyFile.parse(f.toString(), Files.readString(f, StandardCharsets.UTF_8));
+        } catch (NoSuchFileException e) {
+            throw new KeyException("no key file " + f + ": make the team's keys with `touchline keys new` (or copy the"
+                    + " team's key directory here, or name it with --keys DIR); `--insecure` runs without keys");
+        } catch (java.nio.charset.MalformedInputException e) {
+            throw new KeyException(f + " is not UTF-8 text: damaged; copy it again from the team's key directory or"
+                    + " make new keys with `touchline keys new --force` (then update every robot)");
+        } catch (IOException e) {
+            throw new KeyException("cannot read " + f + ": " + e);
+        }
+    }
+
+    private static void checkOwnerOnly(Path f) throws IOException, KeyException {
+        try {
+            Set<PosixFilePermission> p = Files.getPosixFilePermissions(f);
+            for (PosixFilePermission open : List.of(PosixFilePermission.GROUP_READ, PosixFilePermission.GROUP_WRITE,
+                    PosixFilePermission.OTHERS_READ, PosixFilePermission.OTHERS_WRITE)) {
+                if (p.contains(open)) {
+                    throw new KeyException(f + " is readable or writable by others (" + PosixFilePermissions.toString(p)
+                            + "): a team key must be the owner's only; fix with `chmod 600 " + f + "`");
+                }
+            }
+        } catch (UnsupportedOperationException e) {
+            // not a POSIX file system: nothing to check
+        }
+    }
+
+    /** Writes all five files; refuses to overwrite any without {@code force}. Returns the new team key. */
+    public TeamKey create(boolean force, SecureRandom random, Instant now) throws KeyException {
+        try {
+            if (!force) {
+                for (String name : FILES) {
+                    if (Files.exists(file(name))) {
+                        throw new KeyException(file(name) + " exists: keys are not overwritten without --force (the"
+                                + " robots flashed with the old team key stop accepting this console)");
+                    }
+                }
+            }
+            Files.createDirectories(dir);
+            setPermissions(dir, PosixFilePermissions.fromString("rwx------"));
+            TeamKey team = TeamKey.generate(random);
+            String made = "# made by `touchline keys new` on " + now + "\n";
+            write(TEAM_KEY, "# Touchline team key: the small robots' message tags (docs/security.md).\n" + made
+                    + "# Needed by: every console of the team, and every small robot (`touchline keys show --c-header`).\n"
+                    + "# Secret: never commit it, never send it in plain text.\n"
+                    + "team-key = " + team.secretHex() + "\nkey-id = " + team.idHex() + "\n", true);
+            String[] nao = new zmq.io.mechanism.curve.Curve().keypairZ85();
+            String[] console = new zmq.io.mechanism.curve.Curve().keypairZ85();
+            write(NAO_SERVER_SECRET, "# CURVE server key pair of the NAO link: goes onto the NAO (its RPC module).\n"
+                    + made + "# Secret.\npublic-key = " + nao[0] + "\nsecret-key = " + nao[1] + "\n", true);
+            write(NAO_SERVER_PUBLIC, "# The NAO's CURVE public key: what a console needs to talk to that NAO.\n" + made
+                    + "public-key = " + nao[0] + "\n", false);
+            write(CONSOLE_SECRET, "# This console's CURVE client key pair (the NAO link).\n" + made
+                    + "# Secret: stays on this laptop.\npublic-key = " + console[0] + "\nsecret-key = " + console[1] + "\n", true);
+            write(CONSOLE_PUBLIC, "# This console's CURVE public key: the NAO lists one such file per team laptop.\n"
+                    + made + "public-key = " + console[0] + "\n", false);
+            Files.deleteIfExists(file(COUNTER)); // a new key starts its own counter
+            return team;
+        } catch (IOException e) {
+            throw new KeyException("cannot write the keys into " + dir + ": " + e);
+        }
+    }
+
+    private void write(String name, String text, boolean secret) throws IOException {
+        Path f = file(name);
+        Path tmp = file(name + ".tmp");
+        Files.deleteIfExists(tmp);
+        Files.createFile(tmp);
+        setPermissions(tmp, secret ? OWNER_ONLY : READABLE);
+        Files.writeString(tmp, text, StandardCharsets.UTF_8);
+        Files.move(tmp, f, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+    }
+
+    private static void setPermissions(Path p, Set<PosixFilePermission> perms) throws IOException {
+        try {
+            Files.setPosixFilePermissions(p, perms);
+        } catch (UnsupportedOperationException e) {
+            // not POSIX: the platform's defaults
+        }
+    }
+
+    /** The console counter's reservation in {@code console.counter}; a damaged file counts as 0 (the clock rules). */
+    public CounterSource.Store counterStore() {
+        Path f = file(COUNTER);
+        return new CounterSource.Store() {
+            @Override
+            public long load() {
+                try {
+                    return Long.parseLong(Files.readString(f).strip());
+                } catch (IOException | NumberFormatException e) {
+                    return 0;
+                }
+            }
+
+            @Override
+            public void save(long reservedUpTo) {
+                try {
+                    Path tmp = file(COUNTER + ".tmp");
+                    Files.writeString(tmp, Long.toString(reservedUpTo) + "\n");
+                    Files.move(tmp, f, java.nio.file.StandardCopyOption.REPLACE_EXISTING,
+                            java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+                } catch (IOException e) {
+                    // a read-only key directory: counters still increase within this run (and by the clock)
+                }
+            }
+        };
+    }
+
+}

@@ -1,0 +1,84 @@
+package touchline.security;
+
+import javax.crypto.Mac;
+import javax.crypto.spec.SecretKeySpec;
+import java.security.GeneralSecurityException;
+import java.security.MessageDigest;
+
+/**
+ * The small robots' message tag (docs/security.md): the first 16 bytes of
+ * HMAC-SHA-512(team key, direction ‖ robot id ‖ key-id ‖ counter ‖ payload), computed with the
+ * JDK's {@code javax.crypto.Mac} "HmacSHA512". Direction is {@link #TO_ROBOT} ('C') for what
+ * the console sends and {@link #FROM_ROBOT} ('R') for what a robot sends, so a robot's datagram
+ * reflected back to it never passes. Pure; one instance per thread (a Mac is not thread-safe).
+ */
+public final class MessageTag {
+
+    public static final byte TO_ROBOT = 'C';
+    public static final byte FROM_ROBOT = 'R';
+    public static final int TAG_SIZE = 16;
+
+    /** Why a datagram is not authentic, or OK. */
+    public enum Check { OK, NO_TAG, TRUNCATED, WRONG_KEY, BAD_TAG }
+
+    private final TeamKey key;
+    private final Mac mac;
+    private final byte[] head = new byte[2 + TeamKey.ID_SIZE + 8];
+
+    public MessageTag(TeamKey key) {
+        this.key = key;
+        try {
+            mac = Mac.getInstance("HmacSHA512");
+            mac.init(new SecretKeySpec(key.secret(), "HmacSHA512"));
+        } catch (GeneralSecurityException e) {
+            throw new IllegalStateException("the JDK has no HmacSHA512", e);
+        }
+        System.arraycopy(key.id(), 0, head, 2, TeamKey.ID_SIZE);
+    }
+
+    public TeamKey key() {
+        return key;
+    }
+
+    /** The 16-byte tag over {@code payload[off, off+len)}. */
+    public byte[] tag(byte direction, int robotId, long counter, byte[] payload, int off, int len) {
+        head[0] = direction;
+        head[1] = (byte) robotId;
+        Trailer.putLong(head, 2 + TeamKey.ID_SIZE, counter);
+        mac.update(head);
+        mac.update(payload, off, len);
+        byte[] full = mac.doFinal();
+        byte[] tag = java.util.Arrays.copyOf(full, TAG_SIZE);
+        java.util.Arrays.fill(full, (byte) 0);
+        return tag;
+    }
+
+    /** A new array: payload followed by the 32-byte trailer. */
+    public byte[] append(byte direction, int robotId, long counter, byte[] payload) {
+        byte[] out = java.util.Arrays.copyOf(payload, payload.length + Trailer.SIZE);
+        int at = payload.length;
+        System.arraycopy(Trailer.MAGIC, 0, out, at, 4);
+        System.arraycopy(key.id(), 0, out, at + 4, TeamKey.ID_SIZE);
+        Trailer.putLong(out, at + 8, counter);
+        System.arraycopy(tag(direction, robotId, counter, payload, 0, payload.length), 0, out, at + 16, TAG_SIZE);
+        return out;
+    }
+
+    /** Checks the trailer of a datagram (the counter's order is the caller's: {@link ReplayGuard}). */
+    public Check check(byte direction, int robotId, byte[] datagram, Trailer trailer) {
+        if (trailer instanceof Trailer.Absent) {
+            return Check.NO_TAG;
+        }
+        if (trailer instanceof Trailer.Truncated) {
+            return Check.TRUNCATED;
+        }
+        Trailer.Present p = (Trailer.Present) trailer;
+        int at = p.payloadLength();
+        if (!key.sameId(datagram, at + 4)) {
+            return Check.WRONG_KEY;
+        }
+        byte[] expected = tag(direction, robotId, p.counter(), datagram, 0, at);
+        byte[] actual = java.util.Arrays.copyOfRange(datagram, at + 16, at + 16 + TAG_SIZE);
+        return MessageDigest.isEqual(expected, actual) ? Check.OK : Check.BAD_TAG; // constant time
+    }
+}

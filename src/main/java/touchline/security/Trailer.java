@@ -1,0 +1,56 @@
+package touchline.security;
+
+/**
+ * The authentication trailer of the small robots' datagrams (docs/security.md):
+ * {@code payload ‖ "TLA1" ‖ key-id (4) ‖ counter (8, big-endian) ‖ tag (16)}. Pure parsing:
+ * where the payload ends and what the trailer says, or why there is none.
+ */
+public sealed interface Trailer {
+
+    int SIZE = 32;
+    byte[] MAGIC = {'T', 'L', 'A', '1'};
+
+    /** A whole trailer: the payload is {@code datagram[0, payloadLength)}. */
+    record Present(int payloadLength, long counter) implements Trailer { }
+
+    /** No trailer: the datagram is all payload. */
+    record Absent() implements Trailer { }
+
+    /** The magic found, but fewer than 32 bytes from it to the end: a tag cut short. */
+    record Truncated(int bytes) implements Trailer { }
+
+    static Trailer of(byte[] d, int length) {
+        if (length >= SIZE && magicAt(d, length - SIZE)) {
+            return new Present(length - SIZE, getLong(d, length - SIZE + 8));
+        }
+        for (int back = SIZE - 1; back >= MAGIC.length; back--) {
+            if (back <= length && magicAt(d, length - back)) {
+                return new Truncated(back);
+            }
+        }
+        return new Absent();
+    }
+
+    static Trailer of(byte[] d) {
+        return of(d, d.length);
+    }
+
+    private static boolean magicAt(byte[] d, int at) {
+        return d[at] == 'T' && d[at + 1] == 'L' && d[at + 2] == 'A' && d[at + 3] == '1';
+    }
+
+    static long getLong(byte[] d, int at) {
+        long v = 0;
+        for (int i = 0; i < 8; i++) {
+            v = (v << 8) | (d[at + i] & 0xFF);
+        }
+        return v;
+    }
+
+    static void putLong(byte[] d, int at, long v) {
+        for (int i = 7; i >= 0; i--) {
+            d[at + i] = (byte) v;
+            v >>>= 8;
+        }
+    }
+}

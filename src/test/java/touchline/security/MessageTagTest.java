@@ -1,0 +1,79 @@
+package touchline.security;
+
+import org.junit.jupiter.api.Test;
+
+import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+import java.util.HexFormat;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * The tag and trailer against the golden vector that the firmware's test_auth.c also checks
+ * (computed independently with Python's hmac: key 00 01 … 1f, robot 3, counter 0x0123456789abcdef,
+ * payload "hello"), and every way a datagram is refused.
+ */
+class MessageTagTest {
+
+    static TeamKey goldenKey() {
+        byte[] k = new byte[32];
+        for (int i = 0; i < 32; i++) {
+            k[i] = (byte) i;
+        }
+        return new TeamKey(k);
+    }
+
+    private static final byte[] HELLO = "hello".getBytes(StandardCharsets.US_ASCII);
+
+    @Test
+    void goldenVectorMatchesTheFirmwareAndPython() {
+        TeamKey key = goldenKey();
+        assertEquals("630dcd29", key.idHex());
+        MessageTag tag = new MessageTag(key);
+        assertEquals("6128746b381532b96a3de7358ff8d1bb",
+                HexFormat.of().formatHex(tag.tag(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
+        assertEquals("d2303baa78365196afe9afe96adb6b79",
+                HexFormat.of().formatHex(tag.tag(MessageTag.FROM_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
+        assertEquals("f3200273ac5a27fc1c9ccafc26a60c07",
+                HexFormat.of().formatHex(tag.tag(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 0)));
+    }
+
+    @Test
+    void trailerLayoutIsMagicKeyIdCounterTag() {
+        byte[] d = new MessageTag(goldenKey()).append(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO);
+        assertEquals("68656c6c6f" + "544c4131" + "630dcd29" + "0123456789abcdef" + "6128746b381532b96a3de7358ff8d1bb",
+                HexFormat.of().formatHex(d));
+        assertEquals(new Trailer.Present(5, 0x0123456789abcdefL), Trailer.of(d));
+    }
+
+    @Test
+    void refusesNoTagCutTagOtherKeyOtherRobotOtherDirectionAndChangedBytes() {
+        MessageTag tag = new MessageTag(goldenKey());
+        byte[] good = tag.append(MessageTag.TO_ROBOT, 3, 42, HELLO);
+        assertEquals(MessageTag.Check.OK, tag.check(MessageTag.TO_ROBOT, 3, good, Trailer.of(good)));
+        assertEquals(MessageTag.Check.NO_TAG, tag.check(MessageTag.TO_ROBOT, 3, HELLO, Trailer.of(HELLO)));
+        byte[] cut = Arrays.copyOf(good, good.length - 8);
+        assertEquals(new Trailer.Truncated(24), Trailer.of(cut));
+        assertEquals(MessageTag.Check.TRUNCATED, tag.check(MessageTag.TO_ROBOT, 3, cut, Trailer.of(cut)));
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.TO_ROBOT, 4, good, Trailer.of(good)));
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.FROM_ROBOT, 3, good, Trailer.of(good)));
+        byte[] changed = good.clone();
+        changed[0] ^= 1;
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.TO_ROBOT, 3, changed, Trailer.of(changed)));
+        byte[] counterChanged = good.clone();
+        counterChanged[5 + 15] ^= 1;
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.TO_ROBOT, 3, counterChanged, Trailer.of(counterChanged)));
+        byte[] other = new byte[32];
+        other[0] = 1;
+        byte[] foreign = new MessageTag(new TeamKey(other)).append(MessageTag.TO_ROBOT, 3, 42, HELLO);
+        assertEquals(MessageTag.Check.WRONG_KEY, tag.check(MessageTag.TO_ROBOT, 3, foreign, Trailer.of(foreign)));
+    }
+
+    @Test
+    void keysOfTheWrongLengthAreRefusedAndNeverPrinted() {
+        assertThrows(IllegalArgumentException.class, () -> new TeamKey(new byte[16]));
+        TeamKey key = goldenKey();
+        assertFalse(key.toString().contains(key.secretHex()));
+        assertTrue(key.toString().contains("630dcd29"));
+    }
+}
