@@ -64,13 +64,24 @@ final class ChannelTable {
         return c;
     }
 
-    /** A JSON channel (a console state, or a standard Foxglove type); null when the table is full. */
+    /** A JSON channel (a console state); null when the table is full. */
     synchronized ServedChannel addJson(String topic, String schemaName, String jsonSchema) {
         if (byId.size() >= maxChannels) {
             refused.incrementAndGet();
             return null;
         }
         ServedChannel c = new ServedChannel(nextId++, topic, "json", schemaName, jsonSchema, "jsonschema", null);
+        publish(c);
+        return c;
+    }
+
+    /** A protobuf channel of a standard Foxglove type ({@code schemaBase64}: its FileDescriptorSet); null when the table is full. */
+    synchronized ServedChannel addProtobuf(String topic, String schemaName, String schemaBase64) {
+        if (byId.size() >= maxChannels) {
+            refused.incrementAndGet();
+            return null;
+        }
+        ServedChannel c = new ServedChannel(nextId++, topic, "protobuf", schemaName, schemaBase64, "protobuf", null);
         publish(c);
         return c;
     }

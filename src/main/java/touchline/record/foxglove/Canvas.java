@@ -11,7 +11,7 @@ import java.util.Map;
 /**
  * A plain dark PNG of a given size: what HaViMo2 region rectangles are drawn on when the robot
  * sends only the rectangles, since an Image panel shows annotations only over an image. A few
- * hundred bytes, made once per size (bounded: robots send a handful of frame sizes).
+ * hundred bytes, made once per size (bounded: robots send a handful of frame sizes). Thread-safe.
  */
 final class Canvas {
 
@@ -20,7 +20,7 @@ final class Canvas {
     private final Map<Long, byte[]> bySize = new LinkedHashMap<>();
 
     /** The PNG, or null when the size is not a sensible frame ({@code 1..4096} per side). */
-    byte[] png(int width, int height) {
+    synchronized byte[] png(int width, int height) {
         if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE) {
             return null;
         }

@@ -54,8 +54,8 @@ import java.util.Locale;
  * standard schema that fits (a Plot panel takes any numeric field of the raw channels). Only
  * what robots send is converted (not the console's own requests), never a malformed datagram.
  * A message whose content cannot be shown (an image format without a standard encoding, a
- * camera reply that does not parse) is counted in {@link #skipped()}. Not thread-safe: one per
- * export or server.
+ * camera reply that does not parse) is counted in {@link #skipped()}. Safe to call from several
+ * threads (the live server's publishers).
  */
 public final class StandardMessages {
 
@@ -71,7 +71,7 @@ public final class StandardMessages {
             "team cyan", "team magenta"};
 
     private final Canvas canvas = new Canvas();
-    private long skipped;
+    private final java.util.concurrent.atomic.AtomicLong skipped = new java.util.concurrent.atomic.AtomicLong();
 
     /** The standard messages {@code e} maps to; empty when nothing fits. */
     public List<StandardMessage> convert(Envelope e) {
@@ -123,7 +123,7 @@ public final class StandardMessages {
 
     /** Messages whose content had no standard form (an image format, an unreadable camera reply). */
     public long skipped() {
-        return skipped;
+        return skipped.get();
     }
 
     /** {@code robot3}, or {@code robot-unknown} when the datagram did not say. */
@@ -162,7 +162,7 @@ public final class StandardMessages {
             case Fumanoid.ImageFormat.GRAY8_VALUE, Fumanoid.ImageFormat.RGB888_VALUE -> {
                 int channels = i.getFormat() == Fumanoid.ImageFormat.GRAY8_VALUE ? 1 : 3;
                 if (w <= 0 || h <= 0 || (long) w * h * channels != data.size()) {
-                    skipped++; // the viewer would draw garbage or fail
+                    skipped.incrementAndGet(); // the viewer would draw garbage or fail
                     return List.of();
                 }
                 return List.of(new StandardMessage(topic, nanos, RawImage.newBuilder().setTimestamp(t).setFrameId(frame)
@@ -170,7 +170,7 @@ public final class StandardMessages {
                         .setData(data).build()));
             }
             default -> {
-                skipped++; // COLOR_CLASSES and unknown formats have no standard encoding
+                skipped.incrementAndGet(); // COLOR_CLASSES and unknown formats have no standard encoding
                 return List.of();
             }
         }
@@ -277,14 +277,14 @@ public final class StandardMessages {
             try {
                 r = Nao.CamResponse.parseFrom(e.raw()); // a recording keeps the reply's bytes
             } catch (InvalidProtocolBufferException x) {
-                skipped++;
+                skipped.incrementAndGet();
                 return List.of();
             }
         }
         ByteString jpeg = r.getImageData();
         String format = format(jpeg);
         if (format == null) {
-            skipped++;
+            skipped.incrementAndGet();
             return List.of();
         }
         return List.of(new StandardMessage("/nao/camera/image", nanos, CompressedImage.newBuilder()
