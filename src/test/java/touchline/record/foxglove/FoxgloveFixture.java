@@ -3,6 +3,8 @@ package touchline.record.foxglove;
 import com.google.protobuf.ByteString;
 import touchline.proto.Fumanoid;
 import touchline.proto.Nao;
+import touchline.protocol.FrameCodec;
+import touchline.protocol.Framing;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -14,28 +16,28 @@ import java.io.IOException;
 import java.net.InetSocketAddress;
 
 /** Envelopes of every kind the standard schemas take, as a robot or the NAO camera would send them. */
-final class FoxgloveFixture {
+public final class FoxgloveFixture {
 
     private FoxgloveFixture() {
     }
 
-    static Envelope in(long micros, int robot, String kind, Fumanoid.Message m) {
+    public static Envelope in(long micros, int robot, String kind, Fumanoid.Message m) {
         return new Envelope(micros, Direction.IN, Channel.FUMANOID, new InetSocketAddress("127.0.0.1", 40000 + robot),
-                robot, kind, m, m.toByteArray(), null);
+                robot, kind, m, new FrameCodec().encode(Framing.LENGTH_PREFIX, m.toByteArray()), null);
     }
 
-    static Envelope text(long micros, int robot, String option, String text) {
+    public static Envelope text(long micros, int robot, String option, String text) {
         return in(micros, robot, "debugText", Fumanoid.Message.newBuilder().setRobotID(robot).setExtension(Fumanoid.debugText,
                 Fumanoid.DebugText.newBuilder().setOption(option).setText(text).build()).build());
     }
 
-    static Envelope image(long micros, int robot, Fumanoid.ImageFormat format, int w, int h, byte[] data) {
+    public static Envelope image(long micros, int robot, Fumanoid.ImageFormat format, int w, int h, byte[] data) {
         return in(micros, robot, "debugImage", Fumanoid.Message.newBuilder().setRobotID(robot).setExtension(
                 Fumanoid.debugImage, Fumanoid.DebugImage.newBuilder().setOption("demo.image").setWidth(w).setHeight(h)
                         .setFormat(format.getNumber()).setData(ByteString.copyFrom(data)).build()).build());
     }
 
-    static Envelope regions(long micros, int robot, int[]... boxes) {
+    public static Envelope regions(long micros, int robot, int[]... boxes) {
         Fumanoid.RegionGrowing.Builder r = Fumanoid.RegionGrowing.newBuilder().setOption("havimo.region")
                 .setFrameWidth(160).setFrameHeight(120);
         for (int[] b : boxes) {
@@ -45,20 +47,20 @@ final class FoxgloveFixture {
                 .setExtension(Fumanoid.regionGrowing, r.build()).build());
     }
 
-    static Envelope status(long micros, int robot, float x, float y, float theta) {
+    public static Envelope status(long micros, int robot, float x, float y, float theta) {
         return in(micros, robot, "status", Fumanoid.Message.newBuilder().setRobotID(robot).setExtension(Fumanoid.status,
                 Fumanoid.Status.newBuilder().setRobotName("striker").setBatteryPercent(80)
                         .setRobotPosition(Fumanoid.Position.newBuilder().setX(x).setY(y).setTheta(theta)).build()).build());
     }
 
-    static Envelope naoFrame(long micros, byte[] jpeg) {
+    public static Envelope naoFrame(long micros, byte[] jpeg) {
         Nao.CamResponse r = Nao.CamResponse.newBuilder().setImageData(ByteString.copyFrom(jpeg)).build();
         return new Envelope(micros, Direction.IN, Channel.NAO_CAMERA, InetSocketAddress.createUnresolved("nao", 5556),
                 Envelope.NO_ROBOT, "frame", r, r.toByteArray(), null);
     }
 
     /** A real JPEG (a gradient), as a camera would send. */
-    static byte[] jpeg(int w, int h) throws IOException {
+    public static byte[] jpeg(int w, int h) throws IOException {
         BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
