@@ -4,6 +4,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import touchline.protocol.MessageKinds;
 import touchline.record.ChannelCsvExport;
 import touchline.record.ChunkCompression;
 import touchline.record.DebugCsvExport;
@@ -86,8 +87,9 @@ public final class ExportCommand implements Callable<Integer> {
         }
         DebugCsvExport.Kind what = parsed;
         Recording recording;
+        MessageKinds kinds = new MessageKinds();
         try {
-            recording = Recording.open(file);
+            recording = Recording.open(file, kinds);
         } catch (RecordingException e) {
             err.println("touchline export: " + e.getMessage());
             return 1;
@@ -95,7 +97,7 @@ public final class ExportCommand implements Callable<Integer> {
         try (recording) {
             int code;
             if (f.equals("foxglove")) {
-                code = foxglove(recording, err);
+                code = foxglove(recording, kinds, err);
             } else if (channel != null) {
                 code = channelCsv(recording, err);
             } else {
@@ -108,12 +110,13 @@ public final class ExportCommand implements Callable<Integer> {
         }
     }
 
-    private int foxglove(Recording recording, PrintWriter err) throws IOException {
+    private int foxglove(Recording recording, MessageKinds kinds, PrintWriter err) throws IOException {
         FoxgloveExport.Result r;
         try (OutputStream o = Files.newOutputStream(out)) {
-            r = new FoxgloveExport().write(recording, o, ChunkCompression.NONE);
+            r = new FoxgloveExport(kinds).write(recording, o, ChunkCompression.NONE);
         }
-        err.println("exported " + r.copied() + " recorded messages and " + r.standard() + " in standard schemas to " + out);
+        err.println("exported " + r.copied() + " recorded messages (FUmanoids channels under " + FoxgloveExport.RECORDED_PREFIX
+                + ") and " + r.standard() + " for the viewers' panels to " + out);
         r.standardByTopic().forEach((topic, n) -> err.println("  " + topic + ": " + n));
         if (r.skipped() > 0) {
             err.println("  " + r.skipped() + " images had no standard form (colour-class or mis-sized frames, unreadable camera replies)");

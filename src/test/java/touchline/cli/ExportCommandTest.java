@@ -125,10 +125,17 @@ class ExportCommandTest {
         }
         try (McapReader out = McapReader.open(export)) {
             Set<String> after = out.channels().values().stream().map(McapReader.ChannelInfo::topic).collect(Collectors.toSet());
-            assertTrue(after.containsAll(before), after.toString());
+            for (String topic : before) {
+                assertTrue(after.contains("/touchline" + topic), after.toString()); // the recorded channels, moved aside
+            }
+            assertTrue(after.containsAll(before), after.toString()); // ... and their content under the same names
             assertTrue(after.containsAll(Set.of("/robot/1/log", "/tf", "/field/scene")), after.toString());
             assertFalse(before.contains("/tf"));
-            assertEquals(2 + 3, out.messageCount());
+            assertEquals(2 + 2 + 3, out.messageCount()); // recorded, their content, log + transform + scene
+        }
+        try (touchline.record.Recording back = touchline.record.Recording.open(export)) {
+            assertEquals(2, back.mcap().channels().values().stream()
+                    .filter(c -> !c.metadata().containsKey(touchline.record.Recording.STANDARD_CHANNEL)).count());
         }
     }
 }

@@ -41,7 +41,7 @@ class FoxgloveExportInteropTest {
             import sys, json, hashlib
             from mcap.reader import make_reader
             from mcap_protobuf.decoder import DecoderFactory
-            out = {'topics': {}, 'log': [], 'camera': [], 'nao': [], 'regions': [], 'frames': [], 'tf': []}
+            out = {'battery': None, 'topics': {}, 'log': [], 'camera': [], 'nao': [], 'regions': [], 'frames': [], 'tf': []}
             with open(sys.argv[1], 'rb') as f:
                 r = make_reader(f, decoder_factories=[DecoderFactory()])
                 for c in r.get_summary().channels.values():
@@ -62,6 +62,8 @@ class FoxgloveExportInteropTest {
                                               + [a.type for a in m.points])
                     elif t == '/robot/3/regions/frame':
                         out['frames'].append([m.format, m.frame_id, m.timestamp.seconds, m.timestamp.nanos])
+                    elif t == '/robot/3/status':
+                        out['battery'] = m.batteryPercent
                     elif t == '/tf':
                         x = m.transforms[0]
                         out['tf'].append([x.child_frame_id, x.translation.x, x.translation.y])
@@ -91,7 +93,7 @@ class FoxgloveExportInteropTest {
         Path export = dir.resolve("match-foxglove.mcap");
         FoxgloveExport.Result result;
         try (Recording r = Recording.open(recording); OutputStream out = Files.newOutputStream(export)) {
-            result = new FoxgloveExport().write(r, out, ChunkCompression.NONE);
+            result = new FoxgloveExport(new touchline.protocol.MessageKinds()).write(r, out, ChunkCompression.NONE);
         }
         assertEquals(sent.size(), result.copied());
 
@@ -102,7 +104,11 @@ class FoxgloveExportInteropTest {
         assertEquals("foxglove.ImageAnnotations", topics.getString("/robot/3/regions"));
         assertEquals("foxglove.FrameTransforms", topics.getString("/tf"));
         assertEquals("foxglove.SceneUpdate", topics.getString("/field/scene"));
-        assertEquals("fumanoid.Message", topics.getString("/robot/3/debugText")); // the recorded channels stay
+        // the recorded channels stay, moved aside; their topics carry the extension's own type, as served live
+        assertEquals("fumanoid.Message", topics.getString("/touchline/robot/3/debugText"));
+        assertEquals("fumanoid.DebugText", topics.getString("/robot/3/debugText"));
+        assertEquals("fumanoid.Status", topics.getString("/robot/3/status"));
+        assertEquals(80, got.getInt("battery")); // a plot's path /robot/3/status.batteryPercent
         assertTrue(topics.has("/nao/camera/frame"), topics.toString());
 
         JSONArray log = got.getJSONArray("log");
@@ -144,7 +150,7 @@ class FoxgloveExportInteropTest {
         }
         Path export = dir.resolve("e.mcap");
         try (Recording r = Recording.open(recording); OutputStream out = Files.newOutputStream(export)) {
-            new FoxgloveExport().write(r, out, ChunkCompression.NONE);
+            new FoxgloveExport(new touchline.protocol.MessageKinds()).write(r, out, ChunkCompression.NONE);
         }
         try (Recording r = Recording.open(export)) {
             List<Envelope> back = new ArrayList<>();
