@@ -84,18 +84,7 @@ class FoxgloveExportInteropTest {
         sent.add(FoxgloveFixture.regions(T0 + 500_000, 3, new int[]{1, 10, 20, 30, 45}, new int[]{3, 0, 0, 5, 6}));
         sent.add(FoxgloveFixture.status(T0 + 600_000, 3, 1500, -250, 0));
         sent.add(FoxgloveFixture.naoFrame(T0 + 700_000, naoJpeg));
-        Path recording = dir.resolve("match.mcap");
-        try (EnvelopeWriter w = new EnvelopeWriter(recording, EnvelopeWriter.Options.defaults())) {
-            for (Envelope e : sent) {
-                w.write(e);
-            }
-        }
-        Path export = dir.resolve("match-foxglove.mcap");
-        FoxgloveExport.Result result;
-        try (Recording r = Recording.open(recording); OutputStream out = Files.newOutputStream(export)) {
-            result = new FoxgloveExport(new touchline.protocol.MessageKinds()).write(r, out, ChunkCompression.NONE);
-        }
-        assertEquals(sent.size(), result.copied());
+        Path export = FoxgloveFixture.recordAndExport(dir, sent);
 
         JSONObject got = new JSONObject(PythonMcap.run(READ, export).lines().reduce((a, b) -> b).orElseThrow());
         JSONObject topics = got.getJSONObject("topics");
@@ -142,16 +131,7 @@ class FoxgloveExportInteropTest {
     @Test
     void touchlineStillReplaysTheExportAsTheRecording() throws Exception {
         List<Envelope> sent = List.of(FoxgloveFixture.text(T0, 1, "o", "one"), FoxgloveFixture.status(T0 + 10, 1, 1, 2, 0));
-        Path recording = dir.resolve("r.mcap");
-        try (EnvelopeWriter w = new EnvelopeWriter(recording, EnvelopeWriter.Options.defaults())) {
-            for (Envelope e : sent) {
-                w.write(e);
-            }
-        }
-        Path export = dir.resolve("e.mcap");
-        try (Recording r = Recording.open(recording); OutputStream out = Files.newOutputStream(export)) {
-            new FoxgloveExport(new touchline.protocol.MessageKinds()).write(r, out, ChunkCompression.NONE);
-        }
+        Path export = FoxgloveFixture.recordAndExport(dir, sent);
         try (Recording r = Recording.open(export)) {
             List<Envelope> back = new ArrayList<>();
             Recording.Cursor c = r.cursor(Long.MIN_VALUE);

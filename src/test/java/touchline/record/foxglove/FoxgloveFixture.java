@@ -4,6 +4,11 @@ import com.google.protobuf.ByteString;
 import touchline.proto.Fumanoid;
 import touchline.proto.Nao;
 import touchline.protocol.FrameCodec;
+import touchline.protocol.MessageKinds;
+import touchline.record.ChunkCompression;
+import touchline.record.EnvelopeWriter;
+import touchline.record.Recording;
+import touchline.record.RecordingException;
 import touchline.protocol.Framing;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
@@ -13,7 +18,11 @@ import javax.imageio.ImageIO;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.net.InetSocketAddress;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
 
 /** Envelopes of every kind the standard schemas take, as a robot or the NAO camera would send them. */
 public final class FoxgloveFixture {
@@ -57,6 +66,23 @@ public final class FoxgloveFixture {
         Nao.CamResponse r = Nao.CamResponse.newBuilder().setImageData(ByteString.copyFrom(jpeg)).build();
         return new Envelope(micros, Direction.IN, Channel.NAO_CAMERA, InetSocketAddress.createUnresolved("nao", 5556),
                 Envelope.NO_ROBOT, "frame", r, r.toByteArray(), null);
+    }
+
+    /** Records {@code sent} as the console would ({@code dir/recording.mcap}), exports it for Foxglove; returns the export. */
+    public static Path recordAndExport(Path dir, List<Envelope> sent) throws IOException {
+        Path recording = dir.resolve("recording.mcap");
+        try (EnvelopeWriter w = new EnvelopeWriter(recording, EnvelopeWriter.Options.defaults())) {
+            for (Envelope e : sent) {
+                w.write(e);
+            }
+        }
+        Path export = dir.resolve("recording-foxglove.mcap");
+        try (Recording r = Recording.open(recording); OutputStream out = Files.newOutputStream(export)) {
+            new FoxgloveExport(new MessageKinds()).write(r, out, ChunkCompression.NONE);
+        } catch (RecordingException e) {
+            throw new IOException(e.getMessage(), e);
+        }
+        return export;
     }
 
     /** A real JPEG (a gradient), as a camera would send. */

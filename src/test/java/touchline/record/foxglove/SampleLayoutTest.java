@@ -56,16 +56,7 @@ class SampleLayoutTest {
                     .setExtension(Fumanoid.relativePositions, Fumanoid.RelativePositions.newBuilder().setOption("demo.relative")
                             .addObjects(Fumanoid.RelativeObject.newBuilder().setLabel("ball").setX(500)).build()).build()));
         }
-        Path recording = dir.resolve("team.mcap");
-        try (EnvelopeWriter w = new EnvelopeWriter(recording, EnvelopeWriter.Options.defaults())) {
-            for (Envelope e : sent) {
-                w.write(e);
-            }
-        }
-        Path export = dir.resolve("team-foxglove.mcap");
-        try (Recording r = Recording.open(recording); OutputStream out = Files.newOutputStream(export)) {
-            new FoxgloveExport(new MessageKinds()).write(r, out, ChunkCompression.NONE);
-        }
+        Path export = FoxgloveFixture.recordAndExport(dir, sent);
         Set<String> topics;
         try (McapReader m = McapReader.open(export)) {
             topics = m.channels().values().stream().map(McapReader.ChannelInfo::topic).collect(Collectors.toSet());
