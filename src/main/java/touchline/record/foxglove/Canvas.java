@@ -1,5 +1,7 @@
 package touchline.record.foxglove;
 
+import com.google.protobuf.ByteString;
+
 import javax.imageio.ImageIO;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
@@ -17,17 +19,17 @@ final class Canvas {
 
     private static final int MAX_SIDE = 4096;
     private static final int MAX_SIZES = 16;
-    private final Map<Long, byte[]> bySize = new LinkedHashMap<>();
+    private final Map<Long, ByteString> bySize = new LinkedHashMap<>();
 
     /** The PNG, or null when the size is not a sensible frame ({@code 1..4096} per side). */
-    synchronized byte[] png(int width, int height) {
+    synchronized ByteString png(int width, int height) {
         if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE) {
             return null;
         }
         long key = ((long) width << 32) | height;
-        byte[] png = bySize.get(key);
+        ByteString png = bySize.get(key);
         if (png == null) {
-            png = encode(width, height);
+            png = ByteString.copyFrom(encode(width, height)); // immutable: shared by every message of this size
             if (bySize.size() >= MAX_SIZES) {
                 bySize.remove(bySize.keySet().iterator().next());
             }

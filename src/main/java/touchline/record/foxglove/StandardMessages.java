@@ -192,10 +192,10 @@ public final class StandardMessages {
                     .setBackgroundColor(Color.newBuilder().setA(0.5)));
         }
         List<StandardMessage> out = new ArrayList<>(2);
-        byte[] png = canvas.png((int) r.getFrameWidth(), (int) r.getFrameHeight());
+        ByteString png = canvas.png((int) r.getFrameWidth(), (int) r.getFrameHeight());
         if (png != null) {
             out.add(new StandardMessage(topic + "/frame", nanos, CompressedImage.newBuilder().setTimestamp(t)
-                    .setFrameId(frame).setFormat("png").setData(ByteString.copyFrom(png)).build()));
+                    .setFrameId(frame).setFormat("png").setData(png).build()));
         }
         out.add(new StandardMessage(topic, nanos, a.build()));
         return out;
