@@ -30,10 +30,11 @@ import java.util.concurrent.Callable;
  */
 @Command(name = "export", mixinStandardHelpOptions = true,
         description = {"Export a recording for other tools:",
-                "  --format foxglove --out OUT.mcap    the recording plus Foxglove standard channels (Log, images,"
-                        + " region annotations, 3D scene) that Foxglove and Lichtblick show in their own panels",
-                "  --format csv --channel TOPIC        any protobuf channel as CSV (one column per field path)",
-                "  --robot N --kind debugPlot|debugTable --csv    a robot's plots or tables as CSV"})
+                "  --format foxglove --out OUT.mcap: the recording plus the Foxglove",
+                "    standard channels (log, images, region annotations, 3D field)",
+                "    that Foxglove and Lichtblick show in their own panels;",
+                "  --format csv --channel TOPIC: any protobuf channel as CSV;",
+                "  --robot N --kind debugPlot|debugTable --csv: a robot's plots or tables."})
 public final class ExportCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "the recording (.mcap)")
