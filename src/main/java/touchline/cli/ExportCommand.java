@@ -4,36 +4,58 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import touchline.protocol.MessageKinds;
+import touchline.record.ChannelCsvExport;
+import touchline.record.ChunkCompression;
 import touchline.record.DebugCsvExport;
 import touchline.record.Recording;
 import touchline.record.RecordingException;
+import touchline.record.foxglove.FoxgloveExport;
 
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 
-/** {@code touchline export FILE --robot N --kind debugPlot|debugTable --csv}: one robot's plots or tables as CSV. */
+/**
+ * {@code touchline export}: a recording for other tools. {@code --format foxglove --out F}: an
+ * MCAP with the recorded channels and the Foxglove standard ones beside them;
+ * {@code --format csv --channel TOPIC}: any channel as CSV; {@code --robot N --kind K --csv}:
+ * one robot's plots or tables as CSV.
+ */
 @Command(name = "export", mixinStandardHelpOptions = true,
-        description = "Export a robot's plots (debugPlot) or tables (debugTable) from a recording as CSV.")
+        description = {"Export a recording for other tools:",
+                "  --format foxglove --out OUT.mcap: the recording plus the Foxglove",
+                "    standard channels (log, images, region annotations, 3D field)",
+                "    that Foxglove and Lichtblick show in their own panels;",
+                "  --format csv --channel TOPIC: any protobuf channel as CSV;",
+                "  --robot N --kind debugPlot|debugTable --csv: a robot's plots or tables."})
 public final class ExportCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "the recording (.mcap)")
     Path file;
 
-    @Option(names = "--robot", required = true, description = "robot ID")
-    int robot;
+    @Option(names = "--format", description = "csv (default) or foxglove")
+    String format = "csv";
 
-    @Option(names = "--kind", required = true, description = "debugPlot or debugTable")
+    @Option(names = "--channel", paramLabel = "TOPIC", description = "with --format csv: the channel (topic) to export, e.g. /robot/3/status")
+    String channel;
+
+    @Option(names = "--robot", description = "robot ID (with --kind)")
+    Integer robot;
+
+    @Option(names = "--kind", description = "debugPlot or debugTable (with --robot)")
     String kind;
 
-    @Option(names = "--csv", description = "CSV output (the only format so far)")
-    boolean csv = true;
+    @Option(names = "--csv", description = "CSV output (same as --format csv)")
+    boolean csv;
 
-    @Option(names = "--out", description = "output file (default: standard output)")
+    @Option(names = "--out", description = "output file (default for CSV: standard output; required for foxglove)")
     Path out;
 
     @CommandLine.Spec
@@ -42,35 +64,110 @@ public final class ExportCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         PrintWriter err = spec.commandLine().getErr();
-        DebugCsvExport.Kind what;
-        try {
-            what = DebugCsvExport.Kind.parse(kind);
-        } catch (IllegalArgumentException e) {
-            err.println("touchline export: " + e.getMessage());
+        String f = csv ? "csv" : format.toLowerCase(Locale.ROOT);
+        if (!f.equals("csv") && !f.equals("foxglove")) {
+            err.println("touchline export: --format is csv or foxglove, not '" + format + "'");
             return 2;
         }
+        if (f.equals("foxglove") && out == null) {
+            err.println("touchline export: --format foxglove writes an MCAP file: give it with --out OUT.mcap");
+            return 2;
+        }
+        if (f.equals("csv") && channel == null && (robot == null || kind == null)) {
+            err.println("touchline export: say what to export as CSV: --channel TOPIC, or --robot N --kind debugPlot|debugTable");
+            return 2;
+        }
+        DebugCsvExport.Kind parsed = null;
+        if (f.equals("csv") && channel == null) {
+            try {
+                parsed = DebugCsvExport.Kind.parse(kind);
+            } catch (IllegalArgumentException e) {
+                err.println("touchline export: " + e.getMessage());
+                return 2;
+            }
+        }
+        DebugCsvExport.Kind what = parsed;
         Recording recording;
+        MessageKinds kinds = new MessageKinds();
         try {
-            recording = Recording.open(file);
+            recording = Recording.open(file, kinds);
         } catch (RecordingException e) {
             err.println("touchline export: " + e.getMessage());
             return 1;
         }
         try (recording) {
-            long rows;
-            if (out != null) {
-                try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
-                    rows = new DebugCsvExport(recording).write(robot, what, w);
-                }
+            int code;
+            if (f.equals("foxglove")) {
+                code = foxglove(recording, kinds, err);
+            } else if (channel != null) {
+                code = channelCsv(recording, err);
             } else {
-                PrintWriter w = spec.commandLine().getOut();
-                rows = new DebugCsvExport(recording).write(robot, what, w);
-                w.flush();
+                long rows = csv(w -> new DebugCsvExport(recording).write(robot, what, w));
+                err.println("exported " + rows + " rows" + (rows == 0 ? " (robot " + robot + " sent no " + kind + ")" : ""));
+                code = 0;
             }
             recording.problems().forEach(p -> err.println("note: " + p));
-            err.println("exported " + rows + " rows" + (rows == 0 ? " (robot " + robot + " sent no " + kind + ")" : ""));
+            return code;
+        }
+    }
+
+    private int foxglove(Recording recording, MessageKinds kinds, PrintWriter err) throws IOException {
+        FoxgloveExport.Result r;
+        try (OutputStream o = Files.newOutputStream(out)) {
+            r = new FoxgloveExport(kinds).write(recording, o, ChunkCompression.NONE);
+        }
+        err.println("exported " + r.copied() + " recorded messages (FUmanoids channels under " + FoxgloveExport.RECORDED_PREFIX
+                + ") and " + r.standard() + " for the viewers' panels to " + out);
+        r.standardByTopic().forEach((topic, n) -> err.println("  " + topic + ": " + n));
+        if (r.skipped() > 0) {
+            err.println("  " + r.skipped() + " images had no standard form (colour-class or mis-sized frames, unreadable camera replies)");
         }
         return 0;
     }
 
+    private int channelCsv(Recording recording, PrintWriter err) throws IOException {
+        ChannelCsvExport.Result[] r = new ChannelCsvExport.Result[1];
+        try {
+            csv(w -> {
+                r[0] = new ChannelCsvExport(recording).write(channel, w);
+                return r[0].rows();
+            });
+        } catch (NotExportableWrapper e) {
+            err.println("touchline export: " + e.getCause().getMessage());
+            if (out != null) {
+                Files.deleteIfExists(out);
+            }
+            return 1;
+        }
+        err.println("exported " + r[0].rows() + " rows of " + channel
+                + (r[0].undecodable() > 0 ? " (" + r[0].undecodable() + " messages did not decode and are left out)" : ""));
+        return 0;
+    }
+
+    private interface CsvBody {
+        long write(Writer w) throws IOException, ChannelCsvExport.NotExportable;
+    }
+
+    /** Carries a NotExportable out of a CSV body. */
+    private static final class NotExportableWrapper extends IOException {
+        NotExportableWrapper(ChannelCsvExport.NotExportable cause) {
+            super(cause);
+        }
+    }
+
+    private long csv(CsvBody body) throws IOException {
+        try {
+            if (out != null) {
+                try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+                    return body.write(w);
+                }
+            }
+            PrintWriter w = spec.commandLine().getOut();
+            long rows = body.write(w);
+            w.flush();
+            return rows;
+        } catch (ChannelCsvExport.NotExportable e) {
+            throw new NotExportableWrapper(e);
+        }
+    }
 }

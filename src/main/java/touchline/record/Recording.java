@@ -27,6 +27,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
  */
 public final class Recording implements Closeable {
 
+    /** Channel metadata key of the standard-schema channels an export adds (not envelopes; replay skips them). */
+    public static final String STANDARD_CHANNEL = "touchline.standard";
+
     private final McapReader mcap;
     private final MessageCodec codec;
     private final EnvelopeLayout layout = new EnvelopeLayout();
@@ -137,12 +140,20 @@ public final class Recording implements Closeable {
         }
     }
 
-    private Envelope toEnvelope(McapReader.McapMessage m) {
+    /**
+     * The envelope a message of {@link #mcap()} holds, or null when it holds none: a channel
+     * Touchline did not write (noted in {@link #problems()}) or a standard-schema channel an
+     * export added beside the recorded ones (metadata {@value #STANDARD_CHANNEL}, skipped quietly).
+     */
+    public Envelope toEnvelope(McapReader.McapMessage m) {
         EnvelopeLayout.Key key = keys.get(m.channelId());
         if (key == null) {
             McapReader.ChannelInfo info = mcap.channels().get(m.channelId());
             if (info == null) {
                 problems.addIfAbsent("messages on channel " + m.channelId() + " without a channel record are skipped");
+                return null;
+            }
+            if (info.metadata().containsKey(STANDARD_CHANNEL)) {
                 return null;
             }
             try {

@@ -64,13 +64,23 @@ final class ChannelTable {
         return c;
     }
 
-    /** A JSON channel (a console state, or a standard Foxglove type); null when the table is full. */
-    synchronized ServedChannel addJson(String topic, String schemaName, String jsonSchema) {
+    /** A JSON channel (a console state); null when the table is full. */
+    ServedChannel addJson(String topic, String schemaName, String jsonSchema) {
+        return add(topic, "json", schemaName, jsonSchema, "jsonschema");
+    }
+
+    /** A protobuf channel of a standard Foxglove type ({@code schemaBase64}: its FileDescriptorSet); null when the table is full. */
+    ServedChannel addProtobuf(String topic, String schemaName, String schemaBase64) {
+        return add(topic, "protobuf", schemaName, schemaBase64, "protobuf");
+    }
+
+    private synchronized ServedChannel add(String topic, String encoding, String schemaName, String schema,
+                                           String schemaEncoding) {
         if (byId.size() >= maxChannels) {
             refused.incrementAndGet();
             return null;
         }
-        ServedChannel c = new ServedChannel(nextId++, topic, "json", schemaName, jsonSchema, "jsonschema", null, null);
+        ServedChannel c = new ServedChannel(nextId++, topic, encoding, schemaName, schema, schemaEncoding, null, null);
         publish(c);
         return c;
     }

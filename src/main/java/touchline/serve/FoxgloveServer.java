@@ -53,7 +53,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final MicrosClock clock;
     private final ViewerTable viewers = new ViewerTable();
     private final ChannelTable channels;
-    private final DebugTextLog logs;
+    private final StandardChannels standard;
     private final GameControllerState gameController;
     private final FoxgloveFrames frames;
     private final AtomicLong refused = new AtomicLong();
@@ -80,7 +80,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.clock = clock;
         this.token = config.token() == null || config.token().isEmpty() ? null : new AccessToken(config.token());
         this.channels = new ChannelTable(kinds, viewers, MAX_CHANNELS);
-        this.logs = new DebugTextLog(channels);
+        this.standard = new StandardChannels(channels);
         this.gameController = new GameControllerState(channels);
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
         this.tls = config.tls() ? tlsContext(config) : null;
@@ -143,7 +143,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         if (e.message() == null || e.error() != null) {
             return;
         }
-        logs.accept(e);
+        standard.accept(e);
         ServedChannel c = channels.find(e);
         if (c == null) {
             return;

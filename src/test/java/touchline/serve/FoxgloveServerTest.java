@@ -249,23 +249,47 @@ class FoxgloveServerTest {
     }
 
     @Test
-    void debugTextIsAlsoAFoxgloveLogPerRobot() throws Exception {
+    void debugTextIsAlsoAStandardFoxgloveLogPerRobot() throws Exception {
         try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
             field.send(ServedField.text(5, "demo.text", "hello"));
             JSONObject log = viewer.awaitChannel("/robot/5/log");
             assertEquals("foxglove.Log", log.getString("schemaName"));
-            assertEquals("json", log.getString("encoding"));
+            assertEquals("protobuf", log.getString("encoding"));
+            assertEquals("protobuf", log.getString("schemaEncoding"));
             viewer.subscribe(1, log.getInt("id"));
             Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
             field.send(ServedField.text(5, "demo.text", "ball seen at 1200 mm"));
             Await.until("the log line", 5000, () -> !viewer.dataOf(1).isEmpty());
-            JSONObject line = new JSONObject(new String(viewer.dataOf(1).get(0).payload(), StandardCharsets.UTF_8));
-            assertEquals("ball seen at 1200 mm", line.getString("message"));
-            assertEquals("demo.text", line.getString("name"));
-            assertEquals(2, line.getInt("level"));
+            // decoded with the schema the server advertised, as Foxglove's Log panel would
+            DynamicMessage line = FoxgloveTestClient.decode(log, viewer.dataOf(1).get(0).payload());
+            var fields = line.getDescriptorForType();
+            assertEquals("ball seen at 1200 mm", line.getField(fields.findFieldByName("message")));
+            assertEquals("robot5/demo.text", line.getField(fields.findFieldByName("name")));
+            assertEquals("INFO", ((com.google.protobuf.Descriptors.EnumValueDescriptor)
+                    line.getField(fields.findFieldByName("level"))).getName());
+            DynamicMessage stamp = (DynamicMessage) line.getField(fields.findFieldByName("timestamp"));
             long nanos = viewer.dataOf(1).get(0).timeNanos();
-            assertEquals(nanos / 1_000_000_000L, line.getJSONObject("timestamp").getLong("sec"));
-            assertEquals(nanos % 1_000_000_000L, line.getJSONObject("timestamp").getLong("nsec"));
+            assertEquals(nanos / 1_000_000_000L, stamp.getField(stamp.getDescriptorForType().findFieldByName("seconds")));
+            assertEquals((int) (nanos % 1_000_000_000L), stamp.getField(stamp.getDescriptorForType().findFieldByName("nanos")));
+        }
+    }
+
+    @Test
+    void aRobotsPositionIsAdvertisedForThe3dPanel() throws Exception {
+        try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
+            field.send(Fumanoid.Message.newBuilder().setRobotID(4).setExtension(Fumanoid.status, Fumanoid.Status.newBuilder()
+                    .setRobotPosition(Fumanoid.Position.newBuilder().setX(1500).setY(-250).setTheta(0)).build()).build());
+            JSONObject tf = viewer.awaitChannel("/tf");
+            assertEquals("foxglove.FrameTransforms", tf.getString("schemaName"));
+            JSONObject scene = viewer.awaitChannel("/field/scene");
+            assertEquals("foxglove.SceneUpdate", scene.getString("schemaName"));
+            viewer.subscribe(1, tf.getInt("id"));
+            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            field.send(Fumanoid.Message.newBuilder().setRobotID(4).setExtension(Fumanoid.status, Fumanoid.Status.newBuilder()
+                    .setRobotPosition(Fumanoid.Position.newBuilder().setX(2000).setY(500).setTheta(0)).build()).build());
+            Await.until("the transform", 5000, () -> !viewer.dataOf(1).isEmpty());
+            String text = FoxgloveTestClient.decode(tf, viewer.dataOf(1).get(0).payload()).toString();
+            assertTrue(text.contains("child_frame_id: \"robot4\"") && text.contains("x: 2.0") && text.contains("y: 0.5"), text);
         }
     }
 
