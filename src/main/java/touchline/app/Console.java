@@ -80,6 +80,7 @@ public final class Console implements AutoCloseable {
     private DebugRateGuard debugRate;
     private AutoCloseable debugRateSubscription;
     private final touchline.model.store.ViewStores stores;
+    private volatile WantedOptionsFile wantedFile;
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -190,7 +191,30 @@ public final class Console implements AutoCloseable {
     }
 
     public SendResult setOption(int robotId, String option, boolean on) {
-        return options.setWanted(robotId, option, on);
+        SendResult result = options.setWanted(robotId, option, on);
+        WantedOptionsFile f = wantedFile;
+        if (f != null) {
+            f.write(options.allWanted());
+        }
+        return result;
+    }
+
+    /**
+     * Keeps the wanted debug options in {@code file} (beside the layouts): what it holds from an
+     * earlier run is wanted again now, each robot getting its options when it appears, and every
+     * switch from now on is written there. A file that cannot be read or written only costs the
+     * remembering ({@link #wantedOptionsProblem()}).
+     */
+    public void rememberWantedOptions(Path file) {
+        WantedOptionsFile f = new WantedOptionsFile(file);
+        options.restoreWanted(f.read());
+        wantedFile = f;
+    }
+
+    /** Why the wanted options could not be read or kept, or empty. */
+    public String wantedOptionsProblem() {
+        WantedOptionsFile f = wantedFile;
+        return f == null ? "" : f.problem();
     }
 
     public EnvelopeBus bus() { return bus; }

@@ -55,6 +55,8 @@ public final class ConsoleWindow {
         this.layouts = new LayoutStore(settings.layoutDir());
         this.places = settings.windowPlaces();
         this.dark = settings.dark();
+        // the wanted debug options belong to the user: kept beside the layouts, wanted again now
+        console.rememberWantedOptions(settings.layoutDir().resolve("wanted-options.properties"));
         Shell[] holder = new Shell[1];
         this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src),
                 settings.layoutDir());
