@@ -29,7 +29,7 @@ final class Shortcuts {
             new Key("debug-console", "Ctrl+F", "search (matches are highlighted)"),
             new Key("debug-console", "Ctrl+C", "copy the selected lines (all shown lines when none is selected)"),
             new Key("network", "Up / Down", "walk the datagrams; the selected one stays in view while more arrive"),
-            new Key("plot", "Ctrl+F", "add a series: type a field path, Enter adds it"),
+            new Key("field-plot", "Ctrl+F", "find a field path: type to filter, Up/Down choose, Enter adds it"),
             new Key("gamecontroller", "Ctrl+Z", "undo the last action"),
             new Key("nao", "W A S D Q E", "walk and turn while the walk pad has the keyboard"),
             new Key("", "Tab / Shift+Tab", "move the keyboard to the next / previous control (the focused one is ringed)"),
