@@ -120,6 +120,10 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         if (view.equals("field-plot")) {
             plotFields(window);
         }
+        if (view.equals("debug-console")) { // the search's highlighted matches
+            FxThread.run(() -> ((javafx.scene.control.TextField) window.scene().lookup("#debug-search")).setText("ball lost"));
+            Thread.sleep(500);
+        }
         shoot(window, view);
     }
 
