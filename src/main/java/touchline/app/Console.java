@@ -200,6 +200,20 @@ public final class Console implements AutoCloseable {
     }
 
     /**
+     * Switches an option off that the user names, even one another console switched on (the
+     * {@code options --off} command); {@link #setOption} only switches off what this console's
+     * user switched on.
+     */
+    public SendResult switchOptionOff(int robotId, String option) {
+        SendResult result = options.switchOff(robotId, option);
+        WantedOptionsFile f = wantedFile;
+        if (f != null) {
+            f.write(options.allWanted());
+        }
+        return result;
+    }
+
+    /**
      * Keeps the wanted debug options in {@code file} (beside the layouts): what it holds from an
      * earlier run is wanted again now, each robot getting its options when it appears, and every
      * switch from now on is written there. A file that cannot be read or written only costs the

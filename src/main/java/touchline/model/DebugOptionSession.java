@@ -196,6 +196,21 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     }
 
     /**
+     * Switches an option off because the user named it (the {@code options --off} command),
+     * whoever switched it on: an explicit request, unlike the reconciliation, which never
+     * touches what this console did not switch on. Tried {@link #RELEASE_ATTEMPTS} times at most.
+     */
+    public SendResult switchOff(int robotId, String option) {
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.wanted.remove(option);
+            r.releasing.put(option, 1);
+            version++;
+        }
+        return command(robotId, option, false);
+    }
+
+    /**
      * The wanted options of an earlier run (per robot ID), wanted again: each robot gets them
      * when it appears (or at once, when it is already here and its list arrived).
      */

@@ -223,4 +223,25 @@ class DebugOptionSessionTest {
         session.restoreWanted(java.util.Map.of(4, java.util.Set.of("demo.text")));
         assertEquals(List.of("4:on demo.text"), sent);
     }
+
+    /** The options command's --off: the user names the option, so it goes off whoever switched it on. */
+    @Test
+    void anOptionTheUserNamesIsSwitchedOffWhoeverSwitchedItOn() {
+        keepAlive(3);
+        list(3, "demo.text");
+        text(3, "demo.text"); // another console's
+        sent.clear();
+        assertTrue(session.switchOff(3, "demo.text").isSent());
+        assertEquals(List.of("3:off demo.text"), sent);
+        text(3, "demo.text"); // one more on its way
+        advance(1_000_000);
+        keepAlive(3);
+        assertEquals(List.of("3:off demo.text", "3:off demo.text"), sent, "data still came: tried again");
+        advance(1_100_000);
+        keepAlive(3);
+        advance(1_000_000);
+        keepAlive(3);
+        assertEquals(2, sent.size(), "the data stopped: nothing more to switch off");
+        assertFalse(session.options(3).option("demo.text").orElseThrow().wanted());
+    }
 }
