@@ -6,6 +6,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.proto.Fumanoid;
 import touchline.testing.Await;
+import touchline.testing.LoopbackField;
 import touchline.testing.RobotProcess;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;

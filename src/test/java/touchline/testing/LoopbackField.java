@@ -1,4 +1,4 @@
-package touchline.app;
+package touchline.testing;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
@@ -13,33 +13,33 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * broadcast): what the robot sends reaches every console, what any console sends reaches the
  * robot. The robot is told to send to {@link #port()}.
  */
-final class LoopbackField implements AutoCloseable {
+public final class LoopbackField implements AutoCloseable {
 
     private final DatagramChannel channel;
     private final List<InetSocketAddress> consoles = new CopyOnWriteArrayList<>();
     private final Thread thread;
     private volatile InetSocketAddress robot;
 
-    LoopbackField() throws IOException {
+    public LoopbackField() throws IOException {
         channel = DatagramChannel.open().bind(new InetSocketAddress("127.0.0.1", 0));
         thread = new Thread(this::run, "loopback-field");
         thread.setDaemon(true);
         thread.start();
     }
 
-    int port() throws IOException {
+    public int port() throws IOException {
         return ((InetSocketAddress) channel.getLocalAddress()).getPort();
     }
 
-    void robotAt(int port) {
+    public void robotAt(int port) {
         robot = new InetSocketAddress("127.0.0.1", port);
     }
 
-    void console(int port) {
+    public void console(int port) {
         consoles.add(new InetSocketAddress("127.0.0.1", port));
     }
 
-    void forget(int consolePort) {
+    public void forget(int consolePort) {
         consoles.remove(new InetSocketAddress("127.0.0.1", consolePort));
     }
 
