@@ -10,7 +10,6 @@ import touchline.testing.LoopbackField;
 import touchline.testing.RobotProcess;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
-import touchline.transport.UdpConfig;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -36,11 +35,6 @@ class OptionsAcrossConsolesTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
     }
 
-    private static Console console() throws InterruptedException {
-        return new Console(ConsoleConfig.defaults()
-                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-    }
-
     private static boolean streaming(Console c, String option) {
         return c.options().options(ROBOT).option(option).map(o -> o.streaming()).orElse(false);
     }
@@ -57,9 +51,8 @@ class OptionsAcrossConsolesTest {
             throws Exception {
         Path fileA = dirA.resolve("wanted-options.properties");
         try (LoopbackField field = new LoopbackField()) {
-            try (Console a = console()) {
+            try (Console a = field.join()) {
             a.rememberWantedOptions(fileA);
-            field.console(a.udp().localPort());
             try (RobotProcess robot = RobotProcess.robot(ROBOT, field.port()).start()) {
                 field.robotAt(robot.port());
                 Await.until("console A has the option list", 10_000, () -> a.options().options(ROBOT).listReceived());
@@ -67,10 +60,9 @@ class OptionsAcrossConsolesTest {
                 Await.until("demo.text streams to A", 10_000, () -> streaming(a, "demo.text"));
 
                 List<Envelope> fromB = new CopyOnWriteArrayList<>();
-                try (Console b = console()) {
+                try (Console b = field.join()) {
                     b.rememberWantedOptions(dirB.resolve("wanted-options.properties"));
                     b.bus().subscribe(fromB::add);
-                    field.console(b.udp().localPort());
                     Await.until("console B has the option list", 10_000, () -> b.options().options(ROBOT).listReceived());
                     assertTrue(b.setOption(ROBOT, "demo.plotter", true).isSent());
                     Await.until("demo.plotter streams to B", 10_000, () -> streaming(b, "demo.plotter"));
@@ -94,10 +86,9 @@ class OptionsAcrossConsolesTest {
             }
             }
             try (RobotProcess robot = RobotProcess.robot(ROBOT, field.port()).start();
-                 Console again = console()) {
+                 Console again = field.join()) {
                 field.robotAt(robot.port());
                 again.rememberWantedOptions(fileA);
-                field.console(again.udp().localPort());
                 assertEquals(Set.of("demo.text"), again.options().wanted(ROBOT), "restored before the robot is seen");
                 Await.until("demo.text streams again to the restarted A without a click", 10_000,
                         () -> streaming(again, "demo.text"));

@@ -4,11 +4,9 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.app.Console;
-import touchline.app.ConsoleConfig;
 import touchline.testing.Await;
 import touchline.testing.LoopbackField;
 import touchline.testing.RobotProcess;
-import touchline.transport.UdpConfig;
 
 import java.io.StringWriter;
 import java.net.DatagramSocket;
@@ -28,23 +26,16 @@ class OptionsOffCommandTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
     }
 
-    private static Console console() throws InterruptedException {
-        return new Console(ConsoleConfig.defaults()
-                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-    }
-
     private static boolean streaming(Console c) {
         return c.options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false);
     }
 
     @Test
     void offSwitchesOffAnOptionAnotherConsoleSwitchedOn() throws Exception {
-        try (LoopbackField field = new LoopbackField(); Console watcher = console()) {
-            field.console(watcher.udp().localPort());
+        try (LoopbackField field = new LoopbackField(); Console watcher = field.join()) {
             try (RobotProcess robot = RobotProcess.robot(8, field.port()).start()) {
                 field.robotAt(robot.port());
-                try (Console other = console()) {
-                    field.console(other.udp().localPort());
+                try (Console other = field.join()) {
                     Await.until("the other console has the list", 10_000, () -> other.options().options(8).listReceived());
                     assertTrue(other.setOption(8, "demo.text", true).isSent());
                     Await.until("demo.text streams", 10_000, () -> streaming(watcher));

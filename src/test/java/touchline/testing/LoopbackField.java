@@ -39,6 +39,14 @@ public final class LoopbackField implements AutoCloseable {
         consoles.add(new InetSocketAddress("127.0.0.1", port));
     }
 
+    /** A console core started on a loopback port of its own and joined to the field. */
+    public touchline.app.Console join() throws InterruptedException {
+        touchline.app.Console c = new touchline.app.Console(touchline.app.ConsoleConfig.defaults()
+                .withUdp(touchline.transport.UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+        console(c.udp().localPort());
+        return c;
+    }
+
     public void forget(int consolePort) {
         consoles.remove(new InetSocketAddress("127.0.0.1", consolePort));
     }
