@@ -88,6 +88,7 @@ public final class Console implements AutoCloseable {
 
     /** Why a console viewing another Touchline's stream sends nothing: every command path says this. */
     public static final String COMMANDS_OFF = "viewing a remote Touchline: commands are off";
+    private volatile WantedOptionsFile wantedFile;
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -229,7 +230,47 @@ public final class Console implements AutoCloseable {
         if (remote != null) {
             return SendResult.failed(COMMANDS_OFF);
         }
-        return options.setWanted(robotId, option, on);
+        SendResult result = options.setWanted(robotId, option, on);
+        WantedOptionsFile f = wantedFile;
+        if (f != null) {
+            f.write(options.allWanted());
+        }
+        return result;
+    }
+
+    /**
+     * Switches an option off that the user names, even one another console switched on (the
+     * {@code options --off} command); {@link #setOption} only switches off what this console's
+     * user switched on.
+     */
+    public SendResult switchOptionOff(int robotId, String option) {
+        if (remote != null) {
+            return SendResult.failed(COMMANDS_OFF);
+        }
+        SendResult result = options.switchOff(robotId, option);
+        WantedOptionsFile f = wantedFile;
+        if (f != null) {
+            f.write(options.allWanted());
+        }
+        return result;
+    }
+
+    /**
+     * Keeps the wanted debug options in {@code file} (beside the layouts): what it holds from an
+     * earlier run is wanted again now, each robot getting its options when it appears, and every
+     * switch from now on is written there. A file that cannot be read or written only costs the
+     * remembering ({@link #wantedOptionsProblem()}).
+     */
+    public void rememberWantedOptions(Path file) {
+        WantedOptionsFile f = new WantedOptionsFile(file);
+        options.restoreWanted(f.read());
+        wantedFile = f;
+    }
+
+    /** Why the wanted options could not be read or kept, or empty. */
+    public String wantedOptionsProblem() {
+        WantedOptionsFile f = wantedFile;
+        return f == null ? "" : f.problem();
     }
 
     /**

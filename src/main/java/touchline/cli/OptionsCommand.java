@@ -77,7 +77,8 @@ final class OptionsCommand implements Callable<Integer> {
             System.err.println("robot " + robot + " offers no option '" + name + "'");
             return 1;
         }
-        SendResult r = console.setOption(robot, name, enable);
+        // --off names the option: switched off whoever switched it on (a new console wants nothing)
+        SendResult r = enable ? console.setOption(robot, name, true) : console.switchOptionOff(robot, name);
         if (!r.isSent()) {
             System.err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
             return 4;

@@ -34,6 +34,10 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
     @Option(names = "--light", description = "light theme")
     boolean light;
 
+    @Option(names = "--views", split = ",", description = "only these views (IDs, plus 'shortcuts' for the "
+            + "shortcut sheet), without the demo layout, NAO, GameController and quick-open shots")
+    List<String> only;
+
     /** view ID -> the robot-1 option it shows ("" for views without a source). */
     static final Map<String, String> SHOTS = new java.util.LinkedHashMap<>();
 
@@ -49,6 +53,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         SHOTS.put("field", "demo.field");
         SHOTS.put("image", "demo.image");
         SHOTS.put("text", "demo.text");
+        SHOTS.put("field-plot", "");
     }
 
     @Override
@@ -74,17 +79,14 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             FxThread.await(() -> SHOTS.values().stream().filter(o -> !o.isEmpty()).allMatch(o ->
                     console.options().options(1).option(o).map(OptionState::streaming).orElse(false)), 10_000);
             Thread.sleep(3000); // let plots and logs fill
+            if (only != null) {
+                shootOnly(window);
+                FxThread.run(() -> javafx.application.Platform.exit());
+                return 0;
+            }
             shoot(window, "demo-layout");
             for (Map.Entry<String, String> s : SHOTS.entrySet()) {
-                String source = s.getValue().isEmpty() ? "" : "1/" + s.getValue();
-                FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
-                        List.of(new LayoutNode.Entry(s.getKey(), source))))));
-                Thread.sleep(1500);
-                if (s.getKey().equals("network")) {
-                    FxThread.run(() -> selectNewestStatus(window));
-                    Thread.sleep(300);
-                }
-                shoot(window, s.getKey());
+                shootView(window, s.getKey(), s.getValue());
             }
             shootNao(window);
             shootGameController(console, window);
@@ -103,6 +105,57 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             FxThread.run(() -> javafx.application.Platform.exit());
         }
         return 0;
+    }
+
+    /** One view filling the window, showing robot 1's {@code option} ("" for views without a source). */
+    private void shootView(ConsoleWindow window, String view, String option) throws Exception {
+        String source = option.isEmpty() ? "" : "1/" + option;
+        FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                List.of(new LayoutNode.Entry(view, source))))));
+        Thread.sleep(1500);
+        if (view.equals("network")) {
+            FxThread.run(() -> selectNewestStatus(window));
+            Thread.sleep(300);
+        }
+        if (view.equals("field-plot")) {
+            plotFields(window);
+        }
+        if (view.equals("debug-console")) { // the search's highlighted matches
+            FxThread.run(() -> ((javafx.scene.control.TextField) window.scene().lookup("#debug-search")).setText("ball lost"));
+            Thread.sleep(500);
+        }
+        shoot(window, view);
+    }
+
+    /** The views asked for with --views, each filling the window, and the shortcut sheet if asked. */
+    private void shootOnly(ConsoleWindow window) throws Exception {
+        for (Map.Entry<String, String> s : SHOTS.entrySet()) {
+            if (only.contains(s.getKey())) {
+                shootView(window, s.getKey(), s.getValue());
+            }
+        }
+        if (only.contains("shortcuts")) {
+            Stage sheet = FxThread.call(window::shortcutSheet);
+            Thread.sleep(800);
+            FxThread.run(() -> {
+                write(sheet.getScene().snapshot(null), "shortcuts");
+                sheet.close();
+            });
+            System.out.println("wrote " + out.resolve("shortcuts.png"));
+        }
+    }
+
+    /** Plot fields: each robot's x position and robot 1's battery, typed as a user would. */
+    private static void plotFields(ConsoleWindow window) throws Exception {
+        FxThread.run(() -> window.shell().openViews().stream().map(v -> v.view())
+                .filter(v -> v instanceof touchline.ui.views.FieldPlotView).findFirst().ifPresent(v -> {
+                    touchline.model.store.FieldPlot f = ((touchline.ui.views.FieldPlotView) v).fields();
+                    for (int robot = 1; robot <= 3; robot++) {
+                        f.add(robot, "status:robotPosition.x");
+                    }
+                    ((javafx.scene.control.TextField) window.scene().lookup("#field-path")).setText("robotPosition");
+                }));
+        Thread.sleep(4000);
     }
 
     /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */

@@ -21,9 +21,13 @@ import java.util.Set;
 /**
  * The console's side of the debug-option protocol, per robot: ask a new robot for its option
  * list until one arrives, replace it when a new one comes, remember what the user switched on,
- * and reconcile: what is wanted but not streaming is requested again, what is unwanted but
- * still streaming is switched off again, and when a robot comes back after being offline
- * everything that was on is switched on again without being asked.
+ * and reconcile: what is wanted but not streaming is requested again, and when a robot comes
+ * back after being offline everything that was on is switched on again without being asked.
+ * The options belong to the user, not to this process: the wanted options can be restored
+ * from an earlier run ({@link #restoreWanted}), and this session only ever switches off what
+ * its user wanted and then switched off ({@link #RELEASE_ATTEMPTS} tries while data still
+ * comes). An option streaming for another console of the team (or switched on on the robot)
+ * is never touched, so two consoles of one team do not switch each other's options off.
  * Replayed robots' option lists and data are kept apart and only shown: nothing a replay
  * plays ever makes this session send (a replayed robot is not on the field, and a live robot
  * with its number must not hear about it).
@@ -33,6 +37,8 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     static final long LIST_RETRY_MICROS = 500_000;
     static final long COMMAND_RETRY_MICROS = 1_000_000;
     static final long STREAMING_WINDOW_MICROS = 2_000_000;
+    /** How often an option the user switched off is switched off while its data keeps coming. */
+    static final int RELEASE_ATTEMPTS = 3;
 
     private final RobotCommands commands;
     private final MessageCodec codec;
@@ -50,6 +56,8 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         long lastListRequest = Long.MIN_VALUE / 2;
         final Map<String, Fumanoid.DebugOption> list = new LinkedHashMap<>();
         final Set<String> wanted = new LinkedHashSet<>();
+        /** switched off by the user here, data still coming: off commands sent so far */
+        final Map<String, Integer> releasing = new HashMap<>();
         final Map<String, Long> lastData = new HashMap<>();
         final Map<String, Long> lastCommand = new HashMap<>();
         String lastHold = "";
@@ -166,18 +174,75 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         }
     }
 
-    /** Switches an option on or off for a robot; remembered, so it survives the robot's restarts. */
+    /**
+     * Switches an option on or off for a robot; remembered, so it survives the robot's restarts.
+     * Off is sent only for an option this console wanted: one it never switched on (another
+     * console's, or the robot's own) is left as it is, and the result says so.
+     */
     public SendResult setWanted(int robotId, String option, boolean on) {
         synchronized (this) {
             PerRobot r = robot(robotId);
             if (on) {
                 r.wanted.add(option);
+                r.releasing.remove(option);
+            } else if (r.wanted.remove(option)) {
+                r.releasing.put(option, 1);
             } else {
-                r.wanted.remove(option);
+                return SendResult.failed(option + " was not switched on by this console; left as it is");
             }
             version++;
         }
         return command(robotId, option, on);
+    }
+
+    /**
+     * Switches an option off because the user named it (the {@code options --off} command),
+     * whoever switched it on: an explicit request, unlike the reconciliation, which never
+     * touches what this console did not switch on. Tried {@link #RELEASE_ATTEMPTS} times at most.
+     */
+    public SendResult switchOff(int robotId, String option) {
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.wanted.remove(option);
+            r.releasing.put(option, 1);
+            version++;
+        }
+        return command(robotId, option, false);
+    }
+
+    /**
+     * The wanted options of an earlier run (per robot ID), wanted again: each robot gets them
+     * when it appears (or at once, when it is already here and its list arrived).
+     */
+    public void restoreWanted(Map<Integer, Set<String>> wanted) {
+        Map<Integer, List<String>> now = new HashMap<>();
+        synchronized (this) {
+            wanted.forEach((id, names) -> {
+                PerRobot r = robots.get(id);
+                if (r == null) {
+                    r = robot(id);
+                    r.online = false; // not seen yet: asked for its list when it appears
+                }
+                for (String name : names) {
+                    if (r.wanted.add(name) && r.online && r.listReceived && r.list.containsKey(name)) {
+                        now.computeIfAbsent(id, k -> new ArrayList<>()).add(name);
+                    }
+                }
+            });
+            version++;
+        }
+        now.forEach((id, names) -> names.forEach(name -> command(id, name, true)));
+    }
+
+    /** Every robot's wanted options (live robots only), to keep them for the next run. */
+    public synchronized Map<Integer, Set<String>> allWanted() {
+        Map<Integer, Set<String>> out = new java.util.TreeMap<>();
+        robots.forEach((id, r) -> {
+            if (!r.wanted.isEmpty()) {
+                out.put(id, Set.copyOf(r.wanted));
+            }
+        });
+        return out;
     }
 
     /** Retries what has not taken effect yet; call a few times a second. */
@@ -201,8 +266,20 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
                     boolean wanted = r.wanted.contains(name);
                     boolean streaming = streaming(r, name, now);
                     long last = r.lastCommand.getOrDefault(name, Long.MIN_VALUE / 2);
-                    if (wanted != streaming && now - last >= COMMAND_RETRY_MICROS) {
-                        retries.computeIfAbsent(e.getKey(), k -> new LinkedHashMap<>()).put(name, wanted);
+                    if (now - last < COMMAND_RETRY_MICROS) {
+                        continue;
+                    }
+                    if (wanted && !streaming) {
+                        retries.computeIfAbsent(e.getKey(), k -> new LinkedHashMap<>()).put(name, true);
+                    } else if (!wanted && r.releasing.containsKey(name)) {
+                        // only what this console switched off; another console's option is never touched
+                        int sent = r.releasing.get(name);
+                        if (!streaming || sent >= RELEASE_ATTEMPTS) {
+                            r.releasing.remove(name);
+                        } else {
+                            r.releasing.put(name, sent + 1);
+                            retries.computeIfAbsent(e.getKey(), k -> new LinkedHashMap<>()).put(name, false);
+                        }
                     }
                 }
             }

@@ -45,8 +45,10 @@ public final class ConsoleWindow {
     private final WindowPlaces places;
     private final BorderPane root = new BorderPane();
     private final Set<String> demoSwitched = new HashSet<>();
-    private final Menu layoutMenu = new Menu("Layout");
+    private final Menu layoutMenu = new Menu("_Layout");
     private final ServeToggle serving;
+    private final HelpWindow help;
+    private Shortcuts shortcuts;
     private Stage stage;
     private boolean dark;
 
@@ -56,6 +58,9 @@ public final class ConsoleWindow {
         this.layouts = new LayoutStore(settings.layoutDir());
         this.places = settings.windowPlaces();
         this.dark = settings.dark();
+        this.help = new HelpWindow(places);
+        // the wanted debug options belong to the user: kept beside the layouts, wanted again now
+        console.rememberWantedOptions(settings.layoutDir().resolve("wanted-options.properties"));
         Shell[] holder = new Shell[1];
         this.serving = new ServeToggle(console);
         this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src),
@@ -64,7 +69,9 @@ public final class ConsoleWindow {
         holder[0] = shell;
         this.status = new StatusBar(console);
         this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep);
-        root.setTop(menus());
+        MenuBar bar = menus();
+        shortcuts = new Shortcuts(bar);
+        root.setTop(bar);
         root.setCenter(shell.node());
         root.setBottom(status);
     }
@@ -149,6 +156,32 @@ public final class ConsoleWindow {
         Application.setUserAgentStylesheet(url != null ? url.toExternalForm() : css);
     }
 
+    /** F1: the help of the view that has the keyboard (every view's when none has). */
+    public Stage helpForFocusedView() {
+        javafx.scene.Node focused = stage == null || stage.getScene() == null ? null : stage.getScene().getFocusOwner();
+        Optional<Shell.OpenView> view = shell.containing(focused);
+        if (view.isPresent()) {
+            ViewSpec spec = view.get().spec();
+            return help.show(stage, spec.title(), HelpWindow.text(spec, shortcuts));
+        }
+        return helpForViews();
+    }
+
+    /** Help → Keyboard shortcuts (Ctrl+/): the sheet, read from the menus' accelerators. */
+    public Stage shortcutSheet() {
+        return help.show(stage, "Keyboard shortcuts", shortcuts.sheet(registry));
+    }
+
+    private Stage helpForViews() {
+        StringBuilder s = new StringBuilder();
+        for (ViewSpec v : registry.all()) {
+            s.append(v.title()).append(": ").append(v.help()).append("\n\n");
+        }
+        s.append("Ctrl+K opens any view. F1 gives the help of the view that has the keyboard, Ctrl+/ every "
+                + "shortcut. Drag a tab to split or move it, or out of the window.");
+        return help.show(stage, "Views", s.toString());
+    }
+
     public void quickOpen() {
         new QuickOpen(context, places).show(stage);
     }
@@ -168,7 +201,7 @@ public final class ConsoleWindow {
     }
 
     private MenuBar menus() {
-        MenuItem save = new MenuItem("Save layout as…");
+        MenuItem save = new MenuItem("_Save layout as…");
         save.setOnAction(e -> {
             TextInputDialog d = new TextInputDialog("my layout");
             d.initOwner(stage);
@@ -183,13 +216,13 @@ public final class ConsoleWindow {
                 }
             });
         });
-        MenuItem demo = new MenuItem("Default layout");
+        MenuItem demo = new MenuItem("_Default layout");
         demo.setOnAction(e -> shell.restore(DemoLayout.standard()));
         layoutMenu.getItems().addAll(save, demo, new SeparatorMenuItem());
         layoutMenu.setOnShowing(e -> rebuildLayoutMenu());
         rebuildLayoutMenu();
 
-        Menu views = new Menu("View");
+        Menu views = new Menu("_View");
         for (ViewSpec s : registry.all()) {
             if (s.id().equals(ViewRegistry.RAW)) {
                 continue;
@@ -198,7 +231,7 @@ public final class ConsoleWindow {
             item.setOnAction(e -> shell.open(s, ViewSource.NONE));
             views.getItems().add(item);
         }
-        MenuItem quick = new MenuItem("Quick open…");
+        MenuItem quick = new MenuItem("_Quick open…");
         quick.setAccelerator(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN));
         quick.setOnAction(e -> quickOpen());
         javafx.scene.control.CheckMenuItem serve = new javafx.scene.control.CheckMenuItem("Serve to viewers");
@@ -211,35 +244,23 @@ public final class ConsoleWindow {
         views.setOnShowing(e -> serve.setSelected(serving.serving()));
         views.getItems().addAll(new SeparatorMenuItem(), quick, serve);
 
-        Menu theme = new Menu("Theme");
-        MenuItem darkItem = new MenuItem("Dark");
+        Menu theme = new Menu("_Theme");
+        MenuItem darkItem = new MenuItem("_Dark");
         darkItem.setOnAction(e -> setDark(true));
-        MenuItem lightItem = new MenuItem("Light");
+        MenuItem lightItem = new MenuItem("_Light");
         lightItem.setOnAction(e -> setDark(false));
         theme.getItems().addAll(darkItem, lightItem);
 
-        Menu help = new Menu("Help");
-        MenuItem about = new MenuItem("Views…");
-        about.setOnAction(e -> {
-            StringBuilder s = new StringBuilder();
-            for (ViewSpec v : registry.all()) {
-                s.append(v.title()).append(": ").append(v.help()).append("\n\n");
-            }
-            s.append("Ctrl+K opens any view. Drag a tab to split or move it, or out of the window.");
-            javafx.scene.control.TextArea text = new javafx.scene.control.TextArea(s.toString());
-            text.setEditable(false);
-            text.setWrapText(true);
-            text.setId("help-views-text");
-            Alert a = new Alert(Alert.AlertType.INFORMATION);
-            a.initOwner(stage);
-            a.setTitle("Help — views");
-            a.setHeaderText("Touchline views");
-            a.getDialogPane().setContent(text);
-            a.setResizable(true);
-            places.keep((Stage) a.getDialogPane().getScene().getWindow(), "help", 760, 600);
-            a.show();
-        });
-        MenuItem aboutTouchline = new MenuItem("About Touchline…");
+        Menu helpMenu = new Menu("_Help");
+        MenuItem forView = new MenuItem("Help for this _view");
+        forView.setAccelerator(new KeyCodeCombination(KeyCode.F1));
+        forView.setOnAction(e -> helpForFocusedView());
+        MenuItem keys = new MenuItem("_Keyboard shortcuts");
+        keys.setAccelerator(new KeyCodeCombination(KeyCode.SLASH, KeyCombination.SHORTCUT_DOWN));
+        keys.setOnAction(e -> shortcutSheet());
+        MenuItem about = new MenuItem("_Views…");
+        about.setOnAction(e -> helpForViews());
+        MenuItem aboutTouchline = new MenuItem("_About Touchline…");
         aboutTouchline.setId("help-about");
         aboutTouchline.setOnAction(e -> {
             touchline.app.RuntimeReport report = console.runtime();
@@ -256,8 +277,8 @@ public final class ConsoleWindow {
             places.keep((Stage) a.getDialogPane().getScene().getWindow(), "about", 560, 260);
             a.show();
         });
-        help.getItems().addAll(about, aboutTouchline);
-        return new MenuBar(layoutMenu, views, theme, help);
+        helpMenu.getItems().addAll(forView, keys, about, aboutTouchline);
+        return new MenuBar(layoutMenu, views, theme, helpMenu);
     }
 
     private void rebuildLayoutMenu() {

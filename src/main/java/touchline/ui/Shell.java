@@ -60,6 +60,18 @@ public final class Shell {
         return List.copyOf(open.values());
     }
 
+    /** The open view {@code node} lies in (the focused node, for F1), if any. */
+    public java.util.Optional<OpenView> containing(javafx.scene.Node node) {
+        for (javafx.scene.Node n = node; n != null; n = n.getParent()) {
+            for (OpenView v : open.values()) {
+                if (v.frame() == n) {
+                    return java.util.Optional.of(v);
+                }
+            }
+        }
+        return java.util.Optional.empty();
+    }
+
     private void forget(Dockable d) {
         OpenView v = open.remove(d);
         if (v != null) {

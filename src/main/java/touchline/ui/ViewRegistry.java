@@ -45,6 +45,10 @@ public final class ViewRegistry {
                     Set.of(DebugKind.REGION_GROWING_VALUE, DebugKind.GRID_VALUE), RegionOverlayView::new),
             new ViewSpec("plot", "Plot", "Line plot of an option's series (NaN skipped and counted, bursts decimated).",
                     Set.of(DebugKind.PLOT_VALUE), PlotView::new),
+            new ViewSpec("field-plot", "Plot fields", "Plot any numeric field of any message kind (the teams' own "
+                    + "types too) by its field path, several robots in one plot with a legend; Export CSV… writes the "
+                    + "plotted data. Type to filter the paths, Enter adds one.", Set.of(),
+                    (c, s) -> new touchline.ui.views.FieldPlotView(c)),
             new ViewSpec("table", "Table", "An option's table as the robot sends it.",
                     Set.of(DebugKind.TABLE_VALUE), TableDataView::new),
             new ViewSpec("relative", "Relative positions", "Objects around the robot, robot-centred (x forward).",

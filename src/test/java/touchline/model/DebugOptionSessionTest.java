@@ -167,4 +167,81 @@ class DebugOptionSessionTest {
         assertFalse(o.knownKind());
         assertEquals("unknown kind 77", o.kindName());
     }
+
+    /** Issue #14: a new console wanted nothing and switched off every option another console had on. */
+    @Test
+    void neverSwitchesOffAnOptionItDidNotSwitchOn() {
+        keepAlive(3);
+        list(3, "demo.text", "demo.plotter");
+        text(3, "demo.text"); // another console of the team switched it on
+        sent.clear();
+        for (int i = 0; i < 5; i++) {
+            advance(1_000_000);
+            keepAlive(3);
+            text(3, "demo.text");
+        }
+        assertEquals(List.of(), sent, "the other console's option is left on");
+        SendResult r = session.setWanted(3, "demo.text", false);
+        assertEquals(SendResult.Outcome.FAILED, r.outcome());
+        assertTrue(r.reason().contains("not switched on by this console"), r.reason());
+        assertEquals(List.of(), sent, "switching off what it never wanted sends nothing");
+    }
+
+    @Test
+    void switchingOffIsRetriedAFewTimesOnlyThenLeftToWhoeverWantsIt() {
+        keepAlive(3);
+        list(3, "demo.text");
+        session.setWanted(3, "demo.text", true);
+        text(3, "demo.text");
+        session.setWanted(3, "demo.text", false);
+        for (int i = 0; i < 8; i++) { // another console wants it too: its data keeps coming
+            advance(1_000_000);
+            keepAlive(3);
+            text(3, "demo.text");
+        }
+        assertEquals(DebugOptionSession.RELEASE_ATTEMPTS, sent.stream().filter(s -> s.equals("3:off demo.text")).count(),
+                "switched off a few times, then no fight with the console that wants it");
+    }
+
+    @Test
+    void restoredWantedOptionsAreSwitchedOnWhenTheRobotAppears() {
+        session.restoreWanted(java.util.Map.of(3, java.util.Set.of("demo.plotter")));
+        advance(1_000_000);
+        assertEquals(List.of(), sent, "nothing goes to a robot not seen yet");
+        keepAlive(3);
+        list(3, "demo.text", "demo.plotter");
+        assertEquals(List.of("3:list?", "3:on demo.plotter"), sent);
+        assertTrue(session.options(3).option("demo.plotter").orElseThrow().wanted());
+        assertEquals(java.util.Map.of(3, java.util.Set.of("demo.plotter")), session.allWanted());
+    }
+
+    @Test
+    void restoredWantedOptionsOfARobotAlreadyHereGoOutAtOnce() {
+        keepAlive(4);
+        list(4, "demo.text");
+        sent.clear();
+        session.restoreWanted(java.util.Map.of(4, java.util.Set.of("demo.text")));
+        assertEquals(List.of("4:on demo.text"), sent);
+    }
+
+    /** The options command's --off: the user names the option, so it goes off whoever switched it on. */
+    @Test
+    void anOptionTheUserNamesIsSwitchedOffWhoeverSwitchedItOn() {
+        keepAlive(3);
+        list(3, "demo.text");
+        text(3, "demo.text"); // another console's
+        sent.clear();
+        assertTrue(session.switchOff(3, "demo.text").isSent());
+        assertEquals(List.of("3:off demo.text"), sent);
+        text(3, "demo.text"); // one more on its way
+        advance(1_000_000);
+        keepAlive(3);
+        assertEquals(List.of("3:off demo.text", "3:off demo.text"), sent, "data still came: tried again");
+        advance(1_100_000);
+        keepAlive(3);
+        advance(1_000_000);
+        keepAlive(3);
+        assertEquals(2, sent.size(), "the data stopped: nothing more to switch off");
+        assertFalse(session.options(3).option("demo.text").orElseThrow().wanted());
+    }
 }

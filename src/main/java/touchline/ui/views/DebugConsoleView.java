@@ -39,6 +39,13 @@ public final class DebugConsoleView implements View {
     private final TextField search = new TextField();
     private final ToggleButton pause = new ToggleButton("Pause");
     private final Label count = new Label();
+    /** What Copy did, shown for a few seconds ({@link #FEEDBACK_FRAMES}). */
+    private final Label feedback = new Label();
+    static final int FEEDBACK_FRAMES = 240;
+    private long feedbackUntilFrame;
+    private long frameNow;
+    /** What arrived while paused counts from the store's version at the pause. */
+    private long pausedAtVersion = -1;
     private final BorderPane root = new BorderPane();
     private final RingFollower<TextLine, String> follower = new RingFollower<>(lines.getItems(), SHOWN);
 
@@ -49,16 +56,32 @@ public final class DebugConsoleView implements View {
         lines.getSelectionModel().setSelectionMode(SelectionMode.MULTIPLE);
         lines.setStyle("-fx-font-family: monospace;");
         lines.setFixedCellSize(22); // no per-cell measuring: appending stays cheap
-        search.setPromptText("search");
+        search.setPromptText("search (Ctrl+F)");
         search.setId("debug-search");
+        count.setId("debug-count");
+        feedback.setId("debug-feedback");
+        pause.setId("debug-pause");
+        lines.setCellFactory(l -> new SearchHitCell(() -> search.getText()));
+        root.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
+            if (e.isShortcutDown() && e.getCode() == javafx.scene.input.KeyCode.F) {
+                search.requestFocus();
+                search.selectAll();
+                e.consume();
+            } else if (e.isShortcutDown() && e.getCode() == javafx.scene.input.KeyCode.C && lines.isFocused()) {
+                copy();
+                e.consume();
+            }
+        });
         robot.valueProperty().addListener((o, a, b) -> follower.reload());
         search.textProperty().addListener((o, a, b) -> follower.reload());
         pause.selectedProperty().addListener((o, a, b) -> {
+            pausedAtVersion = b ? context.stores().text().version() : -1;
             if (!b) {
                 follower.reload();
             }
         });
         Button copy = new Button("Copy");
+        copy.setId("debug-copy");
         copy.setOnAction(e -> copy());
         Button clear = new Button("Clear");
         clear.setOnAction(e -> {
@@ -68,7 +91,7 @@ public final class DebugConsoleView implements View {
             c.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
         }
         search.setPrefColumnCount(10);
-        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, search, pause, copy, clear, count); // wraps when narrow
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, search, pause, copy, clear, count, feedback); // wraps when narrow
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
         root.setCenter(lines);
@@ -80,6 +103,9 @@ public final class DebugConsoleView implements View {
         ClipboardContent c = new ClipboardContent();
         c.putString(String.join("\n", text));
         Clipboard.getSystemClipboard().setContent(c);
+        feedback.setText("copied " + text.size() + (text.size() == 1 ? " line" : " lines")
+                + (chosen.isEmpty() ? " (all shown)" : " (selected)"));
+        feedbackUntilFrame = frameNow + FEEDBACK_FRAMES;
     }
 
     static String format(TextLine l) {
@@ -95,7 +121,14 @@ public final class DebugConsoleView implements View {
     @Override
     public void refresh(FrameContext frame) {
         robot.refresh();
+        frameNow = frame.frame();
+        if (frameNow > feedbackUntilFrame && !feedback.getText().isEmpty()) {
+            feedback.setText("");
+        }
         if (pause.isSelected()) {
+            // every line the log took since the pause, whatever the filters (they apply on resume)
+            long waiting = Math.max(0, context.stores().text().version() - pausedAtVersion);
+            count.setText("paused — " + waiting + " new");
             return;
         }
         String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);

@@ -13,7 +13,6 @@ import javafx.scene.control.ToggleButton;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.FlowPane;
 import touchline.model.store.SequencedRing;
-import touchline.protocol.Hex;
 import touchline.protocol.MessageText;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -47,7 +46,7 @@ public final class NetworkView implements View {
     private final Label count = new Label();
     private final BorderPane root = new BorderPane();
     private final MessageText messageText = new MessageText();
-    private final Hex hexDump = new Hex();
+    private final HexLines hexDump = new HexLines();
     private final RingFollower<Envelope, Envelope> follower = new RingFollower<>(table.getItems(), SHOWN);
 
     public NetworkView(ViewContext context) {
@@ -78,6 +77,7 @@ public final class NetworkView implements View {
         text.setEditable(false);
         hex.setEditable(false);
         text.setId("network-text");
+        hex.setId("network-hex");
         text.setStyle("-fx-font-family: monospace;");
         hex.setStyle("-fx-font-family: monospace;");
         SplitPane detail = new SplitPane(text, hex);
@@ -110,6 +110,7 @@ public final class NetworkView implements View {
         }
         text.setText(body);
         hex.setText(e.size() + " bytes\n" + hexDump.dump(e.raw(), 4096));
+        hex.positionCaret(0);
     }
 
     private Predicate<Envelope> filter() {
@@ -119,6 +120,15 @@ public final class NetworkView implements View {
         return e -> (id < 0 || e.robotId() == id)
                 && (dir == null || dir.equals("in and out") || (dir.equals("in") == (e.direction() == Direction.IN)))
                 && (k.isEmpty() || e.kind().toLowerCase(Locale.ROOT).contains(k));
+    }
+
+    /** The index of the first row on screen, or -1 before the table is laid out. */
+    private int firstVisibleRow() {
+        if (table.lookup(".virtual-flow") instanceof javafx.scene.control.skin.VirtualFlow<?> flow
+                && flow.getFirstVisibleCell() != null) {
+            return flow.getFirstVisibleCell().getIndex();
+        }
+        return -1;
     }
 
     @Override
@@ -134,6 +144,7 @@ public final class NetworkView implements View {
         }
         Predicate<Envelope> f = filter();
         boolean follow = table.getSelectionModel().isEmpty();
+        int firstShown = follow ? -1 : firstVisibleRow();
         SequencedRing.Entry<Envelope> newest = follower.follow(context.stores().network().version(),
                 (after, max) -> context.stores().network().since(after, max, f), e -> e);
         if (newest == null) {
@@ -142,6 +153,9 @@ public final class NetworkView implements View {
         frame.shown(newest.value().timeMicros());
         if (follow) {
             table.scrollTo(table.getItems().size() - 1); // follow the newest until the user picks a row
+        } else if (follower.trimmed() > 0 && firstShown >= 0) {
+            // the oldest rows went: the rows on screen (the selected one among them) stay where they were
+            table.scrollTo(Math.max(0, firstShown - follower.trimmed()));
         }
         count.setText(table.getItems().size() + " shown of " + context.stores().network().size() + " kept");
     }

@@ -58,12 +58,40 @@ public final class OptionsView implements View {
         tree.setId("options-tree");
         tree.setShowRoot(false);
         tree.setCellFactory(t -> new TreeCell<>() {
+            private final javafx.scene.control.CheckBox box = new javafx.scene.control.CheckBox();
+            {
+                box.getStyleClass().add("option-box");
+                box.setFocusTraversable(false); // the tree keeps the keyboard: Space toggles there
+                // a click on the box toggles that row's option (the box shows the model, never its own state)
+                box.setOnAction(e -> {
+                    Row row = getItem();
+                    box.setSelected(row != null && row.option() != null && row.option().wanted());
+                    if (row != null && row.option() != null) {
+                        getTreeView().getSelectionModel().select(getTreeItem());
+                        toggle(row);
+                    }
+                });
+            }
+
             @Override
             protected void updateItem(Row row, boolean empty) {
                 super.updateItem(row, empty);
                 setText(empty || row == null ? null : row.label());
+                boolean option = !empty && row != null && row.option() != null;
+                if (option) {
+                    box.setSelected(row.option().wanted());
+                    box.setDisable(row.replayed());
+                }
+                setGraphic(option ? box : null);
                 setStyle(empty || row == null || row.option() == null ? "-fx-font-weight: bold;"
                         : row.option().streaming() ? "-fx-text-fill: #2da44e;" : "");
+            }
+        });
+        // Back on this tab the tree takes the keyboard again with its selected row, so Space
+        // works without a click first (the tab's content leaves and re-enters the scene).
+        root.sceneProperty().addListener((o, was, now) -> {
+            if (now != null) {
+                javafx.application.Platform.runLater(this::focusTree);
             }
         });
         // a filter, not a handler: the tree's own key handling would take Space and Enter first
@@ -89,7 +117,7 @@ public final class OptionsView implements View {
         bar.setStyle("-fx-padding: 4 8 4 8;");
         root.setTop(bar);
         root.setCenter(tree);
-        Label hint = new Label("Space: on/off   Double-click or Enter: open visualisation");
+        Label hint = new Label("Space or the box: on/off   Double-click or Enter: open visualisation   F1: help");
         status.setId("options-status");
         HBox bottom = new HBox(16, hint, status);
         bottom.setStyle("-fx-padding: 2 8 2 8;");
@@ -103,16 +131,33 @@ public final class OptionsView implements View {
 
     /** Flips the selected option's wanted state through the model (which sends the request). */
     public void toggleSelected() {
-        selectedOption().ifPresent(r -> {
-            if (r.replayed()) {
-                status.setText(r.option().name() + ": a replayed robot's option is only shown, never switched");
-                return;
-            }
-            SendResult result = context.console().setOption(r.robotId(), r.option().name(), !r.option().wanted());
-            status.setText("Switching " + r.option().name() + (r.option().wanted() ? " off" : " on") + " for robot "
-                    + r.robotId() + ": " + result.describe());
-            rebuild = true;
-        });
+        selectedOption().ifPresent(this::toggle);
+    }
+
+    private void toggle(Row r) {
+        if (r.replayed()) {
+            status.setText(r.option().name() + ": a replayed robot's option is only shown, never switched");
+            return;
+        }
+        SendResult result = context.console().setOption(r.robotId(), r.option().name(), !r.option().wanted());
+        status.setText("Switching " + r.option().name() + (r.option().wanted() ? " off" : " on") + " for robot "
+                + r.robotId() + ": " + result.describe());
+        rebuild = true;
+    }
+
+    /** Gives the tree the keyboard, on its selected row (the first option when none is selected). */
+    private void focusTree() {
+        if (tree.getScene() == null || filter.isFocused()) {
+            return;
+        }
+        if (tree.getSelectionModel().isEmpty() && tree.getExpandedItemCount() > 1) {
+            tree.getSelectionModel().select(1);
+        }
+        int selected = tree.getSelectionModel().getSelectedIndex();
+        if (selected >= 0) {
+            tree.getFocusModel().focus(selected);
+        }
+        tree.requestFocus();
     }
 
     /** Opens the visualisation registered for the selected option's data kind. */
@@ -128,7 +173,7 @@ public final class OptionsView implements View {
     }
 
     static String label(OptionState o) {
-        StringBuilder s = new StringBuilder(o.wanted() ? "☑ " : "☐ ").append(o.name()).append("   ").append(o.kindName());
+        StringBuilder s = new StringBuilder(o.name()).append("   ").append(o.kindName());
         if (o.streaming()) {
             s.append(" · streaming");
         } else if (o.wanted()) {

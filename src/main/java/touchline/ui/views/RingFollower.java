@@ -29,6 +29,7 @@ final class RingFollower<E, T> {
     private long seenSeq;
     private boolean reload = true;
     private int added;
+    private int trimmed;
 
     RingFollower(ObservableList<T> items, int shown) {
         this.items = items;
@@ -47,6 +48,7 @@ final class RingFollower<E, T> {
      */
     SequencedRing.Entry<E> follow(long version, Reader<E> reader, Function<E, T> item) {
         added = 0;
+        trimmed = 0;
         if (reload) {
             items.clear();
             seenSeq = 0;
@@ -73,8 +75,14 @@ final class RingFollower<E, T> {
         int over = items.size() - shown;
         if (over > 0) {
             items.remove(0, over);
+            trimmed = over;
         }
         return fresh.get(fresh.size() - 1);
+    }
+
+    /** Items the last {@link #follow} removed from the front (the oldest, over the cap). */
+    int trimmed() {
+        return trimmed;
     }
 
     /** Items the last {@link #follow} appended. */

@@ -1,0 +1,202 @@
+package touchline.ui.views;
+
+import javafx.scene.Node;
+import javafx.scene.control.Button;
+import javafx.scene.control.Label;
+import javafx.scene.control.ListView;
+import javafx.scene.control.TextField;
+import javafx.scene.input.KeyCode;
+import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.FlowPane;
+import javafx.stage.FileChooser;
+import touchline.model.RobotSnapshot;
+import touchline.model.store.FieldPlot;
+import touchline.model.store.PlotStore;
+import touchline.ui.FrameContext;
+import touchline.ui.View;
+import touchline.ui.ViewContext;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Plot anything, like PlotJuggler: choose a field path ({@code kind:path}, every numeric leaf
+ * of every message kind seen, the teams' own types included) from a type-to-filter list, for
+ * one robot or every robot, and it joins the plot as a series with its colour in the legend;
+ * several robots and fields in one plot. Export CSV… writes the plotted data (time, one column
+ * per series). The extraction lives in the model ({@link FieldPlot}), fed by the Envelope
+ * stream while the view is open: live and replayed data alike.
+ */
+public final class FieldPlotView implements View {
+
+    private final ViewContext context;
+    private final FieldPlot fields;
+    private final AutoCloseable subscription;
+    private final RobotFilter robot;
+    private final TextField path = new TextField();
+    private final ListView<String> matches = new ListView<>();
+    private final Label status = new Label();
+    /** What the last action did (added, exported, why not). */
+    private final Label note = new Label();
+    private final BorderPane root = new BorderPane();
+    private final PlotCanvas plot = new PlotCanvas(() -> dirty = true);
+    private long drawnVersion = -1;
+    private long listedKinds = -1;
+    private boolean dirty;
+    private boolean relist = true;
+
+    public FieldPlotView(ViewContext context) {
+        this.context = context;
+        this.fields = new FieldPlot(context.console().kinds(), PlotStore.DEFAULT_POINTS, context.console().clock().nowMicros());
+        this.subscription = context.console().bus().subscribe(fields);
+        this.robot = new RobotFilter(context);
+        robot.setId("field-robot");
+        path.setId("field-path");
+        path.setPromptText("field path, e.g. status:battery — Enter adds it");
+        path.setPrefColumnCount(24);
+        path.textProperty().addListener((o, a, b) -> relist = true);
+        path.setOnAction(e -> addChosen());
+        path.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
+            if (e.getCode() == KeyCode.DOWN) {
+                matches.getSelectionModel().selectNext();
+                e.consume();
+            } else if (e.getCode() == KeyCode.UP) {
+                matches.getSelectionModel().selectPrevious();
+                e.consume();
+            }
+        });
+        matches.setId("field-paths");
+        matches.setPrefWidth(280);
+        matches.setOnMouseClicked(e -> {
+            if (e.getClickCount() == 2) {
+                addChosen();
+            }
+        });
+        matches.setOnKeyPressed(e -> {
+            if (e.getCode() == KeyCode.ENTER) {
+                addChosen();
+            }
+        });
+        Button add = new Button("Add");
+        add.setOnAction(e -> addChosen());
+        Button removeLast = new Button("Remove last");
+        removeLast.setOnAction(e -> {
+            List<FieldPlot.Series> s = fields.series();
+            if (!s.isEmpty()) {
+                fields.remove(s.get(s.size() - 1));
+            }
+        });
+        Button export = new Button("Export CSV…");
+        export.setId("field-export");
+        export.setOnAction(e -> chooseCsv());
+        status.setId("field-status");
+        note.setId("field-note");
+        root.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
+            if (e.isShortcutDown() && e.getCode() == KeyCode.F) {
+                path.requestFocus();
+                path.selectAll();
+                e.consume();
+            }
+        });
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, path, add, removeLast, export, status, note);
+        bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
+        root.setTop(bar);
+        root.setLeft(matches);
+        plot.node().setId("field-canvas");
+        root.setCenter(plot.node());
+    }
+
+    /** The model behind the plot (for tests). */
+    public FieldPlot fields() {
+        return fields;
+    }
+
+    /** Adds the chosen path (the list's selection, else the typed text) for the chosen robot or every robot seen. */
+    private void addChosen() {
+        String chosen = matches.getSelectionModel().getSelectedItem();
+        if (chosen == null) {
+            chosen = path.getText() == null ? "" : path.getText().trim();
+        }
+        int id = robot.robotId();
+        List<Integer> robots = id >= 0 ? List.of(id)
+                : context.console().robots().robots().stream().map(RobotSnapshot::id).distinct().toList();
+        int added = 0;
+        for (int r : robots) {
+            if (fields.add(r, chosen)) {
+                added++;
+            }
+        }
+        note.setText(added > 0 ? "added " + chosen + " for " + (id >= 0 ? "robot " + id : added + " robots")
+                : chosen.isEmpty() ? "choose a field path first"
+                : chosen + ": no numeric field of a kind seen, or already plotted");
+    }
+
+    private void chooseCsv() {
+        FileChooser chooser = new FileChooser();
+        chooser.setTitle("Export the plotted data as CSV");
+        chooser.setInitialFileName("plot.csv");
+        chooser.getExtensionFilters().add(new FileChooser.ExtensionFilter("CSV", "*.csv"));
+        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
+        if (f != null) {
+            exportCsv(f.toPath());
+        }
+    }
+
+    /** Writes the plotted data as CSV; the status line says where, or why not. */
+    public void exportCsv(Path file) {
+        try {
+            Files.writeString(file, fields.csv(), StandardCharsets.UTF_8);
+            note.setText("exported " + fields.series().size() + " series to " + file);
+        } catch (IOException e) {
+            note.setText("could not export to " + file + ": " + e.getMessage());
+        }
+    }
+
+    @Override
+    public Node node() {
+        return root;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        robot.refresh();
+        long kindsVersion = fields.kindsVersion();
+        if (relist || kindsVersion != listedKinds) {
+            relist = false;
+            listedKinds = kindsVersion;
+            String keep = matches.getSelectionModel().getSelectedItem();
+            List<String> found = fields.paths(path.getText());
+            if (!found.equals(matches.getItems())) {
+                matches.getItems().setAll(found);
+            }
+            int i = keep == null ? -1 : found.indexOf(keep);
+            matches.getSelectionModel().select(Math.max(0, i));
+        }
+        long v = fields.version();
+        if (v == drawnVersion && !dirty) {
+            return;
+        }
+        drawnVersion = v;
+        dirty = false;
+        List<PlotStore.SeriesData> series = fields.snapshot();
+        if (series.isEmpty()) {
+            plot.empty();
+            status.setText("no series: choose a field path, Enter adds it");
+            return;
+        }
+        int points = plot.draw(series);
+        status.setText(series.size() + " series · " + points + " points");
+    }
+
+    @Override
+    public void close() {
+        try {
+            subscription.close();
+        } catch (Exception e) {
+            // unsubscribing cannot fail
+        }
+    }
+}

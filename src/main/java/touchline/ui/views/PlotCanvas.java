@@ -1,0 +1,247 @@
+package touchline.ui.views;
+
+import javafx.geometry.VPos;
+import javafx.scene.canvas.GraphicsContext;
+import javafx.scene.paint.Color;
+import javafx.scene.text.TextAlignment;
+import touchline.model.store.PlotStore;
+import touchline.ui.ResizableCanvas;
+
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The drawing of a line plot, shared by the option plot and the field plot: the last
+ * {@link #WINDOW_SECONDS} s, y fitted to the data, a legend with each series' colour. Each
+ * series is reduced to at most four points per pixel column before drawing
+ * ({@link ColumnDecimation}) and drawn as one filled span per column ({@link ColumnSpans}), so a
+ * burst of 10 000 points costs what the plot's width costs; a non-finite value breaks the line.
+ * A canvas of our own rather than a chart library: under the software renderer a chart's axis
+ * nodes, relayout and layers cost several times the whole frame budget.
+ */
+final class PlotCanvas {
+
+    /** Seconds of history drawn. */
+    static final double WINDOW_SECONDS = 10;
+    static final Color[] PALETTE = {
+        Color.web("#4c9bff"), Color.web("#ff7b3a"), Color.web("#3fc46a"), Color.web("#e5534b"),
+        Color.web("#b083f0"), Color.web("#d4a72c"), Color.web("#39c5cf"), Color.web("#f778ba"),
+    };
+    private static final double LEFT = 58;
+    private static final double RIGHT = 12;
+    private static final double TOP = 24;
+    private static final double BOTTOM = 22;
+    private static final double LINE = 1.5;
+    private static final Color BACKGROUND = Color.gray(0.12);
+    private static final Color GRID = Color.gray(0.26);
+    private static final Color LABEL = Color.gray(0.75);
+
+    private final ResizableCanvas canvas;
+    private final ColumnDecimation decimation = new ColumnDecimation();
+    private final ColumnSpans spans = new ColumnSpans();
+    private double[] sx = new double[256];
+    private double[] sy = new double[256];
+    private int points;
+    private int drawnPoints;
+
+    /** @param resized called when the canvas changed size (the owner redraws) */
+    PlotCanvas(Runnable resized) {
+        canvas = new ResizableCanvas(resized);
+    }
+
+    ResizableCanvas node() {
+        return canvas;
+    }
+
+    /** Points in the window over all series at the last draw. */
+    int points() {
+        return points;
+    }
+
+    /** Points drawn after per-column decimation at the last draw. */
+    int drawnPoints() {
+        return drawnPoints;
+    }
+
+    void empty() {
+        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
+        g.setFill(BACKGROUND);
+        g.fillRect(0, 0, canvas.getWidth(), canvas.getHeight());
+        points = 0;
+        drawnPoints = 0;
+    }
+
+    /** Draws the series' last {@link #WINDOW_SECONDS} (x oldest first); returns the points in the window. */
+    int draw(List<PlotStore.SeriesData> series) {
+        double newest = Double.NEGATIVE_INFINITY;
+        for (PlotStore.SeriesData d : series) {
+            if (d.count() > 0) {
+                newest = Math.max(newest, d.x()[d.count() - 1]);
+            }
+        }
+        // the last WINDOW_SECONDS: what a person reads off a live plot
+        double from = newest - WINDOW_SECONDS;
+        int[] starts = new int[series.size()];
+        double minY = Double.POSITIVE_INFINITY;
+        double maxY = Double.NEGATIVE_INFINITY;
+        int total = 0;
+        for (int k = 0; k < starts.length; k++) {
+            PlotStore.SeriesData d = series.get(k);
+            int start = firstAtOrAfter(d.x(), d.count(), from);
+            starts[k] = start;
+            for (int i = start; i < d.count(); i++) {
+                double y = d.y()[i];
+                if (Double.isFinite(y)) {
+                    minY = Math.min(minY, y);
+                    maxY = Math.max(maxY, y);
+                }
+            }
+            total += d.count() - start;
+        }
+        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
+        double w = canvas.getWidth();
+        double h = canvas.getHeight();
+        g.setFill(BACKGROUND);
+        g.fillRect(0, 0, w, h);
+        double pw = Math.max(1, w - LEFT - RIGHT);
+        double ph = Math.max(1, h - TOP - BOTTOM);
+        if (!Double.isFinite(newest)) {
+            newest = WINDOW_SECONDS;
+            from = 0;
+        }
+        if (!(minY <= maxY)) {
+            minY = -1;
+            maxY = 1;
+        }
+        double pad = Math.max(1e-3, (maxY - minY) * 0.05);
+        double y0 = minY - pad;
+        double y1 = maxY + pad;
+        drawAxes(g, from, newest, y0, y1, pw, ph);
+        int drawn = 0;
+        for (int k = 0; k < starts.length; k++) {
+            PlotStore.SeriesData d = series.get(k);
+            decimation.run(d.x(), d.y(), starts[k], d.count(), from, newest, (int) Math.ceil(pw));
+            drawn += decimation.size();
+            g.setFill(PALETTE[k % PALETTE.length]);
+            drawSeries(g, from, newest, y0, y1, pw, ph);
+        }
+        drawLegend(g, series, w);
+        points = total;
+        drawnPoints = drawn;
+        return total;
+    }
+
+    /** Index of the first x at or after {@code from} (x is oldest first). */
+    static int firstAtOrAfter(double[] x, int count, double from) {
+        int lo = 0;
+        int hi = count;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (x[mid] < from) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+
+    /**
+     * Draws the decimated series as one filled span per pixel column ({@link ColumnSpans}),
+     * the line broken at each gap.
+     */
+    private void drawSeries(GraphicsContext g, double x0, double x1, double y0, double y1, double pw, double ph) {
+        double[] xs = decimation.xs();
+        double[] ys = decimation.ys();
+        int n = decimation.size();
+        if (sx.length < n) {
+            sx = new double[n];
+            sy = new double[n];
+        }
+        double fx = pw / Math.max(1e-9, x1 - x0);
+        double fy = ph / (y1 - y0);
+        spans.reset((int) Math.ceil(pw));
+        int run = 0;
+        for (int i = 0; i <= n; i++) {
+            if (i == n || Double.isNaN(ys[i])) {
+                spans.line(sx, sy, run);
+                run = 0;
+                continue;
+            }
+            sx[run] = (xs[i] - x0) * fx;
+            sy[run] = TOP + (y1 - ys[i]) * fy;
+            run++;
+        }
+        for (int c = 0; c < spans.columns(); c++) {
+            if (spans.covered(c)) {
+                // half a pixel either side: a flat line is as thick as a sloped one
+                g.fillRect(LEFT + c, spans.lo(c) - LINE / 2, 1, spans.hi(c) - spans.lo(c) + LINE);
+            }
+        }
+    }
+
+    private static void drawAxes(GraphicsContext g, double x0, double x1, double y0, double y1, double pw, double ph) {
+        g.setFont(javafx.scene.text.Font.font(11));
+        g.setTextBaseline(VPos.CENTER);
+        g.setTextAlign(TextAlignment.RIGHT);
+        double yStep = niceStep((y1 - y0) / Math.max(2, ph / 40));
+        for (double v = Math.ceil(y0 / yStep) * yStep; v <= y1; v += yStep) {
+            double y = Math.round(TOP + (y1 - v) / (y1 - y0) * ph);
+            g.setFill(GRID);
+            g.fillRect(LEFT, y, pw, 1); // a 1-pixel rectangle, not a stroke: no anti-aliased rasterising
+            g.setFill(LABEL);
+            g.fillText(label(v, yStep), LEFT - 6, y);
+        }
+        g.setTextBaseline(VPos.TOP);
+        g.setTextAlign(TextAlignment.CENTER);
+        double xStep = niceStep((x1 - x0) / Math.max(2, pw / 70));
+        for (double v = Math.ceil(x0 / xStep) * xStep; v <= x1; v += xStep) {
+            double x = Math.round(LEFT + (v - x0) / (x1 - x0) * pw);
+            g.setFill(GRID);
+            g.fillRect(x, TOP, 1, ph);
+            g.setFill(LABEL);
+            g.fillText(label(v, xStep) + " s", x, TOP + ph + 4);
+        }
+        g.setFill(Color.gray(0.5));
+        g.fillRect(LEFT, TOP, 1, ph);
+        g.fillRect(LEFT, TOP + ph, pw, 1);
+    }
+
+    private static void drawLegend(GraphicsContext g, List<PlotStore.SeriesData> series, double w) {
+        g.setTextAlign(TextAlignment.LEFT);
+        g.setTextBaseline(VPos.CENTER);
+        double x = LEFT;
+        for (int k = 0; k < series.size(); k++) {
+            String name = series.get(k).name();
+            double width = 22 + name.length() * 6.5;
+            if (x + width > w && x > LEFT) {
+                g.setFill(LABEL);
+                g.fillText("+" + (series.size() - k) + " more", x, TOP / 2);
+                break;
+            }
+            g.setFill(PALETTE[k % PALETTE.length]);
+            g.fillRect(x, TOP / 2 - 1.5, 14, 3);
+            g.setFill(LABEL);
+            g.fillText(name, x + 18, TOP / 2);
+            x += width + 10;
+        }
+    }
+
+    /** 1, 2 or 5 times a power of ten, at least {@code raw}. */
+    static double niceStep(double raw) {
+        if (!(raw > 0) || !Double.isFinite(raw)) {
+            return 1;
+        }
+        double p = Math.pow(10, Math.floor(Math.log10(raw)));
+        double m = raw / p;
+        return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * p;
+    }
+
+    private static String label(double v, double step) {
+        if (Math.abs(v) < step * 1e-6) {
+            v = 0;
+        }
+        int decimals = (int) Math.max(0, Math.ceil(-Math.log10(step)));
+        return String.format(Locale.ROOT, "%." + Math.min(6, decimals) + "f", v);
+    }
+}

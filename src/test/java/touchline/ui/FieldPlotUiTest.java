@@ -1,0 +1,74 @@
+package touchline.ui;
+
+import javafx.scene.control.ListView;
+import javafx.scene.input.KeyCode;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.RobotProcess;
+import touchline.ui.layout.LayoutNode;
+import touchline.ui.views.FieldPlotView;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * Plot anything in the real window against the real simulated robot: a field path is found by
+ * typing, Enter adds it as a series, the plot draws its points, and the plotted data exports
+ * as CSV (time, one column per series).
+ */
+@Tag("ui")
+@Tag("integration")
+class FieldPlotUiTest {
+
+    @TempDir
+    Path dir;
+    private ConsoleWindowFixture ui;
+
+    @BeforeEach
+    void open() throws Exception {
+        ui = new ConsoleWindowFixture(dir);
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        ui.close();
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void aFieldPathTypedAndEnteredIsPlottedAndExportedAsCsv() throws Exception {
+        touchline.testing.Requirement.robotSide("touchline-robot");
+        try (RobotProcess robot = RobotProcess.robot(5, ui.port()).start()) {
+            ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                    List.of(new LayoutNode.Entry("field-plot", ""))))));
+            ui.await(15, () -> ui.robot.lookup("#field-paths").queryAs(ListView.class).getItems()
+                    .contains("status:batteryPercent"));
+            ui.fxRun(() -> {
+                ui.window.scene().getWindow().requestFocus();
+                ui.robot.lookup("#field-path").query().requestFocus();
+            });
+            ui.await(10, () -> ui.robot.lookup("#field-path").query().isFocused());
+            ui.robot.write("batterypercent");
+            ui.await(10, () -> ui.robot.lookup("#field-paths").queryAs(ListView.class).getItems()
+                    .equals(List.of("status:batteryPercent")));
+            ui.robot.type(KeyCode.ENTER);
+            FieldPlotView view = ui.view(FieldPlotView.class);
+            ui.await(10, () -> view.fields().series().size() == 1);
+            assertEquals(5, view.fields().series().get(0).robotId());
+            ui.await(10, () -> ui.robot.lookup("#field-status").queryLabeled().getText().matches("1 series · [1-9]\\d* points"));
+
+            Path csv = dir.resolve("plot.csv");
+            ui.fxRun(() -> view.exportCsv(csv));
+            List<String> lines = Files.readAllLines(csv);
+            assertEquals("time_s,robot 5 status:batteryPercent", lines.get(0));
+            assertTrue(lines.size() > 1 && lines.get(1).matches("\\d+\\.\\d{6},\\d+"), lines.toString());
+            assertTrue(ui.robot.lookup("#field-note").queryLabeled().getText().startsWith("exported 1 series"));
+        }
+    }
+}
