@@ -67,7 +67,11 @@ public final class ExportCommand implements Callable<Integer> {
                 rows = new DebugCsvExport(recording).write(robot, what, w);
                 w.flush();
             }
-            recording.problems().forEach(p -> err.println("note: " + p));
+            // the same notes replay prints: what was skipped, and what a CSV cannot hold
+            touchline.record.ReplayNotes notes = recording.notes();
+            notes.lines().forEach(p -> err.println("note: " + p));
+            notes.contents().forEach(c -> err.println("note: the file holds " + c
+                    + ", which a CSV export does not carry (touchline replay --info lists it)"));
             err.println("exported " + rows + " rows" + (rows == 0 ? " (robot " + robot + " sent no " + kind + ")" : ""));
         }
         return 0;

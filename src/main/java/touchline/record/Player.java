@@ -276,7 +276,7 @@ public final class Player implements AutoCloseable {
     public synchronized PlayerState snapshot() {
         long pos = playing ? Math.max(position, Math.min(targetPosition(), recording.endMicros())) : position;
         return new PlayerState(pos, recording.startMicros(), recording.endMicros(), playing, finished, speed,
-                loopFrom, loopTo, emitted, recording.problems());
+                loopFrom, loopTo, emitted, recording.notes());
     }
 
     /**
