@@ -283,8 +283,9 @@ public final class McapReader implements Closeable {
     }
 
     private String cutMessage(String what) {
-        return "the recording has " + what + " (the recorder did not finish, e.g. it was killed or the file was cut); "
-                + "recovering by scanning " + fileSize + " bytes";
+        return "the recording is unfinished: it has " + what + " (it is still being written, or the recorder did not"
+                + " finish: it was killed or the file was cut); playing what was written, scanning " + fileSize
+                + " bytes";
     }
 
     private void scanLinearly() throws IOException {
