@@ -82,6 +82,12 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     /** On the disk thread: writes an old open chunk, refreshes the byte count, picks up disk errors. */
     private void tick() {
+        if (writer == null) {
+            // the disk thread starts before the constructor has made the writer (it opens its
+            // file through that thread); a tick then found "writer" null and stopped the
+            // recording for good on a loaded machine (RecordingEndsUiTest caught it)
+            return;
+        }
         synchronized (writer) {
             if (stopping) {
                 return;
