@@ -186,6 +186,12 @@ class ReplayViewTest {
         java.util.List<?> items = fx(() -> java.util.List.copyOf(
                 robot.lookup("#replay-problems").queryAs(ListView.class).getItems()));
         assertEquals(java.util.List.of("⚠ " + said, "• metadata match: field=B (listed, not played)"), items);
+        // the JSON channel plays into every view without a fault (a fault would be a note of its own)
+        chooseSpeed(50.0);
+        robot.clickOn("#replay-play");
+        await(20, () -> state().finished());
+        assertEquals(25, state().emitted());
+        await(5, () -> robot.lookup("#replay-problems").queryAs(ListView.class).getItems().equals(items));
         // the same sentence replay prints
         try (Recording r = Recording.open(foreign)) {
             touchline.record.Player p = new touchline.record.Player(r, e -> { }, touchline.record.PlaybackClock.system());
