@@ -37,6 +37,35 @@ public record ReplayNotes(List<String> problems, List<SkippedChannel> skipped, L
         metadata = Map.copyOf(metadata);
     }
 
+    /** These notes and {@code other}'s, as for several files played on one timeline. */
+    public ReplayNotes plus(ReplayNotes other) {
+        List<String> p = new ArrayList<>(problems);
+        p.addAll(other.problems);
+        List<SkippedChannel> s = new ArrayList<>(skipped);
+        s.addAll(other.skipped);
+        List<McapReader.Attachment> a = new ArrayList<>(attachments);
+        a.addAll(other.attachments);
+        Map<String, Map<String, String>> m = new java.util.HashMap<>(metadata);
+        m.putAll(other.metadata);
+        return new ReplayNotes(p, s, a, m, complete && other.complete);
+    }
+
+    /** The same notes said of one file among several: problems, topics, attachments and metadata named with {@code file}. */
+    public ReplayNotes inFile(String file) {
+        Map<String, Map<String, String>> m = new java.util.HashMap<>();
+        // Touchline's own format record is never listed; the file's version has been said as a problem if it matters
+        metadata.forEach((k, v) -> {
+            if (!k.equals(McapWriter.FORMAT_METADATA)) {
+                m.put(file + ": " + k, v);
+            }
+        });
+        return new ReplayNotes(problems.stream().map(p -> file + ": " + p).toList(),
+                skipped.stream().map(k -> new SkippedChannel(file + ": " + k.topic(), k.encoding(), k.reason(),
+                        k.messages())).toList(),
+                attachments.stream().map(x -> new McapReader.Attachment(file + ": " + x.name(), x.mediaType(), x.size(),
+                        x.logTime())).toList(), m, complete);
+    }
+
     public long skippedMessages() {
         return skipped.stream().mapToLong(SkippedChannel::messages).sum();
     }
