@@ -352,6 +352,29 @@ public final class Console implements AutoCloseable {
         }
     }
 
+    /**
+     * Ends the recording, as {@link #stopRecording()}, waiting at most {@code timeoutMillis}
+     * for the file to be finished: what a face calls on its way out (the window closing, a
+     * signal), where the process must not hang on a stuck disk. True when the file is finished
+     * (or nothing was recording).
+     */
+    public boolean finishRecording(long timeoutMillis) {
+        Thread finishing = new Thread(() -> {
+            try {
+                stopRecording();
+            } catch (IOException e) {
+                org.slf4j.LoggerFactory.getLogger(Console.class).warn("finishing the recording: {}", e.toString());
+            }
+        }, "touchline-finish-recording");
+        finishing.start();
+        try {
+            finishing.join(timeoutMillis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return !finishing.isAlive();
+    }
+
     public synchronized Optional<RecorderStats> recording() {
         return recorder == null ? Optional.empty() : Optional.of(recorder.stats());
     }

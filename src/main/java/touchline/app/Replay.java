@@ -95,7 +95,7 @@ public final class Replay implements AutoCloseable {
         long end = p.loopToMicros() >= 0 ? p.loopToMicros() : p.endMicros();
         long pos = Math.min(end, p.positionMicros() + (long) ((System.nanoTime() - s.nanos()) / 1000 * p.speed()));
         return new PlayerState(Math.max(p.positionMicros(), pos), p.startMicros(), p.endMicros(), true, false,
-                p.speed(), p.loopFromMicros(), p.loopToMicros(), p.emitted(), p.problems());
+                p.speed(), p.loopFromMicros(), p.loopToMicros(), p.emitted(), p.notes());
     }
 
     /** Takes a fresh snapshot; serialised so an older snapshot never replaces a newer one. */
@@ -106,9 +106,12 @@ public final class Replay implements AutoCloseable {
 
     public List<TimelineEvent> events() { return player.events(); }
     /** What could not be read from the file (a cut-off end, a corrupt chunk, a schema that does not parse). */
-    public List<String> problems() { return session.problems(); }
+    public List<String> problems() { return session.notes().lines(); }
     /** The files played (one, or several on one timeline) and how each file's clock was aligned to the first's. */
     public List<ReplaySession.Part> files() { return session.parts(); }
+
+    /** Everything to say about the files: problems, channels skipped with counts, attachments and metadata. */
+    public touchline.record.ReplayNotes notes() { return session.notes(); }
 
     @Override
     public void close() {

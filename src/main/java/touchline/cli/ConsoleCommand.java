@@ -40,6 +40,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     @Option(names = "--layouts", description = "directory of named layouts (default: ~/.config/touchline/layouts)")
     String layouts;
 
+    /** How long the way out waits for a recording's file to be finished. */
+    static final long FINISH_RECORDING_MILLIS = 20_000;
+
     @Override
     public Integer call() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
@@ -54,6 +57,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             } catch (RuntimeException e) { // "Unable to open DISPLAY" and the like
                 throw StartFailure.noDisplay("JavaFX could not open it (" + e.getMessage() + ")");
             }
+            // Ctrl+C or SIGTERM while the window is open: the recording is finished before the JVM exits
+            Thread hook = new Thread(() -> console.finishRecording(FINISH_RECORDING_MILLIS), "touchline-console-stop");
+            Runtime.getRuntime().addShutdownHook(hook);
             CountDownLatch closed = new CountDownLatch(1);
             UiSettings settings = new UiSettings(layouts != null ? Path.of(layouts) : LayoutStore.defaultDir(), !light, demo);
             FxThread.run(() -> {
@@ -63,6 +69,12 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             });
             closed.await();
             javafx.application.Platform.exit();
+            console.finishRecording(FINISH_RECORDING_MILLIS);
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is running already; it finishes the same recording
+            }
             return 0;
         }
     }

@@ -31,6 +31,10 @@ public final class EnvelopeLine {
         b.append(e.kind()).append(' ');
         if (e.message() != null) {
             b.append(text.renderLine(e.message()));
+        } else if (e.channel() == touchline.transport.Channel.FOREIGN) {
+            // another tool's JSON channel: the bytes are the text
+            String json = new String(e.raw(), java.nio.charset.StandardCharsets.UTF_8).replace('\n', ' ');
+            b.append(json.length() > 400 ? json.substring(0, 400) + "…" : json);
         } else {
             b.append('(').append(e.size()).append(" bytes) ").append(hex.dump(e.raw(), 24).replace('\n', ' '));
         }

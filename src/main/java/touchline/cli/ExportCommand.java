@@ -106,7 +106,14 @@ public final class ExportCommand implements Callable<Integer> {
                 err.println("exported " + rows + " rows" + (rows == 0 ? " (robot " + robot + " sent no " + kind + ")" : ""));
                 code = 0;
             }
-            recording.problems().forEach(p -> err.println("note: " + p));
+            // the same notes replay prints: what was skipped, and what the export cannot hold
+            touchline.record.ReplayNotes notes = recording.notes();
+            notes.lines().forEach(p -> err.println("note: " + p));
+            boolean foxgloveFormat = f.equals("foxglove");
+            notes.contents().stream().filter(c -> !(foxgloveFormat && c.startsWith("metadata")))
+                    .forEach(c -> err.println("note: the file holds " + c + ", which "
+                            + (foxgloveFormat ? "the foxglove export does not copy" : "a CSV export does not carry")
+                            + " (touchline replay --info lists it)"));
             return code;
         }
     }

@@ -8,6 +8,8 @@ import touchline.record.PlaybackClock;
 import touchline.record.Player;
 import touchline.protocol.MessageKinds;
 import touchline.record.RecordingException;
+import touchline.record.Recording;
+import touchline.record.ReplayNotes;
 import touchline.record.ReplaySession;
 import touchline.record.TimelineEvent;
 
@@ -53,6 +55,10 @@ public final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--events", description = "list the timeline events (goals, state changes, robots lost) first")
     boolean events;
 
+    @Option(names = "--info", description = "list what the file holds (channels, attachments, metadata) and what"
+            + " replay would skip, without playing it")
+    boolean info;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -84,14 +90,25 @@ public final class ReplayCommand implements Callable<Integer> {
             return 1;
         }
         try (session) {
+            if (info) {
+                for (ReplaySession.Part p : session.parts()) {
+                    if (session.parts().size() > 1) {
+                        out.println("file " + p.name() + ":");
+                    }
+                    info(p.recording(), out, err);
+                }
+                return 0;
+            }
             boolean several = session.parts().size() > 1;
             if (several) {
                 for (ReplaySession.Part p : session.parts()) {
                     err.println("file " + p.name() + ": " + p.offset().describe());
                 }
             }
-            java.util.Set<String> noted = new java.util.HashSet<>(session.problems());
-            session.problems().forEach(p -> err.println("note: " + p));
+            ReplayNotes opened = session.notes();
+            java.util.Set<String> noted = new java.util.HashSet<>(opened.problems());
+            opened.problems().forEach(p -> err.println("note: " + p));
+            opened.contents().forEach(c -> err.println("note: the file holds " + c + " (listed, not played)"));
             EnvelopeLine text = new EnvelopeLine();
             if (events) {
                 for (TimelineEvent e : session.events()) {
@@ -120,11 +137,37 @@ public final class ReplayCommand implements Callable<Integer> {
             }
             out.flush();
             // what playing found (a corrupt chunk, a channel of another tool): said, never dropped
-            session.problems().stream().filter(noted::add).forEach(p -> err.println("note: " + p));
+            ReplayNotes played = session.notes();
+            played.problems().stream().filter(noted::add).forEach(p -> err.println("note: " + p));
+            played.skippedLine().ifPresent(p -> err.println("note: " + p));
             err.printf("replayed %d envelopes, %.1f s of recording%s%n", n, session.durationMicros() / 1e6,
                     several ? " from " + session.parts().size() + " files" : "");
             return 0;
         }
+    }
+
+    /** {@code --info}: the channels with their message counts and encodings, attachments, metadata, notes. */
+    private static int info(Recording recording, PrintWriter out, PrintWriter err) {
+        touchline.record.McapReader mcap = recording.mcap();
+        if (!mcap.messageCountsFinal()) {
+            touchline.record.McapReader.Cursor all = mcap.cursor(0);
+            while (all.next() != null) {
+                // counts every channel's messages, block by block
+            }
+        }
+        out.printf("%s, %.1f s, %s%n", mcap.indexed() ? "finished (indexed)" : "unfinished (no summary; scanned)",
+                recording.durationMicros() / 1e6, mcap.messageCount() >= 0 ? mcap.messageCount() + " messages"
+                        : "message count unknown");
+        mcap.channels().values().stream().sorted(java.util.Comparator.comparingInt(
+                touchline.record.McapReader.ChannelInfo::id)).forEach(c -> {
+                    touchline.record.McapReader.Schema s = mcap.schemas().get(c.schemaId());
+                    out.printf("channel %s (%s/%s) %d messages%n", c.topic(), s == null ? "no schema" : s.encoding()
+                            + " " + s.name(), c.messageEncoding(), mcap.messages(c.id()));
+                });
+        ReplayNotes notes = recording.notes();
+        notes.contents().forEach(out::println);
+        notes.lines().forEach(p -> err.println("note: " + p));
+        return 0;
     }
 
 }

@@ -96,6 +96,7 @@ final class EnvelopeLayout {
                 case NAO_CAMERA -> new String[]{"/nao", "/camera"};
                 case LINK_EVENT -> new String[]{"/link", ""};
                 case TEAM_MESSAGE -> new String[]{"/team", ""};
+                case FOREIGN -> new String[]{"/foreign", ""};
             };
             String name = kind.replaceAll("[^A-Za-z0-9_#.\\-]", "_");
             String topic = parts[0] + dir + parts[1];

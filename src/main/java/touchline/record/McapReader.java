@@ -43,6 +43,9 @@ public final class McapReader implements Closeable {
     /** One message record; times in nanoseconds. */
     public record McapMessage(int channelId, long sequence, long logTime, long publishTime, byte[] data) { }
 
+    /** An attachment record (a file another tool stored in the recording): listed, its data not read. */
+    public record Attachment(String name, String mediaType, long size, long logTime) { }
+
     /** A chunk (or, for {@code loose}, a single message record outside any chunk) in file order. */
     record Block(long offset, long length, long startTime, long endTime, boolean loose) { }
 
@@ -60,6 +63,11 @@ public final class McapReader implements Closeable {
     private final Map<Integer, ChannelInfo> channels = new ConcurrentHashMap<>();
     private final Map<String, Map<String, String>> metadata = new ConcurrentHashMap<>();
     private final CopyOnWriteArrayList<String> problems = new CopyOnWriteArrayList<>();
+    private final CopyOnWriteArrayList<Attachment> attachments = new CopyOnWriteArrayList<>();
+    // messages per channel, counted once per block the first time any cursor loads it
+    private final Map<Long, Boolean> countedBlocks = new ConcurrentHashMap<>();
+    private final Map<Integer, java.util.concurrent.atomic.LongAdder> channelMessages = new ConcurrentHashMap<>();
+    private final Map<Integer, Long> statisticsPerChannel = new ConcurrentHashMap<>();
     private final List<Block> blocks = new ArrayList<>();
     private boolean indexed;
     private long messageCount = -1;
@@ -110,6 +118,7 @@ public final class McapReader implements Closeable {
         } else if (blocks.isEmpty() && messageCount != 0) {
             // an unchunked file (allowed by the spec; other tools write them): its messages
             // stand loose in the data section, and no index points to them
+            attachments.clear(); // the scan finds them again
             scanLinearly();
         }
         Map<String, String> format = metadata.get(McapWriter.FORMAT_METADATA);
@@ -192,11 +201,27 @@ public final class McapReader implements Closeable {
                             startTime = start;
                             endTime = end;
                         }
+                        int n = r.getInt();
+                        if (n < 0 || n > r.remaining()) {
+                            throw new BufferUnderflowException();
+                        }
+                        for (int i = 0; i < n / 10; i++) {
+                            statisticsPerChannel.put(r.getShort() & 0xFFFF, r.getLong());
+                        }
                     }
                     case McapRecords.METADATA_INDEX -> {
                         long offset = r.getLong();
                         long length = r.getLong();
                         readMetadataAt(offset, length);
+                    }
+                    case McapRecords.ATTACHMENT_INDEX -> {
+                        r.getLong();
+                        r.getLong();
+                        long logTime = r.getLong();
+                        r.getLong();
+                        long size = r.getLong();
+                        String name = string(r);
+                        attachments.add(new Attachment(name, string(r), size, logTime));
                     }
                     default -> { }
                 }
@@ -207,6 +232,8 @@ public final class McapReader implements Closeable {
             channels.clear();
             blocks.clear();
             metadata.clear();
+            attachments.clear();
+            statisticsPerChannel.clear();
             messageCount = -1;
             startTime = Long.MAX_VALUE;
             endTime = Long.MIN_VALUE;
@@ -241,9 +268,24 @@ public final class McapReader implements Closeable {
         metadata.put(name, map(b));
     }
 
+    /** Lists the attachment record at {@code pos} (name, media type, data size) without reading its data. */
+    private void readAttachmentAt(long pos, long len) throws IOException {
+        ByteBuffer r = ByteBuffer.wrap(read(pos + 9, (int) Math.min(len, 64 * 1024))).order(ByteOrder.LITTLE_ENDIAN);
+        try {
+            long logTime = r.getLong();
+            r.getLong();
+            String name = string(r);
+            String mediaType = string(r);
+            attachments.add(new Attachment(name, mediaType, r.getLong(), logTime));
+        } catch (BufferUnderflowException | IllegalArgumentException e) {
+            problems.addIfAbsent("unreadable attachment record at byte " + pos + " skipped");
+        }
+    }
+
     private String cutMessage(String what) {
-        return "the recording has " + what + " (the recorder did not finish, e.g. it was killed or the file was cut); "
-                + "recovering by scanning " + fileSize + " bytes";
+        return "the recording is unfinished: it has " + what + " (it is still being written, or the recorder did not"
+                + " finish: it was killed or the file was cut); playing what was written, scanning " + fileSize
+                + " bytes";
     }
 
     private void scanLinearly() throws IOException {
@@ -297,6 +339,7 @@ public final class McapReader implements Closeable {
                         problems.addIfAbsent("unreadable record at byte " + pos + " skipped");
                     }
                 }
+                case McapRecords.ATTACHMENT -> readAttachmentAt(pos, len);
                 case McapRecords.CHUNK -> {
                     if (len < CHUNK_HEADER_BYTES) {
                         problems.addIfAbsent("a chunk at byte " + pos + " is too short to be one; skipped");
@@ -402,6 +445,29 @@ public final class McapReader implements Closeable {
         return Collections.unmodifiableMap(metadata);
     }
 
+    /** The attachments the file lists (from the summary's attachment index, or found while scanning). */
+    public List<Attachment> attachments() {
+        return List.copyOf(attachments);
+    }
+
+    /**
+     * Messages of channel {@code channelId}: as the file's statistics say when they say, else
+     * those in the blocks read so far (each block counted once, however many cursors read it).
+     */
+    public long messages(int channelId) {
+        Long stated = statisticsPerChannel.get(channelId);
+        if (stated != null) {
+            return stated;
+        }
+        java.util.concurrent.atomic.LongAdder n = channelMessages.get(channelId);
+        return n == null ? 0 : n.sum();
+    }
+
+    /** True when {@link #messages} is final: the statistics count channels, or every block has been read. */
+    public boolean messageCountsFinal() {
+        return !statisticsPerChannel.isEmpty() || countedBlocks.size() >= blocks.size();
+    }
+
     /** What could not be read, one user-facing sentence each; grows while cursors read chunks. */
     public List<String> problems() {
         return Collections.unmodifiableList(problems);
@@ -462,13 +528,33 @@ public final class McapReader implements Closeable {
                     if (block >= blocks.size()) {
                         return null;
                     }
-                    records = load(blocks.get(block++));
+                    Block b = blocks.get(block++);
+                    records = load(b);
+                    if (countedBlocks.putIfAbsent(b.offset(), Boolean.TRUE) == null && records != null) {
+                        countMessages(records.duplicate().order(ByteOrder.LITTLE_ENDIAN));
+                    }
                     continue;
                 }
                 McapMessage m = nextRecord();
                 if (m != null && Long.compareUnsigned(m.logTime(), from) >= 0) {
                     return m;
                 }
+            }
+        }
+
+        /** Adds the block's messages to the per-channel counts (record headers only). */
+        private void countMessages(ByteBuffer r) {
+            while (r.remaining() >= 9) {
+                int op = r.get() & 0xFF;
+                long len = r.getLong();
+                if (len < 0 || len > r.remaining()) {
+                    return;
+                }
+                if (op == McapRecords.MESSAGE && len >= 2) {
+                    channelMessages.computeIfAbsent(r.getShort(r.position()) & 0xFFFF,
+                            k -> new java.util.concurrent.atomic.LongAdder()).increment();
+                }
+                r.position(r.position() + (int) len);
             }
         }
 

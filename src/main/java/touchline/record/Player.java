@@ -290,7 +290,7 @@ public final class Player implements AutoCloseable {
     public synchronized PlayerState snapshot() {
         long pos = playing ? Math.max(position, Math.min(targetPosition(), session.endMicros())) : position;
         return new PlayerState(pos, session.startMicros(), session.endMicros(), playing, finished, speed,
-                loopFrom, loopTo, emitted, session.problems());
+                loopFrom, loopTo, emitted, session.notes());
     }
 
     /**

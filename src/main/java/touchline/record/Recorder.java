@@ -33,6 +33,7 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     private long written;                  // guarded by writer
     private volatile long writtenSoFar;
     private volatile boolean stopping;
+    private volatile boolean ready;
     private volatile String failure;
     private volatile long bytes;
 
@@ -52,6 +53,7 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
             throw e;
         }
         this.writer = w;
+        ready = true; // published to the disk thread (volatile): its tick may use the writer from now on
     }
 
     /** Test hook: the disk thread writes nothing until {@code release} opens. */
@@ -82,8 +84,11 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     /** On the disk thread: writes an old open chunk, refreshes the byte count, picks up disk errors. */
     private void tick() {
-        if (writer == null) {
-            return; // the disk thread started in the constructor can tick before the writer is set
+        if (!ready) {
+            // the disk thread starts before the constructor has made the writer (it opens its
+            // file through that thread); a tick then found "writer" null and stopped the
+            // recording for good on a loaded machine (RecordingEndsUiTest caught it)
+            return;
         }
         synchronized (writer) {
             if (stopping) {

@@ -23,7 +23,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * kind, error, raw bytes) to the ones recorded. FUmanoids payloads are decoded again with
  * the message kinds given (Touchline's own plus the team types the recording carries in
  * its schemas), so consumers get {@link Envelope#message()} as from a live transport.
- * Channels written by other tools (no Touchline metadata) are skipped with a note.
+ * Channels written by other tools (no Touchline metadata) play as {@link touchline.transport.Channel#FOREIGN}
+ * envelopes where they can (protobuf with its schema in the file, JSON text); the others are
+ * skipped and counted per channel in {@link #notes()}.
  */
 public final class Recording implements Closeable {
 
@@ -33,7 +35,9 @@ public final class Recording implements Closeable {
     private final McapReader mcap;
     private final MessageCodec codec;
     private final EnvelopeLayout layout = new EnvelopeLayout();
-    private final Map<Integer, EnvelopeLayout.Key> keys = new ConcurrentHashMap<>();
+    private final Map<Integer, ChannelReading> readings = new ConcurrentHashMap<>();
+    private final Map<Integer, ChannelReading.Skipped> skipped = Collections.synchronizedMap(new java.util.TreeMap<>());
+    private final SchemaSet types = new SchemaSet();
     private final CopyOnWriteArrayList<String> problems = new CopyOnWriteArrayList<>();
     private final List<FileDescriptorSet> schemas = new ArrayList<>();
     private volatile List<TimelineEvent> events;
@@ -42,6 +46,7 @@ public final class Recording implements Closeable {
         this.mcap = mcap;
         this.codec = new MessageCodec(kinds);
         loadSchemas(kinds);
+        mcap.channels().values().forEach(this::reading);
     }
 
     public static Recording open(Path file) throws RecordingException {
@@ -54,7 +59,7 @@ public final class Recording implements Closeable {
     }
 
     private void loadSchemas(MessageKinds kinds) {
-        SchemaSet known = new SchemaSet();
+        SchemaSet known = types;
         for (McapReader.Schema s : mcap.schemas().values()) {
             if (!s.encoding().equals("protobuf")) {
                 continue;
@@ -67,7 +72,8 @@ public final class Recording implements Closeable {
                 }
             } catch (InvalidProtocolBufferException | RecordingException e) {
                 problems.addIfAbsent("schema " + s.id() + " (" + s.name() + ") in the recording does not parse ("
-                        + e.getMessage() + "); its messages play as raw bytes with the built-in types");
+                        + e.getMessage() + "); its messages play as raw bytes with the built-in types"
+                        + " (those of another tool's channel are skipped)");
             }
         }
     }
@@ -94,6 +100,20 @@ public final class Recording implements Closeable {
         List<String> all = new ArrayList<>(mcap.problems());
         all.addAll(problems);
         return all;
+    }
+
+    /**
+     * The notes as they stand: problems, channels skipped with their message counts (final
+     * once the file's statistics give them or the whole file has been read), attachments and
+     * metadata records.
+     */
+    public ReplayNotes notes() {
+        List<ReplayNotes.SkippedChannel> s = new ArrayList<>();
+        synchronized (skipped) {
+            skipped.forEach((id, k) -> s.add(new ReplayNotes.SkippedChannel(k.topic(), k.encoding(), k.reason(),
+                    mcap.messages(id))));
+        }
+        return new ReplayNotes(problems(), s, mcap.attachments(), mcap.metadata(), mcap.messageCountsFinal());
     }
 
     /** Adds a problem found while playing (once per distinct sentence). */
@@ -142,12 +162,12 @@ public final class Recording implements Closeable {
 
     /**
      * The envelope a message of {@link #mcap()} holds, or null when it holds none: a channel
-     * Touchline did not write (noted in {@link #problems()}) or a standard-schema channel an
-     * export added beside the recorded ones (metadata {@value #STANDARD_CHANNEL}, skipped quietly).
+     * skipped (counted in {@link #notes()}) or a standard-schema channel an export added beside
+     * the recorded ones (metadata {@value #STANDARD_CHANNEL}, skipped quietly).
      */
     public Envelope toEnvelope(McapReader.McapMessage m) {
-        EnvelopeLayout.Key key = keys.get(m.channelId());
-        if (key == null) {
+        ChannelReading reading = readings.get(m.channelId());
+        if (reading == null) {
             McapReader.ChannelInfo info = mcap.channels().get(m.channelId());
             if (info == null) {
                 problems.addIfAbsent("messages on channel " + m.channelId() + " without a channel record are skipped");
@@ -156,16 +176,16 @@ public final class Recording implements Closeable {
             if (info.metadata().containsKey(STANDARD_CHANNEL)) {
                 return null;
             }
-            try {
-                key = EnvelopeLayout.Key.fromMetadata(info.metadata());
-            } catch (RuntimeException e) {
-                problems.addIfAbsent("channel " + info.topic() + " was not written by Touchline (" + e.getMessage()
-                        + "); its messages are skipped");
-                return null;
-            }
-            keys.put(m.channelId(), key);
+            reading = reading(info);
         }
         long time = m.logTime() / 1000;
+        if (reading instanceof ChannelReading.Foreign f) {
+            return f.envelope(time, m.data());
+        }
+        if (!(reading instanceof ChannelReading.Touchline t)) {
+            return null;
+        }
+        EnvelopeLayout.Key key = t.key();
         switch (key.layout()) {
             case EnvelopeLayout.PAYLOAD -> {
                 byte[] raw = layout.frame(key.framing(), m.data());
@@ -187,6 +207,38 @@ public final class Recording implements Closeable {
                         null, m.data(), null);
             }
         }
+    }
+
+    /** How {@code info}'s messages are read, decided once per channel; skipped channels are listed in the notes. */
+    private ChannelReading reading(McapReader.ChannelInfo info) {
+        return readings.computeIfAbsent(info.id(), id -> {
+            ChannelReading r = ChannelReading.of(info, mcap.schemas().get(info.schemaId()), this::type, codec);
+            if (r instanceof ChannelReading.Skipped k) {
+                skipped.put(id, k);
+            }
+            return r;
+        });
+    }
+
+    /** The message type {@code fullName} (nested types too) among the recording's schemas and the built-in ones. */
+    private com.google.protobuf.Descriptors.Descriptor type(String fullName) {
+        for (FileDescriptor f : types.files()) {
+            if (!f.getPackage().isEmpty() && !fullName.startsWith(f.getPackage() + ".")) {
+                continue;
+            }
+            java.util.ArrayDeque<com.google.protobuf.Descriptors.Descriptor> todo =
+                    new java.util.ArrayDeque<>(f.getMessageTypes());
+            while (!todo.isEmpty()) {
+                com.google.protobuf.Descriptors.Descriptor d = todo.poll();
+                if (d.getFullName().equals(fullName)) {
+                    return d;
+                }
+                if (fullName.startsWith(d.getFullName() + ".")) {
+                    todo.addAll(d.getNestedTypes());
+                }
+            }
+        }
+        return null;
     }
 
     @Override

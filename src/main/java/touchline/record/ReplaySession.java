@@ -141,6 +141,21 @@ public final class ReplaySession implements Closeable {
         return all;
     }
 
+    /**
+     * Everything to say about the files: problems, channels skipped with their counts,
+     * attachments and metadata, each named with its file in a session of several.
+     */
+    public ReplayNotes notes() {
+        ReplayNotes all = parts.size() == 1 ? first().notes() : ReplayNotes.NONE;
+        if (parts.size() > 1) {
+            for (Part p : parts) {
+                all = all.plus(p.recording().notes().inFile(p.name()));
+            }
+        }
+        return notes.isEmpty() ? all
+                : all.plus(new ReplayNotes(List.copyOf(notes), List.of(), List.of(), java.util.Map.of(), true));
+    }
+
     /** Adds a problem found while playing (once per distinct sentence). */
     void note(String problem) {
         if (parts.size() == 1) {

@@ -15,5 +15,11 @@ public enum Channel {
     /** Connection events of a link (NAO online/lost, ...); raw holds the UTF-8 text. */
     LINK_EVENT,
     /** Team messages between a team's robots (UDP 10000 + team number), heard for the budget guard. */
-    TEAM_MESSAGE
+    TEAM_MESSAGE,
+    /**
+     * A message on a channel another tool wrote into a recording (replay only, never live):
+     * kind = the MCAP topic, raw = the message's bytes, message = the decoded protobuf message
+     * (by the schema in the file), or null for a JSON channel, whose raw bytes are its text.
+     */
+    FOREIGN
 }

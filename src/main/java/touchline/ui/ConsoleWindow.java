@@ -77,6 +77,9 @@ public final class ConsoleWindow {
     }
 
     /** Shows the window on {@code stage} with the demo layout, the "last" layout or the default. */
+    /** How long closing the window waits for the recording's file to be finished (a stuck disk must not hang it). */
+    static final long FINISH_RECORDING_MILLIS = 20_000;
+
     public ConsoleWindow show(Stage stage) {
         this.stage = stage;
         applyTheme();
@@ -94,6 +97,9 @@ public final class ConsoleWindow {
             saveQuietly("last");
             pulse.stop();
             serving.close();
+            // closing the window ends a recording as its Stop button does: the file is finished
+            // (summary, footer) before the process can exit, however the window was closed
+            console.finishRecording(FINISH_RECORDING_MILLIS);
         });
         stage.show();
         pulse.start();

@@ -41,6 +41,10 @@ class RecordingRoundTripTest {
         flagged[2] = 1; // legacy header with a flag set: kept as raw bytes, still replayed exactly
         sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.FUMANOID, null, 1,
                 "status", Fumanoid.Message.getDefaultInstance(), flagged, null));
+        // a replayed message of another tool's channel, recorded again: its bytes come back as they were
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 2, Direction.IN, Channel.FOREIGN, null,
+                Envelope.NO_ROBOT, "/their/score", null, "{\"home\": 1}".getBytes(java.nio.charset.StandardCharsets.UTF_8),
+                null));
         Set<Channel> channels = sent.stream().map(Envelope::channel).collect(Collectors.toCollection(() -> EnumSet.noneOf(Channel.class)));
         assertEquals(EnumSet.allOf(Channel.class), channels, "the fixture covers every wire channel");
 

@@ -17,6 +17,7 @@ import javafx.util.StringConverter;
 import touchline.app.Console;
 import touchline.app.Replay;
 import touchline.record.PlayerState;
+import touchline.record.ReplayNotes;
 import touchline.record.RecordingException;
 import touchline.record.TimelineEvent;
 import touchline.ui.FrameContext;
@@ -50,6 +51,8 @@ public final class ReplayView implements View {
     private final TextField path = new TextField();
     private final Label message = new Label();
     private final ListView<String> problems = new ListView<>();
+    private final Label notesBadge = new Label();
+    private final javafx.scene.control.Tooltip notesTip = new javafx.scene.control.Tooltip();
     private final Button play = new Button("▶ Play");
     private final ComboBox<Double> speed = new ComboBox<>();
     private final Label position = new Label("No recording open.");
@@ -65,7 +68,7 @@ public final class ReplayView implements View {
     private PlayerState state;
     private List<TimelineEvent> events = List.of();
     private long loopA = -1;
-    private List<String> shownProblems = List.of();
+    private ReplayNotes shownNotes = ReplayNotes.NONE;
 
     public ReplayView(ViewContext context) {
         this.console = context.console();
@@ -102,6 +105,13 @@ public final class ReplayView implements View {
         problems.setPrefHeight(60);
         problems.setVisible(false);
         problems.setManaged(false);
+        // what was skipped, said as replay says it: a badge, its tooltip and the list below it
+        notesBadge.setId("replay-notes");
+        notesBadge.setWrapText(true);
+        notesBadge.setStyle("-fx-text-fill: #9a6700; -fx-font-weight: bold;");
+        notesBadge.setTooltip(notesTip);
+        notesBadge.managedProperty().bind(notesBadge.textProperty().isNotEmpty());
+        notesBadge.visibleProperty().bind(notesBadge.textProperty().isNotEmpty());
 
         play.setId("replay-play");
         play.setOnAction(e -> playOrPause());
@@ -152,7 +162,7 @@ public final class ReplayView implements View {
         hint.setStyle("-fx-opacity: 0.7;");
         Label title = new Label("Replay");
         title.setStyle("-fx-font-weight: bold;");
-        return new VBox(6, title, fileRow, message, problems, timeline.node(), files, position, controls, row(live, hint));
+        return new VBox(6, title, fileRow, message, notesBadge, problems, timeline.node(), files, position, controls, row(live, hint));
     }
 
     private Node schemaPane() {
@@ -416,12 +426,16 @@ public final class ReplayView implements View {
     }
 
     private void showState() {
-        List<String> p = state == null ? List.of() : state.problems();
-        if (!p.equals(shownProblems)) {
-            shownProblems = List.copyOf(p);
-            problems.getItems().setAll(p.stream().map(s -> "⚠ " + s).toList());
-            problems.setVisible(!p.isEmpty());
-            problems.setManaged(!p.isEmpty());
+        ReplayNotes notes = state == null ? ReplayNotes.NONE : state.notes();
+        if (!notes.equals(shownNotes)) {
+            shownNotes = notes;
+            List<String> items = new ArrayList<>(notes.lines().stream().map(s -> "⚠ " + s).toList());
+            notes.contents().forEach(c -> items.add("• " + c + " (listed, not played)"));
+            problems.getItems().setAll(items);
+            problems.setVisible(!items.isEmpty());
+            problems.setManaged(!items.isEmpty());
+            notesBadge.setText(notes.badge());
+            notesTip.setText(String.join("\n", notes.lines()));
         }
         String text;
         if (state == null) {

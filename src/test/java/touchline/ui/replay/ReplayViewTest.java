@@ -164,6 +164,43 @@ class ReplayViewTest {
     }
 
     @Test
+    void whatWasSkippedIsShownInThePanelAsReplaySaysIt() throws Exception {
+        Path foreign = dir.resolve("foreign.mcap");
+        try (touchline.record.McapWriter w = new touchline.record.McapWriter(foreign, 4096)) {
+            int schema = w.addSchema("std_msgs/msg/String", "ros2msg", "string data".getBytes());
+            int chatter = w.addChannel(schema, "/chatter", "cdr", java.util.Map.of());
+            int score = w.addChannel(0, "/score", "json", java.util.Map.of());
+            w.addMetadata("match", java.util.Map.of("field", "B"));
+            for (int i = 0; i < 25; i++) {
+                long t = 1_700_000_000_000_000_000L + i * 10_000_000L;
+                w.addMessage(chatter, t, t, new byte[]{0, 1, 0, 0, 1, 0, 0, 0, 0});
+                w.addMessage(score, t, t, ("{\"home\": " + i + "}").getBytes());
+            }
+        }
+        openFile(foreign);
+        String said = "skipped 25 messages of 1 channel: /chatter (ros2msg/cdr: encoding not supported) 25";
+        await(20, () -> robot.lookup("#replay-notes").queryAs(Label.class).getText()
+                .equals("⚠ 25 messages of 1 channel skipped"));
+        Label badge = robot.lookup("#replay-notes").queryAs(Label.class);
+        assertEquals(said, fx(() -> badge.getTooltip().getText()));
+        java.util.List<?> items = fx(() -> java.util.List.copyOf(
+                robot.lookup("#replay-problems").queryAs(ListView.class).getItems()));
+        assertEquals(java.util.List.of("⚠ " + said, "• metadata match: field=B (listed, not played)"), items);
+        // the JSON channel plays into every view without a fault (a fault would be a note of its own)
+        chooseSpeed(50.0);
+        robot.clickOn("#replay-play");
+        await(20, () -> state().finished());
+        assertEquals(25, state().emitted());
+        await(5, () -> robot.lookup("#replay-problems").queryAs(ListView.class).getItems().equals(items));
+        // the same sentence replay prints
+        try (Recording r = Recording.open(foreign)) {
+            touchline.record.Player p = new touchline.record.Player(r, e -> { }, touchline.record.PlaybackClock.system());
+            assertEquals(25, p.runToEnd());
+            assertEquals(java.util.List.of(said), r.notes().lines());
+        }
+    }
+
+    @Test
     void recordingWritesAFileThatReplays() throws Exception {
         Path out = dir.resolve("rec/session.mcap");
         fx(() -> {

@@ -1,0 +1,85 @@
+package touchline.record;
+
+import com.google.protobuf.Descriptors.Descriptor;
+import com.google.protobuf.DynamicMessage;
+import com.google.protobuf.InvalidProtocolBufferException;
+import com.google.protobuf.Message;
+import touchline.protocol.MessageCodec;
+import touchline.protocol.MessageResult;
+import touchline.transport.Channel;
+import touchline.transport.Direction;
+import touchline.transport.Envelope;
+
+import java.util.Map;
+import java.util.function.Function;
+
+/**
+ * How the messages of one MCAP channel become Envelopes: a channel Touchline wrote
+ * ({@link Touchline}, its metadata says everything), a channel another tool wrote whose
+ * messages can still be shown ({@link Foreign}: protobuf with its schema in the file, or
+ * JSON text), or a channel whose messages are skipped and counted, with the reason
+ * ({@link Skipped}: an encoding this reader does not decode, such as ros2msg/cdr or
+ * flatbuffer, a protobuf schema missing or unparsable). A foreign channel's bytes are never
+ * decoded as FUmanoids protobuf unless its schema says they are {@code fumanoid.Message}.
+ */
+sealed interface ChannelReading {
+
+    record Touchline(EnvelopeLayout.Key key) implements ChannelReading { }
+
+    record Skipped(String topic, String encoding, String reason) implements ChannelReading { }
+
+    /** Another tool's channel shown as {@link Channel#FOREIGN} envelopes named by its topic. */
+    record Foreign(String topic, Function<byte[], Message> decoder) implements ChannelReading {
+
+        Envelope envelope(long timeMicros, byte[] data) {
+            return new Envelope(timeMicros, Direction.IN, Channel.FOREIGN, null, Envelope.NO_ROBOT, topic,
+                    decoder == null ? null : decoder.apply(data), data, null);
+        }
+    }
+
+    /**
+     * Decides for {@code channel}. {@code schema} is its schema (null when it has none);
+     * {@code types} finds a protobuf message type by full name among the schemas that parsed.
+     */
+    static ChannelReading of(McapReader.ChannelInfo channel, McapReader.Schema schema,
+                             Function<String, Descriptor> types, MessageCodec codec) {
+        Map<String, String> m = channel.metadata();
+        boolean ownChannel = m.keySet().stream().anyMatch(k -> k.startsWith("touchline."));
+        String encoding = (schema == null ? "no schema" : schema.encoding().isEmpty() ? "empty schema"
+                : schema.encoding()) + "/" + (channel.messageEncoding().isEmpty() ? "no encoding"
+                : channel.messageEncoding());
+        if (ownChannel) {
+            try {
+                return new Touchline(EnvelopeLayout.Key.fromMetadata(m));
+            } catch (RuntimeException e) {
+                return new Skipped(channel.topic(), encoding, "not a complete Touchline channel: " + e.getMessage());
+            }
+        }
+        String messageEncoding = channel.messageEncoding();
+        if (messageEncoding.equals("json")) {
+            return new Foreign(channel.topic(), null);
+        }
+        if (!messageEncoding.equals("protobuf")) {
+            return new Skipped(channel.topic(), encoding, "encoding not supported");
+        }
+        if (schema == null || !schema.encoding().equals("protobuf")) {
+            return new Skipped(channel.topic(), encoding, "protobuf without a protobuf schema");
+        }
+        Descriptor type = types.apply(schema.name());
+        if (type == null) {
+            return new Skipped(channel.topic(), encoding, "its schema does not define " + schema.name()
+                    + " (or does not parse)");
+        }
+        if (type.getFullName().equals(touchline.proto.Fumanoid.Message.getDescriptor().getFullName())) {
+            return new Foreign(channel.topic(), data -> codec.decode(data) instanceof MessageResult.Decoded d
+                    ? d.message() : null);
+        }
+        return new Foreign(channel.topic(), data -> {
+            try {
+                return DynamicMessage.parseFrom(type, data);
+            } catch (InvalidProtocolBufferException e) {
+                return null;
+            }
+        });
+    }
+}
