@@ -45,6 +45,16 @@ static void run(host_wifi *w, uint32_t ms)
     }
 }
 
+/* Runs the robot until *count reaches want, or for at most limit_ms: a condition, not a sleep
+ * (a loaded machine slows the simulated serial line, it does not change what arrives). */
+static void run_until(host_wifi *w, const int *count, int want, uint32_t limit_ms)
+{
+    uint32_t end = now_ms() + limit_ms;
+    while (*count < want && (int32_t)(now_ms() - end) < 0) {
+        run(w, 50);
+    }
+}
+
 int main(void)
 {
     static host_wifi w;
@@ -79,7 +89,7 @@ int main(void)
     cfg.options = sim_world_options(&cfg.option_count);
     robot_init(&cfg, now_ms());
 
-    run(&w, 1000);
+    run_until(&w, &status_seen, 3, 10000);
     CHECK(robot_network_ready());
     CHECK(status_seen >= 3);
 
@@ -110,7 +120,7 @@ int main(void)
                                       0x08, 0x64, 0xD2, 0x02, 0x0D, 0x0A, 0x09, 'd', 'e', 'm', 'o', '.', 't', 'e', 'x', 't', 0x10, 0x01};
         text_seen = 0;
         sendto(console_fd, req, sizeof req, 0, (struct sockaddr *)&robot_addr, sizeof robot_addr);
-        run(&w, 1000);
+        run_until(&w, &text_seen, 5, 10000);
         CHECK(robot_option_enabled("demo.text"));
         CHECK(text_seen >= 5);
     }
@@ -119,7 +129,7 @@ int main(void)
     gs_sim_disconnect(w.module, '1');
     run(&w, 300);
     status_seen = 0;
-    run(&w, 1500);
+    run_until(&w, &status_seen, 4, 10000);
     CHECK(w.gs.stats.disconnects == 1);
     CHECK(robot_network_ready());
     CHECK(status_seen >= 4);
