@@ -6,7 +6,6 @@ import touchline.security.KeyException;
 import touchline.transport.nao.NaoClientKeys;
 
 import java.nio.file.Path;
-import java.util.Map;
 import java.util.Optional;
 
 /**
@@ -28,15 +27,10 @@ final class NaoKeyOptions {
 
     /** The keys to use, or null with {@code --insecure}; a missing or broken key file is a clear error. */
     NaoClientKeys load() throws KeyException {
-        return load(System.getenv());
-    }
-
-    /** {@link #load()} with the given environment ({@code TOUCHLINE_KEYS}, {@code XDG_CONFIG_HOME}, {@code HOME}). */
-    NaoClientKeys load(Map<String, String> env) throws KeyException {
         if (insecure) {
             return null;
         }
-        KeyDir dir = KeyDir.locate(Optional.ofNullable(keys), env);
+        KeyDir dir = KeyDir.locate(Optional.ofNullable(keys), System.getenv());
         try {
             return NaoClientKeys.load(dir);
         } catch (KeyException e) {
