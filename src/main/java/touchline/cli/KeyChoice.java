@@ -46,7 +46,7 @@ final class KeyChoice {
             System.err.println("keys: " + s.describe() + " (" + dir.path() + ")");
             return s;
         } catch (KeyException e) {
-            throw StartFailure.badInput(e.getMessage());
+            throw StartFailure.badInput(e.getMessage() + ". To run without keys: --insecure");
         }
     }
 }

@@ -136,9 +136,9 @@ public final class KeysCommand {
             KeyFile server = dir.read(KeyDir.NAO_SERVER_PUBLIC, false);
             KeyFile console = dir.read(KeyDir.CONSOLE_PUBLIC, false);
             out.printf("NAO link (CURVE): the NAO needs %s and %s (public %s)%n", dir.file(KeyDir.NAO_SERVER_SECRET),
-                    dir.file(KeyDir.CONSOLE_PUBLIC), console.z85("public-key"));
+                    dir.file(KeyDir.CONSOLE_PUBLIC), console.curveKey("public-key").z85());
             out.printf("  this console uses %s and %s (NAO public %s)%n", dir.file(KeyDir.CONSOLE_SECRET),
-                    dir.file(KeyDir.NAO_SERVER_PUBLIC), server.z85("public-key"));
+                    dir.file(KeyDir.NAO_SERVER_PUBLIC), server.curveKey("public-key").z85());
         }
 
         private static void writeSecret(Path file, byte[] content) throws IOException {

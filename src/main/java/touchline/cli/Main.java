@@ -22,7 +22,6 @@ import picocli.CommandLine.Command;
                 GcCommand.class,
                 NaoCommand.class,
                 ServeCommand.class,
-                DemoKeysCommand.class,
                 KeysCommand.class,
         })
 public final class Main implements Runnable {

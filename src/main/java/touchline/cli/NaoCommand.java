@@ -9,7 +9,7 @@ import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
 import touchline.transport.nao.CameraSettings;
 import touchline.transport.nao.ConnectionState;
-import touchline.transport.nao.KeyFileException;
+import touchline.security.KeyException;
 import touchline.transport.nao.NaoClientKeys;
 import touchline.transport.nao.NaoCall;
 import touchline.transport.nao.NaoCameraStream;
@@ -103,7 +103,7 @@ public final class NaoCommand implements Runnable {
             NaoClientKeys keys;
             try {
                 keys = security.load();
-            } catch (KeyFileException e) {
+            } catch (KeyException e) {
                 err().println(e.getMessage());
                 return null;
             }
@@ -229,7 +229,7 @@ public final class NaoCommand implements Runnable {
             }
             try {
                 keys = security.load();
-            } catch (KeyFileException e) {
+            } catch (KeyException e) {
                 spec.commandLine().getErr().println(e.getMessage());
                 return 1;
             }

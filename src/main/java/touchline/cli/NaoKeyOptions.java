@@ -1,11 +1,12 @@
 package touchline.cli;
 
 import picocli.CommandLine.Option;
-import touchline.transport.nao.KeyDirectory;
-import touchline.transport.nao.KeyFileException;
+import touchline.security.KeyDir;
+import touchline.security.KeyException;
 import touchline.transport.nao.NaoClientKeys;
 
 import java.nio.file.Path;
+import java.util.Optional;
 
 /**
  * The NAO link's security options, shared by every command that talks to a NAO: CURVE with the
@@ -25,15 +26,15 @@ final class NaoKeyOptions {
     boolean insecure;
 
     /** The keys to use, or null with {@code --insecure}; a missing or broken key file is a clear error. */
-    NaoClientKeys load() throws KeyFileException {
+    NaoClientKeys load() throws KeyException {
         if (insecure) {
             return null;
         }
-        Path dir = KeyDirectory.resolve(keys == null ? null : keys.toString());
+        KeyDir dir = KeyDir.locate(Optional.ofNullable(keys), System.getenv());
         try {
             return NaoClientKeys.load(dir);
-        } catch (KeyFileException e) {
-            throw new KeyFileException(e.getMessage() + ". For an old robot side without keys: --insecure");
+        } catch (KeyException e) {
+            throw new KeyException(e.getMessage() + ". For an old robot side without keys: --insecure");
         }
     }
 }

@@ -167,7 +167,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         }
         // the NAO tab as every user sees it: the link encrypted with CURVE keys (made for the shot)
         java.nio.file.Path keys = Files.createTempDirectory("touchline-shot-keys");
-        new touchline.transport.nao.CurveKeyFiles().write(keys, true);
+        new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(), java.time.Instant.now());
         Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0", "--curve-secret",
                 keys.resolve("nao-server.secret").toString(), "--curve-clients", keys.resolve("console.public").toString())
                 .redirectErrorStream(true).start();

@@ -65,6 +65,16 @@ final class ServeCommand implements Callable<Integer> {
     @Option(names = "--tls-key", paramLabel = "FILE", description = "the certificate's PEM private key (PKCS#8, no password)")
     Path tlsKey;
 
+    @Option(names = "--keys", paramLabel = "DIR",
+            description = "the team's key directory (default: $TOUCHLINE_KEYS, else ~/.config/touchline/keys when it"
+                    + " holds team.key): tags every datagram to the small robots, checks theirs (docs/security.md);"
+                    + " not used with FILE.mcap")
+    Path keys;
+
+    @Option(names = "--insecure", description = "no team key even if one is there: nothing tagged or checked, for"
+            + " robots without keys (lab mode)")
+    boolean insecure;
+
     @CommandLine.Parameters(arity = "0..1", paramLabel = "FILE.mcap",
             description = "serve a recording instead of the field (played through the replay pipeline: "
                     + "nothing goes to robots, no UDP port is taken)")
@@ -102,11 +112,18 @@ final class ServeCommand implements Callable<Integer> {
         }
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
-        ConsoleConfig consoleConfig = replayFile != null
-                // a replay is all that is served: no robot port taken, no GameController heard
-                ? ConsoleConfig.defaults().withGameControllerPort(0)
-                        .withUdp(UdpConfig.defaults().withListenPort(0).withBindAddress("127.0.0.1"))
-                : ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(robotsPort).withBindAddress(robotsBind));
+        ConsoleConfig consoleConfig;
+        try {
+            consoleConfig = replayFile != null
+                    // a replay is all that is served: no robot port taken, no GameController heard
+                    ? ConsoleConfig.defaults().withGameControllerPort(0)
+                            .withUdp(UdpConfig.defaults().withListenPort(0).withBindAddress("127.0.0.1"))
+                    : ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(robotsPort)
+                            .withBindAddress(robotsBind)).withSecurity(new KeyChoice(keys, insecure, System.getenv()).security());
+        } catch (StartFailure e) {
+            err.println("touchline serve: " + e.getMessage());
+            return e.exitCode();
+        }
         try (Console console = new Console(consoleConfig)) {
             schemas.teamFiles().forEach(f -> console.kinds().add(f).ifPresent(r -> err.println("touchline serve: " + r)));
             Serving serving;

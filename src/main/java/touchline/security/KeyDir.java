@@ -18,7 +18,10 @@ import java.util.Set;
  * The key directory (docs/security.md): {@code team.key} for the small robots' tags and the
  * CURVE key pairs of the NAO link ({@code nao-server.secret/.public}, {@code console.secret/.public}),
  * made with owner-only permissions (directory 0700, files 0600, the {@code .public} files 0644),
- * plus {@code console.counter}, the reservation of the console's tag counter.
+ * plus {@code console.counter}, the reservation of the console's tag counter. The one place that
+ * finds the directory, reads key files (checking that secret ones are the owner's only) and makes
+ * keys, the CURVE pairs included (JeroMQ's Curve25519, valid libzmq keys); the NAO link takes its
+ * part with {@code touchline.transport.nao.NaoClientKeys}.
  */
 public final class KeyDir {
 
@@ -28,7 +31,8 @@ public final class KeyDir {
     public static final String CONSOLE_SECRET = "console.secret";
     public static final String CONSOLE_PUBLIC = "console.public";
     public static final String COUNTER = "console.counter";
-    static final List<String> FILES = List.of(TEAM_KEY, NAO_SERVER_SECRET, NAO_SERVER_PUBLIC, CONSOLE_SECRET, CONSOLE_PUBLIC);
+    /** The five key files {@link #create} writes (not the counter). */
+    public static final List<String> FILES = List.of(TEAM_KEY, NAO_SERVER_SECRET, NAO_SERVER_PUBLIC, CONSOLE_SECRET, CONSOLE_PUBLIC);
 
     private static final Set<PosixFilePermission> OWNER_ONLY = PosixFilePermissions.fromString("rw-------");
     private static final Set<PosixFilePermission> READABLE = PosixFilePermissions.fromString("rw-r--r--");
@@ -80,13 +84,13 @@ public final class KeyDir {
             }
             return KeyFile.parse(f.toString(), Files.readString(f, StandardCharsets.UTF_8));
         } catch (NoSuchFileException e) {
-            throw new KeyException("no key file " + f + ": make the team's keys with `touchline keys new` (or copy the"
-                    + " team's key directory here, or name it with --keys DIR); `--insecure` runs without keys");
+            throw new KeyException(f + ": missing; make the team's keys with `touchline keys new` (or copy the"
+                    + " team's key directory here, or name it with --keys DIR)");
         } catch (java.nio.charset.MalformedInputException e) {
-            throw new KeyException(f + " is not UTF-8 text: damaged; copy it again from the team's key directory or"
-                    + " make new keys with `touchline keys new --force` (then update every robot)");
+            throw new KeyException(f + ": not UTF-8 text, corrupted; copy it again from the team's key directory or "
+                    + KeyFile.RECOVER);
         } catch (IOException e) {
-            throw new KeyException("cannot read " + f + ": " + e);
+            throw new KeyException(f + ": cannot read (" + e.getMessage() + ")");
         }
     }
 

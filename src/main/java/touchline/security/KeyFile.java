@@ -6,9 +6,14 @@ import java.util.Map;
 
 /**
  * The text of a key file (docs/security.md): UTF-8, '#' comments, blank lines, other lines
- * {@code name = value}. Pure parsing with messages that name the file and the line.
+ * {@code name = value}; the keys in it, checked: the team key (hex, with its key-id) and the
+ * CURVE keys (Z85). Pure parsing with messages that name the file, the line and the way out;
+ * {@link KeyDir} reads the files.
  */
 public final class KeyFile {
+
+    static final String RECOVER = "make new keys with `touchline keys new --force` and give them to the robots "
+            + "(docs/security.md)";
 
     private final String name;
     private final Map<String, String> values;
@@ -18,6 +23,7 @@ public final class KeyFile {
         this.values = values;
     }
 
+    /** @param name what the messages name: the file's path */
     public static KeyFile parse(String name, String text) throws KeyException {
         Map<String, String> values = new LinkedHashMap<>();
         String[] lines = text.split("\r?\n", -1);
@@ -28,12 +34,12 @@ public final class KeyFile {
             }
             int eq = line.indexOf('=');
             if (eq <= 0) {
-                throw new KeyException(name + " line " + (i + 1) + ": expected 'name = value', found '"
-                        + abbreviate(line) + "'");
+                throw new KeyException(name + " line " + (i + 1) + ": not 'name = value' (found '" + abbreviate(line)
+                        + "'), corrupted; " + RECOVER);
             }
             String key = line.substring(0, eq).strip();
             if (values.put(key, line.substring(eq + 1).strip()) != null) {
-                throw new KeyException(name + " line " + (i + 1) + ": '" + key + "' appears twice");
+                throw new KeyException(name + " line " + (i + 1) + ": '" + key + "' appears twice, corrupted; " + RECOVER);
             }
         }
         return new KeyFile(name, values);
@@ -43,10 +49,11 @@ public final class KeyFile {
         return line.length() <= 20 ? line : line.substring(0, 20) + "…";
     }
 
+    /** The value of {@code key}, or a clear error when the file has no such line. */
     public String value(String key) throws KeyException {
         String v = values.get(key);
         if (v == null) {
-            throw new KeyException(name + " has no '" + key + " = …' line");
+            throw new KeyException(name + ": no '" + key + " = ...' line (the wrong file, or corrupted); " + RECOVER);
         }
         return v;
     }
@@ -67,13 +74,9 @@ public final class KeyFile {
         return key;
     }
 
-    /** A CURVE key in Z85 (40 characters). */
-    public String z85(String key) throws KeyException {
-        String v = value(key);
-        if (v.length() != 40) {
-            throw new KeyException(name + ": " + key + " must be 40 Z85 characters, found " + v.length());
-        }
-        return v;
+    /** The CURVE key in line {@code key}, checked: 40 Z85 characters that decode to 32 bytes. */
+    public CurveKey curveKey(String key) throws KeyException {
+        return CurveKey.parse(value(key), name + ": " + key);
     }
 
     private static boolean isHex(int c) {

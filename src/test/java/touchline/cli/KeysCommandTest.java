@@ -85,6 +85,7 @@ class KeysCommandTest {
         Files.writeString(dir.resolve("team.key"), "team-key = 00\nkey-id = 00000000\n");
         StartFailure bad = assertThrows(StartFailure.class, () -> new KeyChoice(dir, false, Map.of()).security());
         assertTrue(bad.getMessage().contains("64 hex digits"), bad.getMessage());
+        assertTrue(bad.getMessage().endsWith("To run without keys: --insecure"), bad.getMessage());
         assertThrows(StartFailure.class, () -> new KeyChoice(dir, true, Map.of()).security());
         assertTrue(new KeyChoice(null, true, Map.of()).security().key().isEmpty());
         assertTrue(new KeyChoice(null, false, Map.of("TOUCHLINE_KEYS", tmp.resolve("nothing").toString()))

@@ -50,6 +50,23 @@ class ServeCommandTest {
     }
 
     @Test
+    void aBrokenTeamKeyOrContradictoryKeyOptionsStopItBeforeServing(@org.junit.jupiter.api.io.TempDir java.nio.file.Path tmp)
+            throws Exception {
+        java.nio.file.Path keys = tmp.resolve("keys");
+        new touchline.security.KeyDir(keys).create(false, new java.security.SecureRandom(), java.time.Instant.now());
+        java.nio.file.Files.writeString(keys.resolve("team.key"), "team-key = 00\nkey-id = 00000000\n");
+        Run run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--keys", keys.toString(),
+                "--seconds", "1");
+        assertEquals(2, run.exit(), run.err());
+        assertTrue(run.err().contains("team.key: team-key must be 64 hex digits"), run.err());
+        assertFalse(run.out().contains("ws://"), run.out());
+        run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--keys", keys.toString(),
+                "--insecure", "--seconds", "1");
+        assertEquals(2, run.exit(), run.err());
+        assertTrue(run.err().contains("--insecure and --keys contradict each other"), run.err());
+    }
+
+    @Test
     void aTeamSchemaThatIsNotOneIsReportedAndNothingIsServed() throws Exception {
         java.nio.file.Path bad = java.nio.file.Files.createTempFile("not-a-schema", ".desc");
         java.nio.file.Files.writeString(bad, "hello");

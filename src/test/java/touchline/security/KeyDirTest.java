@@ -6,7 +6,6 @@ import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -114,17 +113,17 @@ class KeyDirTest {
         KeyDir dir = made();
         KeyFile server = dir.read(KeyDir.NAO_SERVER_SECRET, true);
         KeyFile client = dir.read(KeyDir.CONSOLE_SECRET, true);
-        assertEquals(server.z85("public-key"), dir.read(KeyDir.NAO_SERVER_PUBLIC, false).z85("public-key"));
-        assertEquals(client.z85("public-key"), dir.read(KeyDir.CONSOLE_PUBLIC, false).z85("public-key"));
+        assertEquals(server.curveKey("public-key"), dir.read(KeyDir.NAO_SERVER_PUBLIC, false).curveKey("public-key"));
+        assertEquals(client.curveKey("public-key"), dir.read(KeyDir.CONSOLE_PUBLIC, false).curveKey("public-key"));
         try (ZContext ctx = new ZContext()) {
             ZMQ.Socket rep = ctx.createSocket(SocketType.REP);
             rep.setCurveServer(true);
-            rep.setCurveSecretKey(server.z85("secret-key").getBytes(StandardCharsets.US_ASCII));
+            rep.setCurveSecretKey(server.curveKey("secret-key").bytes());
             int port = rep.bindToRandomPort("tcp://127.0.0.1");
             ZMQ.Socket req = ctx.createSocket(SocketType.REQ);
-            req.setCurveServerKey(server.z85("public-key").getBytes(StandardCharsets.US_ASCII));
-            req.setCurvePublicKey(client.z85("public-key").getBytes(StandardCharsets.US_ASCII));
-            req.setCurveSecretKey(client.z85("secret-key").getBytes(StandardCharsets.US_ASCII));
+            req.setCurveServerKey(server.curveKey("public-key").bytes());
+            req.setCurvePublicKey(client.curveKey("public-key").bytes());
+            req.setCurveSecretKey(client.curveKey("secret-key").bytes());
             req.setReceiveTimeOut(5000);
             rep.setReceiveTimeOut(5000);
             req.connect("tcp://127.0.0.1:" + port);

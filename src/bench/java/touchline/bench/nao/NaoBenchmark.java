@@ -7,8 +7,8 @@ import touchline.proto.Nao.HAWActorRPCRequest;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraSettings;
 import touchline.transport.nao.ConnectionState;
-import touchline.transport.nao.CurveKeyFiles;
 import touchline.transport.nao.NaoClientKeys;
+import touchline.security.KeyDir;
 import touchline.transport.nao.NaoCall;
 import touchline.transport.nao.NaoCameraStream;
 import touchline.transport.nao.NaoLink;
@@ -138,13 +138,13 @@ public final class NaoBenchmark {
      */
     private void curve(int insecurePort) throws Exception {
         Path keys = Files.createTempDirectory("touchline-bench-keys");
-        new CurveKeyFiles().write(keys, true);
+        new KeyDir(keys).create(true, new java.security.SecureRandom(), java.time.Instant.now());
         Process secure = new ProcessBuilder(binary.toString(), "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port",
                 "0", "--workers", "4", "--echo-port", "0", "--curve-secret", keys.resolve("nao-server.secret").toString(),
                 "--curve-clients", keys.resolve("console.public").toString())
                 .redirectError(ProcessBuilder.Redirect.DISCARD).start();
         try (NaoLink plain = link(insecurePort, null);
-             NaoLink curve = link(ports(secure)[0], NaoClientKeys.load(keys))) {
+             NaoLink curve = link(ports(secure)[0], NaoClientKeys.load(new KeyDir(keys)))) {
             NaoCall ping = NaoCall.of("ALMotion", "ping");
             // warm-up: long enough for the JIT to compile JeroMQ's pure-Java CURVE crypto too
             for (int i = 0; i < 5_000; i++) {
@@ -173,7 +173,7 @@ public final class NaoBenchmark {
         } finally {
             secure.destroy();
             secure.waitFor(5, TimeUnit.SECONDS);
-            for (String f : CurveKeyFiles.FILES) {
+            for (String f : KeyDir.FILES) {
                 Files.deleteIfExists(keys.resolve(f));
             }
             Files.deleteIfExists(keys);

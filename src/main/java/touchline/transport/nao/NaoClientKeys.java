@@ -1,12 +1,15 @@
 package touchline.transport.nao;
 
 import org.zeromq.ZMQ;
-
-import java.nio.file.Path;
+import touchline.security.CurveKey;
+import touchline.security.KeyDir;
+import touchline.security.KeyException;
+import touchline.security.KeyFile;
 
 /**
  * What the console needs to talk CURVE to a NAO: its own client key pair ({@code console.secret})
- * and the NAO's server public key ({@code nao-server.public}), from one key directory.
+ * and the NAO's server public key ({@code nao-server.public}), from one key directory
+ * ({@link KeyDir}, which reads and checks the files).
  *
  * @param serverPublic the NAO robot side's public key
  * @param clientPublic this console's public key (the NAO lets it in when it holds console.public)
@@ -14,13 +17,10 @@ import java.nio.file.Path;
  */
 public record NaoClientKeys(CurveKey serverPublic, CurveKey clientPublic, CurveKey clientSecret) {
 
-    public static final String CONSOLE_SECRET = "console.secret";
-    public static final String SERVER_PUBLIC = "nao-server.public";
-
     /** Reads and checks the two files in {@code dir}; the error names the file and the way out. */
-    public static NaoClientKeys load(Path dir) throws KeyFileException {
-        KeyFileText console = KeyFileText.read(dir.resolve(CONSOLE_SECRET));
-        KeyFileText server = KeyFileText.read(dir.resolve(SERVER_PUBLIC));
+    public static NaoClientKeys load(KeyDir dir) throws KeyException {
+        KeyFile console = dir.read(KeyDir.CONSOLE_SECRET, true);
+        KeyFile server = dir.read(KeyDir.NAO_SERVER_PUBLIC, false);
         return new NaoClientKeys(server.curveKey("public-key"), console.curveKey("public-key"),
                 console.curveKey("secret-key"));
     }

@@ -58,7 +58,8 @@ public final class NaoView implements View {
     private final TextField camPort = new TextField("5556");
     private final ToggleButton connect = new ToggleButton("Connect");
     private final Label state = new Label("not connected");
-    private final TextField keyDir = new TextField(touchline.transport.nao.KeyDirectory.resolve(null).toString());
+    private final TextField keyDir = new TextField(
+            touchline.security.KeyDir.locate(java.util.Optional.empty(), System.getenv()).path().toString());
     private final javafx.scene.control.CheckBox insecure = new javafx.scene.control.CheckBox("insecure (old robot)");
     private final ComboBox<String> module = new ComboBox<>();
     private final ListView<String> methods = new ListView<>();
@@ -179,8 +180,9 @@ public final class NaoView implements View {
             touchline.transport.nao.NaoClientKeys keys;
             try {
                 keys = insecure.isSelected() ? null
-                        : touchline.transport.nao.NaoClientKeys.load(java.nio.file.Path.of(keyDir.getText().strip()));
-            } catch (touchline.transport.nao.KeyFileException e) {
+                        : touchline.transport.nao.NaoClientKeys.load(
+                                new touchline.security.KeyDir(java.nio.file.Path.of(keyDir.getText().strip())));
+            } catch (touchline.security.KeyException e) {
                 lastResult = e.getMessage() + ". For an old robot side without keys: tick 'insecure'";
                 connect.setSelected(false);
                 return;

@@ -4,10 +4,13 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import touchline.security.KeyDir;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.SecureRandom;
 import java.time.Duration;
+import java.time.Instant;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -18,7 +21,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * The encrypted NAO link for real: JeroMQ's CURVE client in the console against libzmq's CURVE
  * server and ZAP handler in the C++ {@code touchline-nao-sim} on loopback, with keys made by
- * {@link CurveKeyFiles} (JeroMQ). With the right keys a call and a camera frame work; without a
+ * {@link KeyDir} ({@code touchline keys new}, JeroMQ). With the right keys a call and a camera frame work; without a
  * key or with a key the robot was not given, no call is answered, no frame arrives, the link
  * says why, and the robot logs the refusal.
  */
@@ -36,7 +39,7 @@ class NaoCurveRobotSideTest {
     }
 
     private RobotSideProcess secureSim() throws Exception {
-        new CurveKeyFiles().write(keys, false);
+        new KeyDir(keys).create(false, new SecureRandom(), Instant.now());
         return new RobotSideProcess(0, 0, "--curve-secret", keys.resolve("nao-server.secret").toString(),
                 "--curve-clients", keys.resolve("console.public").toString());
     }
@@ -45,8 +48,8 @@ class NaoCurveRobotSideTest {
     void rightKeysCallAndGetAFrame() throws Exception {
         try (RobotSideProcess sim = secureSim();
              NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { },
-                     NaoClientKeys.load(keys));
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, NaoClientKeys.load(keys))) {
+                     NaoClientKeys.load(new KeyDir(keys)));
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, NaoClientKeys.load(new KeyDir(keys)))) {
             assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), link.state()
                     + " " + link.securityProblem());
             assertEquals(new CallOutcome.Done(), link.call("ALTextToSpeech", "setVolume", 0.5f).get(20, TimeUnit.SECONDS));
@@ -61,12 +64,12 @@ class NaoCurveRobotSideTest {
 
     @Test
     void aConsoleKeyTheRobotWasNotGivenIsRefusedAndLogged() throws Exception {
-        new CurveKeyFiles().write(otherConsole, false);
+        new KeyDir(otherConsole).create(false, new SecureRandom(), Instant.now());
         try (RobotSideProcess sim = secureSim()) {
             // the right server key, but a console key pair the robot does not know
             Files.copy(keys.resolve("nao-server.public"), otherConsole.resolve("nao-server.public"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-            NaoClientKeys stranger = NaoClientKeys.load(otherConsole);
+            NaoClientKeys stranger = NaoClientKeys.load(new KeyDir(otherConsole));
             try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, stranger);
                  NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, stranger)) {
                 assertTrue(Poll.until(() -> link.state() == ConnectionState.REFUSED, Duration.ofSeconds(5)),
@@ -109,11 +112,11 @@ class NaoCurveRobotSideTest {
     @Test
     void wrongServerKeyNeverGoesOnlineAndSaysWhy() throws Exception {
         try (RobotSideProcess sim = secureSim()) {
-            new CurveKeyFiles().write(otherConsole, false); // another NAO's public key
+            new KeyDir(otherConsole).create(false, new SecureRandom(), Instant.now()); // another NAO's public key
             Files.copy(keys.resolve("console.secret"), otherConsole.resolve("console.secret"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { },
-                    NaoClientKeys.load(otherConsole))) {
+                    NaoClientKeys.load(new KeyDir(otherConsole)))) {
                 assertTrue(Poll.until(() -> link.state() == ConnectionState.REFUSED, Duration.ofSeconds(10)),
                         link.state().toString());
                 assertTrue(link.securityProblem().contains("no CURVE handshake"), link.securityProblem());

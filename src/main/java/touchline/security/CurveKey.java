@@ -1,10 +1,10 @@
-package touchline.transport.nao;
+package touchline.security;
 
 import zmq.util.Z85;
 
 /**
  * One CURVE key (a 32-byte Curve25519 key) with its Z85 text, the form libzmq and JeroMQ take
- * and the key files hold. Equal keys compare equal; {@link #toString()} never shows the key.
+ * and the key files hold ({@link KeyFile#curveKey}). Equal keys compare equal; {@link #toString()} never shows the key.
  */
 public final class CurveKey {
 
@@ -24,20 +24,20 @@ public final class CurveKey {
      *
      * @param where what to name in the error, e.g. "keys/console.secret: secret-key"
      */
-    public static CurveKey parse(String z85, String where) throws KeyFileException {
+    public static CurveKey parse(String z85, String where) throws KeyException {
         if (z85.length() != Z85_CHARS) {
-            throw new KeyFileException(where + " has " + z85.length() + " characters; a CURVE key has " + Z85_CHARS
-                    + " (Z85 of 32 bytes); " + KeyFileText.RECOVER);
+            throw new KeyException(where + " has " + z85.length() + " characters; a CURVE key has " + Z85_CHARS
+                    + " (Z85 of 32 bytes); " + KeyFile.RECOVER);
         }
         for (int i = 0; i < z85.length(); i++) {
             if (Z85_ALPHABET.indexOf(z85.charAt(i)) < 0) {
-                throw new KeyFileException(where + ": character " + (i + 1) + " ('" + z85.charAt(i)
-                        + "') is not Z85, corrupted; " + KeyFileText.RECOVER);
+                throw new KeyException(where + ": character " + (i + 1) + " ('" + z85.charAt(i)
+                        + "') is not Z85, corrupted; " + KeyFile.RECOVER);
             }
         }
         byte[] bytes = Z85.decode(z85);
         if (bytes == null || bytes.length != BYTES) {
-            throw new KeyFileException(where + ": not a Z85-encoded 32-byte key, corrupted; " + KeyFileText.RECOVER);
+            throw new KeyException(where + ": not a Z85-encoded 32-byte key, corrupted; " + KeyFile.RECOVER);
         }
         return new CurveKey(z85);
     }
