@@ -47,6 +47,9 @@ final class ServeCommand implements Callable<Integer> {
     @Option(names = "--robots-bind", defaultValue = "0.0.0.0", description = "address to hear robots on (default ${DEFAULT-VALUE})")
     String robotsBind;
 
+    @picocli.CommandLine.Mixin
+    TeamBudgetOptions budget;
+
     @Option(names = "--proto", paramLabel = "FILE", description = "a team's protoc descriptor set: its messages are served with their own types")
     Path proto;
 
@@ -111,7 +114,8 @@ final class ServeCommand implements Callable<Integer> {
             schemas.teamFiles().forEach(f -> console.kinds().add(f).ifPresent(r -> err.println("touchline serve: " + r)));
             Serving serving;
             try {
-                serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode());
+                serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
+                    console::teamMessageBudget);
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;
@@ -137,6 +141,12 @@ final class ServeCommand implements Callable<Integer> {
                 } else {
                     if (record != null) {
                         console.startRecording(record);
+                    }
+                    try {
+                        budget.guard(console, robotsBind); // served as /team/budget with --team
+                    } catch (StartFailure e) {
+                        err.println("touchline serve: " + e.getMessage());
+                        return e.exitCode();
                     }
                     out.println("hearing robots on UDP port " + console.udp().localPort()
                             + (record == null ? "" : ", recording to " + record.toAbsolutePath()));

@@ -168,6 +168,14 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         states.add(new ServedState(new MatchModeState(matchMode), channels));
     }
 
+    /**
+     * Serves the team-message budget meter as the JSON channel {@code /team/budget} while
+     * {@code budget} has one (the console guards a team's budget: {@code --team}).
+     */
+    public void serveTeamBudget(java.util.function.Supplier<java.util.Optional<touchline.model.TeamMessageBudget>> budget) {
+        states.add(new ServedState(new TeamBudgetState(budget), channels));
+    }
+
     /** On the event loop, every {@link ServeConfig#timeEveryMillis()}: the server time and changed states. */
     private void tick() {
         long now = clock.nowMicros() * 1000;

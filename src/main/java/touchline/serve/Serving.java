@@ -18,12 +18,15 @@ public final class Serving implements AutoCloseable {
     /**
      * Binds and starts serving; IllegalArgumentException (a sentence for the user) for a
      * configuration that cannot be served (no token beyond loopback, a certificate that does
-     * not load), the bind's own exception when the port cannot be had.
+     * not load), the bind's own exception when the port cannot be had. {@code teamBudget}: the
+     * console's budget guard while it has one (served as {@code /team/budget}).
      */
-    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, MatchMode matchMode)
+    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, MatchMode matchMode,
+                   java.util.function.Supplier<java.util.Optional<touchline.model.TeamMessageBudget>> teamBudget)
             throws InterruptedException {
         server = new FoxgloveServer(config, kinds, clock);
         server.serveMatchMode(matchMode);
+        server.serveTeamBudget(teamBudget);
         subscription = bus.subscribe(server);
     }
 

@@ -62,7 +62,8 @@ public final class ServeToggle implements AutoCloseable {
             config = config.withBind("0.0.0.0").withToken(AccessToken.generate(new SecureRandom()));
         }
         try {
-            serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode());
+            serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
+                    console::teamMessageBudget);
             said = "Serving to viewers: " + String.join("  ", serving.server().urls());
         } catch (IllegalArgumentException e) {
             said = "Cannot serve: " + e.getMessage();
