@@ -145,10 +145,11 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     @Override
     public void accept(Envelope e) {
         gameController.accept(e);
-        if (e.message() == null || e.error() != null) {
-            return;
+        if (e.message() != null && e.error() == null) {
+            standard.offer(e);
+        } else if (e.raw() == null || e.channel() == touchline.transport.Channel.LINK_EVENT) {
+            return; // nothing heard to serve (a link event is the console's own, a viewer has its own)
         }
-        standard.offer(e);
         ServedChannel c = channels.find(e);
         if (c == null) {
             return;
