@@ -518,6 +518,11 @@ public final class Console implements AutoCloseable {
         return Optional.ofNullable(debugRate);
     }
 
+    /** The budget guard's meter as JSON, for serving ({@code /team/budget}); its state is null without a guard. */
+    public TeamBudgetJson teamBudgetJson() {
+        return new TeamBudgetJson(this::teamMessageBudget);
+    }
+
     /** The budget guard, if started. */
     public synchronized Optional<TeamMessageBudget> teamMessageBudget() {
         return Optional.ofNullable(budget);

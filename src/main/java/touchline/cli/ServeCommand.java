@@ -115,7 +115,8 @@ final class ServeCommand implements Callable<Integer> {
             Serving serving;
             try {
                 serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
-                    console::teamMessageBudget);
+                    new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;

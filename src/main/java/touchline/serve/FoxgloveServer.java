@@ -174,12 +174,9 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         states.add(new ServedState(new MatchModeState(matchMode), channels));
     }
 
-    /**
-     * Serves the team-message budget meter as the JSON channel {@code /team/budget} while
-     * {@code budget} has one (the console guards a team's budget: {@code --team}).
-     */
-    public void serveTeamBudget(java.util.function.Supplier<java.util.Optional<touchline.model.TeamMessageBudget>> budget) {
-        states.add(new ServedState(new TeamBudgetState(budget), channels));
+    /** Serves {@code state} as its JSON channel (advertised once it has a value), e.g. the team's budget meter. */
+    public void serveJson(JsonChannel state) {
+        states.add(new ServedState(state, channels));
     }
 
     /** On the event loop, every {@link ServeConfig#timeEveryMillis()}: the server time and changed states. */

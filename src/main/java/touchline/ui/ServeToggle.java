@@ -63,7 +63,8 @@ public final class ServeToggle implements AutoCloseable {
         }
         try {
             serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
-                    console::teamMessageBudget);
+                    new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
             said = "Serving to viewers: " + String.join("  ", serving.server().urls());
         } catch (IllegalArgumentException e) {
             said = "Cannot serve: " + e.getMessage();

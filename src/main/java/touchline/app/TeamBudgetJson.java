@@ -1,4 +1,4 @@
-package touchline.serve;
+package touchline.app;
 
 import org.json.JSONObject;
 import touchline.model.TeamMessageBudget;
@@ -10,38 +10,27 @@ import java.util.function.Supplier;
  * The team-message budget meter as the JSON channel {@code /team/budget}: messages used and left
  * (and whether the figure is the GameController's own), the rate over the last minute, the rule
  * profile's limit, the forecast and oversize messages. Served only while the console guards a
- * team's budget ({@code --team}); the channel is advertised once the guard runs.
+ * team's budget ({@code --team}); the channel is advertised once the guard runs
+ * ({@code touchline.serve.JsonChannel} serves it).
  */
-final class TeamBudgetState implements StateSource {
+public final class TeamBudgetJson {
 
-    private final Supplier<Optional<TeamMessageBudget>> budget;
-
-    TeamBudgetState(Supplier<Optional<TeamMessageBudget>> budget) {
-        this.budget = budget;
-    }
-
-    @Override
-    public String topic() {
-        return "/team/budget";
-    }
-
-    @Override
-    public String schemaName() {
-        return "touchline.TeamBudget";
-    }
-
-    @Override
-    public String jsonSchema() {
-        return """
+    public static final String TOPIC = "/team/budget";
+    public static final String SCHEMA_NAME = "touchline.TeamBudget";
+    public static final String SCHEMA = """
                 {"type":"object","properties":{\
                 "team":{"type":"integer"},"profile":{"type":"string"},"limit":{"type":"string"},\
                 "used":{"type":"integer"},"left":{"type":"integer"},"leftFromGc":{"type":"boolean"},\
                 "perMinute":{"type":"number"},"secondsLeftInGame":{"type":"integer"},"secondsToEmpty":{"type":"integer"},\
                 "verdict":{"type":"string"},"oversize":{"type":"integer"},"summary":{"type":"string"}}}""";
+
+    private final Supplier<Optional<TeamMessageBudget>> budget;
+
+    TeamBudgetJson(Supplier<Optional<TeamMessageBudget>> budget) {
+        this.budget = budget;
     }
 
-    /** Null while no budget is guarded (the channel is not served then). */
-    @Override
+    /** The meter now; null while no budget is guarded (the channel is not served then). */
     public JSONObject now() {
         return budget.get().map(b -> json(b.snapshot())).orElse(null);
     }
