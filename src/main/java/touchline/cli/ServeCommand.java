@@ -177,7 +177,9 @@ final class ServeCommand implements Callable<Integer> {
                             + "refused %d, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
                     now.sent(), (now.sent() - last.sent()) / secs, now.dropped(), (now.dropped() - last.dropped()) / secs,
                     now.refused(), now.badRequests(),
-                    now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused());
+                    (now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused())
+                            + (now.notConverted() == 0 ? "" : ", not converted to standard channels (behind) "
+                            + now.notConverted()));
             for (ViewerInfo v : server.viewers()) {
                 out.printf("  viewer %s: %d subscriptions, sent %d, dropped %d%n", v.address(), v.topics().size(),
                         v.sent(), v.dropped());

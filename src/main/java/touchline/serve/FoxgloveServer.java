@@ -232,7 +232,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     public ServeStats stats() {
         return new ServeStats(viewers.size(), viewers.subscriptions(), channels.size(), viewers.sent(),
-                viewers.dropped(), refused.get(), badRequests.get(), channels.refused());
+                viewers.dropped(), refused.get(), badRequests.get(), channels.refused(), standard.dropped());
     }
 
     /** The viewers connected now, with their subscriptions, sent and dropped counts. */
