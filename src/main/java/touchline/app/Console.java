@@ -279,7 +279,9 @@ public final class Console implements AutoCloseable {
      * {@link touchline.transport.Origin#REMOTE}, so every view works as on live robots, and from
      * now on every command is refused with {@link #COMMANDS_OFF} (debug options, the reliable
      * stream, the GameController) — the remote console is the one talking to the robots. The
-     * connection reconnects by itself; its status is {@link #remote()}'s.
+     * connection reconnects by itself; its status is {@link #remote()}'s. The remote console's
+     * GameController packets, NAO frames and malformed datagrams come too (as their bytes), and
+     * its GameController's state drives this console's match mode.
      *
      * @param tls trust for a {@code wss://} server, or null
      */
@@ -289,7 +291,9 @@ public final class Console implements AutoCloseable {
         }
         setGate(() -> Optional.of(COMMANDS_OFF));
         stopGameController();
-        remote = new touchline.transport.remote.RemoteStream(url, tls, codec, live, java.time.Duration.ofSeconds(5));
+        // the remote field's GameController drives this console's match mode (shown; nothing is sent anyway)
+        remote = new touchline.transport.remote.RemoteStream(url, tls, codec, new RemoteGameState(matchMode, live),
+                java.time.Duration.ofSeconds(5));
         return remote.start();
     }
 
@@ -512,6 +516,11 @@ public final class Console implements AutoCloseable {
     /** Robots over the profile's debug-packet limit during play, if the guard was started. */
     public synchronized Optional<DebugRateGuard> debugRateGuard() {
         return Optional.ofNullable(debugRate);
+    }
+
+    /** The budget guard's meter as JSON, for serving ({@code /team/budget}); its state is null without a guard. */
+    public TeamBudgetJson teamBudgetJson() {
+        return new TeamBudgetJson(this::teamMessageBudget);
     }
 
     /** The budget guard, if started. */

@@ -47,6 +47,9 @@ final class ServeCommand implements Callable<Integer> {
     @Option(names = "--robots-bind", defaultValue = "0.0.0.0", description = "address to hear robots on (default ${DEFAULT-VALUE})")
     String robotsBind;
 
+    @picocli.CommandLine.Mixin
+    TeamBudgetOptions budget;
+
     @Option(names = "--proto", paramLabel = "FILE", description = "a team's protoc descriptor set: its messages are served with their own types")
     Path proto;
 
@@ -128,7 +131,9 @@ final class ServeCommand implements Callable<Integer> {
             schemas.teamFiles().forEach(f -> console.kinds().add(f).ifPresent(r -> err.println("touchline serve: " + r)));
             Serving serving;
             try {
-                serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode());
+                serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
+                    new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;
@@ -154,6 +159,12 @@ final class ServeCommand implements Callable<Integer> {
                 } else {
                     if (record != null) {
                         console.startRecording(record);
+                    }
+                    try {
+                        budget.guard(console, robotsBind); // served as /team/budget with --team
+                    } catch (StartFailure e) {
+                        err.println("touchline serve: " + e.getMessage());
+                        return e.exitCode();
                     }
                     out.println("hearing robots on UDP port " + console.udp().localPort()
                             + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
@@ -183,7 +194,9 @@ final class ServeCommand implements Callable<Integer> {
                             + "refused %d, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
                     now.sent(), (now.sent() - last.sent()) / secs, now.dropped(), (now.dropped() - last.dropped()) / secs,
                     now.refused(), now.badRequests(),
-                    now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused());
+                    (now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused())
+                            + (now.notConverted() == 0 ? "" : ", not converted to standard channels (behind) "
+                            + now.notConverted()));
             for (ViewerInfo v : server.viewers()) {
                 out.printf("  viewer %s: %d subscriptions, sent %d, dropped %d%n", v.address(), v.topics().size(),
                         v.sent(), v.dropped());

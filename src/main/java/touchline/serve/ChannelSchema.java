@@ -18,7 +18,7 @@ import java.util.List;
  * the self-contained FileDescriptorSet the recorder embeds, so a team's types loaded at run
  * time go out too.
  */
-final class ChannelSchema {
+final class ChannelSchema implements ChannelPayloads {
 
     private final String schemaName;
     private final String schemaBase64;
@@ -68,7 +68,8 @@ final class ChannelSchema {
     static final String SERVED_MESSAGE = "message";
 
     /** The protobuf bytes a viewer decodes with this schema. */
-    byte[] payload(Envelope e) {
+    @Override
+    public byte[] payload(Envelope e) {
         Message m = e.message();
         if (extension != null) {
             Object value = m.getField(extension);

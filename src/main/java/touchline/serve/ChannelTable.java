@@ -22,7 +22,7 @@ import java.util.concurrent.atomic.AtomicLong;
  */
 final class ChannelTable {
 
-    private record Key(Direction direction, Channel channel, int robotId, String kind) {
+    private record Key(Direction direction, Channel channel, int robotId, String kind, RawChannel raw) {
     }
 
     private final MessageKinds kinds;
@@ -42,7 +42,7 @@ final class ChannelTable {
 
     /** The channel {@code e} goes out on, created on first sight; null when the table is full. */
     ServedChannel find(Envelope e) {
-        Key key = new Key(e.direction(), e.channel(), e.robotId(), e.kind());
+        Key key = new Key(e.direction(), e.channel(), e.robotId(), e.kind(), RawChannel.of(e));
         ServedChannel c = byKey.get(key);
         return c != null ? c : create(key, e);
     }
@@ -56,9 +56,14 @@ final class ChannelTable {
             refused.incrementAndGet();
             return null;
         }
-        ChannelSchema schema = ChannelSchema.of(e, kinds);
-        c = new ServedChannel(nextId++, topics.of(e), "protobuf", schema.schemaName(), schema.schemaBase64(), "protobuf",
-                schema, schema.metadata(topics.metadata(e)));
+        if (key.raw() != null) {
+            c = new ServedChannel(nextId++, topics.of(e), key.raw().encoding(), "", "", "", key.raw(),
+                    key.raw().metadata(topics.metadata(e)));
+        } else {
+            ChannelSchema schema = ChannelSchema.of(e, kinds);
+            c = new ServedChannel(nextId++, topics.of(e), "protobuf", schema.schemaName(), schema.schemaBase64(),
+                    "protobuf", schema, schema.metadata(topics.metadata(e)));
+        }
         byKey.put(key, c);
         publish(c);
         return c;

@@ -43,6 +43,11 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     static final int MAX_CHANNELS = 4096;
     static final int UPGRADE_SECONDS = 10;
     /**
+     * Threads writing to the viewers (each viewer stays on one): two, so eight viewers
+     * subscribed to everything do not queue behind one thread's writes (docs/benchmarks.md).
+     */
+    static final int EVENT_LOOPS = 2;
+    /**
      * Kinds whose newest message is a robot's state rather than an event: a new subscriber gets
      * it at once, so a viewer joining late (another Touchline) knows each robot's option tree
      * without asking the robot, which a read-only viewer may not.
@@ -53,7 +58,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final MicrosClock clock;
     private final ViewerTable viewers = new ViewerTable();
     private final ChannelTable channels;
-    private final StandardChannels standard;
+    private final StandardConversion standard;
     private final GameControllerState gameController;
     private final FoxgloveFrames frames;
     private final AtomicLong refused = new AtomicLong();
@@ -80,11 +85,11 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.clock = clock;
         this.token = config.token() == null || config.token().isEmpty() ? null : new AccessToken(config.token());
         this.channels = new ChannelTable(kinds, viewers, MAX_CHANNELS);
-        this.standard = new StandardChannels(channels);
+        this.standard = new StandardConversion(new StandardChannels(channels));
         this.gameController = new GameControllerState(channels);
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
         this.tls = config.tls() ? tlsContext(config) : null;
-        this.group = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
+        this.group = new MultiThreadIoEventLoopGroup(EVENT_LOOPS, NioIoHandler.newFactory());
         try {
             this.server = new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
                     .childOption(ChannelOption.TCP_NODELAY, true)
@@ -140,10 +145,11 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     @Override
     public void accept(Envelope e) {
         gameController.accept(e);
-        if (e.message() == null || e.error() != null) {
-            return;
+        if (e.message() != null && e.error() == null) {
+            standard.offer(e);
+        } else if (e.raw() == null || e.channel() == touchline.transport.Channel.LINK_EVENT) {
+            return; // nothing heard to serve (a link event is the console's own, a viewer has its own)
         }
-        standard.accept(e);
         ServedChannel c = channels.find(e);
         if (c == null) {
             return;
@@ -166,6 +172,11 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     /** Serves match mode as the JSON channel {@code /touchline/matchMode}. */
     public void serveMatchMode(touchline.game.MatchMode matchMode) {
         states.add(new ServedState(new MatchModeState(matchMode), channels));
+    }
+
+    /** Serves {@code state} as its JSON channel (advertised once it has a value), e.g. the team's budget meter. */
+    public void serveJson(JsonChannel state) {
+        states.add(new ServedState(state, channels));
     }
 
     /** On the event loop, every {@link ServeConfig#timeEveryMillis()}: the server time and changed states. */
@@ -221,7 +232,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     public ServeStats stats() {
         return new ServeStats(viewers.size(), viewers.subscriptions(), channels.size(), viewers.sent(),
-                viewers.dropped(), refused.get(), badRequests.get(), channels.refused());
+                viewers.dropped(), refused.get(), badRequests.get(), channels.refused(), standard.dropped());
     }
 
     /** The viewers connected now, with their subscriptions, sent and dropped counts. */
@@ -236,6 +247,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
             return;
         }
         timeTicker.cancel(false);
+        standard.close();
         server.close().syncUninterruptibly();
         // say goodbye properly, so a viewer shows "closed by the server" rather than a network error
         java.util.List<io.netty.channel.ChannelFuture> goodbyes = new java.util.ArrayList<>();

@@ -11,7 +11,8 @@ package touchline.serve;
  * @param refused        connections refused (no or wrong token, or too many viewers)
  * @param badRequests    client messages answered with an error status (garbage, unknown or write ops)
  * @param channelsRefused new channels not served because the table was full
+ * @param notConverted   envelopes not converted to the standard channels because the converter was behind
  */
 public record ServeStats(int viewers, int subscriptions, int channels, long sent, long dropped, long refused,
-                         long badRequests, long channelsRefused) {
+                         long badRequests, long channelsRefused, long notConverted) {
 }

@@ -17,14 +17,14 @@ final class ServedChannel {
     private final String schemaName;
     private final String schema;
     private final String schemaEncoding;
-    private final ChannelSchema payloads; // null for the console's JSON state channels
+    private final ChannelPayloads payloads; // null for the console's JSON state channels
     private final java.util.Map<String, String> metadata; // null: none advertised
     private volatile Subscription[] subscribers = new Subscription[0];
     private volatile byte[] latest; // a state channel's current value, sent to each new subscriber
     private volatile long latestTimeNanos;
 
     ServedChannel(int id, String topic, String encoding, String schemaName, String schema, String schemaEncoding,
-                  ChannelSchema payloads, java.util.Map<String, String> metadata) {
+                  ChannelPayloads payloads, java.util.Map<String, String> metadata) {
         this.id = id;
         this.topic = topic;
         this.encoding = encoding;
@@ -44,7 +44,7 @@ final class ServedChannel {
     }
 
     /** How this channel's envelopes become payloads; null for a state channel. */
-    ChannelSchema payloads() {
+    ChannelPayloads payloads() {
         return payloads;
     }
 

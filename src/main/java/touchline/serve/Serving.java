@@ -18,12 +18,17 @@ public final class Serving implements AutoCloseable {
     /**
      * Binds and starts serving; IllegalArgumentException (a sentence for the user) for a
      * configuration that cannot be served (no token beyond loopback, a certificate that does
-     * not load), the bind's own exception when the port cannot be had.
+     * not load), the bind's own exception when the port cannot be had. {@code states}: more of
+     * the console's state served as JSON channels (the budget meter).
      */
-    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, MatchMode matchMode)
+    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, MatchMode matchMode,
+                   JsonChannel... states)
             throws InterruptedException {
         server = new FoxgloveServer(config, kinds, clock);
         server.serveMatchMode(matchMode);
+        for (JsonChannel s : states) {
+            server.serveJson(s);
+        }
         subscription = bus.subscribe(server);
     }
 

@@ -17,9 +17,10 @@ import java.util.concurrent.ConcurrentHashMap;
  * schema's FileDescriptorSet, so the viewers' own Log, Image and 3D panels work on the live
  * stream as on an export. A channel is advertised the first time such a message is made.
  * <p>
- * Converting costs the publishing thread a few microseconds per envelope, so after a robot's
- * kind of message has been converted once (and its channels advertised), it is converted again
- * only while one of those channels has a subscriber. (A kind that later maps to another channel
+ * Converting costs a few microseconds per envelope, so it runs on its own thread
+ * ({@link StandardConversion}), converting each message once and serializing it once for all
+ * viewers; after a robot's kind of message has been converted once (and its channels
+ * advertised), it is converted again only while one of those channels has a subscriber. (A kind that later maps to another channel
  * too, e.g. a robot switching from raw to JPEG images, advertises it when next converted.)
  */
 final class StandardChannels {
@@ -41,7 +42,17 @@ final class StandardChannels {
         this.channels = channels;
     }
 
-    /** Serves the standard messages {@code e} maps to, to the subscribers of their channels. */
+    /**
+     * Whether {@code e} is worth converting: its kind was never converted (its channels are not
+     * advertised yet), or one of the channels it went to has a subscriber. Cheap, for the
+     * publishing thread, which then hands the envelope to {@link #accept} on another thread.
+     */
+    boolean wanted(Envelope e) {
+        ServedChannel[] known = madeBy.get(new Source(e.robotId(), e.direction(), e.channel(), e.kind()));
+        return known == null || subscribed(known);
+    }
+
+    /** Serves the standard messages {@code e} maps to, to the subscribers of their channels; one thread at a time. */
     void accept(Envelope e) {
         Source source = new Source(e.robotId(), e.direction(), e.channel(), e.kind());
         ServedChannel[] known = madeBy.get(source);

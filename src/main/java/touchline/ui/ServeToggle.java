@@ -62,7 +62,9 @@ public final class ServeToggle implements AutoCloseable {
             config = config.withBind("0.0.0.0").withToken(AccessToken.generate(new SecureRandom()));
         }
         try {
-            serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode());
+            serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
+                    new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
             said = "Serving to viewers: " + String.join("  ", serving.server().urls());
         } catch (IllegalArgumentException e) {
             said = "Cannot serve: " + e.getMessage();

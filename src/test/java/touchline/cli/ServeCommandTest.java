@@ -39,6 +39,19 @@ class ServeCommandTest {
     }
 
     @Test
+    void withATeamTheBudgetMeterIsAThirdConsoleState() throws Exception {
+        int teamPort;
+        try (java.net.DatagramSocket free = new java.net.DatagramSocket(0, java.net.InetAddress.getLoopbackAddress())) {
+            teamPort = free.getLocalPort();
+        }
+        Run run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--team", "13",
+                "--team-port", Integer.toString(teamPort), "--seconds", "2", "--stats-every", "1");
+        assertEquals(0, run.exit(), run.err());
+        // /gc/state, /touchline/matchMode and /team/budget
+        assertTrue(run.out().contains("viewers 0, subscriptions 0, channels 3"), run.out());
+    }
+
+    @Test
     void aPortInUseIsReportedNotAStackTrace() throws Exception {
         try (java.net.ServerSocket taken = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
             Run run = serve("--port", Integer.toString(taken.getLocalPort()), "--robots-port", "0",

@@ -227,6 +227,42 @@ class FoxgloveServerTest {
     }
 
     @Test
+    void theTeamsMessageBudgetIsAJsonChannelOnceTheConsoleGuardsATeam() throws Exception {
+        try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
+            field.server().serveJson(new JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA,
+                    field.console().teamBudgetJson()::now));
+            viewer.awaitChannel("/touchline/matchMode");
+            Await.until("a few ticks without a guarded team", 5000, () -> viewer.times().size() >= 3);
+            assertTrue(viewer.channel("/team/budget").isEmpty(), "no budget channel without --team");
+
+            field.console().guardTeamMessages(touchline.model.RuleProfile.named("hsl-2026"), 13,
+                    new java.net.InetSocketAddress("127.0.0.1", 0));
+            JSONObject channel = viewer.awaitChannel("/team/budget");
+            assertEquals("json", channel.getString("encoding"));
+            viewer.subscribe(7, channel.getInt("id"));
+            Await.until("the budget at once", 5000, () -> !viewer.dataOf(7).isEmpty());
+            JSONObject first = new JSONObject(new String(viewer.dataOf(7).get(0).payload(), StandardCharsets.UTF_8));
+            assertEquals(13, first.getInt("team"));
+            assertEquals("HSL 2026", first.getString("profile"));
+            assertEquals(0, first.getInt("used"));
+            long limit = Long.parseLong(first.getString("limit"));
+            assertEquals(limit, first.getLong("left"));
+
+            try (java.net.DatagramSocket robot = new java.net.DatagramSocket(new java.net.InetSocketAddress("127.0.0.1", 0))) {
+                byte[] message = "team message".getBytes(StandardCharsets.UTF_8);
+                for (int i = 0; i < 3; i++) {
+                    robot.send(new java.net.DatagramPacket(message, message.length, java.net.InetAddress.getLoopbackAddress(),
+                            field.console().teamMessagePort()));
+                }
+            }
+            Await.until("three messages used", 5000, () -> viewer.dataOf(7).stream()
+                    .map(d -> new JSONObject(new String(d.payload(), StandardCharsets.UTF_8)))
+                    .anyMatch(o -> o.getInt("used") == 3 && o.getLong("left") == limit - 3 && o.getDouble("perMinute") > 0));
+        }
+    }
+
+    @Test
     void theGameControllersStateIsAJsonChannel() throws Exception {
         try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
             JSONObject channel = viewer.awaitChannel("/gc/state");

@@ -83,6 +83,62 @@ class RemoteViewerIntegrationTest {
         }
     }
 
+    private static void send(java.net.DatagramSocket s, java.net.DatagramPacket p) {
+        try {
+            s.send(p);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    @Test
+    void theGameControllerAndMalformedDatagramsReachTheViewerAndItsMatchModeFollowsTheRemoteField() throws Exception {
+        try (ServedField field = new ServedField(); Console second = viewer()) {
+            java.util.List<touchline.transport.Envelope> heard = new java.util.concurrent.CopyOnWriteArrayList<>();
+            try (AutoCloseable sub = second.bus().subscribe(heard::add)) {
+                second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+                Await.until("connected", 5000,
+                        () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+                assertFalse(second.matchMode().playIsOn());
+                byte[] playing;
+                try (var in = RemoteViewerIntegrationTest.class.getResourceAsStream("/golden/gamecontroller/hl12/04-playing.bin")) {
+                    playing = in.readAllBytes();
+                }
+                Await.until("the GameController's packet on the viewer", 10_000, () -> {
+                    // as the first console's port watch publishes what it hears on 3838 (the raw channel appears with it)
+                    field.console().bus().accept(new touchline.transport.Envelope(field.console().clock().nowMicros(),
+                            touchline.transport.Direction.IN, touchline.transport.Channel.GAMECONTROLLER,
+                            new java.net.InetSocketAddress("127.0.0.1", 3838), touchline.transport.Envelope.NO_ROBOT,
+                            "gc.hl12", null, playing, null));
+                    return heard.stream().anyMatch(e -> e.channel() == touchline.transport.Channel.GAMECONTROLLER);
+                });
+                touchline.transport.Envelope gc = heard.stream()
+                        .filter(e -> e.channel() == touchline.transport.Channel.GAMECONTROLLER).findFirst().orElseThrow();
+                org.junit.jupiter.api.Assertions.assertArrayEquals(playing, gc.raw(), "the datagram's bytes as heard there");
+                assertEquals("gc.hl12", gc.kind());
+                assertEquals(Origin.REMOTE, gc.origin());
+                Await.until("the viewer's match mode shows the remote field's play", 5000,
+                        () -> second.matchMode().playIsOn());
+                assertTrue(second.matchMode().notice().contains("remote console's GameController"),
+                        second.matchMode().notice());
+
+                // a datagram the first console could not decode: the viewer's network console shows the same error
+                byte[] garbage = {1, 2, 3, 4, 5, 6, 7};
+                try (java.net.DatagramSocket s = new java.net.DatagramSocket()) {
+                    Await.until("the malformed datagram on the viewer", 10_000, () -> {
+                        send(s, new java.net.DatagramPacket(garbage, garbage.length,
+                                java.net.InetAddress.getLoopbackAddress(), field.console().udp().localPort()));
+                        return heard.stream().anyMatch(e -> e.error() != null);
+                    });
+                }
+                touchline.transport.Envelope bad = heard.stream().filter(e -> e.error() != null).findFirst().orElseThrow();
+                org.junit.jupiter.api.Assertions.assertArrayEquals(garbage, bad.raw());
+                assertFalse(bad.error().isEmpty());
+                assertEquals(0, second.udp().counters().datagramsOut(), "the viewing console sent nothing");
+            }
+        }
+    }
+
     @Test
     void aLostServerIsSaidAndTheViewerReconnectsAndSubscribesAgain() throws Exception {
         try (ServedField field = new ServedField(); Console second = viewer()) {

@@ -63,7 +63,8 @@ final class UdpServeRun implements Callable<Integer> {
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)), clock).start();
              Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.kinds(), clock, console.bus(),
-                     console.matchMode())) {
+                     console.matchMode(), new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now))) {
             for (Envelope e : team) {
                 if (!robots.containsKey(e.robotId())) {
                     robots.put(e.robotId(), new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)));

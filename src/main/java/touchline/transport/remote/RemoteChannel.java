@@ -49,9 +49,15 @@ final class RemoteChannel {
     private final Descriptor type;      // for channels that are not FUmanoids datagrams
     private final MessageCodec codec;
     private final FrameCodec frames;
+    private final boolean bytes;        // the payload is the datagram's bytes (or MALFORMED's reason and bytes)
+    private final boolean malformed;
+
+    /** {@code touchline.served} of a channel of bytes: the datagram as heard, or one that did not decode. */
+    static final String RAW = "raw";
+    static final String MALFORMED = "malformed";
 
     private RemoteChannel(int id, String topic, Map<String, String> m, MessageCodec codec, FrameCodec frames,
-                          Descriptor type) {
+                          Descriptor type, boolean malformed) {
         this.id = id;
         this.topic = topic;
         this.direction = Direction.valueOf(required(m, "touchline.direction"));
@@ -65,6 +71,12 @@ final class RemoteChannel {
         this.codec = codec;
         this.frames = frames;
         this.type = type;
+        this.bytes = RAW.equals(m.get("touchline.served")) || MALFORMED.equals(m.get("touchline.served"));
+        this.malformed = malformed;
+        if (bytes) {
+            this.extensionNumber = 0;
+            return;
+        }
         if (framing != null && "extension".equals(m.get("touchline.served"))) {
             FieldDescriptor ext = codec.kinds().byName(kind).orElseThrow(() -> new IllegalArgumentException(
                     "kind " + kind + " is not known here (load the team's schema with --proto)"));
@@ -86,17 +98,27 @@ final class RemoteChannel {
         if (meta == null || !meta.has("touchline.kind")) {
             throw new IllegalArgumentException("no Touchline metadata");
         }
-        if (!"protobuf".equals(advertised.optString("encoding"))) {
-            throw new IllegalArgumentException("encoding " + advertised.optString("encoding"));
-        }
         Map<String, String> m = new HashMap<>();
         for (String k : meta.keySet()) {
             m.put(k, String.valueOf(meta.get(k)));
         }
+        String served = m.get("touchline.served");
+        if (RAW.equals(served) || MALFORMED.equals(served)) {
+            try {
+                return new RemoteChannel(advertised.getInt("id"), advertised.optString("topic"), m, codec, frames,
+                        null, MALFORMED.equals(served));
+            } catch (RuntimeException e) {
+                throw new IllegalArgumentException(e.getMessage(), e);
+            }
+        }
+        if (!"protobuf".equals(advertised.optString("encoding"))) {
+            throw new IllegalArgumentException("encoding " + advertised.optString("encoding"));
+        }
         Descriptor type = Channel.FUMANOID.name().equals(m.get("touchline.channel")) ? null
                 : schema(advertised.optString("schema"), advertised.optString("schemaName"));
         try {
-            return new RemoteChannel(advertised.getInt("id"), advertised.optString("topic"), m, codec, frames, type);
+            return new RemoteChannel(advertised.getInt("id"), advertised.optString("topic"), m, codec, frames, type,
+                    false);
         } catch (RuntimeException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }
@@ -113,6 +135,10 @@ final class RemoteChannel {
     /** The envelope the remote console saw, rebuilt from one message's payload; received at {@code timeNanos} there. */
     Envelope rebuild(byte[] payload, long timeNanos) throws IOException {
         long micros = timeNanos / 1000;
+        if (bytes) {
+            return malformed ? malformed(payload, micros) : new Envelope(micros, direction, channel, peer, robotId, kind,
+                    null, payload, null, Origin.REMOTE);
+        }
         if (framing == null) {
             return new Envelope(micros, direction, channel, peer, robotId, kind, DynamicMessage.parseFrom(type, payload),
                     payload, null, Origin.REMOTE);
@@ -125,6 +151,17 @@ final class RemoteChannel {
         MessageResult.Decoded d = (MessageResult.Decoded) result;
         return new Envelope(micros, direction, channel, peer, robotId, d.kind(), d.message(),
                 frames.encode(framing, message), null, Origin.REMOTE);
+    }
+
+    /** A datagram that did not decode there: a uint16 little-endian length, the reason in UTF-8, the bytes. */
+    private Envelope malformed(byte[] payload, long micros) throws IOException {
+        int n = payload.length < 2 ? -1 : (payload[0] & 0xFF) | (payload[1] & 0xFF) << 8;
+        if (n < 0 || 2 + n > payload.length) {
+            throw new IOException("a malformed-datagram message of " + payload.length + " bytes is too short for its reason");
+        }
+        String reason = new String(payload, 2, n, java.nio.charset.StandardCharsets.UTF_8);
+        byte[] raw = java.util.Arrays.copyOfRange(payload, 2 + n, payload.length);
+        return new Envelope(micros, direction, channel, peer, robotId, kind, null, raw, reason, Origin.REMOTE);
     }
 
     /** The {@code fumanoid.Message} around an extension's payload: the sender's ID (field 1) and the extension. */

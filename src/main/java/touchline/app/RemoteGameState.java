@@ -1,0 +1,39 @@
+package touchline.app;
+
+import touchline.game.MatchMode;
+import touchline.protocol.gamecontroller.KnownGameStateFormats;
+import touchline.transport.Channel;
+import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+
+/**
+ * On a console viewing another Touchline: the GameController packets that console heard (or
+ * its embedded GameController sent) come in with the stream and feed this console's match
+ * mode, decoded by the same known formats, so its match-mode display shows the remote field's
+ * play (a viewer never sends anyway). A packet the remote console did not believe (its error
+ * set) changes nothing here either. Then the envelope goes on to {@code next}.
+ */
+final class RemoteGameState implements EnvelopeSink {
+
+    private final KnownGameStateFormats formats = new KnownGameStateFormats();
+    private final MatchMode matchMode;
+    private final EnvelopeSink next;
+
+    RemoteGameState(MatchMode matchMode, EnvelopeSink next) {
+        this.matchMode = matchMode;
+        this.next = next;
+    }
+
+    @Override
+    public void accept(Envelope e) {
+        if (e.channel() == Channel.GAMECONTROLLER && e.error() == null && e.raw() != null
+                && KnownGameStateFormats.isGameState(e.raw())) {
+            KnownGameStateFormats.Match m = formats.decode(e.raw());
+            if (m != null) {
+                matchMode.observe(m.data().state(), "the remote console's GameController"
+                        + (e.peer() == null ? "" : " at " + e.peer().getHostString() + ":" + e.peer().getPort()));
+            }
+        }
+        next.accept(e);
+    }
+}
