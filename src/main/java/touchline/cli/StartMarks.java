@@ -1,0 +1,73 @@
+package touchline.cli;
+
+import javafx.animation.AnimationTimer;
+import javafx.stage.Stage;
+import touchline.model.RobotPresence;
+
+import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+/**
+ * The console's two start marks on standard error, once each: the window shown and the first
+ * robot's data in the model, with the milliseconds since the JVM started. {@code ./touchline bench
+ * start} reads them; a user sees how long the start took. With {@value #TRAINING_PROPERTY} set (the
+ * launcher's class-data-sharing training run, docs/benchmarks.md) the window closes itself after
+ * {@value #TRAINING_FRAMES} frames, so the JVM exits normally and writes its archive.
+ */
+final class StartMarks implements RobotPresence {
+
+    static final String WINDOW_MARK = "touchline: window shown";
+    static final String DATA_MARK = "touchline: first robot's data";
+    static final String TRAINING_PROPERTY = "touchline.cds.training";
+    static final int TRAINING_FRAMES = 120;
+
+    private final PrintStream out;
+    private final long jvmStartMillis;
+    private final AtomicBoolean window = new AtomicBoolean();
+    private final AtomicBoolean data = new AtomicBoolean();
+
+    StartMarks(PrintStream out) {
+        this(out, ManagementFactory.getRuntimeMXBean().getStartTime());
+    }
+
+    StartMarks(PrintStream out, long jvmStartMillis) {
+        this.out = out;
+        this.jvmStartMillis = jvmStartMillis;
+    }
+
+    void windowShown() {
+        mark(window, WINDOW_MARK);
+    }
+
+    @Override
+    public void cameOnline(int robotId, boolean firstTime) {
+        mark(data, DATA_MARK + " (robot " + robotId + ")");
+    }
+
+    @Override
+    public void wentOffline(int robotId) {
+        // only the first arrival is a start mark
+    }
+
+    private void mark(AtomicBoolean once, String what) {
+        if (once.compareAndSet(false, true)) {
+            out.println(what + " " + (System.currentTimeMillis() - jvmStartMillis) + " ms after the JVM started");
+        }
+    }
+
+    /** Hides the stage (which ends the console) after {@code frames} pulses: the training run's way out. */
+    static void closeAfterFrames(Stage stage, int frames) {
+        new AnimationTimer() {
+            private int seen;
+
+            @Override
+            public void handle(long now) {
+                if (++seen >= frames) {
+                    stop();
+                    stage.hide();
+                }
+            }
+        }.start();
+    }
+}
