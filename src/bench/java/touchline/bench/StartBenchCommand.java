@@ -37,6 +37,9 @@ final class StartBenchCommand implements Callable<Integer> {
             + "to its window and to the first robot's data (no package needed)")
     boolean consoleOnly;
 
+    @Option(names = "--demo", description = "with --console: ./touchline demo --insecure too (needs port 11011 free)")
+    boolean demo;
+
     @Override
     public Integer call() throws Exception {
         if (System.getenv("DISPLAY") == null) {
@@ -44,7 +47,7 @@ final class StartBenchCommand implements Callable<Integer> {
             return 2;
         }
         if (consoleOnly) {
-            return new ConsoleStartBench(rounds).run();
+            return new ConsoleStartBench(rounds, demo).run();
         }
         String version = touchline.app.ProductVersion.ofThisBuild().version();
         Path pkg = deb != null ? deb : Path.of("target/package/touchline_" + version + "_amd64.deb");
@@ -96,19 +99,17 @@ final class StartBenchCommand implements Callable<Integer> {
 
     /** Seconds from {@code t0} until a Touchline window is visible, or an exception when {@code p} ends first. */
     static double windowAfter(Process p, long t0, String command) throws Exception {
-        {
-            long deadline = t0 + TimeUnit.SECONDS.toNanos(60);
-            while (System.nanoTime() < deadline) {
-                if (visible()) {
-                    return (System.nanoTime() - t0) / 1e9;
-                }
-                if (!p.isAlive()) {
-                    throw new IOException(command + " ended with " + p.exitValue() + " before its window showed");
-                }
-                TimeUnit.MILLISECONDS.sleep(20); // polling interval of the measurement, not synchronisation
+        long deadline = t0 + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < deadline) {
+            if (visible()) {
+                return (System.nanoTime() - t0) / 1e9;
             }
-            throw new IOException("no window within 60 s: " + command);
+            if (!p.isAlive()) {
+                throw new IOException(command + " ended with " + p.exitValue() + " before its window showed");
+            }
+            TimeUnit.MILLISECONDS.sleep(20); // polling interval of the measurement, not synchronisation
         }
+        throw new IOException("no window within 60 s: " + command);
     }
 
     /** Stops {@code p} and what it started, and waits until the window is gone. */

@@ -11,16 +11,21 @@ import java.util.concurrent.atomic.AtomicBoolean;
 /**
  * The console's two start marks on standard error, once each: the window shown and the first
  * robot's data in the model, with the milliseconds since the JVM started. {@code ./touchline bench
- * start} reads them; a user sees how long the start took. With {@value #TRAINING_PROPERTY} set (the
- * launcher's class-data-sharing training run, docs/benchmarks.md) the window closes itself after
- * {@value #TRAINING_FRAMES} frames, so the JVM exits normally and writes its archive.
+ * start} reads them; a user sees how long the start took. With {@value #TRAINING_PROPERTY}{@code =N}
+ * (the class-data-sharing training run of the launcher and of the package, docs/benchmarks.md
+ * "Start") the window closes itself after N frames, so the JVM exits normally and writes its
+ * archive: 1 frame archives what the window needs before its views, more frames the views too.
  */
 final class StartMarks implements RobotPresence {
 
     static final String WINDOW_MARK = "touchline: window shown";
     static final String DATA_MARK = "touchline: first robot's data";
     static final String TRAINING_PROPERTY = "touchline.cds.training";
-    static final int TRAINING_FRAMES = 120;
+
+    /** Frames after which a training run closes its window; 0 (no training) when the property is unset. */
+    static int trainingFrames() {
+        return Integer.getInteger(TRAINING_PROPERTY, 0);
+    }
 
     private final PrintStream out;
     private final long jvmStartMillis;
