@@ -110,27 +110,12 @@ jpackage --type app-image --name touchline --dest "$IMAGE" --input "$STAGE" \
 chmod 755 "$IMAGE/touchline/lib/app/robot-side/"*
 cp CHANGELOG.md "$IMAGE/touchline/"
 
-# Class-data sharing (docs/benchmarks.md "Start"): the classes a console start loads up to its first
-# frame, archived by a training run of the image's own launcher (window on a private Xvfb display,
-# closed after one frame, before its views: they load after the first frame anyway, and archiving
-# them too would take the package over its 120 MB), then named in the launcher's options. The JVM
-# takes the training options from JAVA_TOOL_OPTIONS (the jpackage launcher ignores JDK_JAVA_OPTIONS). The archive's class path is the jars' paths relative to the
-# image, so it holds wherever the package is installed; -Xshare:auto ignores an archive that does not
-# fit (another runtime) and the start goes on without it. No Xvfb: no archive, a slower start.
-if [ "${TOUCHLINE_CDS:-1}" != 0 ] && command -v xvfb-run >/dev/null; then
-  say "recording the console's classes for a fast start (class-data sharing)"
-  TRAIN=$(mktemp -d)
-  if JAVA_TOOL_OPTIONS="-XX:ArchiveClassesAtExit=$IMAGE/touchline/lib/app/touchline.jsa -Xlog:cds=off -Xlog:cds+dynamic=off -Dtouchline.cds.training=1" \
-      timeout 180 xvfb-run -a "$IMAGE/touchline/bin/touchline" console --port 0 --demo --layouts "$TRAIN" \
-      >"$TRAIN/training.log" 2>&1 && [ -s "$IMAGE/touchline/lib/app/touchline.jsa" ]; then
-    printf '%s\n' 'java-options=-XX:SharedArchiveFile=$APPDIR/touchline.jsa' 'java-options=-Xshare:auto' \
-      'java-options=-Xlog:cds=off' 'java-options=-Xlog:cds+dynamic=off' >>"$IMAGE/touchline/lib/app/touchline.cfg"
-  else
-    rm -f "$IMAGE/touchline/lib/app/touchline.jsa"
-    say "class-data sharing skipped (the package starts without it): $(tail -1 "$TRAIN/training.log")"
-  fi
-  rm -rf "$TRAIN"
-fi
+# The launcher runs ZGC, which has no compressed pointers: the JVM maps the runtime's
+# classes_nocoops.jsa (the JDK's class-data archive) and never classes.jsa, 12 MB the package need
+# not carry. No archive of the application's classes: JDK 17 checks an archive's class path as
+# written when it was made, so one made here (target/package/image/…) is ignored under /opt/touchline
+# (measured, docs/benchmarks.md "Start").
+rm -f "$IMAGE/touchline/lib/runtime/lib/server/classes.jsa"
 
 TARBALL="$OUT/touchline-$VERSION-linux-x64.tar.gz"
 say "writing $TARBALL"
