@@ -68,9 +68,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
                 Stage stage = new Stage();
                 stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_HIDDEN, e -> closed.countDown());
                 stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_SHOWN, e -> marks.windowShown());
-                new ConsoleWindow(console, settings).show(stage, true);
+                ConsoleWindow window = new ConsoleWindow(console, settings).show(stage, true);
                 if (StartMarks.trainingFrames() > 0) {
-                    StartMarks.closeAfterFrames(stage, StartMarks.trainingFrames());
+                    window.closeAfterFrames(StartMarks.trainingFrames());
                 }
             });
             closed.await();

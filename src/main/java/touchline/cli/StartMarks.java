@@ -1,7 +1,5 @@
 package touchline.cli;
 
-import javafx.animation.AnimationTimer;
-import javafx.stage.Stage;
 import touchline.model.RobotPresence;
 
 import java.io.PrintStream;
@@ -13,7 +11,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * robot's data in the model, with the milliseconds since the JVM started. {@code ./touchline bench
  * start} reads them; a user sees how long the start took. With {@value #TRAINING_PROPERTY}{@code =N}
  * (the class-data-sharing training run of the launcher and of the package, docs/benchmarks.md
- * "Start") the window closes itself after N frames, so the JVM exits normally and writes its
+ * "Start") the window closes itself after N frames ({@code ConsoleWindow.closeAfterFrames}), so the JVM exits normally and writes its
  * archive: 1 frame archives what the window needs before its views, more frames the views too.
  */
 final class StartMarks implements RobotPresence {
@@ -59,20 +57,5 @@ final class StartMarks implements RobotPresence {
         if (once.compareAndSet(false, true)) {
             out.println(what + " " + (System.currentTimeMillis() - jvmStartMillis) + " ms after the JVM started");
         }
-    }
-
-    /** Hides the stage (which ends the console) after {@code frames} pulses: the training run's way out. */
-    static void closeAfterFrames(Stage stage, int frames) {
-        new AnimationTimer() {
-            private int seen;
-
-            @Override
-            public void handle(long now) {
-                if (++seen >= frames) {
-                    stop();
-                    stage.hide();
-                }
-            }
-        }.start();
     }
 }

@@ -136,6 +136,24 @@ public final class ConsoleWindow {
         return this;
     }
 
+    /**
+     * Hides the window (which ends {@code touchline console}) after {@code frames} pulses: the way out
+     * of the class-data-sharing training run, which must end normally for the JVM to write its archive.
+     */
+    public void closeAfterFrames(int frames) {
+        new javafx.animation.AnimationTimer() {
+            private int seen;
+
+            @Override
+            public void handle(long now) {
+                if (++seen >= frames) {
+                    stop();
+                    stage.hide();
+                }
+            }
+        }.start();
+    }
+
     public Shell shell() { return shell; }
     public FramePulse pulse() { return pulse; }
     public StatusBar status() { return status; }

@@ -33,4 +33,16 @@ class FastStartUiTest {
             ui.close();
         }
     }
+
+    @Test
+    void aTrainingRunsWindowClosesItselfAfterItsFrames() throws Exception {
+        ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts, ConsoleWindowFixture.loopback(), true);
+        try {
+            assertTrue(ui.fx(() -> ui.window.scene().getWindow().isShowing()));
+            ui.fxRun(() -> ui.window.closeAfterFrames(3));
+            ui.await(30, () -> !ui.window.scene().getWindow().isShowing());
+        } finally {
+            ui.close();
+        }
+    }
 }
