@@ -98,10 +98,12 @@ final class ConsoleStartBench {
         long t0 = System.nanoTime();
         Process p = pb.start();
         CompletableFuture<Double> data = new CompletableFuture<>();
+        List<String> output = java.util.Collections.synchronizedList(new ArrayList<>());
         Thread reader = new Thread(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = r.readLine()) != null) {
+                    output.add(line);
                     if (line.startsWith("touchline: first robot's data")) {
                         data.complete((System.nanoTime() - t0) / 1e9);
                     }
@@ -116,6 +118,9 @@ final class ConsoleStartBench {
         try {
             double window = StartBenchCommand.windowAfter(p, t0, String.join(" ", command));
             return new double[] {window, data.get(60, TimeUnit.SECONDS)};
+        } catch (IOException e) {
+            throw new IOException(e.getMessage() + (cds ? "" : " (TOUCHLINE_CDS=0)") + "; its output:\n"
+                    + String.join("\n", output), e);
         } finally {
             StartBenchCommand.stop(p);
         }
