@@ -110,6 +110,13 @@ jpackage --type app-image --name touchline --dest "$IMAGE" --input "$STAGE" \
 chmod 755 "$IMAGE/touchline/lib/app/robot-side/"*
 cp CHANGELOG.md "$IMAGE/touchline/"
 
+# The launcher runs ZGC, which has no compressed pointers: the JVM maps the runtime's
+# classes_nocoops.jsa (the JDK's class-data archive) and never classes.jsa, 12 MB the package need
+# not carry. No archive of the application's classes: JDK 17 checks an archive's class path as
+# written when it was made, so one made here (target/package/image/…) is ignored under /opt/touchline
+# (measured, docs/benchmarks.md "Start").
+rm -f "$IMAGE/touchline/lib/runtime/lib/server/classes.jsa"
+
 TARBALL="$OUT/touchline-$VERSION-linux-x64.tar.gz"
 say "writing $TARBALL"
 tar -C "$IMAGE" -czf "$TARBALL" touchline

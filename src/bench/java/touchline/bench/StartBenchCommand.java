@@ -33,11 +33,21 @@ final class StartBenchCommand implements Callable<Integer> {
     @Option(names = "--rounds", defaultValue = "5", description = "starts of each (default ${DEFAULT-VALUE})")
     int rounds;
 
+    @Option(names = "--console", description = "only ./touchline console, with and without class-data sharing, "
+            + "to its window and to the first robot's data (no package needed)")
+    boolean consoleOnly;
+
+    @Option(names = "--demo", description = "with --console: ./touchline demo --insecure too (needs port 11011 free)")
+    boolean demo;
+
     @Override
     public Integer call() throws Exception {
         if (System.getenv("DISPLAY") == null) {
             System.err.println("bench start needs a display: xvfb-run -a ./touchline bench start");
             return 2;
+        }
+        if (consoleOnly) {
+            return new ConsoleStartBench(rounds, demo).run();
         }
         String version = touchline.app.ProductVersion.ofThisBuild().version();
         Path pkg = deb != null ? deb : Path.of("target/package/touchline_" + version + "_amd64.deb");
@@ -81,24 +91,37 @@ final class StartBenchCommand implements Callable<Integer> {
         Process p = new ProcessBuilder(command).redirectErrorStream(true)
                 .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         try {
-            long deadline = t0 + TimeUnit.SECONDS.toNanos(60);
-            while (System.nanoTime() < deadline) {
-                if (visible()) {
-                    return (System.nanoTime() - t0) / 1e9;
-                }
-                if (!p.isAlive()) {
-                    throw new IOException(String.join(" ", command) + " ended with " + p.exitValue()
-                            + " before its window showed");
-                }
-                TimeUnit.MILLISECONDS.sleep(20); // polling interval of the measurement, not synchronisation
-            }
-            throw new IOException("no window within 60 s: " + String.join(" ", command));
+            return windowAfter(p, t0, String.join(" ", command));
         } finally {
-            p.descendants().forEach(ProcessHandle::destroy);
-            p.destroy();
-            if (!p.waitFor(10, TimeUnit.SECONDS)) {
-                p.destroyForcibly().waitFor();
+            stop(p);
+        }
+    }
+
+    /** Seconds from {@code t0} until a Touchline window is visible, or an exception when {@code p} ends first. */
+    static double windowAfter(Process p, long t0, String command) throws Exception {
+        long deadline = t0 + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < deadline) {
+            if (visible()) {
+                return (System.nanoTime() - t0) / 1e9;
             }
+            if (!p.isAlive()) {
+                throw new IOException(command + " ended with " + p.exitValue() + " before its window showed");
+            }
+            TimeUnit.MILLISECONDS.sleep(20); // polling interval of the measurement, not synchronisation
+        }
+        throw new IOException("no window within 60 s: " + command);
+    }
+
+    /** Stops {@code p} and what it started, and waits until the window is gone. */
+    static void stop(Process p) throws Exception {
+        p.descendants().forEach(ProcessHandle::destroy);
+        p.destroy();
+        if (!p.waitFor(10, TimeUnit.SECONDS)) {
+            p.destroyForcibly().waitFor();
+        }
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (visible() && System.nanoTime() < deadline) {
+            TimeUnit.MILLISECONDS.sleep(20); // polling for the old window to go, not synchronisation
         }
     }
 

@@ -47,6 +47,8 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     public Integer call() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
             budget.guard(console, udp.bind);
+            StartMarks marks = new StartMarks(System.err);
+            console.robots().addPresenceListener(marks);
             String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
                     System.getProperty("os.name", ""));
             if (noDisplay != null) {
@@ -65,7 +67,11 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             FxThread.run(() -> {
                 Stage stage = new Stage();
                 stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_HIDDEN, e -> closed.countDown());
-                new ConsoleWindow(console, settings).show(stage);
+                stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_SHOWN, e -> marks.windowShown());
+                ConsoleWindow window = new ConsoleWindow(console, settings).show(stage, true);
+                if (StartMarks.trainingFrames() > 0) {
+                    window.closeAfterFrames(StartMarks.trainingFrames());
+                }
             });
             closed.await();
             javafx.application.Platform.exit();

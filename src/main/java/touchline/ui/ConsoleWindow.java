@@ -81,6 +81,15 @@ public final class ConsoleWindow {
     static final long FINISH_RECORDING_MILLIS = 20_000;
 
     public ConsoleWindow show(Stage stage) {
+        return show(stage, false);
+    }
+
+    /**
+     * Shows the window; with {@code viewsAfterShown} the window opens with its menus and status bar
+     * first and the layout's views are built in the next turn of the JavaFX thread, so the window
+     * is on screen a second or more sooner (the console's start, docs/benchmarks.md "Start").
+     */
+    public ConsoleWindow show(Stage stage, boolean viewsAfterShown) {
         this.stage = stage;
         applyTheme();
         Scene scene = new Scene(root);
@@ -92,9 +101,20 @@ public final class ConsoleWindow {
         stage.setTitle(console.remote().map(r -> console.runtime().version().title() + " — viewing " + r.status().url())
                 .orElse(console.runtime().version().title() + " — UDP port " + console.udp().localPort()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
-        shell.restore(last.orElseGet(DemoLayout::standard));
+        boolean[] restored = new boolean[1];
+        Runnable restore = () -> {
+            if (stage.isShowing() || !viewsAfterShown) {
+                shell.restore(last.orElseGet(DemoLayout::standard));
+                restored[0] = true;
+            }
+        };
+        if (!viewsAfterShown) {
+            restore.run();
+        }
         stage.setOnHiding(e -> {
-            saveQuietly("last");
+            if (restored[0]) { // closed before its views were built: the saved "last" layout stays as it was
+                saveQuietly("last");
+            }
             pulse.stop();
             serving.close();
             // closing the window ends a recording as its Stop button does: the file is finished
@@ -103,7 +123,35 @@ public final class ConsoleWindow {
         });
         stage.show();
         pulse.start();
+        if (viewsAfterShown) {
+            // after the first frame: the pulse that draws it, then the views
+            new javafx.animation.AnimationTimer() {
+                @Override
+                public void handle(long now) {
+                    stop();
+                    javafx.application.Platform.runLater(restore);
+                }
+            }.start();
+        }
         return this;
+    }
+
+    /**
+     * Hides the window (which ends {@code touchline console}) after {@code frames} pulses: the way out
+     * of the class-data-sharing training run, which must end normally for the JVM to write its archive.
+     */
+    public void closeAfterFrames(int frames) {
+        new javafx.animation.AnimationTimer() {
+            private int seen;
+
+            @Override
+            public void handle(long now) {
+                if (++seen >= frames) {
+                    stop();
+                    stage.hide();
+                }
+            }
+        }.start();
     }
 
     public Shell shell() { return shell; }

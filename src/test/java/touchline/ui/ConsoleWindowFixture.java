@@ -31,11 +31,24 @@ final class ConsoleWindowFixture implements AutoCloseable {
         return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
     }
 
+    /** Views open when {@link ConsoleWindow#show} returned (on the FX thread, before any later pulse). */
+    final int viewsWhenShown;
+
     ConsoleWindowFixture(Path layoutDir, ConsoleConfig config) throws Exception {
+        this(layoutDir, config, false);
+    }
+
+    /** With {@code viewsAfterShown}: shown as {@code touchline console} shows it (views after the first frame). */
+    ConsoleWindowFixture(Path layoutDir, ConsoleConfig config, boolean viewsAfterShown) throws Exception {
         console = new Console(config).start();
         Stage stage = FxToolkit.registerPrimaryStage();
-        window = WaitForAsyncUtils.asyncFx(() -> new ConsoleWindow(console, new UiSettings(layoutDir, true, false))
-                .show(stage)).get(30, TimeUnit.SECONDS);
+        int[] views = new int[1];
+        window = WaitForAsyncUtils.asyncFx(() -> {
+            ConsoleWindow w = new ConsoleWindow(console, new UiSettings(layoutDir, true, false)).show(stage, viewsAfterShown);
+            views[0] = w.shell().openViews().size();
+            return w;
+        }).get(30, TimeUnit.SECONDS);
+        viewsWhenShown = views[0];
         WaitForAsyncUtils.asyncFx(() -> {
             stage.toFront();
             stage.requestFocus();
