@@ -105,7 +105,14 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         if (mmsg) {
             bootstrap.option(io.netty.channel.epoll.EpollChannelOption.MAX_DATAGRAM_PAYLOAD_SIZE, 2048);
         }
-        channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();
+        try {
+            channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();
+        } catch (Exception e) { // Netty throws a BindException undeclared; rethrown as it came
+            if (stage != null) {
+                stage.close(); // no channel, so no thread left behind for it
+            }
+            throw e;
+        }
         return this;
     }
 

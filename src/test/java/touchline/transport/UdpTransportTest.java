@@ -262,4 +262,17 @@ class UdpTransportTest {
         assertTrue(e.error().contains("robotID"), e.error());
         assertEquals(0, transport.counters().forgedIn());
     }
+    @Test
+    void withATeamKeyAPortInUseFailsTheStartAndLeavesNoDecodeThreadBehind() throws Exception {
+        try (DatagramSocket taken = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            UdpTransport second = new UdpTransport(
+                    UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(taken.getLocalPort()),
+                    LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
+                    new MessageCodec(new MessageKinds()), received::add, MicrosClock.system());
+            assertThrows(java.io.IOException.class, second::start); // BindException with NIO, NativeIoException with epoll
+            second.close();
+        }
+        assertTrue(Thread.getAllStackTraces().keySet().stream()
+                .noneMatch(t -> t.isAlive() && t.getName().equals("touchline-decode")), "a decode thread is left running");
+    }
 }
