@@ -43,6 +43,32 @@ public final class MessageCodec {
         return new MessageResult.Decoded(message, extension, kind);
     }
 
+    /** No robot ID could be read: {@link #robotIdOf} on a payload that {@link #decode} calls malformed. */
+    public static final int NO_ROBOT_ID = Integer.MIN_VALUE;
+
+    /**
+     * The robotID a payload carries, read from the bytes without building the message (field 1
+     * as a varint, the last one winning as in the parse), or {@link #NO_ROBOT_ID}. Lets the
+     * transport check a datagram's tag, which covers the robot ID, before the full decode.
+     */
+    public static int robotIdOf(byte[] payload) {
+        int robotId = NO_ROBOT_ID;
+        try {
+            CodedInputStream in = CodedInputStream.newInstance(payload);
+            while (!in.isAtEnd()) {
+                int tag = in.readTag();
+                if (WireFormat.getTagFieldNumber(tag) == 1 && WireFormat.getTagWireType(tag) == WireFormat.WIRETYPE_VARINT) {
+                    robotId = in.readInt32();
+                } else if (!in.skipField(tag)) {
+                    return NO_ROBOT_ID; // an end-group tag at the top level: not a message
+                }
+            }
+        } catch (java.io.IOException e) {
+            return NO_ROBOT_ID;
+        }
+        return robotId;
+    }
+
     /**
      * The number of the first field after robotID: the extension the message carries. Read from
      * the bytes because asking the parsed message for all its fields costs more than the parse.

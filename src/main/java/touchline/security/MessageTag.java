@@ -3,7 +3,6 @@ package touchline.security;
 import javax.crypto.Mac;
 import javax.crypto.spec.SecretKeySpec;
 import java.security.GeneralSecurityException;
-import java.security.MessageDigest;
 
 /**
  * The small robots' message tag (docs/security.md): the first 16 bytes of
@@ -24,6 +23,8 @@ public final class MessageTag {
     private final TeamKey key;
     private final Mac mac;
     private final byte[] head = new byte[2 + TeamKey.ID_SIZE + 8];
+    /** The full HMAC-SHA-512 of the last check, reused (doFinal into it) and wiped after each use. */
+    private final byte[] full = new byte[64];
 
     public MessageTag(TeamKey key) {
         this.key = key;
@@ -42,15 +43,24 @@ public final class MessageTag {
 
     /** The 16-byte tag over {@code payload[off, off+len)}. */
     public byte[] tag(byte direction, int robotId, long counter, byte[] payload, int off, int len) {
+        mac(direction, robotId, counter, payload, off, len);
+        byte[] tag = java.util.Arrays.copyOf(full, TAG_SIZE);
+        java.util.Arrays.fill(full, (byte) 0);
+        return tag;
+    }
+
+    /** The full HMAC into {@link #full}: no array allocated per datagram (the ingest's hot path). */
+    private void mac(byte direction, int robotId, long counter, byte[] payload, int off, int len) {
         head[0] = direction;
         head[1] = (byte) robotId;
         Trailer.putLong(head, 2 + TeamKey.ID_SIZE, counter);
         mac.update(head);
         mac.update(payload, off, len);
-        byte[] full = mac.doFinal();
-        byte[] tag = java.util.Arrays.copyOf(full, TAG_SIZE);
-        java.util.Arrays.fill(full, (byte) 0);
-        return tag;
+        try {
+            mac.doFinal(full, 0);
+        } catch (javax.crypto.ShortBufferException e) {
+            throw new IllegalStateException("HmacSHA512 wrote more than 64 bytes", e);
+        }
     }
 
     /** A new array: payload followed by the 32-byte trailer. */
@@ -77,8 +87,13 @@ public final class MessageTag {
         if (!key.sameId(datagram, at + 4)) {
             return Check.WRONG_KEY;
         }
-        byte[] expected = tag(direction, robotId, p.counter(), datagram, 0, at);
-        byte[] actual = java.util.Arrays.copyOfRange(datagram, at + 16, at + 16 + TAG_SIZE);
-        return MessageDigest.isEqual(expected, actual) ? Check.OK : Check.BAD_TAG; // constant time
+        mac(direction, robotId, p.counter(), datagram, 0, at);
+        // constant time, like MessageDigest.isEqual, without copying either side
+        int diff = 0;
+        for (int i = 0; i < TAG_SIZE; i++) {
+            diff |= full[i] ^ datagram[at + 16 + i];
+        }
+        java.util.Arrays.fill(full, (byte) 0);
+        return diff == 0 ? Check.OK : Check.BAD_TAG;
     }
 }

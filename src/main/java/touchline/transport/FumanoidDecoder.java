@@ -11,7 +11,7 @@ import touchline.protocol.MessageResult;
 import touchline.security.Authenticity;
 import touchline.security.InboundVerifier;
 
-import java.util.Arrays;
+import java.util.function.Supplier;
 
 /**
  * Turns classified datagrams into Envelopes: FUmanoids frames are decoded (or become a
@@ -27,10 +27,14 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     private final TrafficCounters counters;
     private final EnvelopeSink sink;
     private final InboundVerifier verifier;
+    /** With a team key: where decoding and publishing run, beside this thread's checks; else null. */
+    private final DecodeStage stage;
 
+    /** @param stage null: everything on the event loop (no key); else decode and publish there */
     FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters,
-                    EnvelopeSink sink, InboundVerifier verifier) {
+                    EnvelopeSink sink, InboundVerifier verifier, DecodeStage stage) {
         this.verifier = verifier;
+        this.stage = stage;
         this.frames = frames;
         this.messages = messages;
         this.peers = peers;
@@ -40,11 +44,21 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
 
     @Override
     public void channelRead(ChannelHandlerContext ctx, Object msg) {
-        if (msg instanceof ReceivedDatagram d) {
+        if (!(msg instanceof ReceivedDatagram d)) {
+            ctx.fireChannelRead(msg);
+        } else if (stage == null) {
             sink.accept(toEnvelope(d));
         } else {
-            ctx.fireChannelRead(msg);
+            stage.add(checked(d));
         }
+    }
+
+    @Override
+    public void channelReadComplete(ChannelHandlerContext ctx) {
+        if (stage != null) {
+            stage.flush();
+        }
+        ctx.fireChannelReadComplete();
     }
 
     @Override
@@ -55,12 +69,10 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
 
     Envelope toEnvelope(ReceivedDatagram d) {
         if (d.datagramClass() == DatagramClass.GAMECONTROLLER) {
-            return new Envelope(d.timeMicros(), Direction.IN, Channel.GAMECONTROLLER, d.sender(), Envelope.NO_ROBOT,
-                    "gc", null, d.bytes(), null);
+            return gameController(d);
         }
         byte[] bytes = d.bytes();
-        int payloadLength = InboundVerifier.payloadLength(bytes);
-        FrameResult frame = frames.decode(payloadLength == bytes.length ? bytes : Arrays.copyOf(bytes, payloadLength));
+        FrameResult frame = frames.decode(bytes, InboundVerifier.payloadLength(bytes));
         if (frame instanceof FrameResult.Malformed m) {
             return malformed(d, m.reason());
         }
@@ -73,11 +85,63 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
         int robotId = decoded.message().getRobotID();
         InboundVerifier.Result auth = verifier.check(robotId, bytes);
         if (auth.authenticity() == Authenticity.FORGED) {
-            // dropped: neither the robot's address nor its data is taken; counted and shown with its source
-            counters.countForged();
-            return new Envelope(d.timeMicros(), Direction.IN, Channel.FUMANOID, d.sender(), robotId, "forged", null,
-                    bytes, auth.reason() + " (claims robot " + robotId + ")", Origin.LIVE, Authenticity.FORGED);
+            return forged(d, robotId, auth);
         }
+        accepted(d, robotId, f, auth);
+        return envelope(d, robotId, decoded, auth);
+    }
+
+    /**
+     * With a team key, on the event loop: the tag is checked here, in arrival order with the
+     * reliable stream's segments (one counter per robot), against the robot ID read from the
+     * bytes; a forgery is settled here (nothing of it is decoded or acted on), the rest is
+     * decoded and published on the {@link DecodeStage}.
+     */
+    private Supplier<Envelope> checked(ReceivedDatagram d) {
+        if (d.datagramClass() == DatagramClass.GAMECONTROLLER) {
+            Envelope gc = gameController(d);
+            return () -> gc;
+        }
+        byte[] bytes = d.bytes();
+        FrameResult frame = frames.decode(bytes, InboundVerifier.payloadLength(bytes));
+        if (frame instanceof FrameResult.Malformed m) {
+            Envelope bad = malformed(d, m.reason());
+            return () -> bad;
+        }
+        FrameResult.Frame f = (FrameResult.Frame) frame;
+        int robotId = MessageCodec.robotIdOf(f.payload());
+        if (robotId == MessageCodec.NO_ROBOT_ID) {
+            // the full decode says why (no robotID, not protobuf); nothing to check a tag against
+            return () -> messages.decode(f.payload()) instanceof MessageResult.Malformed m
+                    ? malformed(d, m.reason()) : malformed(d, "protobuf: message without a readable robotID");
+        }
+        InboundVerifier.Result auth = verifier.check(robotId, bytes);
+        if (auth.authenticity() == Authenticity.FORGED) {
+            Envelope forged = forged(d, robotId, auth);
+            return () -> forged;
+        }
+        accepted(d, robotId, f, auth);
+        return () -> {
+            MessageResult result = messages.decode(f.payload());
+            return result instanceof MessageResult.Decoded decoded
+                    ? envelope(d, robotId, decoded, auth) : malformed(d, ((MessageResult.Malformed) result).reason());
+        };
+    }
+
+    private Envelope gameController(ReceivedDatagram d) {
+        return new Envelope(d.timeMicros(), Direction.IN, Channel.GAMECONTROLLER, d.sender(), Envelope.NO_ROBOT,
+                "gc", null, d.bytes(), null);
+    }
+
+    /** A forged datagram: neither the robot's address nor its data is taken; counted and shown with its source. */
+    private Envelope forged(ReceivedDatagram d, int robotId, InboundVerifier.Result auth) {
+        counters.countForged();
+        return new Envelope(d.timeMicros(), Direction.IN, Channel.FUMANOID, d.sender(), robotId, "forged", null,
+                d.bytes(), auth.reason() + " (claims robot " + robotId + ")", Origin.LIVE, Authenticity.FORGED);
+    }
+
+    /** A datagram that passed the check: counted, and its robot's address learned for the way back. */
+    private void accepted(ReceivedDatagram d, int robotId, FrameResult.Frame f, InboundVerifier.Result auth) {
         if (auth.authenticity() == Authenticity.UNVERIFIED) {
             counters.countUnverified();
         }
@@ -87,8 +151,12 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
         if (robotId >= 0) {
             peers.learn(robotId, d.sender(), f.framing());
         }
+    }
+
+    private static Envelope envelope(ReceivedDatagram d, int robotId, MessageResult.Decoded decoded,
+                                     InboundVerifier.Result auth) {
         return new Envelope(d.timeMicros(), Direction.IN, Channel.FUMANOID, d.sender(), robotId, decoded.kind(),
-                decoded.message(), bytes, null, Origin.LIVE, auth.authenticity());
+                decoded.message(), d.bytes(), null, Origin.LIVE, auth.authenticity());
     }
 
     private Envelope malformed(ReceivedDatagram d, String reason) {

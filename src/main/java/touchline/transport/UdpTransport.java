@@ -43,6 +43,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     private final ChannelHandler[] extraInbound;
     private final LinkSecurity security;
     private final InboundVerifier verifier;
+    private DecodeStage stage;
     private EventLoopGroup group;
     private DatagramChannel channel;
     private volatile UdpBackend backend;
@@ -75,6 +76,8 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     public UdpTransport start() throws InterruptedException {
         // epoll + recvmmsg on Linux, NIO as the portable fallback (UdpBackend says which and why)
         backend = UdpBackend.onThisMachine(config.transport());
+        // with a team key the tag is checked on the event loop and the decode runs beside it (DecodeStage)
+        stage = verifier.hasKey() ? new DecodeStage(sink) : null;
         boolean epoll = backend.epoll();
         boolean mmsg = backend.recvmmsg();
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
@@ -96,13 +99,20 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                         for (int i = 0; i < extraInbound.length; i++) {
                             ch.pipeline().addLast("extra" + i, extraInbound[i]);
                         }
-                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters, sink, verifier));
+                        ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters, sink, verifier, stage));
                     }
                 });
         if (mmsg) {
             bootstrap.option(io.netty.channel.epoll.EpollChannelOption.MAX_DATAGRAM_PAYLOAD_SIZE, 2048);
         }
-        channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();
+        try {
+            channel = (DatagramChannel) bootstrap.bind(config.bindAddress(), config.listenPort()).sync().channel();
+        } catch (Exception e) { // Netty throws a BindException undeclared; rethrown as it came
+            if (stage != null) {
+                stage.close(); // no channel, so no thread left behind for it
+            }
+            throw e;
+        }
         return this;
     }
 
@@ -229,6 +239,9 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         }
         if (group != null) {
             group.shutdownGracefully(0, 1, java.util.concurrent.TimeUnit.SECONDS).syncUninterruptibly();
+        }
+        if (stage != null) {
+            stage.close();
         }
     }
 }

@@ -15,6 +15,32 @@ class MessageCodecTest {
     private final MessageText text = new MessageText();
 
     @Test
+    void robotIdIsReadFromTheBytesAsTheParseReadsIt() {
+        byte[] status = Fumanoid.Message.newBuilder().setRobotID(5)
+                .setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTeamID(13).build()).build().toByteArray();
+        assertEquals(5, MessageCodec.robotIdOf(status));
+        // field 1 twice: the parse keeps the last one, so must the peek
+        byte[] twice = HexFormat.of().parseHex("08030807");
+        assertEquals(7, ((MessageResult.Decoded) codec.decode(twice)).message().getRobotID());
+        assertEquals(7, MessageCodec.robotIdOf(twice));
+        // a negative int32 is a ten-byte varint
+        byte[] negative = Fumanoid.Message.newBuilder().setRobotID(-2).build().toByteArray();
+        assertEquals(-2, MessageCodec.robotIdOf(negative));
+    }
+
+    @Test
+    void noRobotIdWhereTheParseFindsNone() {
+        byte[] withoutId = HexFormat.of().parseHex("1001");                // field 2 only
+        assertInstanceOf(MessageResult.Malformed.class, codec.decode(withoutId));
+        assertEquals(MessageCodec.NO_ROBOT_ID, MessageCodec.robotIdOf(withoutId));
+        byte[] lengthDelimitedField1 = HexFormat.of().parseHex("0a0103");  // field 1 with the wrong wire type
+        assertInstanceOf(MessageResult.Malformed.class, codec.decode(lengthDelimitedField1));
+        assertEquals(MessageCodec.NO_ROBOT_ID, MessageCodec.robotIdOf(lengthDelimitedField1));
+        assertEquals(MessageCodec.NO_ROBOT_ID, MessageCodec.robotIdOf(new byte[]{(byte) 0xff, (byte) 0xff, (byte) 0xff}));
+        assertEquals(MessageCodec.NO_ROBOT_ID, MessageCodec.robotIdOf(HexFormat.of().parseHex("0803" + "0c")));  // stray end-group
+    }
+
+    @Test
     void unknownExtensionIsKeptAndShownFieldByField() {
         // robotID 4, extension 1042 { 1: 7, 2: "ok", 3: { 1: 150 } } -- a team's own type we do not know
         byte[] inner = UnknownFieldSet.newBuilder()

@@ -70,6 +70,21 @@ class MessageTagTest {
     }
 
     @Test
+    void everyTagByteCountsAndOneInstanceChecksDatagramAfterDatagram() {
+        MessageTag tag = new MessageTag(goldenKey()); // its MAC buffer is reused from check to check
+        byte[] good = tag.append(MessageTag.FROM_ROBOT, 3, 0x0123456789abcdefL, HELLO);
+        for (int i = 0; i < MessageTag.TAG_SIZE; i++) {
+            byte[] flipped = good.clone();
+            flipped[good.length - MessageTag.TAG_SIZE + i] ^= (byte) 0x80;
+            assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.FROM_ROBOT, 3, flipped, Trailer.of(flipped)),
+                    "tag byte " + i);
+            assertEquals(MessageTag.Check.OK, tag.check(MessageTag.FROM_ROBOT, 3, good, Trailer.of(good)));
+        }
+        assertEquals("d2303baa78365196afe9afe96adb6b79",
+                HexFormat.of().formatHex(tag.tag(MessageTag.FROM_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
+    }
+
+    @Test
     void keysOfTheWrongLengthAreRefusedAndNeverPrinted() {
         assertThrows(IllegalArgumentException.class, () -> new TeamKey(new byte[16]));
         TeamKey key = goldenKey();

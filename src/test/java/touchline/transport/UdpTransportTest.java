@@ -217,4 +217,62 @@ class UdpTransportTest {
         assertTrue(counters[1] > counters[0]);
         assertEquals(1_000_000L, counters[0], "the counter follows the (fake) clock");
     }
+    @Test
+    void withATeamKeyABurstArrivesInOrderWithForgeriesAndMalformedDatagramsInPlace() throws Exception {
+        useTeamKey();
+        transport.setReading(false);
+        long[] counter = new long[5];
+        int n = 300; // several socket reads, so several batches handed to the decode thread
+        for (int i = 0; i < n; i++) {
+            int id = 1 + i % 4;
+            if (i % 25 == 7) {
+                send(robotSide.append(MessageTag.FROM_ROBOT, id + 1, ++counter[id], status(id, Framing.LEGACY)));
+            } else if (i % 25 == 13) {
+                send(frames.encode(Framing.LENGTH_PREFIX, new byte[]{(byte) 0xff, (byte) 0xff, (byte) 0xff}));
+            } else {
+                send(robotSide.append(MessageTag.FROM_ROBOT, id, ++counter[id], status(id, Framing.LEGACY)));
+            }
+        }
+        transport.setReading(true);
+        for (int i = 0; i < n; i++) {
+            Envelope e = next();
+            if (i % 25 == 13) {
+                assertTrue(e.isMalformed(), i + ": " + e);
+                continue;
+            }
+            assertEquals(1 + i % 4, e.robotId(), "datagram " + i + " in its place");
+            if (i % 25 == 7) {
+                assertEquals(Authenticity.FORGED, e.authenticity(), i + ": " + e);
+                assertNull(e.message());
+            } else {
+                assertEquals(Authenticity.VERIFIED, e.authenticity(), i + ": " + e);
+                assertEquals("status", e.kind());
+            }
+        }
+        assertEquals(n / 25, transport.counters().forgedIn());
+        assertEquals(n / 25, transport.counters().malformedIn());
+    }
+
+    @Test
+    void withATeamKeyAMessageWithoutRobotIdIsMalformedWithTheDecodersReason() throws Exception {
+        useTeamKey();
+        send(frames.encode(Framing.LEGACY, HexFormat.of().parseHex("1001")));
+        Envelope e = next();
+        assertTrue(e.isMalformed(), e.toString());
+        assertTrue(e.error().contains("robotID"), e.error());
+        assertEquals(0, transport.counters().forgedIn());
+    }
+    @Test
+    void withATeamKeyAPortInUseFailsTheStartAndLeavesNoDecodeThreadBehind() throws Exception {
+        try (DatagramSocket taken = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            UdpTransport second = new UdpTransport(
+                    UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(taken.getLocalPort()),
+                    LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
+                    new MessageCodec(new MessageKinds()), received::add, MicrosClock.system());
+            assertThrows(java.io.IOException.class, second::start); // BindException with NIO, NativeIoException with epoll
+            second.close();
+        }
+        assertTrue(Thread.getAllStackTraces().keySet().stream()
+                .noneMatch(t -> t.isAlive() && t.getName().equals("touchline-decode")), "a decode thread is left running");
+    }
 }

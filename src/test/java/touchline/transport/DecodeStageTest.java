@@ -1,0 +1,51 @@
+package touchline.transport;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** The decode thread of a console with a team key: order, failures, and what waits at close. */
+class DecodeStageTest {
+
+    private static Envelope numbered(int n) {
+        return new Envelope(n, Direction.IN, Channel.FUMANOID, null, n % 7, "status", null, new byte[0], null);
+    }
+
+    @Test
+    void publishesEveryBatchInOrderAndWhatWaitsBeforeItStops() {
+        List<Long> seen = Collections.synchronizedList(new ArrayList<>());
+        DecodeStage stage = new DecodeStage(e -> seen.add(e.timeMicros()));
+        int n = 1000; // more than one full batch, and a last batch flushed by hand
+        for (int i = 0; i < n; i++) {
+            int k = i;
+            stage.add(() -> numbered(k));
+            if (i % 10 == 9) {
+                stage.flush();
+            }
+        }
+        stage.flush();
+        stage.close(); // returns once the queue is empty and the thread has stopped
+        assertEquals(n, seen.size());
+        for (int i = 0; i < n; i++) {
+            assertEquals(i, seen.get(i), "envelope " + i + " in its place");
+        }
+    }
+
+    @Test
+    void aDatagramWhoseDecodeFailsIsLostAndTheNextOneIsNot() {
+        List<Long> seen = Collections.synchronizedList(new ArrayList<>());
+        DecodeStage stage = new DecodeStage(e -> seen.add(e.timeMicros()));
+        stage.add(() -> numbered(1));
+        stage.add(() -> {
+            throw new IllegalStateException("a decoder bug");
+        });
+        stage.add(() -> numbered(3));
+        stage.flush();
+        stage.close();
+        assertEquals(List.of(1L, 3L), seen);
+    }
+}
