@@ -164,11 +164,14 @@ class KeyboardUiTest {
             ui.fxRun(() -> ui.robot.lookup("#debug-pause").queryAs(javafx.scene.control.ToggleButton.class).setSelected(true));
             ui.await(10, () -> counted("paused — ") >= 10);
 
-            ui.fxRun(() -> ui.robot.lookup("#debug-pause").queryAs(javafx.scene.control.ToggleButton.class).setSelected(false));
+            // copied while still paused: the list stands still, so the selected line stays selected
+            // (live, at 50 lines/s, the oldest line — the selected one — can leave the list first)
             ui.fxRun(() -> ui.robot.lookup("#debug-lines").queryAs(ListView.class).getSelectionModel().select(0));
-            ui.robot.clickOn("#debug-copy");
+            ui.fxRun(() -> ui.robot.lookup("#debug-copy").queryButton().fire());
             ui.await(10, () -> ui.robot.lookup("#debug-feedback").queryLabeled().getText().equals("copied 1 line (selected)"));
             assertTrue(ui.fx(() -> javafx.scene.input.Clipboard.getSystemClipboard().getString()).contains("ball at"));
+            ui.fxRun(() -> ui.robot.lookup("#debug-pause").queryAs(javafx.scene.control.ToggleButton.class).setSelected(false));
+            ui.await(10, () -> ui.robot.lookup("#debug-count").queryLabeled().getText().endsWith(" lines"));
         }
     }
 
