@@ -11,9 +11,7 @@ import touchline.security.TeamKey;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.security.SecureRandom;
 import java.time.Instant;
 import java.util.Map;
@@ -106,11 +104,11 @@ public final class KeysCommand {
             try {
                 TeamKey key = dir.teamKey();
                 if (export != null && export.cHeader != null) {
-                    writeSecret(export.cHeader, RobotKeyExport.cHeader(key).getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                    KeyDir.writeFile(export.cHeader, RobotKeyExport.cHeader(key).getBytes(java.nio.charset.StandardCharsets.UTF_8), true);
                     out.printf("wrote the C header of team key %s to %s (secret: owner-only, keep it out of git)%n",
                             key.idHex(), export.cHeader);
                 } else if (export != null && export.blob != null) {
-                    writeSecret(export.blob, RobotKeyExport.blob(key));
+                    KeyDir.writeFile(export.blob, RobotKeyExport.blob(key), true);
                     out.printf("wrote the %d-byte flash blob of team key %s to %s (secret: owner-only)%n",
                             RobotKeyExport.BLOB_SIZE, key.idHex(), export.blob);
                 } else {
@@ -141,15 +139,5 @@ public final class KeysCommand {
                     dir.file(KeyDir.NAO_SERVER_PUBLIC), server.curveKey("public-key").z85());
         }
 
-        private static void writeSecret(Path file, byte[] content) throws IOException {
-            Files.deleteIfExists(file);
-            Files.createFile(file);
-            try {
-                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("rw-------"));
-            } catch (UnsupportedOperationException e) {
-                // not POSIX
-            }
-            Files.write(file, content);
-        }
     }
 }

@@ -146,12 +146,20 @@ public final class KeyDir {
     }
 
     private void write(String name, String text, boolean secret) throws IOException {
-        Path f = file(name);
-        Path tmp = file(name + ".tmp");
+        writeFile(file(name), text.getBytes(StandardCharsets.UTF_8), secret);
+    }
+
+    /**
+     * Writes {@code content} to {@code f} through a temporary file that has its permissions
+     * (owner-only when {@code secret}) before any byte of the key is in it, then moved into place.
+     * Also what {@code keys show --c-header/--blob} writes the firmware's key with.
+     */
+    public static void writeFile(Path f, byte[] content, boolean secret) throws IOException {
+        Path tmp = f.resolveSibling(f.getFileName() + ".tmp");
         Files.deleteIfExists(tmp);
         Files.createFile(tmp);
         setPermissions(tmp, secret ? OWNER_ONLY : READABLE);
-        Files.writeString(tmp, text, StandardCharsets.UTF_8);
+        Files.write(tmp, content);
         Files.move(tmp, f, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
     }
 
