@@ -54,6 +54,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         SHOTS.put("image", "demo.image");
         SHOTS.put("text", "demo.text");
         SHOTS.put("field-plot", "");
+        SHOTS.put("viewers", "");
     }
 
     @Override
@@ -119,6 +120,12 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         }
         if (view.equals("field-plot")) {
             plotFields(window);
+        }
+        if (view.equals("viewers")) { // serving (View → Serve to viewers), so the view shows its URL
+            FxThread.run(() -> ((javafx.scene.control.MenuBar) ((javafx.scene.layout.BorderPane) window.scene().getRoot())
+                    .getTop()).getMenus().stream().flatMap(m -> m.getItems().stream())
+                    .filter(i -> "menu-serve".equals(i.getId())).findFirst().ifPresent(javafx.scene.control.MenuItem::fire));
+            Thread.sleep(1000);
         }
         if (view.equals("debug-console")) { // the search's highlighted matches
             FxThread.run(() -> ((javafx.scene.control.TextField) window.scene().lookup("#debug-search")).setText("ball lost"));

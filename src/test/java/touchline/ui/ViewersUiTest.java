@@ -64,6 +64,9 @@ class ViewersUiTest {
         ui.await(30, () -> ((ToggleButton) view.node().lookup("#viewers-toggle")).isSelected());
         String url = ui.fx(() -> ((TextField) view.node().lookup("#viewers-url")).getText());
         assertTrue(url.matches("ws://127\\.0\\.0\\.1:\\d+/"), url);
+        // switched by the shortcut, not the view's button: the view says so too (it said "Not serving." before)
+        ui.await(30, () -> ((javafx.scene.control.Labeled) view.node().lookup("#viewers-status")).getText()
+                .startsWith("Serving to viewers: ws://127.0.0.1:"));
 
         List<JSONObject> heard = new CopyOnWriteArrayList<>();
         boolean[] closed = {false}; // written by the client's thread, read by the test's: only ever set

@@ -124,6 +124,8 @@ public final class ViewersView implements View {
         }
     }
 
+    private String saidShown = "";
+
     private void show() {
         boolean on = toggle.serving();
         serve.setSelected(on);
@@ -134,8 +136,10 @@ public final class ViewersView implements View {
         if (!url.getText().equals(shown)) {
             url.setText(shown);
         }
-        if (!on && !status.getText().equals(toggle.said()) && !status.getText().startsWith("Port")) {
-            status.setText(toggle.said());
+        String said = toggle.said(); // what the toggle said last, however it was switched (button, menu, Ctrl+Shift+V)
+        if (!said.equals(saidShown)) {
+            status.setText(said);
+            saidShown = said;
         }
         table.getItems().setAll(rows(server.map(FoxgloveServer::viewers).orElse(List.of()), System.nanoTime() / 1000));
     }
