@@ -6,9 +6,7 @@ import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 
-import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.UnknownHostException;
 import java.nio.charset.StandardCharsets;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -212,39 +210,15 @@ final class EnvelopeLayout {
     }
 
     static String formatPeer(InetSocketAddress peer) {
-        if (peer.isUnresolved()) {
-            return "unresolved:" + peer.getHostString() + ":" + peer.getPort();
-        }
-        return peer.getAddress().getHostAddress() + ":" + peer.getPort();
+        return touchline.transport.PeerText.format(peer);
     }
 
-    private static final java.util.regex.Pattern IPV4 =
-            java.util.regex.Pattern.compile("(25[0-5]|2[0-4]\\d|1?\\d?\\d)(\\.(25[0-5]|2[0-4]\\d|1?\\d?\\d)){3}");
-    private static final java.util.regex.Pattern IPV6 = java.util.regex.Pattern.compile("[0-9A-Fa-f:.]*:[0-9A-Fa-f:.]*");
-
-    /** Dotted-quad IPv4 or IPv6 (no zone): forms {@link InetAddress#getByName} parses without any lookup. */
     static boolean isAddressLiteral(String host) {
-        return IPV4.matcher(host).matches() || IPV6.matcher(host).matches();
+        return touchline.transport.PeerText.isAddressLiteral(host);
     }
 
+    /** A name written in a file from outside stays unresolved: opening a recording never causes a lookup. */
     static InetSocketAddress parsePeer(String s) {
-        if (s == null) {
-            return null;
-        }
-        int colon = s.lastIndexOf(':');
-        int port = Integer.parseInt(s.substring(colon + 1));
-        if (s.startsWith("unresolved:")) {
-            return InetSocketAddress.createUnresolved(s.substring("unresolved:".length(), colon), port);
-        }
-        String host = s.substring(0, colon);
-        if (!isAddressLiteral(host)) {
-            // a name written in a file from outside: opening a recording never causes a lookup
-            return InetSocketAddress.createUnresolved(host, port);
-        }
-        try {
-            return new InetSocketAddress(InetAddress.getByName(host), port);
-        } catch (UnknownHostException e) {
-            return InetSocketAddress.createUnresolved(host, port);
-        }
+        return touchline.transport.PeerText.parse(s);
     }
 }

@@ -21,7 +21,6 @@ import touchline.transport.Origin;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.util.Base64;
 import java.util.HashMap;
@@ -184,23 +183,7 @@ final class RemoteChannel {
 
     /** {@code 10.0.0.7:10001} or {@code unresolved:nao.local:5555}; never a name lookup. */
     static InetSocketAddress peer(String s) {
-        if (s == null) {
-            return null;
-        }
-        int colon = s.lastIndexOf(':');
-        int port = Integer.parseInt(s.substring(colon + 1));
-        String host = s.substring(0, colon);
-        if (host.startsWith("unresolved:")) {
-            return InetSocketAddress.createUnresolved(host.substring("unresolved:".length()), port);
-        }
-        if (!host.matches("[0-9.]+|[0-9A-Fa-f:.]*:[0-9A-Fa-f:.]*")) {
-            return InetSocketAddress.createUnresolved(host, port);
-        }
-        try {
-            return new InetSocketAddress(InetAddress.getByName(host), port); // a literal: no lookup
-        } catch (java.net.UnknownHostException e) {
-            return InetSocketAddress.createUnresolved(host, port);
-        }
+        return touchline.transport.PeerText.parse(s);
     }
 
     /** The advertised type from its self-contained FileDescriptorSet (dependencies first, as the recorder writes it). */
