@@ -50,8 +50,16 @@ public final class ReliableSession {
         }
     }
 
-    /** Delivers future payloads to {@code listener} (on the network thread) instead of the inbox. */
-    public void onReceive(Consumer<byte[]> listener) {
+    /**
+     * Delivers payloads to {@code listener} instead of the inbox: first those already waiting in
+     * the inbox (on the caller's thread, in order), then every later one (on the network thread).
+     * Nothing that arrived between opening the session and this call is lost: a peer may start sending
+     * before the caller installs its listener.
+     */
+    public synchronized void onReceive(Consumer<byte[]> listener) {
+        for (byte[] waiting = inbox.poll(); waiting != null; waiting = inbox.poll()) {
+            listener.accept(waiting);
+        }
         this.listener = listener;
     }
 
