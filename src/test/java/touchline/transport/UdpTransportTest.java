@@ -67,8 +67,8 @@ class UdpTransportTest {
     }
 
     private Envelope next() throws InterruptedException {
-        Envelope e = received.poll(5, TimeUnit.SECONDS);
-        assertNotNull(e, "no envelope within 5 s");
+        Envelope e = received.poll(touchline.testing.Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS);
+        assertNotNull(e, "no envelope within " + touchline.testing.Await.FLOOR_MILLIS + " ms");
         return e;
     }
 
