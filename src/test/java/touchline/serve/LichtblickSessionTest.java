@@ -115,6 +115,7 @@ class LichtblickSessionTest {
             Await.until("refused", 5000, () -> !lichtblick.statuses().isEmpty());
             assertTrue(lichtblick.statuses().get(0).getString("message").contains("unknown channel " + gc.getInt("id")));
             touchline.subscribe(9, gc.getInt("id"));
+            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
             field.publishGameState("hl12/04-playing.bin");
             Await.until("the packet's bytes", 5000, () -> !touchline.dataOf(9).isEmpty());
         }

@@ -26,6 +26,8 @@ final class BenchViewer implements AutoCloseable {
     private final java.util.List<Long> latencies = new java.util.ArrayList<>();
     /** The same for the Foxglove standard channels alone (made by the server's converter thread). */
     private final java.util.List<Long> standardLatencies = new java.util.ArrayList<>();
+    /** And for the other channels (the robots' own messages, straight from the publishing thread). */
+    private final java.util.List<Long> directLatencies = new java.util.ArrayList<>();
     /** Subscription ids of the standard channels ({@code foxglove.*} schemas). */
     private final java.util.Set<Integer> standard = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final touchline.transport.MicrosClock clock;
@@ -60,9 +62,7 @@ final class BenchViewer implements AutoCloseable {
                                 long latency = clock.nowMicros() - sentMicros;
                                 synchronized (latencies) {
                                     latencies.add(latency);
-                                    if (standard.contains(le.getInt(1))) {
-                                        standardLatencies.add(latency);
-                                    }
+                                    (standard.contains(le.getInt(1)) ? standardLatencies : directLatencies).add(latency);
                                 }
                             }
                         }
@@ -117,6 +117,11 @@ final class BenchViewer implements AutoCloseable {
     /** The same for the standard channels' messages alone. */
     long standardLatencyQuantile(double q) {
         return quantile(standardLatencies, q);
+    }
+
+    /** The same for the other channels' messages alone. */
+    long directLatencyQuantile(double q) {
+        return quantile(directLatencies, q);
     }
 
     private long quantile(java.util.List<Long> of, double q) {

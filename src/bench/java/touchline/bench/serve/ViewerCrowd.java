@@ -41,9 +41,10 @@ public final class ViewerCrowd implements AutoCloseable {
     public void print(String latencyName) {
         for (int i = 0; i < viewers.size(); i++) {
             BenchViewer v = viewers.get(i);
-            System.out.printf(Locale.ROOT, "  viewer %d: %d messages, %s p50 %.1f ms p99 %.1f ms (standard channels p99 "
-                            + "%.1f ms)%s%n", i + 1, v.messages(), latencyName, v.latencyQuantile(0.5) / 1e3,
-                    v.latencyQuantile(0.99) / 1e3, v.standardLatencyQuantile(0.99) / 1e3, stalled && i == 0 ? " (stalled)" : "");
+            System.out.printf(Locale.ROOT, "  viewer %d: %d messages, %s p50 %.1f ms p99 %.1f ms (p99 of the robots' own "
+                            + "channels %.1f ms, of the standard channels %.1f ms)%s%n", i + 1, v.messages(), latencyName,
+                    v.latencyQuantile(0.5) / 1e3, v.latencyQuantile(0.99) / 1e3, v.directLatencyQuantile(0.99) / 1e3,
+                    v.standardLatencyQuantile(0.99) / 1e3, stalled && i == 0 ? " (stalled)" : "");
         }
     }
 

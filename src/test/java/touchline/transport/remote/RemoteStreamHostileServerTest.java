@@ -52,6 +52,14 @@ class RemoteStreamHostileServerTest {
         return ("packet " + n).getBytes(StandardCharsets.UTF_8);
     }
 
+    /** What a Touchline server says first: the handshake, its info, the good channel; then it reads the subscription. */
+    private static void welcome(HostileFoxgloveServer.Connection c) throws IOException {
+        c.handshake();
+        c.serverInfo();
+        c.text(advertise(goodChannel(GOOD)));
+        c.readText();
+    }
+
     private RemoteStream client(HostileFoxgloveServer server, Duration silence, Duration handshake) throws Exception {
         return new RemoteStream(new URI(server.url()), null, new MessageCodec(new MessageKinds()), received::add,
                 Duration.ofMillis(500), LIMIT, silence, handshake).start();
@@ -96,10 +104,7 @@ class RemoteStreamHostileServerTest {
                     c.frame(true, 0x0, new byte[10]);
                 }));
         try (HostileFoxgloveServer server = new HostileFoxgloveServer(c -> {
-            c.handshake();
-            c.serverInfo();
-            c.text(advertise(goodChannel(GOOD)));
-            c.readText(); // the subscription
+            welcome(c);
             c.message(GOOD, 1_000, good(0));
             for (int i = 0; i < bads.size(); i++) {
                 step.acquire(); // one at a time, so that the test sees each said
@@ -146,18 +151,12 @@ class RemoteStreamHostileServerTest {
     @Test
     void aServerThatClosesInTheMiddleOfAFrameIsLostAndCalledAgain() throws Exception {
         try (HostileFoxgloveServer server = new HostileFoxgloveServer(c -> {
-            c.handshake();
-            c.serverInfo();
-            c.text(advertise(goodChannel(GOOD)));
-            c.readText();
+            welcome(c);
             c.message(GOOD, 1_000, good(0));
             c.frame(true, 0x2, HostileFoxgloveServer.messageData(GOOD, 1_000, good(1)), 1_000);
             c.closeNow();
         }, c -> {
-            c.handshake();
-            c.serverInfo();
-            c.text(advertise(goodChannel(GOOD)));
-            c.readText();
+            welcome(c);
             c.message(GOOD, 1_000, good(2));
             c.hold();
         }); RemoteStream client = client(server, Duration.ofSeconds(3), Duration.ofSeconds(5))) {
@@ -186,10 +185,7 @@ class RemoteStreamHostileServerTest {
     @Test
     void aServerThatFallsSilentIsDroppedAndCalledAgain() throws Exception {
         try (HostileFoxgloveServer server = new HostileFoxgloveServer(c -> {
-            c.handshake();
-            c.serverInfo();
-            c.text(advertise(goodChannel(GOOD)));
-            c.readText();
+            welcome(c);
             c.message(GOOD, 1_000, good(0));
             c.ignore(); // and never a word again, not even the time
         }); RemoteStream client = client(server, Duration.ofMillis(400), Duration.ofSeconds(5))) {
