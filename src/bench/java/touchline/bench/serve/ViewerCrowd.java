@@ -15,9 +15,38 @@ import java.util.Locale;
  */
 public final class ViewerCrowd implements AutoCloseable {
 
-    private final FoxgloveServer server;
+    private final FoxgloveServer server; // null in a process of its own (main)
     private final List<BenchViewer> viewers = new ArrayList<>();
     private final boolean stalled;
+
+    /**
+     * Viewers in a JVM of their own, as viewers on other machines would be (they do not share
+     * the console's heap): {@code PORT COUNT}. Connects, says {@code connected}, times from the
+     * line {@code go} on standard input, and at its end prints {@link #summary()} and exits.
+     */
+    public static void main(String[] args) throws Exception {
+        MicrosClock clock = MicrosClock.system();
+        ViewerCrowd crowd = new ViewerCrowd(Integer.parseInt(args[0]), Integer.parseInt(args[1]), clock);
+        System.out.println("connected");
+        java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(System.in,
+                java.nio.charset.StandardCharsets.UTF_8));
+        for (String line = in.readLine(); line != null; line = in.readLine()) {
+            if (line.equals("go")) {
+                crowd.viewers.forEach(BenchViewer::timeFromNow);
+            }
+        }
+        System.out.println(crowd.summary());
+        crowd.viewers.forEach(BenchViewer::close);
+        System.exit(0);
+    }
+
+    private ViewerCrowd(int port, int count, MicrosClock clock) throws Exception {
+        this.server = null;
+        this.stalled = false;
+        for (int i = 0; i < count; i++) {
+            viewers.add(new BenchViewer(port, clock));
+        }
+    }
 
     /** Connects the viewers and returns once each is subscribed to every channel (or after 30 s). */
     public ViewerCrowd(FoxgloveServer server, int count, boolean stalled, MicrosClock clock) throws Exception {
@@ -64,7 +93,7 @@ public final class ViewerCrowd implements AutoCloseable {
     public void close() throws InterruptedException {
         viewers.forEach(BenchViewer::close);
         long deadline = System.nanoTime() + 10_000_000_000L;
-        while (server.stats().viewers() > 0 && System.nanoTime() < deadline) {
+        while (server != null && server.stats().viewers() > 0 && System.nanoTime() < deadline) {
             Thread.sleep(10); // the closed viewers leave before the next baseline
         }
     }
