@@ -59,6 +59,14 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     @Option(names = "--gc-no-realtime", description = "with --gc: the sender at default scheduling instead of real-time priority")
     boolean gcNoRealtime;
 
+    @Option(names = "--viewers", defaultValue = "0", description = "then serve (as Serve to viewers does) to this many "
+            + "viewers subscribed to every channel, with the views open, and measure the same again with serving off")
+    int viewers;
+
+    @Option(names = "--viewers-apart", description = "with --viewers: the viewers in a JVM of their own (as on other "
+            + "machines: not in the window's heap), instead of in the window's JVM")
+    boolean viewersApart;
+
     @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
     String only;
 
@@ -99,10 +107,12 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
                 gcProbe.reset();
             }
             Phase open = phase("views open", console, window, seconds);
+            List<Phase> served = viewers > 0 ? servedPhases(console, window) : List.of();
             System.out.println();
             System.out.println(header());
             System.out.println(row(baseline));
             System.out.println(row(open));
+            served.forEach(p -> System.out.println(row(p)));
             System.out.println();
             System.out.println("FX thread time per frame by view (views open):");
             open.viewNanos().forEach((id, ns) -> System.out.printf(Locale.ROOT, "  %-14s %.3f ms%n", id,
@@ -117,6 +127,66 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             FxThread.run(javafx.application.Platform::exit);
         }
         return 0;
+    }
+
+    /**
+     * The views open and the console serving to {@link #viewers} viewers subscribed to every
+     * channel (the server the window's Serve to viewers starts), then the views open with
+     * serving off again, so the serving phase has a baseline on each side in the same run.
+     */
+    private List<Phase> servedPhases(Console console, ConsoleWindow window) throws Exception {
+        touchline.transport.MicrosClock clock = console.clock();
+        Phase on;
+        if (viewersApart) {
+            try (touchline.serve.Serving serving = new touchline.serve.Serving(touchline.serve.ServeConfig.defaults()
+                    .withPort(0), console.kinds(), clock, console.bus(), console.matchMode())) {
+                on = servedApart(serving, console, window);
+            }
+            return List.of(on, phase("views open, serving off again", console, window, seconds));
+        }
+        try (touchline.serve.Serving serving = new touchline.serve.Serving(touchline.serve.ServeConfig.defaults().withPort(0),
+                console.kinds(), clock, console.bus(), console.matchMode());
+             touchline.bench.serve.ViewerCrowd crowd = new touchline.bench.serve.ViewerCrowd(serving.server(), viewers,
+                     false, clock)) {
+            touchline.bench.serve.RoundConditions conditions = new touchline.bench.serve.RoundConditions();
+            on = phase("views open, serving to " + viewers + " viewers", console, window, seconds);
+            System.out.println("  " + crowd.summary() + "; sent " + serving.server().stats().sent() + ", dropped "
+                    + serving.server().stats().dropped());
+            System.out.println("  " + conditions.since());
+        }
+        Phase off = phase("views open, serving off again", console, window, seconds);
+        return List.of(on, off);
+    }
+
+    /** The serving phase with the viewers in a JVM of their own ({@code ViewerCrowd}'s main). */
+    private Phase servedApart(touchline.serve.Serving serving, Console console, ConsoleWindow window) throws Exception {
+        Process crowd = new ProcessBuilder(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:+UseZGC", "-cp", System.getProperty("java.class.path"), "touchline.bench.serve.ViewerCrowd",
+                Integer.toString(serving.server().port()), Integer.toString(viewers))
+                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        try (java.io.BufferedReader out = new java.io.BufferedReader(new java.io.InputStreamReader(crowd.getInputStream(),
+                java.nio.charset.StandardCharsets.UTF_8));
+             java.io.Writer in = new java.io.OutputStreamWriter(crowd.getOutputStream(), java.nio.charset.StandardCharsets.UTF_8)) {
+            out.readLine(); // "connected"
+            long wanted = (long) serving.server().stats().channels() * viewers;
+            long deadline = System.nanoTime() + 30_000_000_000L;
+            while (serving.server().stats().subscriptions() < wanted && System.nanoTime() < deadline) {
+                Thread.sleep(10); // waiting for the viewers' subscriptions to arrive
+            }
+            in.write("go\n");
+            in.flush();
+            touchline.bench.serve.RoundConditions conditions = new touchline.bench.serve.RoundConditions();
+            Phase on = phase("views open, serving to " + viewers + " viewers in another JVM", console, window, seconds);
+            String windowSide = conditions.since();
+            in.close();
+            System.out.println("  " + out.readLine() + "; sent " + serving.server().stats().sent() + ", dropped "
+                    + serving.server().stats().dropped());
+            System.out.println("  the window's JVM: " + windowSide);
+            return on;
+        } finally {
+            crowd.waitFor(10, java.util.concurrent.TimeUnit.SECONDS);
+            crowd.destroy();
+        }
     }
 
     /** The console referees a game (INITIAL: nothing held back) towards a probe on loopback. */

@@ -43,6 +43,14 @@ final class ServedChannel {
         return topic;
     }
 
+    /**
+     * A channel of bytes (what the console heard without a decoded message): no schema a
+     * Foxglove viewer can read, so advertised only to a viewer that asked for them.
+     */
+    boolean bytes() {
+        return payloads instanceof RawChannel;
+    }
+
     /** How this channel's envelopes become payloads; null for a state channel. */
     ChannelPayloads payloads() {
         return payloads;

@@ -27,10 +27,25 @@ final class Viewer {
     private final LongAdder sent = new LongAdder();
     private final LongAdder statusesDropped = new LongAdder();
 
-    Viewer(Channel channel, FoxgloveFrames frames, int queueLimit) {
+    /**
+     * The query parameter ({@code ?raw=1}) by which a viewer asks for the channels of bytes too:
+     * another Touchline does; Foxglove and Lichtblick, which have no schema for them and would
+     * list each as a channel they failed to parse, do not.
+     */
+    static final String BYTES_PARAMETER = "raw";
+
+    private final boolean takesBytes;
+
+    Viewer(Channel channel, FoxgloveFrames frames, int queueLimit, boolean takesBytes) {
         this.channel = channel;
         this.frames = frames;
         this.pending = new PendingMessages(queueLimit);
+        this.takesBytes = takesBytes;
+    }
+
+    /** Whether this viewer hears of {@code c} at all. */
+    boolean wants(ServedChannel c) {
+        return takesBytes || !c.bytes();
     }
 
     SocketAddress address() {
@@ -73,6 +88,9 @@ final class Viewer {
 
     /** Subscribes under the viewer's {@code id}; the reason when refused. */
     Optional<String> subscribe(int id, ServedChannel c) {
+        if (!wants(c)) {
+            return Optional.of("unknown channel " + c.id());
+        }
         if (subscriptions.containsKey(id)) {
             return Optional.of("subscription id " + id + " is in use");
         }
@@ -118,12 +136,15 @@ final class Viewer {
     /** The server info and every channel known so far: what a viewer hears first. */
     void welcome(List<ServedChannel> channels) {
         channel.write(frames.serverInfo(), channel.voidPromise());
-        channel.writeAndFlush(frames.advertise(channels), channel.voidPromise());
+        channel.writeAndFlush(frames.advertise(channels.stream().filter(this::wants).toList()), channel.voidPromise());
     }
 
     /** New channels; sent even to a viewer that is behind, or it could never subscribe to them. */
     void advertise(List<ServedChannel> channels) {
-        channel.writeAndFlush(frames.advertise(channels), channel.voidPromise());
+        List<ServedChannel> wanted = channels.stream().filter(this::wants).toList();
+        if (!wanted.isEmpty()) {
+            channel.writeAndFlush(frames.advertise(wanted), channel.voidPromise());
+        }
     }
 
     /** A status message, unless the viewer is not reading (then it is counted, never queued). */

@@ -5,6 +5,8 @@ import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
 import io.netty.util.AttributeKey;
 
+import java.util.List;
+
 /**
  * A viewer's life on its connection: joins the table (server info and channels) when the
  * WebSocket handshake completes, sends what waits when the socket becomes writable again, and
@@ -43,7 +45,10 @@ final class ViewerSession extends ChannelInboundHandlerAdapter {
                         + " at once); try again later")).addListener(io.netty.channel.ChannelFutureListener.CLOSE);
                 return;
             }
-            Viewer v = new Viewer(ctx.channel(), frames, config.queueLimit());
+            List<String> raw = new io.netty.handler.codec.http.QueryStringDecoder(
+                    ((WebSocketServerProtocolHandler.HandshakeComplete) evt).requestUri()).parameters()
+                    .getOrDefault(Viewer.BYTES_PARAMETER, List.of());
+            Viewer v = new Viewer(ctx.channel(), frames, config.queueLimit(), raw.contains("1"));
             ctx.channel().attr(VIEWER).set(v);
             channels.welcome(v);
         }

@@ -24,8 +24,16 @@ final class BenchViewer implements AutoCloseable {
     private final AtomicInteger nextSubscription = new AtomicInteger();
     private final WebSocket ws;
     private final java.util.List<Long> latencies = new java.util.ArrayList<>();
+    /** The same for the Foxglove standard channels alone (made by the server's converter thread). */
+    private final java.util.List<Long> standardLatencies = new java.util.ArrayList<>();
+    /** And for the other channels (the robots' own messages, straight from the publishing thread). */
+    private final java.util.List<Long> directLatencies = new java.util.ArrayList<>();
+    /** Subscription ids of the standard channels ({@code foxglove.*} schemas). */
+    private final java.util.Set<Integer> standard = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final touchline.transport.MicrosClock clock;
     private volatile boolean reading = true;
+    /** Messages logged before this time (a state's newest value sent at subscribing) are counted, not timed. */
+    private volatile long timedFromMicros = Long.MAX_VALUE;
 
     BenchViewer(int port, touchline.transport.MicrosClock clock) throws Exception {
         this.clock = clock;
@@ -48,9 +56,14 @@ final class BenchViewer implements AutoCloseable {
                     public CompletionStage<?> onBinary(WebSocket w, ByteBuffer data, boolean last) {
                         if (last && data.remaining() >= 13 && data.get(0) == 1) {
                             messages.increment();
-                            long sentMicros = data.order(java.nio.ByteOrder.LITTLE_ENDIAN).getLong(5) / 1000;
-                            synchronized (latencies) {
-                                latencies.add(clock.nowMicros() - sentMicros);
+                            ByteBuffer le = data.order(java.nio.ByteOrder.LITTLE_ENDIAN);
+                            long sentMicros = le.getLong(5) / 1000;
+                            if (sentMicros >= timedFromMicros) {
+                                long latency = clock.nowMicros() - sentMicros;
+                                synchronized (latencies) {
+                                    latencies.add(latency);
+                                    (standard.contains(le.getInt(1)) ? standardLatencies : directLatencies).add(latency);
+                                }
                             }
                         }
                         more(w);
@@ -66,8 +79,11 @@ final class BenchViewer implements AutoCloseable {
         JSONArray subs = new JSONArray();
         JSONArray channels = op.getJSONArray("channels");
         for (int i = 0; i < channels.length(); i++) {
-            subs.put(new JSONObject().put("id", nextSubscription.getAndIncrement())
-                    .put("channelId", channels.getJSONObject(i).getInt("id")));
+            int id = nextSubscription.getAndIncrement();
+            if (channels.getJSONObject(i).optString("schemaName").startsWith("foxglove.")) {
+                standard.add(id);
+            }
+            subs.put(new JSONObject().put("id", id).put("channelId", channels.getJSONObject(i).getInt("id")));
         }
         if (!subs.isEmpty()) {
             w.sendText(new JSONObject().put("op", "subscribe").put("subscriptions", subs).toString(), true);
@@ -80,6 +96,11 @@ final class BenchViewer implements AutoCloseable {
         }
     }
 
+    /** Times every message logged from now on (what came before is a state sent at subscribing, not a delay). */
+    void timeFromNow() {
+        timedFromMicros = clock.nowMicros();
+    }
+
     void stopReading() {
         reading = false;
     }
@@ -90,11 +111,25 @@ final class BenchViewer implements AutoCloseable {
 
     /** Microseconds from publishing to receiving, the {@code q} quantile (0..1) of every message so far; -1 when none. */
     long latencyQuantile(double q) {
+        return quantile(latencies, q);
+    }
+
+    /** The same for the standard channels' messages alone. */
+    long standardLatencyQuantile(double q) {
+        return quantile(standardLatencies, q);
+    }
+
+    /** The same for the other channels' messages alone. */
+    long directLatencyQuantile(double q) {
+        return quantile(directLatencies, q);
+    }
+
+    private long quantile(java.util.List<Long> of, double q) {
         synchronized (latencies) {
-            if (latencies.isEmpty()) {
+            if (of.isEmpty()) {
                 return -1;
             }
-            java.util.List<Long> sorted = new java.util.ArrayList<>(latencies);
+            java.util.List<Long> sorted = new java.util.ArrayList<>(of);
             java.util.Collections.sort(sorted);
             return sorted.get((int) Math.min(sorted.size() - 1, Math.floor(q * sorted.size())));
         }

@@ -74,46 +74,23 @@ public final class ServeBenchmark implements Callable<Integer> {
                 bus.accept(e); // every channel exists before the viewers come
             }
             for (int r = 0; r < rounds; r++) {
+                RoundConditions quiet = new RoundConditions();
                 Ingest none = publish(bus, team);
-                List<BenchViewer> viewers = connect(server);
-                try {
+                String noneConditions = quiet.since();
+                try (ViewerCrowd viewers = new ViewerCrowd(server, viewerCount, stalled, clock)) {
+                    RoundConditions watchedConditions = new RoundConditions();
                     Ingest watched = publish(bus, team);
                     ServeStats s = server.stats();
                     System.out.printf(Locale.ROOT, "round %d: no viewers %.0f/s %.2f µs CPU each; %d viewers %.0f/s %.2f µs "
                                     + "CPU each (rate %.1f %%); sent %d, dropped %d%n", r + 1, none.rate, none.cpuNanos / 1e3,
                             viewerCount, watched.rate, watched.cpuNanos / 1e3, 100 * watched.rate / none.rate, s.sent(), s.dropped());
-                    for (int i = 0; i < viewers.size(); i++) {
-                        BenchViewer v = viewers.get(i);
-                        System.out.printf(Locale.ROOT, "  viewer %d: %d messages, latency p50 %.1f ms p99 %.1f ms%s%n", i + 1,
-                                v.messages(), v.latencyQuantile(0.5) / 1e3, v.latencyQuantile(0.99) / 1e3,
-                                stalled && i == 0 ? " (stalled)" : "");
-                    }
-                } finally {
-                    viewers.forEach(BenchViewer::close);
-                }
-                long deadline = System.nanoTime() + 10_000_000_000L;
-                while (server.stats().viewers() > 0 && System.nanoTime() < deadline) {
-                    Thread.sleep(10); // the closed viewers leave before the next baseline
+                    System.out.println("  no viewers: " + noneConditions);
+                    System.out.println("  viewers:    " + watchedConditions.since());
+                    viewers.print("latency");
                 }
             }
         }
         return 0;
-    }
-
-    private List<BenchViewer> connect(FoxgloveServer server) throws Exception {
-        List<BenchViewer> viewers = new ArrayList<>();
-        for (int i = 0; i < viewerCount; i++) {
-            viewers.add(new BenchViewer(server.port(), clock));
-        }
-        long wanted = (long) server.stats().channels() * viewerCount;
-        long deadline = System.nanoTime() + 30_000_000_000L;
-        while (server.stats().subscriptions() < wanted && System.nanoTime() < deadline) {
-            Thread.sleep(10); // waiting for the viewers' subscriptions to arrive
-        }
-        if (stalled && !viewers.isEmpty()) {
-            viewers.get(0).stopReading();
-        }
-        return viewers;
     }
 
     /** Publishes the team's envelopes (time-stamped now) at {@code rate} for {@code seconds}, in 10 ms steps. */

@@ -15,7 +15,6 @@ import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -74,38 +73,20 @@ final class UdpServeRun implements Callable<Integer> {
             send(console, robots, to, team.size()); // every channel exists before the viewers come
             drained(console);
             for (int r = 0; r < rounds; r++) {
+                RoundConditions quiet = new RoundConditions();
                 double none = send(console, robots, to, (long) rate * seconds);
                 drained(console);
-                List<BenchViewer> viewers = new ArrayList<>();
-                for (int i = 0; i < viewerCount; i++) {
-                    viewers.add(new BenchViewer(serving.server().port(), clock));
-                }
-                long wanted = (long) serving.server().stats().channels() * viewerCount;
-                long deadline = System.nanoTime() + 30_000_000_000L;
-                while (serving.server().stats().subscriptions() < wanted && System.nanoTime() < deadline) {
-                    Thread.sleep(10); // waiting for the viewers' subscriptions to arrive
-                }
-                if (stalled && !viewers.isEmpty()) {
-                    viewers.get(0).stopReading();
-                }
-                try {
+                String noneConditions = quiet.since();
+                try (ViewerCrowd viewers = new ViewerCrowd(serving.server(), viewerCount, stalled, clock)) {
+                    RoundConditions watchedConditions = new RoundConditions();
                     double watched = send(console, robots, to, (long) rate * seconds);
                     ServeStats s = serving.server().stats();
                     System.out.printf(Locale.ROOT, "round %d: ingest, no viewers %.0f/s; %d viewers %.0f/s (ratio %.1f %%); "
                             + "sent %d, dropped %d%n", r + 1, none, viewerCount, watched, 100 * watched / none, s.sent(),
                             s.dropped());
-                    for (int i = 0; i < viewers.size(); i++) {
-                        BenchViewer v = viewers.get(i);
-                        System.out.printf(Locale.ROOT, "  viewer %d: %d messages, datagram-to-frame p50 %.1f ms p99 %.1f ms%s%n",
-                                i + 1, v.messages(), v.latencyQuantile(0.5) / 1e3, v.latencyQuantile(0.99) / 1e3,
-                                stalled && i == 0 ? " (stalled)" : "");
-                    }
-                } finally {
-                    viewers.forEach(BenchViewer::close);
-                }
-                long deadline2 = System.nanoTime() + 10_000_000_000L;
-                while (serving.server().stats().viewers() > 0 && System.nanoTime() < deadline2) {
-                    Thread.sleep(10); // the closed viewers leave before the next baseline
+                    System.out.println("  no viewers: " + noneConditions);
+                    System.out.println("  viewers:    " + watchedConditions.since());
+                    viewers.print("datagram-to-frame");
                 }
             }
         } finally {

@@ -9,9 +9,11 @@ package touchline.transport.remote;
  * @param detail   why the connection was lost or refused, or the server's last status message; "" when none
  * @param channels robot channels subscribed to
  * @param received envelopes rebuilt from the stream since the start
- * @param unusable messages or channels that could not be rebuilt (counted, not shown one by one)
+ * @param unusable messages or channels from the server that could not be used (counted)
+ * @param problem  the newest of those, in a sentence; "" when none
  */
-public record RemoteStatus(State state, String url, String detail, int channels, long received, long unusable) {
+public record RemoteStatus(State state, String url, String detail, int channels, long received, long unusable,
+                           String problem) {
 
     public enum State { CONNECTING, CONNECTED, LOST }
 
@@ -20,7 +22,7 @@ public record RemoteStatus(State state, String url, String detail, int channels,
         return switch (state) {
             case CONNECTING -> "connecting to " + url + "…";
             case CONNECTED -> "viewing " + url + " (connected, " + channels + " channels"
-                    + (unusable == 0 ? "" : ", " + unusable + " unusable") + ")";
+                    + (unusable == 0 ? "" : ", " + unusable + " unusable, the last: " + problem) + ")";
             case LOST -> "connection to " + url + " lost" + (detail.isEmpty() ? "" : " (" + detail + ")")
                     + ", reconnecting…";
         };

@@ -37,11 +37,18 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class RemoteStream implements AutoCloseable {
 
     public static final String SUBPROTOCOL = "foxglove.websocket.v1";
+    /** The query by which a Touchline server also advertises its channels of bytes (serve.Viewer's parameter). */
+    static final String BYTES_QUERY = "raw=1";
     static final Duration FIRST_BACKOFF = Duration.ofMillis(250);
+    /** The largest message taken from a server: more than a raw camera frame; anything bigger is dropped unread. */
+    static final int MAX_MESSAGE_BYTES = 16 << 20;
+    /** A Touchline server sends its time ten times a second; this long without a word, the connection is dead. */
+    static final Duration SILENCE = Duration.ofSeconds(15);
+    static final Duration HANDSHAKE = Duration.ofSeconds(5);
 
     private final URI uri;
     private final String shownUrl;
-    private final HttpClient http;
+    private final SSLContext tls;
     private final EnvelopeSink sink;
     private final MessageCodec codec;
     private final FrameCodec frames = new FrameCodec(Integer.MAX_VALUE);
@@ -49,6 +56,10 @@ public final class RemoteStream implements AutoCloseable {
     private final ScheduledExecutorService reconnects;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong unusable = new AtomicLong();
+    private final int maxMessageBytes;
+    private final Duration silence;
+    private final Duration handshake;
+    private volatile String problem = "";
     private volatile RemoteStatus.State state = RemoteStatus.State.CONNECTING;
     private volatile String detail = "";
     private volatile Session session;
@@ -63,17 +74,27 @@ public final class RemoteStream implements AutoCloseable {
      * @param maxBackoff the longest wait between reconnection attempts
      */
     public RemoteStream(URI uri, SSLContext tls, MessageCodec codec, EnvelopeSink sink, Duration maxBackoff) {
+        this(uri, tls, codec, sink, maxBackoff, MAX_MESSAGE_BYTES, SILENCE, HANDSHAKE);
+    }
+
+    /** As above, with the limits a test can make small: the largest message, the longest silence and handshake. */
+    RemoteStream(URI uri, SSLContext tls, MessageCodec codec, EnvelopeSink sink, Duration maxBackoff,
+                 int maxMessageBytes, Duration silence, Duration handshake) {
         String scheme = uri.getScheme() == null ? "" : uri.getScheme().toLowerCase(java.util.Locale.ROOT);
         if (!scheme.equals("ws") && !scheme.equals("wss")) {
             throw new IllegalArgumentException("not a WebSocket URL (ws://HOST:PORT/?token=… or wss://…): " + uri);
         }
-        this.uri = uri;
+        // ask for the channels of bytes too (GameController packets, malformed datagrams), which a
+        // Touchline server advertises only to viewers that ask: Foxglove has no schema for them
+        String u = uri.toString();
+        int hash = u.indexOf('#');
+        u = hash < 0 ? u : u.substring(0, hash);
+        this.uri = URI.create(u + (uri.getRawQuery() == null ? "?" : "&") + BYTES_QUERY);
         this.shownUrl = scheme + "://" + uri.getHost() + (uri.getPort() < 0 ? "" : ":" + uri.getPort()) + "/";
-        HttpClient.Builder b = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5));
-        if (tls != null) {
-            b.sslContext(tls);
-        }
-        this.http = b.build();
+        this.maxMessageBytes = maxMessageBytes;
+        this.silence = silence;
+        this.handshake = handshake;
+        this.tls = tls;
         this.codec = codec;
         this.sink = sink;
         this.maxBackoff = maxBackoff;
@@ -92,7 +113,8 @@ public final class RemoteStream implements AutoCloseable {
 
     public RemoteStatus status() {
         Session s = session;
-        return new RemoteStatus(state, shownUrl, detail, s == null ? 0 : s.channels.size(), received.get(), unusable.get());
+        return new RemoteStatus(state, shownUrl, detail, s == null ? 0 : s.channels.size(), received.get(), unusable.get(),
+                problem);
     }
 
     private void connect() {
@@ -101,7 +123,13 @@ public final class RemoteStream implements AutoCloseable {
         }
         state = RemoteStatus.State.CONNECTING;
         Session s = new Session();
-        http.newWebSocketBuilder().subprotocols(SUBPROTOCOL).connectTimeout(Duration.ofSeconds(5))
+        // a client per connection: the JDK's can break for good on a server that cuts a frame
+        // short (an InternalError on its own threads), and must not take the next attempts with it
+        HttpClient.Builder b = HttpClient.newBuilder().connectTimeout(handshake);
+        if (tls != null) {
+            b.sslContext(tls);
+        }
+        b.build().newWebSocketBuilder().subprotocols(SUBPROTOCOL).connectTimeout(handshake)
                 .buildAsync(uri, s).whenComplete((ws, failure) -> {
                     if (failure != null) {
                         s.lost(reason(failure));
@@ -117,6 +145,12 @@ public final class RemoteStream implements AutoCloseable {
         }
         if (c instanceof java.net.ConnectException) {
             return "nobody listening";
+        }
+        if (c instanceof java.net.http.HttpTimeoutException) {
+            return "no answer to the WebSocket handshake";
+        }
+        if (c instanceof InternalError || c instanceof java.io.EOFException) {
+            return "the connection broke off in the middle of a message";
         }
         if (c instanceof javax.net.ssl.SSLException) {
             return "TLS: " + c.getMessage();
@@ -139,6 +173,13 @@ public final class RemoteStream implements AutoCloseable {
         session = s;
         state = RemoteStatus.State.CONNECTED;
         detail = "";
+        s.watch();
+    }
+
+    /** Something from the server could not be used: counted, and the newest one said in the status. */
+    private void unusable(String what) {
+        unusable.incrementAndGet();
+        problem = what;
     }
 
     /** The server advertised its channels: it really serves us (one that only says "too many viewers" does not). */
@@ -160,10 +201,16 @@ public final class RemoteStream implements AutoCloseable {
     private final class Session implements WebSocket.Listener {
 
         final Map<Integer, RemoteChannel> channels = new ConcurrentHashMap<>();
+        /** Every id the server advertised on this connection: a message for another one is the server's fault. */
+        private final java.util.Set<Integer> advertised = ConcurrentHashMap.newKeySet();
         private final StringBuilder text = new StringBuilder();
         private final ByteArrayOutputStream binary = new ByteArrayOutputStream();
         private final AtomicBoolean ended = new AtomicBoolean();
         private volatile String lastStatus = "";
+        private volatile long heardNanos = System.nanoTime();
+        private boolean oversize; // the message being read is over the limit: its parts are skipped
+        private long oversizeBytes;
+        private volatile java.util.concurrent.ScheduledFuture<?> watchdog;
         private CompletableFuture<WebSocket> sending = CompletableFuture.completedFuture(null);
         WebSocket socket;
 
@@ -174,20 +221,63 @@ public final class RemoteStream implements AutoCloseable {
             ws.request(1);
         }
 
+        /** Checks now and then that the server still speaks; a silent one is dropped and called again. */
+        void watch() {
+            long every = Math.max(10, silence.toMillis() / 4);
+            try {
+                watchdog = reconnects.scheduleWithFixedDelay(() -> {
+                    if (System.nanoTime() - heardNanos > silence.toNanos()) {
+                        lost("the server sent nothing for " + silence.toMillis() / 1000.0 + " s");
+                    }
+                }, every, every, TimeUnit.MILLISECONDS);
+            } catch (java.util.concurrent.RejectedExecutionException closing) {
+                // closed meanwhile
+            }
+        }
+
+        /** Whether one more part of {@code n} bytes fits the message being read; once it does not, the rest is skipped. */
+        private boolean fits(int sofar, int n, boolean last) {
+            if (!oversize && (long) sofar + n > maxMessageBytes) {
+                oversize = true;
+                oversizeBytes = sofar;
+            }
+            if (oversize) {
+                oversizeBytes += n;
+                if (last) {
+                    unusable("a message of " + oversizeBytes + " bytes, over the limit of " + maxMessageBytes
+                            + ": dropped");
+                    oversize = false;
+                    text.setLength(0);
+                    binary.reset();
+                }
+                return false;
+            }
+            return true;
+        }
+
         @Override
         public CompletionStage<?> onText(WebSocket ws, CharSequence part, boolean last) {
-            text.append(part);
-            if (last) {
-                String op = text.toString();
-                text.setLength(0);
-                try {
-                    op(ws, new JSONObject(op));
-                } catch (JSONException e) {
-                    unusable.incrementAndGet();
+            heardNanos = System.nanoTime();
+            if (fits(text.length(), part.length(), last)) {
+                text.append(part);
+                if (last) {
+                    String op = text.toString();
+                    text.setLength(0);
+                    try {
+                        op(ws, new JSONObject(op));
+                    } catch (JSONException e) {
+                        unusable("a text message that is not a JSON object: " + clip(op));
+                    } catch (RuntimeException e) {
+                        unusable("a text message that could not be used (" + e + "): " + clip(op));
+                    }
                 }
             }
             ws.request(1);
             return null;
+        }
+
+        private static String clip(String s) {
+            return s.length() <= 80 ? s : s.substring(0, 80) + "…";
         }
 
         private void op(WebSocket ws, JSONObject o) {
@@ -195,10 +285,21 @@ public final class RemoteStream implements AutoCloseable {
                 case "advertise" -> {
                     welcomed();
                     JSONArray list = o.optJSONArray("channels");
+                    if (list == null) {
+                        unusable("an advertise without a list of channels");
+                        return;
+                    }
                     JSONArray subscribe = new JSONArray();
-                    for (int i = 0; list != null && i < list.length(); i++) {
+                    for (int i = 0; i < list.length(); i++) {
                         JSONObject c = list.optJSONObject(i);
-                        if (c == null || c.optJSONObject("metadata") == null) {
+                        if (c == null) {
+                            unusable("an advertised channel that is not a JSON object");
+                            continue;
+                        }
+                        if (c.has("id")) {
+                            advertised.add(c.optInt("id", -1));
+                        }
+                        if (c.optJSONObject("metadata") == null) {
                             continue; // a JSON state channel, or not a Touchline's
                         }
                         try {
@@ -207,7 +308,10 @@ public final class RemoteStream implements AutoCloseable {
                                 subscribe.put(new JSONObject().put("id", rc.id()).put("channelId", rc.id()));
                             }
                         } catch (IllegalArgumentException e) {
-                            unusable.incrementAndGet();
+                            if (!"no Touchline metadata".equals(e.getMessage())) {
+                                unusable("channel " + c.opt("id") + " (" + c.optString("topic", "no topic")
+                                        + "): " + e.getMessage());
+                            }
                         }
                     }
                     if (!subscribe.isEmpty()) {
@@ -224,6 +328,7 @@ public final class RemoteStream implements AutoCloseable {
                     lastStatus = o.optString("message", "");
                     detail = lastStatus;
                 }
+                case "" -> unusable("a JSON message without an op: " + clip(o.toString()));
                 default -> { } // serverInfo and ops of newer servers: nothing to do
             }
         }
@@ -235,30 +340,53 @@ public final class RemoteStream implements AutoCloseable {
 
         @Override
         public CompletionStage<?> onBinary(WebSocket ws, ByteBuffer part, boolean last) {
-            if (last && binary.size() == 0) {
-                data(part.order(ByteOrder.LITTLE_ENDIAN));
-            } else {
-                byte[] b = new byte[part.remaining()];
-                part.get(b);
-                binary.writeBytes(b);
-                if (last) {
-                    data(ByteBuffer.wrap(binary.toByteArray()).order(ByteOrder.LITTLE_ENDIAN));
-                    binary.reset();
+            heardNanos = System.nanoTime();
+            if (fits(binary.size(), part.remaining(), last)) {
+                if (last && binary.size() == 0) {
+                    data(part.order(ByteOrder.LITTLE_ENDIAN));
+                } else {
+                    byte[] b = new byte[part.remaining()];
+                    part.get(b);
+                    binary.writeBytes(b);
+                    if (last) {
+                        data(ByteBuffer.wrap(binary.toByteArray()).order(ByteOrder.LITTLE_ENDIAN));
+                        binary.reset();
+                    }
                 }
             }
             ws.request(1);
             return null;
         }
 
+        @Override
+        public CompletionStage<?> onPing(WebSocket ws, ByteBuffer message) {
+            heardNanos = System.nanoTime();
+            return WebSocket.Listener.super.onPing(ws, message);
+        }
+
         /** Message data (op 1: subscription, log time, payload); the server's time (op 2) is not needed. */
         private void data(ByteBuffer m) {
-            if (m.remaining() < 13 || m.get() != 0x01) {
+            int op = m.hasRemaining() ? m.get() & 0xFF : -1;
+            if (op == 0x02 && m.remaining() == 8) {
+                return; // the server's time
+            }
+            if (op != 0x01) {
+                unusable(op < 0 ? "an empty binary message" : "a binary message of op " + op + " and "
+                        + (m.remaining() + 1) + " bytes (not a message or the time)");
                 return;
             }
-            RemoteChannel c = channels.get(m.getInt());
+            if (m.remaining() < 12) {
+                unusable("a message data of " + (m.remaining() + 1) + " bytes, too short for its header");
+                return;
+            }
+            int id = m.getInt();
+            RemoteChannel c = channels.get(id);
             long timeNanos = m.getLong();
             if (c == null) {
-                return; // unsubscribed meanwhile
+                if (!advertised.contains(id)) {
+                    unusable("a message for channel " + Integer.toUnsignedString(id) + ", which was never advertised");
+                }
+                return; // unadvertised meanwhile
             }
             byte[] payload = new byte[m.remaining()];
             m.get(payload);
@@ -266,7 +394,7 @@ public final class RemoteStream implements AutoCloseable {
                 sink.accept(c.rebuild(payload, timeNanos));
                 received.incrementAndGet();
             } catch (IOException | RuntimeException e) {
-                unusable.incrementAndGet();
+                unusable("a message on " + c.topic() + " that could not be rebuilt: " + e.getMessage());
             }
         }
 
@@ -283,6 +411,9 @@ public final class RemoteStream implements AutoCloseable {
 
         void lost(String why) {
             if (ended.compareAndSet(false, true)) {
+                if (watchdog != null) {
+                    watchdog.cancel(false);
+                }
                 if (socket != null) {
                     socket.abort();
                 }

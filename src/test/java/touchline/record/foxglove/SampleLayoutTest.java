@@ -74,6 +74,57 @@ class SampleLayoutTest {
         assertTrue(panels.containsAll(Set.of("3D!field", "Plot!robots", "Image!regions", "RosOut!robot1")), panels.toString());
     }
 
+    /**
+     * The shape Lichtblick reads (checked against its sources, packages/suite-base: LayoutData,
+     * panels' config types; Lichtblick itself cannot run here): panel ids {@code Type!name} of
+     * its panel types, a Plot's required settings with values it knows, titles under its own
+     * key, image annotations as topic → settings, Log settings, and the layout's top-level keys.
+     */
+    @Test
+    void itHasTheShapeLichtblickReads() throws Exception {
+        JSONObject layout = new JSONObject(Files.readString(LAYOUT));
+        assertTrue(layout.keySet().containsAll(Set.of("configById", "globalVariables", "userNodes", "layout")),
+                layout.keySet().toString());
+        JSONObject configs = layout.getJSONObject("configById");
+        for (String id : configs.keySet()) {
+            String type = id.substring(0, id.indexOf('!'));
+            JSONObject c = configs.getJSONObject(id);
+            assertTrue(Set.of("3D", "Plot", "Image", "RosOut").contains(type), "a Lichtblick panel type: " + id);
+            assertTrue(!c.has("title"), id + ": Lichtblick takes a panel's title from lichtblickPanelTitle");
+            switch (type) {
+                case "Plot" -> {
+                    for (String key : List.of("paths", "showLegend", "legendDisplay", "showPlotValuesInLegend",
+                            "showXAxisLabels", "showYAxisLabels", "isSynced", "xAxisVal", "sidebarDimension")) {
+                        assertTrue(c.has(key), id + " has " + key);
+                    }
+                    assertTrue(Set.of("floating", "top", "left", "none").contains(c.getString("legendDisplay")), id);
+                    assertTrue(Set.of("timestamp", "index", "custom", "currentCustom").contains(c.getString("xAxisVal")), id);
+                    for (Object p : c.getJSONArray("paths")) {
+                        JSONObject path = (JSONObject) p;
+                        assertTrue(path.get("enabled") instanceof Boolean, id);
+                        assertTrue(Set.of("receiveTime", "headerStamp").contains(path.getString("timestampMethod")), id);
+                    }
+                }
+                case "Image", "3D" -> {
+                    JSONObject image = c.getJSONObject("imageMode");
+                    if (image.has("annotations")) {
+                        JSONObject annotations = image.getJSONObject("annotations");
+                        annotations.keySet().forEach(t -> assertTrue(
+                                annotations.getJSONObject(t).get("visible") instanceof Boolean, id + " " + t));
+                    }
+                    assertTrue(c.getJSONObject("topics") != null && c.getJSONObject("layers") != null, id);
+                }
+                case "RosOut" -> {
+                    assertTrue(c.get("searchTerms") instanceof JSONArray, id);
+                    // foxglove.Log levels: 1 DEBUG … 5 FATAL; the served debug text is INFO (2)
+                    assertTrue(c.getInt("minLogLevel") >= 1 && c.getInt("minLogLevel") <= 2, id);
+                    assertTrue(c.getString("topicToRender").matches("/robot/\\d+/log"), id);
+                }
+                default -> { }
+            }
+        }
+    }
+
     private static void arranged(Object node, Set<String> out) {
         if (node instanceof String id) {
             out.add(id);

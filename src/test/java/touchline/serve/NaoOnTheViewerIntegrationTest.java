@@ -1,0 +1,144 @@
+package touchline.serve;
+
+import com.google.protobuf.ByteString;
+import com.google.protobuf.DynamicMessage;
+import org.json.JSONObject;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.testing.Await;
+import touchline.testing.Requirement;
+import touchline.testing.RobotProcess;
+import touchline.transport.Channel;
+import touchline.transport.Envelope;
+import touchline.transport.Origin;
+import touchline.transport.UdpConfig;
+import touchline.transport.nao.CallOutcome;
+import touchline.transport.nao.CameraSettings;
+import touchline.transport.nao.NaoCameraStream;
+import touchline.transport.nao.NaoLink;
+import touchline.transport.nao.NaoLinkConfig;
+
+import java.net.URI;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * The NAO on the viewers: the simulated NAO ({@code touchline-nao-sim}) talks to a first
+ * Touchline through a real {@link NaoLink} and {@link NaoCameraStream} publishing into its
+ * Envelope stream; that console serves. A Foxglove client gets the camera's frames as
+ * {@code foxglove.CompressedImage} on {@code /nao/camera/image}, and a second Touchline
+ * viewing the first gets the NAO's calls, replies and frames as envelopes, with the bytes the
+ * first one saw.
+ */
+@Tag("integration")
+class NaoOnTheViewerIntegrationTest {
+
+    private static final Pattern CAMERA_PORT = Pattern.compile("camera listening on port (\\d+)");
+
+    /** The simulated NAO with a link and a camera stream publishing into {@code console}'s stream. */
+    private record Nao(RobotProcess sim, NaoLink link, NaoCameraStream camera, AutoCloseable watching)
+            implements AutoCloseable {
+        @Override
+        public void close() throws Exception {
+            watching.close();
+            camera.close();
+            link.close();
+            sim.close();
+        }
+    }
+
+    /** Everything NAO-specific of this test; the NAO helper's API may rename it, so it lives here only. */
+    private static Nao nao(Console console) throws Exception {
+        RobotProcess sim = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
+                "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
+        Await.until("the camera's port", 5000, () -> CAMERA_PORT.matcher(sim.stdout()).find());
+        Matcher m = CAMERA_PORT.matcher(sim.stdout());
+        assertTrue(m.find());
+        NaoLink link = new NaoLink("127.0.0.1", sim.port(), NaoLinkConfig.defaults(), console.bus());
+        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", Integer.parseInt(m.group(1)), console.bus());
+        camera.configure(new CameraSettings(1, 11, 30));
+        return new Nao(sim, link, camera, camera.subscribe());
+    }
+
+    private static Console viewer() throws InterruptedException {
+        return new Console(ConsoleConfig.defaults().withGameControllerPort(0)
+                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+    }
+
+    private static boolean naoFrame(Envelope e) {
+        return e.channel() == Channel.NAO_CAMERA && e.kind().equals("frame") && e.error() == null;
+    }
+
+    @Test
+    void theNaosCameraAndCallsReachFoxgloveAndAnotherTouchline() throws Exception {
+        Requirement.robotSide("touchline-nao-sim");
+        List<Envelope> here = new CopyOnWriteArrayList<>();
+        List<Envelope> there = new CopyOnWriteArrayList<>();
+        try (ServedField field = new ServedField();
+             AutoCloseable heard = field.console().bus().subscribe(here::add);
+             Console second = viewer();
+             AutoCloseable seen = second.bus().subscribe(there::add);
+             FoxgloveTestClient foxglove = new FoxgloveTestClient(field.server().port());
+             Nao nao = nao(field.console())) {
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("frames in the first console", 10_000, () -> here.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).count() >= 3);
+
+            JSONObject image = foxglove.awaitChannel("/nao/camera/image");
+            assertEquals("foxglove.CompressedImage", image.getString("schemaName"));
+            foxglove.subscribe(1, image.getInt("id"));
+            Await.until("a CompressedImage", 10_000, () -> !foxglove.dataOf(1).isEmpty());
+            DynamicMessage jpeg = FoxgloveTestClient.decode(image, foxglove.dataOf(1).get(0).payload());
+            assertEquals("jpeg", jpeg.getField(jpeg.getDescriptorForType().findFieldByName("format")));
+            ByteString data = (ByteString) jpeg.getField(jpeg.getDescriptorForType().findFieldByName("data"));
+            assertEquals(0xFF, data.byteAt(0) & 0xFF);
+            assertEquals(0xD8, data.byteAt(1) & 0xFF);
+            assertTrue(data.size() > 1000, "a whole frame: " + data.size() + " bytes");
+
+            Await.until("frames in the viewing console", 10_000,
+                    () -> there.stream().anyMatch(NaoOnTheViewerIntegrationTest::naoFrame));
+            Envelope remote = there.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).findFirst().orElseThrow();
+            assertEquals(Origin.REMOTE, remote.origin());
+            assertNotNull(remote.message(), "rebuilt with the advertised schema");
+            List<byte[]> framesHere = new ArrayList<>();
+            here.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).forEach(e -> framesHere.add(e.raw()));
+            assertTrue(framesHere.stream().anyMatch(b -> Arrays.equals(b, remote.raw())),
+                    "the viewer's frame is one the first console got, byte for byte");
+
+            Await.until("the NAO link online", 10_000,
+                    () -> nao.link().state() == touchline.transport.nao.ConnectionState.ONLINE);
+            CallOutcome volume = nao.link().call("ALTextToSpeech", "getVolume").get(20, TimeUnit.SECONDS);
+            assertInstanceOf(CallOutcome.Value.class, volume);
+            // a call's channels are made by its first envelopes, so the viewer subscribes only after
+            // them: call again until one call and its reply reach the viewing console
+            Await.until("a call and its reply in the viewing console", 10_000, () -> {
+                boolean arrived = there.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC
+                        && e.direction() == touchline.transport.Direction.OUT)
+                        && there.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC
+                        && e.direction() == touchline.transport.Direction.IN);
+                if (!arrived) {
+                    try {
+                        nao.link().call("ALTextToSpeech", "getVolume").get(20, TimeUnit.SECONDS);
+                    } catch (Exception e) {
+                        throw new AssertionError(e);
+                    }
+                }
+                return arrived;
+            });
+            Envelope reply = there.stream().filter(e -> e.channel() == Channel.NAO_RPC
+                    && e.direction() == touchline.transport.Direction.IN).findFirst().orElseThrow();
+            assertEquals(Origin.REMOTE, reply.origin());
+            assertTrue(here.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.kind().equals(reply.kind())
+                    && Arrays.equals(e.raw(), reply.raw())), "the same reply, byte for byte");
+            assertEquals(0, second.remote().orElseThrow().status().unusable(), second.remote().orElseThrow().status().problem());
+        }
+    }
+}
