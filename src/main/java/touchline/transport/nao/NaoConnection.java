@@ -124,9 +124,18 @@ final class NaoConnection {
      */
     boolean send(long id, byte[] payload) {
         byte[] idBytes = ByteBuffer.allocate(8).putLong(id).array();
-        return dealer.send(idBytes, ZMQ.SNDMORE | ZMQ.DONTWAIT)
-                && dealer.send(new byte[0], ZMQ.SNDMORE | ZMQ.DONTWAIT)
-                && dealer.send(payload, ZMQ.DONTWAIT);
+        try {
+            return dealer.send(idBytes, ZMQ.SNDMORE | ZMQ.DONTWAIT)
+                    && dealer.send(new byte[0], ZMQ.SNDMORE | ZMQ.DONTWAIT)
+                    && dealer.send(payload, ZMQ.DONTWAIT);
+        } catch (RuntimeException | AssertionError e) {
+            // A connection dropped between two frames of one message: JeroMQ's load balancer
+            // asserts (LB.sendpipe "!more", an AssertionError under -ea) and would otherwise
+            // send the next frame as the rest of this message. New sockets, nothing half-sent.
+            LOG.warn("NAO {}:{}: send failed mid-message ({}); reopening the connection", host, port, e.toString());
+            reopen();
+            return false;
+        }
     }
 
     /** The frames of the next reply, or null when none is waiting. */

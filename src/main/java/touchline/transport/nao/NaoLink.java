@@ -38,7 +38,8 @@ import java.util.function.Supplier;
  * callers use, and the link thread that drives its parts.
  *
  * <p>The parts, each readable alone: {@link NaoConnection} (the JeroMQ DEALER and its socket
- * monitor: heartbeats, CURVE), {@link PendingCalls} (the call table: request ids, attempt
+ * monitor: heartbeats, CURVE), {@link ConnectionWatch} (the connection state from the
+ * monitor's events and time), {@link PendingCalls} (the call table: request ids, attempt
  * deadlines, stray replies), {@link CallPacing} (per-method minimum intervals, coalescing to
  * the newest call). ZeroMQ sockets are not thread-safe, so the connection and all call state
  * are guarded by one lock, and a thread ({@code nao-link-HOST:PORT}) reads replies,
@@ -72,13 +73,6 @@ import java.util.function.Supplier;
 public final class NaoLink implements AutoCloseable {
 
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(NaoLink.class);
-    /**
-     * How long a CURVE connection must stay up after the greeting before a refused link counts
-     * as online again: a failed CURVE handshake ends within a round trip, well under this.
-     */
-    static final long CURVE_PROBATION_MS = 1000;
-    private static final String NO_CURVE_HANDSHAKE = "no CURVE handshake with the NAO: it has another key pair than "
-            + "our nao-server.public, or runs without keys (then connect with --insecure) — see docs/security.md";
 
     private final String host;
     private final int port;
@@ -89,13 +83,8 @@ public final class NaoLink implements AutoCloseable {
     private final MicrosClock clock;
     private final MixedValueCodec codec = new MixedValueCodec();
     private final NaoConnection connection;
-    private volatile String securityProblem = "";
-    // Link thread only: connections dropped right after the greeting without a reply, with CURVE on.
-    private int disconnectsBeforeHandshake;
-    private long handshakeAtNanos;
-    private boolean repliedSinceHandshake;
-    // Link thread only: when a REFUSED link that connected again counts as online (0: none).
-    private long probationUntilNanos;
+    // Written under lock, read anywhere.
+    private final ConnectionWatch watch;
     private final ConcurrentLinkedQueue<QueuedCall> submissions = new ConcurrentLinkedQueue<>();
     private final Pipe wakePipe;
     private final AtomicBoolean wakePending = new AtomicBoolean();
@@ -106,7 +95,6 @@ public final class NaoLink implements AutoCloseable {
     // timer wakes it.
     private volatile long linkWakeAtNanos;
     private final List<Consumer<ConnectionState>> stateListeners = new CopyOnWriteArrayList<>();
-    private volatile ConnectionState state = ConnectionState.CONNECTING;
     private volatile boolean running = true;
     private volatile SendGate gate = SendGate.open();
 
@@ -166,6 +154,7 @@ public final class NaoLink implements AutoCloseable {
         this.ownsEnvelopes = owns;
         this.clock = clock;
         this.connection = new NaoConnection(host, port, keys);
+        this.watch = new ConnectionWatch(keys != null, host + ":" + port);
         this.pacing = new CallPacing(config);
         try {
             wakePipe = Pipe.open();
@@ -202,11 +191,11 @@ public final class NaoLink implements AutoCloseable {
      * {@link ConnectionState#REFUSED}.
      */
     public String securityProblem() {
-        return securityProblem;
+        return watch.securityProblem();
     }
 
     public ConnectionState state() {
-        return state;
+        return watch.state();
     }
 
     /** Called on the link thread at each change; must not block. Close the handle to stop. */
@@ -445,7 +434,12 @@ public final class NaoLink implements AutoCloseable {
             } catch (IOException ignored) {
                 // closing our own selector at exit
             }
-            setState(ConnectionState.CLOSED, closedBecause);
+            lock.lock();
+            try {
+                apply(watch.closed(closedBecause));
+            } finally {
+                lock.unlock();
+            }
         }
     }
 
@@ -469,12 +463,13 @@ public final class NaoLink implements AutoCloseable {
         if (s.future().isDone()) {
             return;
         }
+        ConnectionState state = watch.state();
         if (state == ConnectionState.LOST || state == ConnectionState.CLOSED) {
             lose(s, "robot not connected");
             return;
         }
         if (state == ConnectionState.REFUSED) {
-            lose(s, securityProblem);
+            lose(s, watch.securityProblem());
             return;
         }
         if (pacing.holdIfEarly(s, System.nanoTime())) {
@@ -539,8 +534,7 @@ public final class NaoLink implements AutoCloseable {
             return;
         }
         replies.incrementAndGet();
-        repliedSinceHandshake = true;
-        disconnectsBeforeHandshake = 0;
+        watch.replied();
         p.call().end(outcomeOf(response));
     }
 
@@ -568,75 +562,35 @@ public final class NaoLink implements AutoCloseable {
     private void readMonitor() {
         NaoConnection.Event event;
         while ((event = connection.nextEvent()) != null) {
-            switch (event) {
-                case KEY_REFUSED -> refused("the NAO refused our key: give it console.public — see docs/security.md");
-                case NO_HANDSHAKE -> refused(connection.secure() ? NO_CURVE_HANDSHAKE
-                        : "no handshake with the NAO: it runs with CURVE keys; give this console its keys (--keys)"
-                          + " — see docs/security.md");
-                case GREETING -> {
-                    handshakeAtNanos = System.nanoTime();
-                    if (state == ConnectionState.REFUSED) {
-                        probationUntilNanos = handshakeAtNanos + TimeUnit.MILLISECONDS.toNanos(CURVE_PROBATION_MS);
-                    } else if (state != ConnectionState.ONLINE) {
-                        goOnline();
-                    }
-                }
-                case DISCONNECTED -> {
-                    probationUntilNanos = 0;
-                    if (state == ConnectionState.ONLINE) {
-                        // With CURVE, a connection dropped right after the greeting without any reply is a
-                        // failed CURVE handshake (a wrong server key: the robot side just closes).
-                        boolean curveFailed = connection.secure() && !repliedSinceHandshake
-                                && System.nanoTime() - handshakeAtNanos < TimeUnit.MILLISECONDS.toNanos(CURVE_PROBATION_MS)
-                                && ++disconnectsBeforeHandshake >= 2;
-                        goLost("disconnected (peer closed or heartbeat timed out)");
-                        if (curveFailed) {
-                            refused(NO_CURVE_HANDSHAKE);
-                        }
-                        return; // the monitor socket was replaced
-                    }
-                }
-                case OTHER -> { }
+            List<ConnectionWatch.Transition> changes = watch.onEvent(event, System.nanoTime());
+            apply(changes);
+            if (changes.stream().anyMatch(t -> t.to() == ConnectionState.LOST)) {
+                return; // the monitor socket was replaced
             }
         }
     }
 
-    private void goOnline() {
-        repliedSinceHandshake = false;
-        setState(ConnectionState.ONLINE, "handshake with " + host + ":" + port);
-        List<QueuedCall> waiting = new ArrayList<>(awaitingOnline);
-        awaitingOnline.clear();
-        for (QueuedCall s : waiting) {
-            send(s, 1);
+    /** Acts on state changes: announces each; online sends the waiting calls, lost and refused end every call. */
+    private void apply(List<ConnectionWatch.Transition> changes) {
+        for (ConnectionWatch.Transition t : changes) {
+            announce(t.to(), t.why());
+            switch (t.to()) {
+                case ONLINE -> {
+                    List<QueuedCall> waiting = new ArrayList<>(awaitingOnline);
+                    awaitingOnline.clear();
+                    for (QueuedCall s : waiting) {
+                        send(s, 1);
+                    }
+                }
+                case LOST -> {
+                    failAll(new CallOutcome.Lost(t.why()));
+                    // Close and reopen: whatever the old socket still held can never reach the robot.
+                    connection.reopen();
+                }
+                case REFUSED -> failAll(new CallOutcome.Lost(t.why()));
+                default -> { }
+            }
         }
-    }
-
-    /** A refused link whose new connection stayed up through its probation is online again. Link thread. */
-    private void endProbation(long now) {
-        if (state == ConnectionState.REFUSED && probationUntilNanos != 0 && now - probationUntilNanos >= 0) {
-            probationUntilNanos = 0;
-            disconnectsBeforeHandshake = 0;
-            securityProblem = "";
-            goOnline();
-        }
-    }
-
-    /** The CURVE handshake failed: calls fail at once with the reason until a handshake succeeds. Link thread. */
-    private void refused(String why) {
-        securityProblem = why;
-        if (state == ConnectionState.REFUSED) {
-            return;
-        }
-        setState(ConnectionState.REFUSED, why);
-        probationUntilNanos = 0;
-        failAll(new CallOutcome.Lost(why));
-    }
-
-    private void goLost(String why) {
-        setState(ConnectionState.LOST, why);
-        failAll(new CallOutcome.Lost(why));
-        // Close and reopen: whatever the old socket still held can never reach the robot.
-        connection.reopen();
     }
 
     private void failAll(CallOutcome.Lost outcome) {
@@ -654,10 +608,10 @@ public final class NaoLink implements AutoCloseable {
     }
 
     private void runTimers(long now) {
-        endProbation(now);
+        apply(watch.onTime(now));
         for (PendingCalls.Sent p : pending.expired(now)) {
             QueuedCall s = p.call();
-            if (s.idempotent() && p.attempt() <= config.retries() && state == ConnectionState.ONLINE) {
+            if (s.idempotent() && p.attempt() <= config.retries() && watch.state() == ConnectionState.ONLINE) {
                 retried.incrementAndGet();
                 send(s, p.attempt() + 1);
             } else {
@@ -672,6 +626,7 @@ public final class NaoLink implements AutoCloseable {
             }
         }
         for (QueuedCall s : pacing.due(now)) {
+            ConnectionState state = watch.state();
             if (state == ConnectionState.ONLINE) {
                 send(s, 1);
             } else if (state == ConnectionState.CONNECTING) {
@@ -682,11 +637,7 @@ public final class NaoLink implements AutoCloseable {
         }
     }
 
-    private void setState(ConnectionState next, String why) {
-        if (state == next) {
-            return;
-        }
-        state = next;
+    private void announce(ConnectionState next, String why) {
         String text = "nao " + host + ":" + port + " " + next.name().toLowerCase() + ": " + why;
         LOG.info(text);
         envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.LINK_EVENT, peer, Envelope.NO_ROBOT,
