@@ -59,6 +59,9 @@ final class CallPacing {
      * past its own timeout ends here as timed out instead.
      */
     List<QueuedCall> due(long now) {
+        if (waiting.isEmpty()) {
+            return List.of(); // asked on every pass of the link thread
+        }
         List<QueuedCall> ready = new ArrayList<>();
         for (Iterator<QueuedCall> it = waiting.values().iterator(); it.hasNext(); ) {
             QueuedCall c = it.next();

@@ -1,8 +1,6 @@
 package touchline.transport.nao;
 
-import com.google.protobuf.InvalidProtocolBufferException;
 import touchline.proto.Nao.HAWActorRPCRequest;
-import touchline.proto.Nao.HAWActorRPCResponse;
 import touchline.protocol.nao.MixedValueCodec;
 import touchline.protocol.nao.MixedValueException;
 import touchline.transport.Channel;
@@ -39,7 +37,8 @@ import java.util.function.Supplier;
  *
  * <p>The parts, each readable alone: {@link NaoConnection} (the JeroMQ DEALER and its socket
  * monitor: heartbeats, CURVE), {@link ConnectionWatch} (the connection state from the
- * monitor's events and time), {@link PendingCalls} (the call table: request ids, attempt
+ * monitor's events and time), {@link ReplyReader} (reply frames to request id and outcome),
+ * {@link PendingCalls} (the call table: request ids, attempt
  * deadlines, stray replies), {@link CallPacing} (per-method minimum intervals, coalescing to
  * the newest call). ZeroMQ sockets are not thread-safe, so the connection and all call state
  * are guarded by one lock, and a thread ({@code nao-link-HOST:PORT}) reads replies,
@@ -82,6 +81,7 @@ public final class NaoLink implements AutoCloseable {
     private final boolean ownsEnvelopes;
     private final MicrosClock clock;
     private final MixedValueCodec codec = new MixedValueCodec();
+    private final ReplyReader replies = new ReplyReader();
     private final NaoConnection connection;
     // Written under lock, read anywhere.
     private final ConnectionWatch watch;
@@ -99,8 +99,7 @@ public final class NaoLink implements AutoCloseable {
     private volatile SendGate gate = SendGate.open();
 
     private final AtomicLong sent = new AtomicLong();
-    private final AtomicLong replies = new AtomicLong();
-    private final AtomicLong malformedReplies = new AtomicLong();
+    private final AtomicLong answered = new AtomicLong();
     private final AtomicLong lostCalls = new AtomicLong();
     private final AtomicLong retried = new AtomicLong();
 
@@ -318,8 +317,8 @@ public final class NaoLink implements AutoCloseable {
 
     /** Counters since start, for the status bar and tests. */
     public LinkStats stats() {
-        return new LinkStats(sent.get(), replies.get(), pending.timeouts() + pacing.timeouts(), pending.strays(),
-                malformedReplies.get(), lostCalls.get(), retried.get());
+        return new LinkStats(sent.get(), answered.get(), pending.timeouts() + pacing.timeouts(), pending.strays(),
+                replies.malformed(), lostCalls.get(), retried.get());
     }
 
     /**
@@ -510,53 +509,27 @@ public final class NaoLink implements AutoCloseable {
 
     private void handleReply(List<byte[]> frames) {
         byte[] payload = frames.get(frames.size() - 1);
-        if (frames.size() != 3 || frames.get(0).length != 8 || frames.get(1).length != 0) {
-            malformed(payload, "expected [8-byte id][empty][reply], got " + frames.size() + " frames");
-            return;
-        }
-        long id = ByteBuffer.wrap(frames.get(0)).getLong();
-        HAWActorRPCResponse response;
-        try {
-            response = HAWActorRPCResponse.parseFrom(payload);
-        } catch (InvalidProtocolBufferException e) {
-            malformed(payload, "unreadable HAWActorRPCResponse: " + e.getMessage());
-            PendingCalls.Sent p = pending.unreadable(id);
+        ReplyReader.Read read = replies.read(frames);
+        if (read instanceof ReplyReader.Malformed m) {
+            envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
+                    "malformed", null, payload, m.why()));
+            PendingCalls.Sent p = m.id() < 0 ? null : pending.unreadable(m.id());
             if (p != null) {
-                p.call().end(new CallOutcome.Failed("unreadable reply: " + e.getMessage()));
+                p.call().end(new CallOutcome.Failed(m.callError()));
             }
             return;
         }
-        PendingCalls.Sent p = pending.answered(id);
+        ReplyReader.Reply reply = (ReplyReader.Reply) read;
+        PendingCalls.Sent p = pending.answered(reply.id());
         String kind = p == null ? "stray" : p.call().call().qualifiedName();
         envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
-                kind, response, payload, null));
+                kind, reply.response(), payload, null));
         if (p == null) {
             return;
         }
-        replies.incrementAndGet();
+        answered.incrementAndGet();
         watch.replied();
-        p.call().end(outcomeOf(response));
-    }
-
-    private CallOutcome outcomeOf(HAWActorRPCResponse response) {
-        if (response.hasError()) {
-            return new CallOutcome.Failed(response.getError());
-        }
-        if (!response.hasReturnval()) {
-            return new CallOutcome.Done();
-        }
-        try {
-            return new CallOutcome.Value(codec.decode(response.getReturnval()));
-        } catch (MixedValueException e) {
-            malformedReplies.incrementAndGet();
-            return new CallOutcome.Failed("unreadable return value: " + e.getMessage());
-        }
-    }
-
-    private void malformed(byte[] payload, String why) {
-        malformedReplies.incrementAndGet();
-        envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
-                "malformed", null, payload, why));
+        p.call().end(replies.outcomeOf(reply.response()));
     }
 
     private void readMonitor() {

@@ -53,11 +53,14 @@ final class PendingCalls {
 
     /** The requests whose attempt is over at {@code now}, taken off the table, oldest id first. */
     List<Sent> expired(long now) {
-        List<Sent> over = new ArrayList<>();
+        List<Sent> over = List.of(); // the link thread asks on every pass: no garbage while none expires
         for (Iterator<Sent> it = byId.values().iterator(); it.hasNext(); ) {
             Sent s = it.next();
             if (now - s.attemptDeadlineNanos() >= 0) {
                 it.remove();
+                if (over.isEmpty()) {
+                    over = new ArrayList<>();
+                }
                 over.add(s);
             }
         }
