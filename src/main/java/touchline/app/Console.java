@@ -89,6 +89,10 @@ public final class Console implements AutoCloseable {
     /** Why a console viewing another Touchline's stream sends nothing: every command path says this. */
     public static final String COMMANDS_OFF = "viewing a remote Touchline: commands are off";
     private volatile WantedOptionsFile wantedFile;
+    /** What the match-mode gate adds for debug requests, which are asked again after play; a NAO call is not. */
+    private static final String SENT_LATER = "; goes out when play stops";
+    private volatile SendGate gate = SendGate.open();
+    private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     public Console(ConsoleConfig config) {
         this(config, MicrosClock.system());
@@ -125,7 +129,7 @@ public final class Console implements AutoCloseable {
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
         bus.subscribe(new ReportedGameState(matchMode));
         setGate(() -> matchMode.hold("console request")
-                ? Optional.of("match mode, " + matchMode.play() + "; goes out when play stops") : Optional.empty());
+                ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);
@@ -320,8 +324,32 @@ public final class Console implements AutoCloseable {
         if (remote != null) {
             return; // viewing a remote Touchline: the gate stays shut
         }
+        this.gate = gate;
         udp.setGate(gate);
         reliable.setGate(gate);
+    }
+
+    /**
+     * Connects to a NAO ({@code rpcPort}, and its camera at {@code camPort} unless 0): every call
+     * and move of the session passes this console's gate (match mode, a remote view) and its
+     * traffic enters this console's stream. Several NAOs may be connected at once; closing a
+     * session disconnects it.
+     *
+     * @param keys CURVE client keys, or null: insecure
+     */
+    public NaoSession connectNao(String host, int rpcPort, int camPort, touchline.transport.nao.NaoClientKeys keys,
+                                 touchline.transport.nao.NaoLinkConfig naoConfig) {
+        // held NAO commands are dropped, never sent when play stops: say so instead of the debug requests' promise
+        SendGate naoGate = () -> gate.holdReason().map(r -> r.endsWith(SENT_LATER)
+                ? r.substring(0, r.length() - SENT_LATER.length()) + "; not sent" : r);
+        NaoSession session = new NaoSession(host, rpcPort, camPort, naoConfig, keys, live, naoGate, clock, naos::remove);
+        naos.add(session);
+        return session;
+    }
+
+    /** The NAOs connected through this console, oldest first. */
+    public List<NaoSession> naoSessions() {
+        return List.copyOf(naos);
     }
     public MessageKinds kinds() { return kinds; }
     public MessageCodec codec() { return codec; }
@@ -550,6 +578,9 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        for (NaoSession nao : naos) {
+            nao.close();
+        }
         if (remote != null) {
             remote.close();
         }

@@ -4,6 +4,10 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.app.NaoSession;
+import touchline.game.MatchMode;
 import touchline.protocol.nao.ParamSyntax;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
@@ -13,8 +17,8 @@ import touchline.security.KeyException;
 import touchline.transport.nao.NaoClientKeys;
 import touchline.transport.nao.NaoCall;
 import touchline.transport.nao.NaoCameraStream;
-import touchline.transport.nao.NaoLink;
 import touchline.transport.nao.NaoLinkConfig;
+import touchline.transport.UdpConfig;
 
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -25,11 +29,15 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 
 /**
- * {@code touchline nao ...}: drive a NAO (or the simulated one) from the command line over
- * the same {@link NaoLink} and {@link NaoCameraStream} the console uses. {@code call} invokes
- * any NAOqi method with typed parameters (see {@link ParamSyntax}), {@code methods} lists
- * what each module offers, {@code cam} saves one camera frame. Exit code 0 on success, 1
- * when the robot answered with an error or could not be reached, 2 on a usage error.
+ * {@code touchline nao ...}: drive a NAO (or the simulated one) from the command line through
+ * the application core, as the window does: {@code call} and {@code methods} start a
+ * {@link Console} that listens for the field's GameController and open a {@link NaoSession}
+ * on it, so during play every call is held back by match mode and nothing reaches the robot.
+ * {@code call} invokes any NAOqi method with typed parameters (see {@link ParamSyntax}),
+ * {@code methods} lists what each module offers, {@code cam} saves one camera frame (through
+ * the same {@link NaoCameraStream}; it sends the robot no command). Exit code 0 on success, 1
+ * when the robot answered with an error or could not be reached, 2 on a usage error, 3 when
+ * match mode held the call back.
  */
 @Command(name = "nao", mixinStandardHelpOptions = true,
         description = "Call NAOqi methods and fetch camera frames from a NAO (RPC port 5555, camera 5556), "
@@ -38,6 +46,7 @@ import java.util.concurrent.TimeUnit;
 public final class NaoCommand implements Runnable {
 
     static final int RPC_PORT = 5555;
+    static final int HELD_BACK = 3;
     static final int CAM_PORT = 5556;
     static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
             "ALBattery", "ALVideoDevice");
@@ -79,6 +88,36 @@ public final class NaoCommand implements Runnable {
         @Option(names = "--connect-timeout", defaultValue = "3000", description = "ms to wait for the robot (default ${DEFAULT-VALUE})")
         long connectTimeoutMs;
 
+        @Option(names = "--gc-port", defaultValue = "3838",
+                description = "where to hear the field's GameController: during play every call is held back "
+                        + "(match mode); 0: do not listen (default ${DEFAULT-VALUE})")
+        int gcPort;
+
+        @Option(names = "--gc-address", paramLabel = "HOST",
+                description = "believe game states only from this GameController (default: the first heard)")
+        String gcAddress;
+
+        @Option(names = "--listen", paramLabel = "MS", defaultValue = "" + MatchMode.LISTEN_FIRST_MS,
+                description = "how long to listen for a GameController before the first call (default ${DEFAULT-VALUE}; "
+                        + "longer on a lossy network)")
+        long listenMs;
+
+        private long consoleStartedNanos;
+
+        /** The application core the calls go through: it only listens (GameController port, no robot port). */
+        Console startConsole() throws InterruptedException {
+            ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(0))
+                    .withGameControllerPort(gcPort).withGcAddress(gcAddress);
+            consoleStartedNanos = System.nanoTime();
+            return new Console(config).start();
+        }
+
+        /** Prints the outcome; the exit code for it. */
+        int report(CallOutcome outcome) {
+            (outcome.ok() ? out() : err()).println(outcome.describe());
+            return outcome.ok() ? 0 : outcome instanceof CallOutcome.HeldBack ? HELD_BACK : 1;
+        }
+
         NaoLinkConfig loadConfig() {
             if (config == null) {
                 return NaoLinkConfig.defaults();
@@ -98,8 +137,11 @@ public final class NaoCommand implements Runnable {
             return spec.commandLine().getErr();
         }
 
-        /** Null (after printing why) when the keys are unusable or the robot did not come online in time. */
-        NaoLink connect(Target t) throws InterruptedException {
+        /**
+         * A session on {@code console}, online, once the console has listened for a GameController;
+         * null (after printing why) when the keys are unusable or the robot did not come online in time.
+         */
+        NaoSession connect(Console console, Target t) throws InterruptedException {
             NaoClientKeys keys;
             try {
                 keys = security.load();
@@ -107,7 +149,7 @@ public final class NaoCommand implements Runnable {
                 err().println(e.getMessage());
                 return null;
             }
-            NaoLink link = new NaoLink(t.host(), t.port(), loadConfig(), envelope -> { }, keys);
+            NaoSession link = console.connectNao(t.host(), t.port(), 0, keys, loadConfig());
             long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(connectTimeoutMs);
             while (link.state() != ConnectionState.ONLINE && link.state() != ConnectionState.REFUSED
                     && System.nanoTime() < end) {
@@ -125,6 +167,13 @@ public final class NaoCommand implements Runnable {
                           + "without --insecure the keys are used — see docs/security.md)" : ""));
                 link.close();
                 return null;
+            }
+            // A console that just opened the GameController port listens for one first (match mode):
+            // the call waits for that, or for play to be heard, instead of being held for it.
+            long listened = consoleStartedNanos + TimeUnit.MILLISECONDS.toNanos(gcPort <= 0 ? 0
+                    : Math.max(listenMs, MatchMode.LISTEN_FIRST_MS + 100));
+            while (!console.matchMode().playIsOn() && System.nanoTime() - listened < 0) {
+                Thread.sleep(10);
             }
             return link;
         }
@@ -155,14 +204,12 @@ public final class NaoCommand implements Runnable {
                 err().println(e.getMessage());
                 return 2;
             }
-            try (NaoLink link = connect(Target.parse(target, RPC_PORT))) {
+            try (Console console = startConsole(); NaoSession link = connect(console, Target.parse(target, RPC_PORT))) {
                 if (link == null) {
                     return 1;
                 }
                 long timeout = timeoutMs != null ? timeoutMs : link.config().timeoutMillis(call);
-                CallOutcome outcome = link.call(call, timeout).get();
-                (outcome.ok() ? out() : err()).println(outcome.describe());
-                return outcome.ok() ? 0 : 1;
+                return report(link.call(call, timeout).get());
             }
         }
     }
@@ -177,21 +224,23 @@ public final class NaoCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            try (NaoLink link = connect(Target.parse(target, RPC_PORT))) {
+            try (Console console = startConsole(); NaoSession link = connect(console, Target.parse(target, RPC_PORT))) {
                 if (link == null) {
                     return 1;
                 }
                 int failures = 0;
+                boolean held = false;
                 for (String module : modules.isEmpty() ? MODULES : modules) {
-                    CallOutcome outcome = link.call(module, "getMethodList").get();
+                    CallOutcome outcome = link.call(NaoCall.of(module, "getMethodList")).get();
                     if (outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
                         out().println(module + ": " + String.join(" ", names.stream().map(String::valueOf).toList()));
                     } else {
                         failures++;
+                        held |= outcome instanceof CallOutcome.HeldBack;
                         err().println(module + ": " + outcome.describe());
                     }
                 }
-                return failures == 0 ? 0 : 1;
+                return failures == 0 ? 0 : held ? HELD_BACK : 1;
             }
         }
     }

@@ -30,13 +30,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 @Tag("integration")
 class HslMatchModeIntegrationTest {
 
-    private static byte[] golden(String name) throws Exception {
+    static byte[] golden(String name) throws Exception {
         try (InputStream in = HslMatchModeIntegrationTest.class.getResourceAsStream("/golden/gamecontroller/hsl20/" + name)) {
             return in.readAllBytes();
         }
     }
 
-    private static int freeLoopbackPort() throws Exception {
+    static int freeLoopbackPort() throws Exception {
         try (DatagramSocket probe = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
             return probe.getLocalPort();
         }

@@ -1,16 +1,32 @@
 package touchline.cli;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
+import touchline.testing.RobotProcess;
+import touchline.transport.nao.CallOutcome;
+import touchline.transport.nao.ConnectionState;
 import touchline.transport.nao.FakeNaoCamera;
 import touchline.transport.nao.FakeNaoRobot;
+import touchline.transport.nao.NaoLink;
+import touchline.transport.nao.NaoLinkConfig;
 
+import java.io.InputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.util.List;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 class NaoCommandTest {
@@ -25,11 +41,17 @@ class NaoCommandTest {
         return cli.execute(args);
     }
 
-    /** The fakes are JeroMQ servers without CURVE: an old robot side. */
+    /**
+     * The fakes are JeroMQ servers without CURVE: an old robot side. Off the field: calls do not
+     * listen for a GameController (another test's on port 3838 would hold them back).
+     */
     private int runInsecure(String... args) {
-        String[] withFlag = java.util.Arrays.copyOf(args, args.length + 1);
-        withFlag[args.length] = "--insecure";
-        return run(withFlag);
+        java.util.List<String> withFlags = new java.util.ArrayList<>(java.util.List.of(args));
+        withFlags.add("--insecure");
+        if (!args[0].equals("cam")) {
+            withFlags.addAll(java.util.List.of("--gc-port", "0"));
+        }
+        return run(withFlags.toArray(String[]::new));
     }
 
     @Test
@@ -81,6 +103,59 @@ class NaoCommandTest {
             assertTrue(err.toString().contains("--insecure"), err.toString());
             assertEquals(1, run("cam", "127.0.0.1:1", "--save", keys.resolve("f.jpg").toString(), "--keys",
                     keys.toString()));
+        }
+    }
+
+    private static int freePort() throws Exception {
+        try (DatagramSocket probe = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+            return probe.getLocalPort();
+        }
+    }
+
+    /**
+     * On a field: while a GameController on loopback sends PLAYING (the official v20 datagram,
+     * every 100 ms) to the command's GameController port, the call is held back (exit code 3,
+     * the reason on stderr) and the {@code touchline-nao-sim} never runs it; with the
+     * GameController gone the same command goes through.
+     */
+    @Tag("integration")
+    @Test
+    void aCallDuringPlayIsHeldBackAndNeverReachesTheRobot() throws Exception {
+        touchline.testing.Requirement.robotSide("touchline-nao-sim");
+        byte[] playing;
+        try (InputStream in = getClass().getResourceAsStream("/golden/gamecontroller/hsl20/07-playing-after-delay.bin")) {
+            playing = in.readAllBytes();
+        }
+        int gcPort = freePort();
+        try (RobotProcess sim = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
+                "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
+             NaoLink check = new NaoLink("127.0.0.1", sim.port(), NaoLinkConfig.defaults(), e -> { })) {
+            String target = "127.0.0.1:" + sim.port();
+            ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
+            try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+                gameController.scheduleAtFixedRate(() -> {
+                    try {
+                        gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
+                    } catch (java.io.IOException e) {
+                        throw new java.io.UncheckedIOException(e);
+                    }
+                }, 0, 100, TimeUnit.MILLISECONDS);
+                assertEquals(NaoCommand.HELD_BACK, run("call", target, "ALMemory.insertData", "Touchline/cli", "7",
+                        "--insecure", "--gc-port", Integer.toString(gcPort), "--listen", "10000"), "out: " + out + " err: " + err);
+                assertTrue(err.toString().contains("held back: match mode, game is PLAYING"), err.toString());
+            } finally {
+                gameController.shutdownNow();
+            }
+            touchline.testing.Await.until("a checking link online", 10_000, () -> check.state() == ConnectionState.ONLINE);
+            assertInstanceOf(CallOutcome.Failed.class, check.call("ALMemory", "getData", "Touchline/cli").get(30, TimeUnit.SECONDS),
+                    "the held call never ran on the robot");
+
+            // the GameController is gone: a console starting now hears no play
+            assertEquals(0, run("call", target, "ALMemory.insertData", "Touchline/cli", "7", "--insecure",
+                    "--gc-port", Integer.toString(gcPort)), err.toString());
+            CallOutcome stored = check.call("ALMemory", "getData", "Touchline/cli").get(30, TimeUnit.SECONDS);
+            assertTrue(stored.ok(), stored.describe());
+            assertEquals("7", stored.describe(), "the call ran once play was over");
         }
     }
 }

@@ -33,6 +33,9 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class NaoCameraStream implements AutoCloseable {
 
     public static final int REPLY_TIMEOUT_MS = 1000;
+    /** How long a stream whose camera link broke waits before it starts again. */
+    static final int RESTART_BACKOFF_MS = 500;
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(NaoCameraStream.class);
     private static final int WINDOW = 30;
 
     private final NaoClientKeys keys;
@@ -85,6 +88,11 @@ public final class NaoCameraStream implements AutoCloseable {
         this.ownsEnvelopes = owns;
         thread = new Thread(this::run, "nao-camera-" + host + ":" + port);
         thread.setDaemon(true);
+        // The last word on what run() cannot go on from (out of memory): said, not only printed.
+        thread.setUncaughtExceptionHandler((t, e) -> {
+            fail("camera thread stopped: " + e);
+            LOG.error("camera stream {}:{} stopped", host, port, e);
+        });
         thread.start();
     }
 
@@ -187,68 +195,91 @@ public final class NaoCameraStream implements AutoCloseable {
 
     // ---------------------------------------------------------------- camera thread
 
+    /**
+     * Fetches until closed. Whatever breaks the fetching (JeroMQ throws, or under {@code -ea}
+     * fails one of its own assertions) is said in {@link #lastError()} and the stream starts
+     * again on a fresh context after a back-off: the thread never ends before {@link #close()},
+     * and never silently.
+     */
     private void run() {
-        try (ZContext zmq = new ZContext(1)) {
-            ZMQ.Socket socket = open(zmq);
-            CameraSettings configured = null;
-            long nextFetch = System.nanoTime();
-            while (running) {
-                CameraSettings want;
-                synchronized (lock) {
-                    while (running && subscribers == 0) {
-                        lock.wait();
-                    }
-                    want = requested;
-                    long now = System.nanoTime();
-                    if (now < nextFetch) {
-                        TimeUnit.NANOSECONDS.timedWait(lock, nextFetch - now);
-                        continue;
-                    }
-                }
-                if (!running) {
-                    break;
-                }
-                boolean replied;
-                if (!want.equals(configured)) {
-                    Reply r = exchange(socket, CamRequest.newBuilder().setResolution(want.resolution())
-                            .setColorSpace(want.colorSpace()).setFps(want.fps()).build());
-                    replied = r != null;
-                    if (r != null && r.response != null && !r.response.hasError()) {
-                        configured = want;
-                        nextFetch = System.nanoTime();
-                    } else {
-                        nextFetch = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(500); // back off
-                    }
-                } else {
-                    long period = TimeUnit.SECONDS.toNanos(1) / want.fps();
-                    // Keep the average rate: a slightly late fetch is made up by the next slot;
-                    // only when more than a whole period behind do we restart the schedule.
-                    nextFetch += period;
-                    long now = System.nanoTime();
-                    if (now - nextFetch > period) {
-                        nextFetch = now;
-                    }
-                    Reply r = exchange(socket, null);
-                    replied = r != null;
-                    if (r != null && r.response != null) {
-                        if (r.response.hasImageData() && !r.response.hasError()) {
-                            frame(r, want);
-                        } else {
-                            configured = null; // e.g. a restarted server that was never configured
+        while (running) {
+            try (ZContext zmq = new ZContext(1)) {
+                fetch(zmq);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            } catch (RuntimeException | AssertionError | LinkageError e) {
+                fail("camera link failed (" + e + "); starting again");
+                LOG.warn("camera stream {}:{} failed; starting again", host, port, e);
+                try {
+                    synchronized (lock) {
+                        if (running) {
+                            lock.wait(RESTART_BACKOFF_MS); // close() wakes it at once
                         }
                     }
-                }
-                if (!replied) {
-                    zmq.destroySocket(socket);
-                    socket = open(zmq);
-                    configured = null;
+                } catch (InterruptedException interrupted) {
+                    Thread.currentThread().interrupt();
+                    return;
                 }
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (RuntimeException e) {
-            lastError = "camera thread stopped: " + e;
-            org.slf4j.LoggerFactory.getLogger(NaoCameraStream.class).error("camera stream failed", e);
+        }
+    }
+
+    private void fetch(ZContext zmq) throws InterruptedException {
+        ZMQ.Socket socket = open(zmq);
+        CameraSettings configured = null;
+        long nextFetch = System.nanoTime();
+        while (running) {
+            CameraSettings want;
+            synchronized (lock) {
+                while (running && subscribers == 0) {
+                    lock.wait();
+                }
+                want = requested;
+                long now = System.nanoTime();
+                if (now < nextFetch) {
+                    TimeUnit.NANOSECONDS.timedWait(lock, nextFetch - now);
+                    continue;
+                }
+            }
+            if (!running) {
+                break;
+            }
+            boolean replied;
+            if (!want.equals(configured)) {
+                Reply r = exchange(socket, CamRequest.newBuilder().setResolution(want.resolution())
+                        .setColorSpace(want.colorSpace()).setFps(want.fps()).build());
+                replied = r != null;
+                if (r != null && r.response != null && !r.response.hasError()) {
+                    configured = want;
+                    nextFetch = System.nanoTime();
+                } else {
+                    nextFetch = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(500); // back off
+                }
+            } else {
+                long period = TimeUnit.SECONDS.toNanos(1) / want.fps();
+                // Keep the average rate: a slightly late fetch is made up by the next slot;
+                // only when more than a whole period behind do we restart the schedule.
+                nextFetch += period;
+                long now = System.nanoTime();
+                if (now - nextFetch > period) {
+                    nextFetch = now;
+                }
+                Reply r = exchange(socket, null);
+                replied = r != null;
+                if (r != null && r.response != null) {
+                    if (r.response.hasImageData() && !r.response.hasError()) {
+                        frame(r, want);
+                    } else {
+                        configured = null; // e.g. a restarted server that was never configured
+                    }
+                }
+            }
+            if (!replied) {
+                zmq.destroySocket(socket);
+                socket = open(zmq);
+                configured = null;
+            }
         }
     }
 

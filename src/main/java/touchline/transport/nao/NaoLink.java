@@ -1,16 +1,13 @@
 package touchline.transport.nao;
 
-import com.google.protobuf.InvalidProtocolBufferException;
-import org.zeromq.SocketType;
-import org.zeromq.ZContext;
-import org.zeromq.ZMQ;
 import touchline.proto.Nao.HAWActorRPCRequest;
-import touchline.proto.Nao.HAWActorRPCResponse;
 import touchline.protocol.nao.MixedValueCodec;
 import touchline.protocol.nao.MixedValueException;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.transport.MicrosClock;
+import touchline.transport.SendGate;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
@@ -20,10 +17,9 @@ import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
-import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -36,10 +32,16 @@ import java.util.function.Consumer;
 import java.util.function.Supplier;
 
 /**
- * The console's RPC link to one NAO's {@code HAWActorRPC} module over ZeroMQ.
+ * The console's RPC link to one NAO's {@code HAWActorRPC} module over ZeroMQ: the facade
+ * callers use, and the link thread that drives its parts.
  *
- * <p>One JeroMQ DEALER. ZeroMQ sockets are not thread-safe, so the socket and all call
- * state are guarded by one lock, and a thread ({@code nao-link-HOST:PORT}) reads replies,
+ * <p>The parts, each readable alone: {@link NaoConnection} (the JeroMQ DEALER and its socket
+ * monitor: heartbeats, CURVE), {@link ConnectionWatch} (the connection state from the
+ * monitor's events and time), {@link ReplyReader} (reply frames to request id and outcome),
+ * {@link PendingCalls} (the call table: request ids, attempt
+ * deadlines, stray replies), {@link CallPacing} (per-method minimum intervals, coalescing to
+ * the newest call). ZeroMQ sockets are not thread-safe, so the connection and all call state
+ * are guarded by one lock, and a thread ({@code nao-link-HOST:PORT}) reads replies,
  * connection events and timers. It waits for them without the lock, in a selector on the
  * sockets' signalling file descriptors (ZeroMQ's ZMQ_FD contract), so a caller that finds
  * the lock free sends its request itself, at once, instead of queueing it and waking the
@@ -50,24 +52,19 @@ import java.util.function.Supplier;
  * replies, which the robot's load-balancing broker returns out of order, are matched by id;
  * a reply whose id is no longer pending (it timed out) is counted and dropped.
  *
- * <p>Liveness: {@code setImmediate(false)} (in JeroMQ this is libzmq's ZMQ_IMMEDIATE=1:
- * queue only on completed connections, so nothing waits in a pipe for a dead robot), ZMTP
- * heartbeats (500 ms interval, 1500 ms timeout) and a socket monitor. The ZMTP handshake,
- * not the TCP connect, makes the state {@link ConnectionState#ONLINE}; a disconnect or
- * heartbeat timeout makes it {@link ConnectionState#LOST}: every pending, waiting or
- * rate-limited call then ends as {@link CallOutcome.Lost} and the socket is closed and
- * reopened, so nothing queued can run when the robot comes back. While LOST new calls fail
- * at once; while first CONNECTING they wait for ONLINE within their timeout. Every request
- * also carries {@code deadlineMillis} (now + timeout) so the robot drops it when late.
+ * <p>Liveness: the ZMTP handshake, not the TCP connect, makes the state
+ * {@link ConnectionState#ONLINE}; a disconnect or heartbeat timeout makes it
+ * {@link ConnectionState#LOST}: every pending, waiting or paced call then ends as
+ * {@link CallOutcome.Lost} and the connection is reopened, so nothing queued can run when the
+ * robot comes back. While LOST new calls fail at once; while first CONNECTING they wait for
+ * ONLINE within their timeout. Every request also carries {@code deadlineMillis} (now +
+ * timeout) so the robot drops it when late.
  *
  * <p>Rules from {@link NaoLinkConfig}: per-method timeouts; retries (a resend under a new id)
- * only for idempotent methods; per-method minimum intervals, enforced by coalescing: a call
- * inside the interval waits for its end, and a newer call of the same method replaces it
- * (the older ends as {@link CallOutcome.Superseded}). Coalescing rather than rejecting keeps
- * the robot's last target the user's last input: a "stop walking" right after a "walk" must
- * not be dropped. A send gate ({@link #setSendGate}, match mode) holds back every call, reads
- * included ("during play only the GameController talks to the robots"), with
- * {@link CallOutcome.HeldBack}; nothing held back is queued for later.
+ * only for idempotent methods; per-method minimum intervals ({@link CallPacing}). A send gate
+ * ({@link #setSendGate}, match mode) holds back every call, reads included ("during play only
+ * the GameController talks to the robots"), with {@link CallOutcome.HeldBack}; nothing held
+ * back is queued for later.
  *
  * <p>Each request (OUT), reply (IN) and connection event ({@link Channel#LINK_EVENT}) is
  * published through a {@link NaoEnvelopeChannel} into the Envelope stream.
@@ -75,11 +72,6 @@ import java.util.function.Supplier;
 public final class NaoLink implements AutoCloseable {
 
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(NaoLink.class);
-    private static final AtomicLong MONITOR_IDS = new AtomicLong();
-    static final int HEARTBEAT_IVL_MS = 500;
-    static final int HEARTBEAT_TIMEOUT_MS = 1500;
-    static final int HEARTBEAT_TTL_MS = 3000;
-    static final int HANDSHAKE_IVL_MS = 2000;
 
     private final String host;
     private final int port;
@@ -87,56 +79,42 @@ public final class NaoLink implements AutoCloseable {
     private final NaoLinkConfig config;
     private final NaoEnvelopeChannel envelopes;
     private final boolean ownsEnvelopes;
+    private final MicrosClock clock;
     private final MixedValueCodec codec = new MixedValueCodec();
-    private final ZContext zmq = new ZContext(1);
-    private final NaoClientKeys keys;
-    private volatile String securityProblem = "";
-    // Link thread only: connections dropped right after the greeting without a reply, with CURVE on.
-    private int disconnectsBeforeHandshake;
-    private long handshakeAtNanos;
-    private boolean repliedSinceHandshake;
-    // Link thread only: when a REFUSED link that connected again counts as online (0: none).
-    private long probationUntilNanos;
-    private final ConcurrentLinkedQueue<Submission> submissions = new ConcurrentLinkedQueue<>();
+    private final ReplyReader replies = new ReplyReader();
+    private final NaoConnection connection;
+    // Written under lock, read anywhere.
+    private final ConnectionWatch watch;
+    private final ConcurrentLinkedQueue<QueuedCall> submissions = new ConcurrentLinkedQueue<>();
     private final Pipe wakePipe;
     private final AtomicBoolean wakePending = new AtomicBoolean();
     private final Thread thread;
-    // Guards the sockets and every field marked "under lock" below.
+    // Guards the connection and every field marked "under lock" below.
     private final ReentrantLock lock = new ReentrantLock();
     // When the link thread will wake next (System.nanoTime); a caller that adds an earlier
     // timer wakes it.
     private volatile long linkWakeAtNanos;
     private final List<Consumer<ConnectionState>> stateListeners = new CopyOnWriteArrayList<>();
-    private volatile ConnectionState state = ConnectionState.CONNECTING;
     private volatile boolean running = true;
-    private volatile BooleanSupplier mayCommand = () -> true;
-    private volatile Supplier<String> gateReason = () -> "";
+    private volatile SendGate gate = SendGate.open();
 
     private final AtomicLong sent = new AtomicLong();
-    private final AtomicLong replies = new AtomicLong();
-    private final AtomicLong timeouts = new AtomicLong();
-    private final AtomicLong strayReplies = new AtomicLong();
-    private final AtomicLong malformedReplies = new AtomicLong();
+    private final AtomicLong answered = new AtomicLong();
     private final AtomicLong lostCalls = new AtomicLong();
     private final AtomicLong retried = new AtomicLong();
 
     // Under lock.
-    private ZMQ.Socket dealer;
-    private ZMQ.Socket monitor;
-    private boolean socketsReplaced;
+    private final PendingCalls pending = new PendingCalls();
+    private final CallPacing pacing;
+    private final List<QueuedCall> awaitingOnline = new ArrayList<>();
     // Link thread only.
     private Selector selector;
-    private SelectionKey dealerKey;
-    private SelectionKey monitorKey;
-    private long nextRequestId = 1;
-    private final Map<Long, Pending> pending = new HashMap<>();
-    private final List<Submission> awaitingOnline = new ArrayList<>();
-    private final Map<String, Submission> coalesced = new HashMap<>();
-    private final Map<String, Long> lastSentNanos = new HashMap<>();
+    private volatile String closedBecause = "link closed";
+    private final AtomicBoolean closing = new AtomicBoolean();
 
     /** Connects to {@code host:port}, insecure, and publishes into its own pipeline ending in {@code sink}. */
     public NaoLink(String host, int port, NaoLinkConfig config, touchline.transport.EnvelopeSink sink) {
-        this(host, port, config, new NaoEnvelopeChannel(sink), true, null);
+        this(host, port, config, new NaoEnvelopeChannel(sink), true, null, NaoEnvelopeChannel::nowMicros);
     }
 
     /**
@@ -146,28 +124,37 @@ public final class NaoLink implements AutoCloseable {
      */
     public NaoLink(String host, int port, NaoLinkConfig config, touchline.transport.EnvelopeSink sink,
                    NaoClientKeys keys) {
-        this(host, port, config, new NaoEnvelopeChannel(sink), true, keys);
+        this(host, port, config, new NaoEnvelopeChannel(sink), true, keys, NaoEnvelopeChannel::nowMicros);
     }
 
     /** Connects to {@code host:port}, insecure, and publishes into a shared pipeline (e.g. with the camera stream). */
     public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes) {
-        this(host, port, config, envelopes, false, null);
+        this(host, port, config, envelopes, false, null, NaoEnvelopeChannel::nowMicros);
     }
 
     /** As above with CURVE client keys, or null for insecure. */
     public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, NaoClientKeys keys) {
-        this(host, port, config, envelopes, false, keys);
+        this(host, port, config, envelopes, false, keys, NaoEnvelopeChannel::nowMicros);
+    }
+
+    /** As above, time-stamping envelopes with {@code clock} (the console's). */
+    public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, NaoClientKeys keys,
+                   MicrosClock clock) {
+        this(host, port, config, envelopes, false, keys, clock);
     }
 
     private NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, boolean owns,
-                    NaoClientKeys keys) {
-        this.keys = keys;
+                    NaoClientKeys keys, MicrosClock clock) {
         this.host = host;
         this.port = port;
         this.peer = InetSocketAddress.createUnresolved(host, port);
         this.config = config;
         this.envelopes = envelopes;
         this.ownsEnvelopes = owns;
+        this.clock = clock;
+        this.connection = new NaoConnection(host, port, keys);
+        this.watch = new ConnectionWatch(keys != null, host + ":" + port);
+        this.pacing = new CallPacing(config);
         try {
             wakePipe = Pipe.open();
             wakePipe.source().configureBlocking(false);
@@ -194,7 +181,7 @@ public final class NaoLink implements AutoCloseable {
 
     /** Whether the link uses CURVE (encrypted, our key checked by the robot side). */
     public boolean secure() {
-        return keys != null;
+        return connection.secure();
     }
 
     /**
@@ -203,11 +190,11 @@ public final class NaoLink implements AutoCloseable {
      * {@link ConnectionState#REFUSED}.
      */
     public String securityProblem() {
-        return securityProblem;
+        return watch.securityProblem();
     }
 
     public ConnectionState state() {
-        return state;
+        return watch.state();
     }
 
     /** Called on the link thread at each change; must not block. Close the handle to stop. */
@@ -222,8 +209,15 @@ public final class NaoLink implements AutoCloseable {
      * caller's thread when the call is made.
      */
     public void setSendGate(BooleanSupplier mayRobotBeCommanded, Supplier<String> reason) {
-        this.mayCommand = mayRobotBeCommanded;
-        this.gateReason = reason;
+        setSendGate(() -> mayRobotBeCommanded.getAsBoolean() ? Optional.empty() : Optional.of(reason.get()));
+    }
+
+    /**
+     * As above with the console's gate: asked once per call (asking may count the call as held
+     * back), a reason means {@link CallOutcome.HeldBack} with that reason.
+     */
+    public void setSendGate(SendGate gate) {
+        this.gate = gate;
     }
 
     /**
@@ -243,13 +237,13 @@ public final class NaoLink implements AutoCloseable {
     public CompletableFuture<CallOutcome> call(NaoCall call, long timeoutMillis) {
         long now = System.nanoTime();
         CompletableFuture<CallOutcome> future = new CompletableFuture<>();
-        boolean idempotent = config.isIdempotent(call);
         if (!running) {
-            future.complete(new CallOutcome.Lost("link closed"));
+            future.complete(new CallOutcome.Lost(closedBecause));
             return future;
         }
-        if (!mayCommand.getAsBoolean()) {
-            future.complete(new CallOutcome.HeldBack(gateReason.get()));
+        Optional<String> held = gate.holdReason();
+        if (held.isPresent()) {
+            future.complete(new CallOutcome.HeldBack(held.get()));
             return future;
         }
         HAWActorRPCRequest.Builder request;
@@ -260,7 +254,7 @@ public final class NaoLink implements AutoCloseable {
             future.complete(new CallOutcome.Failed("cannot send parameters: " + e.getMessage()));
             return future;
         }
-        submit(new Submission(call, request, timeoutMillis, idempotent, future, now));
+        submit(new QueuedCall(call, request, timeoutMillis, config.isIdempotent(call), future, now));
         return future;
     }
 
@@ -269,23 +263,21 @@ public final class NaoLink implements AutoCloseable {
      * thread. Not on a thread already inside the link (a callback of a completed call): the
      * link's loops would be re-entered.
      */
-    private void submit(Submission s) {
+    private void submit(QueuedCall s) {
         if (!lock.isHeldByCurrentThread() && lock.tryLock()) {
             try {
-                if (dealer != null) {
+                if (connection.isOpen()) {
                     drainSubmissions(); // calls queued before this one go first
                     dispatch(s);
-                    // ZMQ_FD contract: the send may have consumed the mailbox signal of a reply
-                    // that arrived meanwhile, and then the link thread's selector would not
-                    // wake for it; a timer earlier than the thread's next wake needs it too.
-                    if ((dealer.getEvents() & ZMQ.Poller.POLLIN) != 0
-                            || nextWakeNanos(System.nanoTime()) - linkWakeAtNanos < 0) {
+                    // A reply that arrived meanwhile (its signal consumed by the send), or a
+                    // timer earlier than the thread's next wake, needs the link thread.
+                    if (connection.replyWaiting() || nextWakeNanos(System.nanoTime()) - linkWakeAtNanos < 0) {
                         wake();
                     }
                     return;
                 }
                 if (!running) {
-                    s.future.complete(new CallOutcome.Lost("link closed"));
+                    s.end(new CallOutcome.Lost(closedBecause));
                     return;
                 }
             } finally {
@@ -325,8 +317,8 @@ public final class NaoLink implements AutoCloseable {
 
     /** Counters since start, for the status bar and tests. */
     public LinkStats stats() {
-        return new LinkStats(sent.get(), replies.get(), timeouts.get(), strayReplies.get(),
-                malformedReplies.get(), lostCalls.get(), retried.get());
+        return new LinkStats(sent.get(), answered.get(), pending.timeouts() + pacing.timeouts(), pending.strays(),
+                replies.malformed(), lostCalls.get(), retried.get());
     }
 
     /**
@@ -339,7 +331,7 @@ public final class NaoLink implements AutoCloseable {
 
     @Override
     public void close() {
-        if (!running) {
+        if (!closing.compareAndSet(false, true)) {
             return;
         }
         running = false;
@@ -374,25 +366,6 @@ public final class NaoLink implements AutoCloseable {
 
     // ---------------------------------------------------------------- link thread
 
-    private record Submission(NaoCall call, HAWActorRPCRequest.Builder request, long timeoutMillis,
-                              boolean idempotent, CompletableFuture<CallOutcome> future, long submittedNanos) {
-        long deadlineNanos() {
-            return submittedNanos + TimeUnit.MILLISECONDS.toNanos(timeoutMillis);
-        }
-    }
-
-    private static final class Pending {
-        final Submission submission;
-        final long attemptDeadlineNanos;
-        final int attempt;
-
-        Pending(Submission submission, long attemptDeadlineNanos, int attempt) {
-            this.submission = submission;
-            this.attemptDeadlineNanos = attemptDeadlineNanos;
-            this.attempt = attempt;
-        }
-    }
-
     private void run() {
         try {
             selector = Selector.open();
@@ -400,7 +373,7 @@ public final class NaoLink implements AutoCloseable {
             ByteBuffer drain = ByteBuffer.allocate(64);
             lock.lock();
             try {
-                openSocket();
+                connection.open();
             } finally {
                 lock.unlock();
             }
@@ -415,9 +388,7 @@ public final class NaoLink implements AutoCloseable {
                     drainSubmissions();
                     long now = System.nanoTime();
                     runTimers(now);
-                    if (socketsReplaced) {
-                        registerSockets();
-                    }
+                    connection.registerIfReplaced(selector);
                     long next = nextWakeNanos(now);
                     linkWakeAtNanos = next;
                     timeoutMillis = Math.max(0, TimeUnit.NANOSECONDS.toMillis(next - now + 999_999));
@@ -438,21 +409,23 @@ public final class NaoLink implements AutoCloseable {
                     drain.clear();
                 }
             }
-        } catch (RuntimeException | IOException e) {
+        } catch (RuntimeException | IOException | AssertionError | LinkageError e) {
+            // An Error too (JeroMQ's asserts under -ea): the link must end saying why, never die silently.
             LOG.error("NAO link thread for {}:{} failed", host, port, e);
+            closedBecause = "link thread failed: " + e;
         } finally {
+            running = false;
             lock.lock();
             try {
-                failAll(new CallOutcome.Lost("link closed"));
-                Submission s;
+                failAll(new CallOutcome.Lost(closedBecause));
+                QueuedCall s;
                 while ((s = submissions.poll()) != null) {
-                    s.future.complete(new CallOutcome.Lost("link closed"));
+                    s.end(new CallOutcome.Lost(closedBecause));
                 }
-                closeSocket();
+                connection.shutdown();
             } finally {
                 lock.unlock();
             }
-            zmq.close();
             try {
                 if (selector != null) {
                     selector.close();
@@ -460,112 +433,46 @@ public final class NaoLink implements AutoCloseable {
             } catch (IOException ignored) {
                 // closing our own selector at exit
             }
-            setState(ConnectionState.CLOSED, "link closed");
+            lock.lock();
+            try {
+                apply(watch.closed(closedBecause));
+            } finally {
+                lock.unlock();
+            }
         }
     }
 
     private void drainSubmissions() {
-        Submission s;
+        QueuedCall s;
         while ((s = submissions.poll()) != null) {
             dispatch(s);
         }
     }
 
-    /** (Re)registers the sockets' signalling descriptors after they were opened. Link thread, under lock. */
-    private void registerSockets() throws IOException {
-        // A replaced socket's descriptor is closed later, by JeroMQ's reaper thread: drop our
-        // keys now rather than select on a dying descriptor until then.
-        if (dealerKey != null) {
-            dealerKey.cancel();
-            monitorKey.cancel();
-        }
-        dealerKey = dealer.getFD().register(selector, SelectionKey.OP_READ);
-        monitorKey = monitor.getFD().register(selector, SelectionKey.OP_READ);
-        socketsReplaced = false;
-    }
-
-    private void openSocket() throws IOException {
-        dealer = zmq.createSocket(SocketType.DEALER);
-        dealer.setLinger(0);
-        dealer.setImmediate(false);
-        dealer.setHeartbeatIvl(HEARTBEAT_IVL_MS);
-        dealer.setHeartbeatTimeout(HEARTBEAT_TIMEOUT_MS);
-        dealer.setHeartbeatTtl(HEARTBEAT_TTL_MS);
-        // A peer that accepts TCP but never completes ZMTP (frozen process, or a stalled accept)
-        // is dropped and retried after 2 s instead of libzmq's 30 s default.
-        dealer.setHandshakeIvl(HANDSHAKE_IVL_MS);
-        dealer.setReconnectIVL(100);
-        dealer.setReconnectIVLMax(1000);
-        dealer.setSndHWM(10_000);
-        dealer.setRcvHWM(10_000);
-        if (keys != null) {
-            keys.applyTo(dealer);
-        }
-        String monitorAddress = "inproc://nao-link-monitor-" + MONITOR_IDS.incrementAndGet();
-        dealer.monitor(monitorAddress, ZMQ.EVENT_ALL);
-        monitor = zmq.createSocket(SocketType.PAIR);
-        monitor.connect(monitorAddress);
-        dealer.connect("tcp://" + host + ":" + port);
-        socketsReplaced = true;
-    }
-
-    private void closeSocket() {
-        if (dealer != null) {
-            dealer.monitor(null, 0);
-            zmq.destroySocket(dealer);
-            dealer = null;
-        }
-        if (monitor != null) {
-            zmq.destroySocket(monitor);
-            monitor = null;
-        }
-    }
-
     /** When the link thread must next look at the timers. Under lock. */
     private long nextWakeNanos(long now) {
-        long next = now + TimeUnit.MILLISECONDS.toNanos(200);
-        for (Pending p : pending.values()) {
-            next = Math.min(next, p.attemptDeadlineNanos);
-        }
-        for (Submission s : awaitingOnline) {
+        long next = pending.nextDeadline(now + TimeUnit.MILLISECONDS.toNanos(200));
+        for (QueuedCall s : awaitingOnline) {
             next = Math.min(next, s.deadlineNanos());
         }
-        for (Submission s : coalesced.values()) {
-            next = Math.min(next, dueNanos(s));
-        }
-        return next;
+        return pacing.nextDue(next);
     }
 
-    private long dueNanos(Submission s) {
-        Long last = lastSentNanos.get(s.call.qualifiedName());
-        long interval = TimeUnit.MILLISECONDS.toNanos(config.minIntervalMillis(s.call));
-        return last == null ? 0 : last + interval;
-    }
-
-    private void dispatch(Submission s) {
-        if (s.future.isDone()) {
+    private void dispatch(QueuedCall s) {
+        if (s.future().isDone()) {
             return;
         }
+        ConnectionState state = watch.state();
         if (state == ConnectionState.LOST || state == ConnectionState.CLOSED) {
             lose(s, "robot not connected");
             return;
         }
         if (state == ConnectionState.REFUSED) {
-            lose(s, securityProblem);
+            lose(s, watch.securityProblem());
             return;
         }
-        long interval = config.minIntervalMillis(s.call);
-        if (interval > 0) {
-            String name = s.call.qualifiedName();
-            Long last = lastSentNanos.get(name);
-            long now = System.nanoTime();
-            if (last != null && now - last < TimeUnit.MILLISECONDS.toNanos(interval)) {
-                Submission older = coalesced.put(name, s);
-                if (older != null && older != s) {
-                    older.future.complete(new CallOutcome.Superseded());
-                }
-                return;
-            }
+        if (pacing.holdIfEarly(s, System.nanoTime())) {
+            return;
         }
         if (state == ConnectionState.CONNECTING) {
             awaitingOnline.add(s);
@@ -574,267 +481,139 @@ public final class NaoLink implements AutoCloseable {
         send(s, 1);
     }
 
-    private void send(Submission s, int attempt) {
+    private void send(QueuedCall s, int attempt) {
         long now = System.nanoTime();
-        long remaining = s.idempotent ? s.timeoutMillis
+        long remaining = s.idempotent() ? s.timeoutMillis()
                 : Math.max(1, TimeUnit.NANOSECONDS.toMillis(s.deadlineNanos() - now));
-        HAWActorRPCRequest request = s.request.setDeadlineMillis(System.currentTimeMillis() + remaining).build();
+        HAWActorRPCRequest request = s.request().setDeadlineMillis(System.currentTimeMillis() + remaining).build();
         byte[] payload = request.toByteArray();
-        long id = nextRequestId++;
-        byte[] idBytes = ByteBuffer.allocate(8).putLong(id).array();
-        boolean ok = dealer.send(idBytes, ZMQ.SNDMORE | ZMQ.DONTWAIT)
-                && dealer.send(new byte[0], ZMQ.SNDMORE | ZMQ.DONTWAIT)
-                && dealer.send(payload, ZMQ.DONTWAIT);
-        if (!ok) {
+        long id = pending.nextId();
+        if (!connection.send(id, payload)) {
             // With immediate=1 semantics there is no pipe without a live peer: nothing was queued.
             lose(s, "no connection to send on");
             return;
         }
         sent.incrementAndGet();
-        lastSentNanos.put(s.call.qualifiedName(), now);
-        pending.put(id, new Pending(s, now + TimeUnit.MILLISECONDS.toNanos(remaining), attempt));
-        envelopes.publish(new Envelope(micros(), Direction.OUT, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
-                s.call.qualifiedName(), request, payload, null));
+        pacing.sent(s.call(), now);
+        pending.sent(id, s, now + TimeUnit.MILLISECONDS.toNanos(remaining), attempt);
+        envelopes.publish(new Envelope(clock.nowMicros(), Direction.OUT, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
+                s.call().qualifiedName(), request, payload, null));
     }
 
     private void readReplies() {
-        while (true) {
-            byte[] first = dealer.recv(ZMQ.DONTWAIT);
-            if (first == null) {
-                return;
-            }
-            List<byte[]> frames = new ArrayList<>(3);
-            frames.add(first);
-            while (dealer.hasReceiveMore()) {
-                frames.add(dealer.recv(0));
-            }
+        List<byte[]> frames;
+        while ((frames = connection.receive()) != null) {
             handleReply(frames);
         }
     }
 
     private void handleReply(List<byte[]> frames) {
         byte[] payload = frames.get(frames.size() - 1);
-        if (frames.size() != 3 || frames.get(0).length != 8 || frames.get(1).length != 0) {
-            malformed(payload, "expected [8-byte id][empty][reply], got " + frames.size() + " frames");
-            return;
-        }
-        long id = ByteBuffer.wrap(frames.get(0)).getLong();
-        Pending p = pending.remove(id);
-        HAWActorRPCResponse response;
-        try {
-            response = HAWActorRPCResponse.parseFrom(payload);
-        } catch (InvalidProtocolBufferException e) {
-            malformed(payload, "unreadable HAWActorRPCResponse: " + e.getMessage());
+        ReplyReader.Read read = replies.read(frames);
+        if (read instanceof ReplyReader.Malformed m) {
+            envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
+                    "malformed", null, payload, m.why()));
+            PendingCalls.Sent p = m.id() < 0 ? null : pending.unreadable(m.id());
             if (p != null) {
-                p.submission.future.complete(new CallOutcome.Failed("unreadable reply: " + e.getMessage()));
+                p.call().end(new CallOutcome.Failed(m.callError()));
             }
             return;
         }
-        String kind = p == null ? "stray" : p.submission.call.qualifiedName();
-        envelopes.publish(new Envelope(micros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
-                kind, response, payload, null));
+        ReplyReader.Reply reply = (ReplyReader.Reply) read;
+        PendingCalls.Sent p = pending.answered(reply.id());
+        String kind = p == null ? "stray" : p.call().call().qualifiedName();
+        envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
+                kind, reply.response(), payload, null));
         if (p == null) {
-            strayReplies.incrementAndGet();
             return;
         }
-        replies.incrementAndGet();
-        repliedSinceHandshake = true;
-        disconnectsBeforeHandshake = 0;
-        p.submission.future.complete(outcomeOf(response));
-    }
-
-    private CallOutcome outcomeOf(HAWActorRPCResponse response) {
-        if (response.hasError()) {
-            return new CallOutcome.Failed(response.getError());
-        }
-        if (!response.hasReturnval()) {
-            return new CallOutcome.Done();
-        }
-        try {
-            return new CallOutcome.Value(codec.decode(response.getReturnval()));
-        } catch (MixedValueException e) {
-            malformedReplies.incrementAndGet();
-            return new CallOutcome.Failed("unreadable return value: " + e.getMessage());
-        }
-    }
-
-    private void malformed(byte[] payload, String why) {
-        malformedReplies.incrementAndGet();
-        envelopes.publish(new Envelope(micros(), Direction.IN, Channel.NAO_RPC, peer, Envelope.NO_ROBOT,
-                "malformed", null, payload, why));
+        answered.incrementAndGet();
+        watch.replied();
+        p.call().end(replies.outcomeOf(reply.response()));
     }
 
     private void readMonitor() {
-        ZMQ.Event event;
-        while (monitor != null && (event = ZMQ.Event.recv(monitor, ZMQ.DONTWAIT)) != null) {
-            int e = event.getEvent();
-            LOG.trace("monitor event {} {} {}", e, event.getAddress(), event.getValue());
-            if (e == ZMQ.HANDSHAKE_FAILED_AUTH) {
-                refused("the NAO refused our key: give it console.public — see docs/security.md");
-            } else if (e == ZMQ.HANDSHAKE_FAILED_PROTOCOL || e == ZMQ.HANDSHAKE_FAILED_NO_DETAIL) {
-                refused(keys != null ? NO_CURVE_HANDSHAKE
-                        : "no handshake with the NAO: it runs with CURVE keys; give this console its keys (--keys)"
-                          + " — see docs/security.md");
-            } else if (e == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
-                // JeroMQ reports the ZMTP greeting, not the end of the CURVE handshake after it.
-                handshakeAtNanos = System.nanoTime();
-                if (state == ConnectionState.REFUSED) {
-                    probationUntilNanos = handshakeAtNanos + TimeUnit.MILLISECONDS.toNanos(CURVE_PROBATION_MS);
-                } else if (state != ConnectionState.ONLINE) {
-                    goOnline();
-                }
-            } else if (e == ZMQ.EVENT_DISCONNECTED) {
-                probationUntilNanos = 0;
-                if (state == ConnectionState.ONLINE) {
-                    // With CURVE, a connection dropped right after the greeting without any reply is a
-                    // failed CURVE handshake (a wrong server key: the robot side just closes).
-                    boolean curveFailed = keys != null && !repliedSinceHandshake
-                            && System.nanoTime() - handshakeAtNanos < TimeUnit.MILLISECONDS.toNanos(CURVE_PROBATION_MS)
-                            && ++disconnectsBeforeHandshake >= 2;
-                    goLost("disconnected (peer closed or heartbeat timed out)");
-                    if (curveFailed) {
-                        refused(NO_CURVE_HANDSHAKE);
-                    }
-                    return; // the monitor socket was replaced
-                }
+        NaoConnection.Event event;
+        while ((event = connection.nextEvent()) != null) {
+            List<ConnectionWatch.Transition> changes = watch.onEvent(event, System.nanoTime());
+            apply(changes);
+            if (changes.stream().anyMatch(t -> t.to() == ConnectionState.LOST)) {
+                return; // the monitor socket was replaced
             }
         }
     }
 
-    private void goOnline() {
-        repliedSinceHandshake = false;
-        setState(ConnectionState.ONLINE, "handshake with " + host + ":" + port);
-        List<Submission> waiting = new ArrayList<>(awaitingOnline);
-        awaitingOnline.clear();
-        for (Submission s : waiting) {
-            send(s, 1);
-        }
-    }
-
-    /** A refused link whose new connection stayed up through its probation is online again. Link thread. */
-    private void endProbation(long now) {
-        if (state == ConnectionState.REFUSED && probationUntilNanos != 0 && now - probationUntilNanos >= 0) {
-            probationUntilNanos = 0;
-            disconnectsBeforeHandshake = 0;
-            securityProblem = "";
-            goOnline();
-        }
-    }
-
-    /**
-     * How long a CURVE connection must stay up after the greeting before a refused link counts
-     * as online again: a failed CURVE handshake ends within a round trip, well under this.
-     */
-    static final long CURVE_PROBATION_MS = 1000;
-    private static final String NO_CURVE_HANDSHAKE = "no CURVE handshake with the NAO: it has another key pair than "
-            + "our nao-server.public, or runs without keys (then connect with --insecure) — see docs/security.md";
-
-    /** The CURVE handshake failed: calls fail at once with the reason until a handshake succeeds. Link thread. */
-    private void refused(String why) {
-        securityProblem = why;
-        if (state == ConnectionState.REFUSED) {
-            return;
-        }
-        setState(ConnectionState.REFUSED, why);
-        probationUntilNanos = 0;
-        failAll(new CallOutcome.Lost(why));
-    }
-
-    private void goLost(String why) {
-        setState(ConnectionState.LOST, why);
-        failAll(new CallOutcome.Lost(why));
-        // Close and reopen: whatever the old socket still held can never reach the robot.
-        closeSocket();
-        try {
-            openSocket();
-        } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
+    /** Acts on state changes: announces each; online sends the waiting calls, lost and refused end every call. */
+    private void apply(List<ConnectionWatch.Transition> changes) {
+        for (ConnectionWatch.Transition t : changes) {
+            announce(t.to(), t.why());
+            switch (t.to()) {
+                case ONLINE -> {
+                    List<QueuedCall> waiting = new ArrayList<>(awaitingOnline);
+                    awaitingOnline.clear();
+                    for (QueuedCall s : waiting) {
+                        send(s, 1);
+                    }
+                }
+                case LOST -> {
+                    failAll(new CallOutcome.Lost(t.why()));
+                    // Close and reopen: whatever the old socket still held can never reach the robot.
+                    connection.reopen();
+                }
+                case REFUSED -> failAll(new CallOutcome.Lost(t.why()));
+                default -> { }
+            }
         }
     }
 
     private void failAll(CallOutcome.Lost outcome) {
-        for (Pending p : pending.values()) {
-            lostCalls.incrementAndGet();
-            p.submission.future.complete(outcome);
-        }
-        pending.clear();
-        for (Submission s : awaitingOnline) {
-            lostCalls.incrementAndGet();
-            s.future.complete(outcome);
+        long n = pending.failAll(outcome) + pacing.failAll(outcome) + awaitingOnline.size();
+        for (QueuedCall s : awaitingOnline) {
+            s.end(outcome);
         }
         awaitingOnline.clear();
-        for (Submission s : coalesced.values()) {
-            lostCalls.incrementAndGet();
-            s.future.complete(outcome);
-        }
-        coalesced.clear();
+        lostCalls.addAndGet(n);
     }
 
-    private void lose(Submission s, String why) {
+    private void lose(QueuedCall s, String why) {
         lostCalls.incrementAndGet();
-        s.future.complete(new CallOutcome.Lost(why));
+        s.end(new CallOutcome.Lost(why));
     }
 
     private void runTimers(long now) {
-        endProbation(now);
-        for (Iterator<Map.Entry<Long, Pending>> it = pending.entrySet().iterator(); it.hasNext(); ) {
-            Pending p = it.next().getValue();
-            if (now - p.attemptDeadlineNanos >= 0) {
-                it.remove();
-                retryOrTimeOut(p);
+        apply(watch.onTime(now));
+        for (PendingCalls.Sent p : pending.expired(now)) {
+            QueuedCall s = p.call();
+            if (s.idempotent() && p.attempt() <= config.retries() && watch.state() == ConnectionState.ONLINE) {
+                retried.incrementAndGet();
+                send(s, p.attempt() + 1);
+            } else {
+                pending.timeOut(s, System.nanoTime());
             }
         }
-        for (Iterator<Submission> it = awaitingOnline.iterator(); it.hasNext(); ) {
-            Submission s = it.next();
+        for (Iterator<QueuedCall> it = awaitingOnline.iterator(); it.hasNext(); ) {
+            QueuedCall s = it.next();
             if (now - s.deadlineNanos() >= 0) {
                 it.remove();
-                lose(s, "no connection within " + s.timeoutMillis + " ms");
+                lose(s, "no connection within " + s.timeoutMillis() + " ms");
             }
         }
-        if (!coalesced.isEmpty()) {
-            List<Submission> due = new ArrayList<>();
-            for (Iterator<Submission> it = coalesced.values().iterator(); it.hasNext(); ) {
-                Submission s = it.next();
-                if (now - dueNanos(s) >= 0) {
-                    it.remove();
-                    due.add(s);
-                }
-            }
-            for (Submission s : due) {
-                if (now - s.deadlineNanos() >= 0) {
-                    timeouts.incrementAndGet();
-                    s.future.complete(new CallOutcome.TimedOut(s.timeoutMillis));
-                } else if (state == ConnectionState.ONLINE) {
-                    send(s, 1);
-                } else if (state == ConnectionState.CONNECTING) {
-                    awaitingOnline.add(s);
-                } else {
-                    lose(s, "robot not connected");
-                }
+        for (QueuedCall s : pacing.due(now)) {
+            ConnectionState state = watch.state();
+            if (state == ConnectionState.ONLINE) {
+                send(s, 1);
+            } else if (state == ConnectionState.CONNECTING) {
+                awaitingOnline.add(s);
+            } else {
+                lose(s, "robot not connected");
             }
         }
     }
 
-    private void retryOrTimeOut(Pending p) {
-        Submission s = p.submission;
-        if (s.idempotent && p.attempt <= config.retries() && state == ConnectionState.ONLINE) {
-            retried.incrementAndGet();
-            send(s, p.attempt + 1);
-            return;
-        }
-        timeouts.incrementAndGet();
-        long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - s.submittedNanos);
-        s.future.complete(new CallOutcome.TimedOut(waited));
-    }
-
-    private void setState(ConnectionState next, String why) {
-        if (state == next) {
-            return;
-        }
-        state = next;
+    private void announce(ConnectionState next, String why) {
         String text = "nao " + host + ":" + port + " " + next.name().toLowerCase() + ": " + why;
         LOG.info(text);
-        envelopes.publish(new Envelope(micros(), Direction.IN, Channel.LINK_EVENT, peer, Envelope.NO_ROBOT,
+        envelopes.publish(new Envelope(clock.nowMicros(), Direction.IN, Channel.LINK_EVENT, peer, Envelope.NO_ROBOT,
                 "nao." + next.name().toLowerCase(), null, text.getBytes(StandardCharsets.UTF_8), null));
         for (Consumer<ConnectionState> l : stateListeners) {
             try {
@@ -843,9 +622,5 @@ public final class NaoLink implements AutoCloseable {
                 LOG.warn("connection state listener failed: {}", e.toString());
             }
         }
-    }
-
-    private static long micros() {
-        return NaoEnvelopeChannel.nowMicros();
     }
 }

@@ -15,17 +15,15 @@ import javafx.scene.input.KeyEvent;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
+import touchline.app.Console;
+import touchline.app.NaoSession;
 import touchline.protocol.nao.ParamSyntax;
-import touchline.transport.EnvelopeSink;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
 import touchline.transport.nao.CameraSettings;
 import touchline.transport.nao.NaoCall;
 import touchline.transport.nao.NaoCameraStream;
-import touchline.transport.nao.NaoEnvelopeChannel;
-import touchline.transport.nao.NaoLink;
 import touchline.transport.nao.NaoLinkConfig;
-import touchline.transport.nao.NaoMoves;
 import touchline.transport.nao.WalkInput;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
@@ -43,15 +41,17 @@ import java.util.concurrent.CompletableFuture;
  * browse modules and methods (discovered with {@code getMethodList}) and call one with typed
  * parameters, stand / sit / turn the head / say, walk with W A S D (Q E turn) while the view
  * has focus, and watch the camera. Network results land in volatile fields and are shown by
- * {@link #refresh} on the frame pulse; the view talks only to {@link NaoLink} and
- * {@link NaoCameraStream}, never to sockets.
+ * {@link #refresh} on the frame pulse. The view connects through the application core
+ * ({@link Console#connectNao}): every call and move passes the console's match-mode gate, a
+ * held one says so in the result line, and the NAO's traffic enters the console's stream; the
+ * view keeps only the {@link NaoSession} handle, which the console lists too.
  */
 public final class NaoView implements View {
 
     static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
             "ALBattery", "ALVideoDevice", "Robot");
 
-    private final EnvelopeSink sink;
+    private final Console console;
     private final BorderPane root = new BorderPane();
     private final TextField host = new TextField("127.0.0.1");
     private final TextField rpcPort = new TextField("5555");
@@ -73,24 +73,19 @@ public final class NaoView implements View {
     private final Label cameraStats = new Label();
     private final Set<Character> heldKeys = new HashSet<>();
 
-    private NaoEnvelopeChannel channel;
-    private NaoLink link;
-    private NaoMoves moves;
-    private NaoCameraStream camera;
+    private volatile NaoSession session;
     private AutoCloseable viewer;
     private volatile String lastResult = "";
     private volatile List<String> discovered;
     private long shownFrame;
-    private touchline.game.MatchMode matchMode;
 
     public NaoView(ViewContext context, ViewSource source) {
-        this(context.console().bus());
-        this.matchMode = context.console().matchMode();
+        this(context.console());
     }
 
-    /** For tests and embedding: envelopes go to {@code sink}. */
-    public NaoView(EnvelopeSink sink) {
-        this.sink = sink;
+    /** For tests and embedding: connects through {@code console}. */
+    public NaoView(Console console) {
+        this.console = console;
         host.setPrefColumnCount(10);
         rpcPort.setPrefColumnCount(5);
         camPort.setPrefColumnCount(5);
@@ -142,13 +137,13 @@ public final class NaoView implements View {
         browser.setPrefWidth(320);
 
         Button stand = new Button("Stand");
-        stand.setOnAction(e -> sequence(moves == null ? null : moves.stand()));
+        stand.setOnAction(e -> sequence(session == null ? null : session.stand()));
         Button sit = new Button("Sit");
-        sit.setOnAction(e -> sequence(moves == null ? null : moves.sit()));
+        sit.setOnAction(e -> sequence(session == null ? null : session.sit()));
         Button head = new Button("Turn head");
-        head.setOnAction(e -> sequence(moves == null ? null : moves.turnHead(headYaw.getValue())));
+        head.setOnAction(e -> sequence(session == null ? null : session.turnHead(headYaw.getValue())));
         Button say = new Button("Say");
-        say.setOnAction(e -> outcome(moves == null ? null : moves.say(sayText.getText())));
+        say.setOnAction(e -> outcome(session == null ? null : session.say(sayText.getText())));
         Label walkHelp = new Label("Walk: click here, hold W/S forward/back, A/D sideways, Q/E turn");
         VBox controls = new VBox(4, new HBox(4, stand, sit), new HBox(4, head, headYaw), new HBox(4, say, sayText),
                 walkHelp);
@@ -187,14 +182,7 @@ public final class NaoView implements View {
                 connect.setSelected(false);
                 return;
             }
-            channel = new NaoEnvelopeChannel(sink);
-            link = new NaoLink(h, rpc, NaoLinkConfig.defaults(), channel, keys);
-            if (matchMode != null) {
-                touchline.game.MatchMode mm = matchMode;
-                link.setSendGate(() -> !mm.hold("NAO command"), mm::notice); // no commands to a robot during play
-            }
-            moves = new NaoMoves(link);
-            camera = new NaoCameraStream(h, cam, channel, keys);
+            session = console.connectNao(h, rpc, cam, keys, NaoLinkConfig.defaults());
             configureCamera();
             toggleCamera();
         } catch (NumberFormatException e) {
@@ -205,19 +193,11 @@ public final class NaoView implements View {
 
     private void shut() {
         closeViewer();
-        if (camera != null) {
-            camera.close();
+        NaoSession s = session;
+        session = null;
+        if (s != null) {
+            s.close();
         }
-        if (link != null) {
-            link.close();
-        }
-        if (channel != null) {
-            channel.close();
-        }
-        camera = null;
-        link = null;
-        moves = null;
-        channel = null;
     }
 
     private void callSelected() {
@@ -236,11 +216,12 @@ public final class NaoView implements View {
     }
 
     private void call(NaoCall call, boolean discovery) {
-        if (link == null) {
+        NaoSession s = session;
+        if (s == null) {
             lastResult = "not connected";
             return;
         }
-        link.call(call).thenAccept(outcome -> {
+        s.call(call).thenAccept(outcome -> {
             lastResult = call.qualifiedName() + ": " + outcome.describe();
             if (discovery && outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
                 discovered = names.stream().map(String::valueOf).sorted().toList();
@@ -266,12 +247,13 @@ public final class NaoView implements View {
 
     private void walkKey(KeyEvent e, boolean down) {
         String t = e.getCode().getChar();
-        if (t.length() != 1 || "WASDQE".indexOf(t.charAt(0)) < 0 || moves == null) {
+        NaoSession s = session;
+        if (t.length() != 1 || "WASDQE".indexOf(t.charAt(0)) < 0 || s == null) {
             return;
         }
         boolean changed = down ? heldKeys.add(t.charAt(0)) : heldKeys.remove(t.charAt(0));
         if (changed) {
-            moves.walk(WalkInput.fromKeys(heldKeys, 0.6f)).thenAccept(o -> {
+            s.walk(WalkInput.fromKeys(heldKeys, 0.6f)).thenAccept(o -> {
                 if (!o.ok() && !(o instanceof CallOutcome.Superseded)) {
                     lastResult = "walk: " + o.describe();
                 }
@@ -280,7 +262,13 @@ public final class NaoView implements View {
         e.consume();
     }
 
+    private NaoCameraStream camera() {
+        NaoSession s = session;
+        return s == null ? null : s.camera().orElse(null);
+    }
+
     private void configureCamera() {
+        NaoCameraStream camera = camera();
         if (camera != null) {
             CameraSettings s = camera.settings();
             camera.configure(new CameraSettings(resolution.getValue(), s.colorSpace(), s.fps()));
@@ -289,6 +277,7 @@ public final class NaoView implements View {
 
     private void toggleCamera() {
         closeViewer();
+        NaoCameraStream camera = camera();
         if (camera != null && cameraOn.isSelected()) {
             viewer = camera.subscribe();
         }
@@ -312,7 +301,7 @@ public final class NaoView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        NaoLink l = link;
+        NaoSession l = session;
         state.setText(l == null ? "not connected" : l.state().name().toLowerCase() + (l.secure() ? " (encrypted)"
                 : " (INSECURE)") + "  " + l.stats().sent() + " sent, " + l.stats().replies() + " replies, "
                 + l.stats().timeouts() + " timeouts" + (l.securityProblem().isEmpty() ? "" : " — " + l.securityProblem()));
@@ -324,7 +313,7 @@ public final class NaoView implements View {
             discovered = null;
             methods.getItems().setAll(d);
         }
-        NaoCameraStream c = camera;
+        NaoCameraStream c = camera();
         if (c != null) {
             CameraFrame f = c.latestFrame();
             if (f != null && f.sequence() != shownFrame) {

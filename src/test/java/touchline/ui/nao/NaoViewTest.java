@@ -10,6 +10,9 @@ import javafx.scene.image.ImageView;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import org.testfx.util.WaitForAsyncUtils;
+import touchline.app.Console;
+import touchline.app.ConsoleConfig;
+import touchline.transport.UdpConfig;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
 import touchline.transport.nao.FakeNaoCamera;
@@ -24,7 +27,10 @@ import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** The NAO tab headless (Monocle) against the in-test robot and camera stand-ins. */
+/**
+ * The NAO tab headless (Monocle) against the in-test robot and camera stand-ins, connected
+ * through an (unstarted: no GameController heard, so match mode is off) application core.
+ */
 class NaoViewTest {
 
     private static <T> T fx(Callable<T> step) throws Exception {
@@ -37,8 +43,11 @@ class NaoViewTest {
         FxToolkit.registerPrimaryStage();
         List<Envelope> envelopes = new CopyOnWriteArrayList<>();
         FrameContext frame = new FrameContext(new LatencyProbe());
-        try (FakeNaoRobot robot = new FakeNaoRobot(0); FakeNaoCamera camera = new FakeNaoCamera()) {
-            NaoView view = fx(() -> new NaoView(envelopes::add));
+        try (FakeNaoRobot robot = new FakeNaoRobot(0); FakeNaoCamera camera = new FakeNaoCamera();
+             Console console = new Console(ConsoleConfig.defaults()
+                     .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)))) {
+            console.bus().subscribe(envelopes::add);
+            NaoView view = fx(() -> new NaoView(console));
             Node root = view.node();
             fx(() -> {
                 ((TextField) root.lookup("#nao-rpc-port")).setText(Integer.toString(robot.port()));

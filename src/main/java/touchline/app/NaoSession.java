@@ -1,0 +1,141 @@
+package touchline.app;
+
+import touchline.transport.EnvelopeSink;
+import touchline.transport.MicrosClock;
+import touchline.transport.SendGate;
+import touchline.transport.nao.CallOutcome;
+import touchline.transport.nao.ConnectionState;
+import touchline.transport.nao.NaoCall;
+import touchline.transport.nao.NaoCameraStream;
+import touchline.transport.nao.NaoClientKeys;
+import touchline.transport.nao.NaoEnvelopeChannel;
+import touchline.transport.nao.NaoLink;
+import touchline.transport.nao.NaoLinkConfig;
+import touchline.transport.nao.NaoMoves;
+import touchline.transport.nao.SequenceOutcome;
+import touchline.transport.nao.WalkInput;
+
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+
+/**
+ * One NAO driven through the application core ({@link Console#connectNao}): its RPC link, its
+ * high-level moves and, when a camera port is given, its camera stream, all publishing into
+ * the console's Envelope stream (so the recorder and the views see the NAO's traffic). Every
+ * call and every move passes the console's send gate first — match mode during play, and
+ * "commands are off" while the console views a remote Touchline — and then ends with a
+ * {@link CallOutcome} that says in words what became of it: {@link CallOutcome.HeldBack}
+ * (held: nothing was sent, and nothing is sent later), a value or "done" (sent and run), or
+ * an error, a timeout or a lost connection. The window's NAO view and {@code touchline nao}
+ * both use this; neither builds a link of its own.
+ */
+public final class NaoSession implements AutoCloseable {
+
+    private final String host;
+    private final int rpcPort;
+    private final NaoEnvelopeChannel channel;
+    private final NaoLink link;
+    private final NaoMoves moves;
+    private final NaoCameraStream camera;
+    private final Consumer<NaoSession> onClose;
+
+    /**
+     * @param camPort the camera server's port, or 0 for no camera
+     * @param gate    the console's gate, asked once per call
+     * @param onClose told when the session closes (the console forgets it)
+     */
+    NaoSession(String host, int rpcPort, int camPort, NaoLinkConfig config, NaoClientKeys keys, EnvelopeSink sink,
+               SendGate gate, MicrosClock clock, Consumer<NaoSession> onClose) {
+        this.host = host;
+        this.rpcPort = rpcPort;
+        this.onClose = onClose;
+        this.channel = new NaoEnvelopeChannel(sink);
+        this.link = new NaoLink(host, rpcPort, config, channel, keys, clock);
+        link.setSendGate(gate);
+        this.moves = new NaoMoves(link);
+        this.camera = camPort > 0 ? new NaoCameraStream(host, camPort, channel, keys) : null;
+    }
+
+    public String host() {
+        return host;
+    }
+
+    public int rpcPort() {
+        return rpcPort;
+    }
+
+    public NaoLinkConfig config() {
+        return link.config();
+    }
+
+    public ConnectionState state() {
+        return link.state();
+    }
+
+    /** Whether the link is encrypted (CURVE). */
+    public boolean secure() {
+        return link.secure();
+    }
+
+    /** Why the CURVE handshake fails, in words; "" when it does not. */
+    public String securityProblem() {
+        return link.securityProblem();
+    }
+
+    public NaoLink.LinkStats stats() {
+        return link.stats();
+    }
+
+    /** The camera stream, when the session was opened with a camera port. */
+    public Optional<NaoCameraStream> camera() {
+        return Optional.ofNullable(camera);
+    }
+
+    /** Calls any NAOqi method with the configured timeout; held back during play. */
+    public CompletableFuture<CallOutcome> call(NaoCall call) {
+        return link.call(call);
+    }
+
+    /** Calls with an explicit timeout; held back during play. */
+    public CompletableFuture<CallOutcome> call(NaoCall call, long timeoutMillis) {
+        return link.call(call, timeoutMillis);
+    }
+
+    /** Runs the calls in order, stopping at the first that fails or is held back. */
+    public CompletableFuture<SequenceOutcome> sequence(List<NaoCall> calls) {
+        return link.sequence(calls);
+    }
+
+    public CompletableFuture<SequenceOutcome> stand() {
+        return moves.stand();
+    }
+
+    public CompletableFuture<SequenceOutcome> sit() {
+        return moves.sit();
+    }
+
+    public CompletableFuture<SequenceOutcome> turnHead(double yawRadians) {
+        return moves.turnHead(yawRadians);
+    }
+
+    public CompletableFuture<CallOutcome> walk(WalkInput input) {
+        return moves.walk(input);
+    }
+
+    public CompletableFuture<CallOutcome> say(String text) {
+        return moves.say(text);
+    }
+
+    /** Closes the camera, the link and their pipeline; pending calls end as lost. */
+    @Override
+    public void close() {
+        if (camera != null) {
+            camera.close();
+        }
+        link.close();
+        channel.close();
+        onClose.accept(this);
+    }
+}
