@@ -8,7 +8,8 @@
 # an Xvfb display (Xvfb installed into the root for the check only) with a screenshot. Needs root (debootstrap,
 # chroot, mounts) and a Debian mirror (TOUCHLINE_DEBIAN_MIRROR, default the one in /etc/apt/sources*); takes
 # minutes. Not part of ./touchline test. The result (what passed, how long) goes to target/fresh-check/:
-# result.txt, window.png, and the logs of each step. --keep leaves the root in place for a look.
+# result.txt, window.png, and the logs of each step. --keep leaves the root in place (mounted) for a look
+# or for `./touchline bench start --root DIR`, the installed start measured.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -47,8 +48,13 @@ T0=$(date +%s)
 XVFB_PID=""
 cleanup() {
   [ -n "$XVFB_PID" ] && kill "$XVFB_PID" 2>/dev/null || true
-  for m in dev/pts dev proc; do umount -l "$FRESH/$m" 2>/dev/null || true; done
-  if [ "$KEEP" = 1 ]; then say "the root is kept in $FRESH"; else rm -rf "$FRESH"; fi
+  if [ "$KEEP" = 1 ]; then
+    say "the root is kept in $FRESH with /proc and /dev mounted (xvfb-run -a ./touchline bench start --root $FRESH);" \
+      "remove it with: umount $FRESH/proc $FRESH/dev/pts $FRESH/dev && rm -rf $FRESH"
+  else
+    for m in dev/pts dev proc; do umount -l "$FRESH/$m" 2>/dev/null || true; done
+    rm -rf "$FRESH"
+  fi
 }
 trap cleanup EXIT
 in_root() { chroot "$FRESH" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
@@ -131,7 +137,8 @@ if in_root apt-get install -y -q --no-install-recommends xvfb xauth >"$OUT/xvfb-
   in_root Xvfb ":$D" -screen 0 1280x800x24 -nolisten tcp >"$OUT/xvfb.log" 2>&1 &
   XVFB_PID=$!
   EXEC=$(sed -n 's/^Exec=//p' "$FRESH/usr/share/applications/touchline.desktop")
-  in_root sh -c "DISPLAY=:$D exec $EXEC" >"$OUT/window.log" 2>&1 &
+  # --port 0: the console's UDP port 11011 may be held by a console running on this machine (one network)
+  in_root sh -c "DISPLAY=:$D exec $EXEC --port 0" >"$OUT/window.log" 2>&1 &
   CONSOLE=$!
   # the console's own start mark (touchline.cli.StartMarks) says when the window is shown
   for _ in $(seq 1 600); do
@@ -140,14 +147,19 @@ if in_root apt-get install -y -q --no-install-recommends xvfb xauth >"$OUT/xvfb-
     sleep 0.2 # polling the console's log for its start mark, not synchronisation between our own processes
   done
   if grep -q 'touchline: window shown' "$OUT/window.log"; then
-    # the views are built after the first frame: wait for the window title, then give the views their frames
-    sleep 3 # lets the deferred views draw before the picture; the check above already proved the window
-    import -display ":$D" -window root "$OUT/window.png" 2>"$OUT/screenshot.log" || true
-    step "the desktop entry's command ($EXEC) shows the window on Xvfb: $(grep -o 'window shown.*' "$OUT/window.log" | head -1); screenshot window.png" "$t"
+    # the picture once the window is painted: the display is one colour until then (mapped, not yet drawn)
+    COLOURS=0
+    for _ in $(seq 1 60); do
+      import -display ":$D" -window root "$OUT/window.png" 2>"$OUT/screenshot.log" || true
+      COLOURS=$(identify -format '%k' "$OUT/window.png" 2>/dev/null || echo 0)
+      [ "$COLOURS" -gt 16 ] && break
+      sleep 1 # polling the display until the window is drawn, not synchronisation
+    done
+    step "the desktop entry's command ($EXEC) shows the window on Xvfb: $(grep -o 'window shown.*' "$OUT/window.log" | head -1); screenshot window.png ($COLOURS colours)" "$t"
+    [ "$COLOURS" -gt 16 ] || fail_step "the window was not drawn within a minute of being shown (window.png is one colour)"
   else
     fail_step "the desktop entry's command did not show the window within 120 s (log: window.log)"
   fi
-  pkill -P "$CONSOLE" 2>/dev/null || true
   kill "$CONSOLE" 2>/dev/null || true
   wait "$CONSOLE" 2>/dev/null || true
 else

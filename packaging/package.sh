@@ -90,6 +90,16 @@ for jar in sys.argv[1:]:
                 dst.writestr(e, src.read(e.filename))
     shutil.move(jar + '.tmp', jar)
 PY
+# JavaFX loads its natives from the folder of its jar when they are there, and otherwise extracts them into
+# ~/.openjfx/cache (the first start of each user) and compares them with the jar's at every start
+python3 - "$STAGE" "$STAGE"/javafx-graphics-*-linux.jar <<'PY'
+import os, sys, zipfile
+with zipfile.ZipFile(sys.argv[2]) as jar:
+    for e in jar.infolist():
+        if e.filename.endswith('.so') and '/' not in e.filename:
+            with open(os.path.join(sys.argv[1], e.filename), 'wb') as out:
+                out.write(jar.read(e))
+PY
 # the simulated team and NAO come with the package where they run (Linux x86-64)
 mkdir -p "$STAGE/robot-side"
 install -m 755 -s "$BIN/touchline-robot" "$BIN/touchline-nao-sim" "$STAGE/robot-side/"
