@@ -64,9 +64,16 @@ final class StartBenchCommand implements Callable<Integer> {
                 System.err.println(installedRoot + "/proc is not mounted: packaging/check-fresh.sh --keep leaves it mounted");
                 return 2;
             }
-            // the Exec line as it is, in the installed root; the display is this machine's (one network namespace)
+            // the Exec line as it is, in the installed root; the display is this machine's (one network namespace),
+            // its cookie (xvfb-run's) copied into the root
             packaged = new ArrayList<>(List.of("chroot", installedRoot.toString(), "/usr/bin/env", "-i",
                     "PATH=/usr/sbin:/usr/bin:/sbin:/bin", "HOME=/root", "LANG=C.UTF-8", "DISPLAY=" + System.getenv("DISPLAY")));
+            String xauthority = System.getenv("XAUTHORITY");
+            if (xauthority != null && Files.isRegularFile(Path.of(xauthority))) {
+                Files.copy(Path.of(xauthority), installedRoot.resolve("tmp/touchline-bench.xauth"),
+                        java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                packaged.add("XAUTHORITY=/tmp/touchline-bench.xauth");
+            }
             packaged.addAll(Arrays.asList(desktopExec(installedRoot).split(" ")));
         } else {
             String version = touchline.app.ProductVersion.ofThisBuild().version();
