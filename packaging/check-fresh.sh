@@ -46,8 +46,10 @@ PASSED=()
 FAILED=()
 T0=$(date +%s)
 XVFB_PID=""
+ROBOT=""
+CONSOLE=""
 cleanup() {
-  [ -n "$XVFB_PID" ] && kill "$XVFB_PID" 2>/dev/null || true
+  for pid in $CONSOLE $ROBOT $XVFB_PID; do kill "$pid" 2>/dev/null || true; done
   if [ "$KEEP" = 1 ]; then
     say "the root is kept in $FRESH with /proc and /dev mounted (xvfb-run -a ./touchline bench start --root $FRESH);" \
       "remove it with: umount $FRESH/proc $FRESH/dev/pts $FRESH/dev && rm -rf $FRESH"
@@ -57,8 +59,11 @@ cleanup() {
   fi
 }
 trap cleanup EXIT
-in_root() { chroot "$FRESH" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-  HOME=/root LANG=C.UTF-8 DEBIAN_FRONTEND=noninteractive "$@"; }
+# a command in the root; `in_root CMD &` would make $! a subshell's, so background ones use "${IN_ROOT[@]}" CMD &
+# (chroot and env exec the command: $! is then its own process id)
+IN_ROOT=(chroot "$FRESH" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin
+  HOME=/root LANG=C.UTF-8 DEBIAN_FRONTEND=noninteractive)
+in_root() { "${IN_ROOT[@]}" "$@"; }
 step() { # name seconds-before; records a passed step with its time
   PASSED+=("$1 ($(( $(date +%s) - $2 )) s)"); say "passed: $1"
 }
@@ -109,7 +114,7 @@ fi
 
 PORT=$(python3 -c 'import socket; s=socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 t=$(date +%s)
-in_root touchline-robot --id 4 --team 13 --console "127.0.0.1:$PORT" --port 0 >"$OUT/robot.log" 2>&1 &
+"${IN_ROOT[@]}" touchline-robot --id 4 --team 13 --console "127.0.0.1:$PORT" --port 0 >"$OUT/robot.log" 2>&1 &
 ROBOT=$!
 if in_root touchline record --bind 127.0.0.1 --port "$PORT" --seconds 4 --out /tmp/match.mcap >"$OUT/record.log" 2>&1 \
     && in_root touchline replay --headless /tmp/match.mcap >"$OUT/replay-recording.log" 2>&1 \
@@ -134,11 +139,11 @@ say "installing Xvfb in the root (for this check only)"
 if in_root apt-get install -y -q --no-install-recommends xvfb xauth >"$OUT/xvfb-install.log" 2>&1; then
   # a display number free on this machine (Xvfb's abstract socket is shared with the host's network namespace)
   D=90; while [ -e "/tmp/.X$D-lock" ] || [ -e "$FRESH/tmp/.X$D-lock" ]; do D=$((D + 1)); done
-  in_root Xvfb ":$D" -screen 0 1280x800x24 -nolisten tcp >"$OUT/xvfb.log" 2>&1 &
+  "${IN_ROOT[@]}" Xvfb ":$D" -screen 0 1280x800x24 -nolisten tcp >"$OUT/xvfb.log" 2>&1 &
   XVFB_PID=$!
   EXEC=$(sed -n 's/^Exec=//p' "$FRESH/usr/share/applications/touchline.desktop")
   # --port 0: the console's UDP port 11011 may be held by a console running on this machine (one network)
-  in_root sh -c "DISPLAY=:$D exec $EXEC --port 0" >"$OUT/window.log" 2>&1 &
+  "${IN_ROOT[@]}" sh -c "DISPLAY=:$D exec $EXEC --port 0" >"$OUT/window.log" 2>&1 &
   CONSOLE=$!
   # the console's own start mark (touchline.cli.StartMarks) says when the window is shown
   for _ in $(seq 1 600); do
