@@ -55,7 +55,12 @@ cleanup() {
       "remove it with: umount $FRESH/proc $FRESH/dev/pts $FRESH/dev && rm -rf $FRESH"
   else
     for m in dev/pts dev proc; do umount -l "$FRESH/$m" 2>/dev/null || true; done
-    rm -rf "$FRESH"
+    # never remove through a mount that is still there (the bind mount is the machine's own /dev)
+    if grep -q " $FRESH/" /proc/mounts; then
+      say "$FRESH still has mounts (see /proc/mounts): not removed"
+    else
+      rm -rf "$FRESH"
+    fi
   fi
 }
 trap cleanup EXIT
