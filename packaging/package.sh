@@ -165,8 +165,9 @@ tar -C "$IMAGE" -czf "$TARBALL" touchline
 
 # The .deb: the app image under /opt/touchline, the command on the PATH, the desktop entry and the
 # icon as plain files of the package (the postinst only makes the class-data archive, the postrm removes
-# it: `dpkg -x` into a scratch root gives a console that works, only starts slower). Written with dpkg-deb directly: jpackage --type deb took 7 minutes here
-# (it compresses with xz and asks dpkg about every native library) and left the PATH to a postinst.
+# it: `dpkg -x` into a scratch root gives a console that works, only starts slower). Written with
+# dpkg-deb directly: jpackage --type deb took 7 minutes here (it compresses with xz and asks dpkg about
+# every native library) and left the PATH to a postinst.
 say "building the Debian package"
 TREE="$OUT/deb-tree"
 rm -rf "$TREE"
