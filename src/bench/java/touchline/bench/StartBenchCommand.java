@@ -90,7 +90,8 @@ final class StartBenchCommand implements Callable<Integer> {
         packaged.addAll(List.of("--port", "0"));
         // the developer launcher as a developer starts the console: the built jar with its class-data archive
         List<String> developer = List.of("./touchline", "console", "--port", "0");
-        // one start of each first, unmeasured: JavaFX unpacks its natives into ~/.openjfx/cache once
+        // one start of each first, unmeasured: the developer launcher's JavaFX unpacks its natives into
+        // ~/.openjfx/cache once (the package's lie beside its jar), and the launcher trains its archive for a new build
         windowAfter(packaged);
         windowAfter(developer);
         double[] pkgSeconds = new double[rounds];
