@@ -79,6 +79,27 @@ START=$(date +%s)
 STAGE="$OUT/input"
 say "collecting the console's jars (Linux JavaFX) in $STAGE"
 copy_jars "$STAGE" linux
+# zstd-jni and lz4-java carry their natives for every platform (7 MB): the package keeps Linux x86-64's
+python3 - "$STAGE"/zstd-jni-*.jar "$STAGE"/lz4-java-*.jar <<'PY'
+import re, shutil, sys, zipfile
+other = re.compile(r'^(net/jpountz/util/)?(aix|darwin|freebsd|win|linux/(?!amd64/))[^/]*/.*[.](so|dll|dylib|jnilib)$')
+for jar in sys.argv[1:]:
+    with zipfile.ZipFile(jar) as src, zipfile.ZipFile(jar + '.tmp', 'w', zipfile.ZIP_DEFLATED) as dst:
+        for e in src.infolist():
+            if not other.match(e.filename):
+                dst.writestr(e, src.read(e.filename))
+    shutil.move(jar + '.tmp', jar)
+PY
+# JavaFX loads its natives from the folder of its jar when they are there, and otherwise extracts them into
+# ~/.openjfx/cache (the first start of each user) and compares them with the jar's at every start
+python3 - "$STAGE" "$STAGE"/javafx-graphics-*-linux.jar <<'PY'
+import os, sys, zipfile
+with zipfile.ZipFile(sys.argv[2]) as jar:
+    for e in jar.infolist():
+        if e.filename.endswith('.so') and '/' not in e.filename:
+            with open(os.path.join(sys.argv[1], e.filename), 'wb') as out:
+                out.write(jar.read(e))
+PY
 # the simulated team and NAO come with the package where they run (Linux x86-64)
 mkdir -p "$STAGE/robot-side"
 install -m 755 -s "$BIN/touchline-robot" "$BIN/touchline-nao-sim" "$STAGE/robot-side/"
@@ -112,25 +133,55 @@ cp CHANGELOG.md "$IMAGE/touchline/"
 
 # The launcher runs ZGC, which has no compressed pointers: the JVM maps the runtime's
 # classes_nocoops.jsa (the JDK's class-data archive) and never classes.jsa, 12 MB the package need
-# not carry. No archive of the application's classes: JDK 17 checks an archive's class path as
-# written when it was made, so one made here (target/package/image/…) is ignored under /opt/touchline
-# (measured, docs/benchmarks.md "Start").
+# not carry. The runtime's native libraries lose their symbols (libjvm.so 24 -> 20 MB).
 rm -f "$IMAGE/touchline/lib/runtime/lib/server/classes.jsa"
+chmod -R u+w "$IMAGE/touchline/lib/runtime"
+find "$IMAGE/touchline/lib/runtime" -name '*.so' -exec strip --strip-unneeded {} +
+
+# The classes a console start loads, for the installed console's class-data archive (AppCDS; docs/install.md):
+# a training run of the image's runtime opens the window on a private Xvfb display with the demo layout,
+# draws 120 frames and closes, and the JVM writes the names of the classes it loaded. The archive itself is
+# made where the package is installed (its postinst, lib/touchline-class-archive): JDK 17 ties an archive to
+# the class path as written when it was made, so one made here (target/package/image/…) is ignored under
+# /opt/touchline (measured, docs/benchmarks.md "Desktop entry to window").
+command -v xvfb-run >/dev/null || die "xvfb-run missing (package xvfb): the class list is recorded with the window open"
+APP_DIR="$ROOT/$IMAGE/touchline/lib/app"
+CLASSPATH_OF_APP=$(sed -n "s|^app.classpath=[$]APPDIR|$APP_DIR|p" "$APP_DIR/touchline.cfg" | paste -sd: -)
+TRAINING=$(mktemp -d)
+say "recording the classes a console start loads (a training run under Xvfb, about 10 s on a quiet machine)"
+if ! timeout 300 xvfb-run -a "$IMAGE/touchline/lib/runtime/bin/java" -XX:+UseZGC \
+    -XX:DumpLoadedClassList="$APP_DIR/touchline.classlist" -Dtouchline.cds.training=120 \
+    -Dtouchline.robotside.bin="$APP_DIR/robot-side" -cp "$CLASSPATH_OF_APP" touchline.cli.Main \
+    console --port 0 --demo --layouts "$TRAINING" >"$TRAINING/training.log" 2>&1 \
+    || [ "$(wc -l <"$APP_DIR/touchline.classlist")" -lt 1000 ]; then
+  tail -5 "$TRAINING/training.log" >&2
+  die "the training run for the class list failed (above)"
+fi
+rm -rf "$TRAINING"
 
 TARBALL="$OUT/touchline-$VERSION-linux-x64.tar.gz"
 say "writing $TARBALL"
 tar -C "$IMAGE" -czf "$TARBALL" touchline
 
 # The .deb: the app image under /opt/touchline, the command on the PATH, the desktop entry and the
-# icon as plain files of the package (no maintainer scripts: `dpkg -x` into a scratch root gives the
-# same tree as `dpkg -i`). Written with dpkg-deb directly: jpackage --type deb took 7 minutes here
-# (it compresses with xz and asks dpkg about every native library) and left the PATH to a postinst.
+# icon as plain files of the package (the postinst only makes the class-data archive, the postrm removes
+# it: `dpkg -x` into a scratch root gives a console that works, only starts slower). Written with
+# dpkg-deb directly: jpackage --type deb took 7 minutes here (it compresses with xz and asks dpkg about
+# every native library) and left the PATH to a postinst.
 say "building the Debian package"
 TREE="$OUT/deb-tree"
 rm -rf "$TREE"
 mkdir -p "$TREE/DEBIAN" "$TREE/opt" "$TREE/usr/bin" "$TREE/usr/share/applications" \
   "$TREE/usr/share/icons/hicolor/256x256/apps" "$TREE/usr/share/doc/touchline"
 cp -a "$IMAGE/touchline" "$TREE/opt/touchline"
+# The .deb's console maps the class-data archive its postinst makes in /var/cache/touchline (the
+# .tar.gz's does not: it has no install step). The archive holds the JDK's classes too, so the deb
+# leaves out the runtime's own (10 MB, used only where the archive is missing: then the start is slower).
+install -m 755 packaging/linux/touchline-class-archive "$TREE/opt/touchline/lib/touchline-class-archive"
+install -m 755 packaging/linux/postinst packaging/linux/postrm "$TREE/DEBIAN/"
+printf '%s\n' 'java-options=-XX:SharedArchiveFile=/var/cache/touchline/touchline.jsa' 'java-options=-Xshare:auto' \
+  'java-options=-Xlog:cds=off' 'java-options=-Xlog:cds+dynamic=off' >>"$TREE/opt/touchline/lib/app/touchline.cfg"
+rm -f "$TREE/opt/touchline/lib/runtime/lib/server/classes_nocoops.jsa"
 ln -s /opt/touchline/bin/touchline "$TREE/usr/bin/touchline"
 ln -s /opt/touchline/lib/app/robot-side/touchline-robot "$TREE/usr/bin/touchline-robot"
 ln -s /opt/touchline/lib/app/robot-side/touchline-nao-sim "$TREE/usr/bin/touchline-nao-sim"

@@ -28,8 +28,10 @@ import static org.junit.jupiter.api.Assertions.fail;
  * {@code dpkg -r}), else with {@code dpkg -x} into a scratch root — and the installed
  * {@code touchline} answers {@code --version}, a headless {@code listen} decodes the packaged
  * simulated robot on loopback, {@code record} records it and {@code replay --headless} plays
- * that recording and the packaged sample. The
- * installed size stays within the 120 MB budget. About two minutes (one to build, the jlinked
+ * that recording and the packaged sample. The class-data archive for a fast start (made by the postinst, or
+ * by its script where the package was only unpacked) serves the application's classes for the installed
+ * class path, and under CI the installed launcher maps it. The installed size with the archive stays within
+ * the 120 MB budget. About two minutes (one to build, the jlinked
  * runtime cached in target/package), so it is tagged slow; {@code ./touchline test} runs it.
  */
 @Tag("integration")
@@ -66,9 +68,12 @@ class PackageTest {
         for (String path : List.of("./usr/bin/touchline -> /opt/touchline/bin/touchline",
                 "./usr/share/applications/touchline.desktop", "./usr/share/icons/hicolor/256x256/apps/touchline.png",
                 "./opt/touchline/lib/runtime/bin/java", "./opt/touchline/lib/app/robot-side/touchline-robot",
-                "./opt/touchline/lib/app/samples/demo-team.mcap")) {
+                "./opt/touchline/lib/app/samples/demo-team.mcap", "./opt/touchline/lib/app/touchline.classlist",
+                "./opt/touchline/lib/touchline-class-archive")) {
             assertTrue(contents.contains(path), "the package holds " + path);
         }
+        String info = run(List.of("dpkg-deb", "-I", deb.toString()), 30).output();
+        assertTrue(info.contains(" postinst") && info.contains(" postrm"), "the postinst makes the class archive:\n" + info);
 
         boolean system = Requirement.underCi() && "root".equals(System.getProperty("user.name"));
         Path root = system ? Path.of("/") : scratch.resolve("root");
@@ -87,6 +92,13 @@ class PackageTest {
             Result v = run(List.of(touchline.toString(), "--version"), 120);
             assertEquals(0, v.exit(), v.output());
             assertEquals("Touchline " + version, v.output().lines().findFirst().orElse(""), v.output());
+
+            long archiveKb = classArchiveServesTheInstalledClassPath(root, system);
+            assertTrue(installedKb + archiveKb <= BUDGET_KB, "installed " + installedKb / 1024 + " MB and the class archive "
+                    + archiveKb / 1024 + " MB: over the 120 MB budget");
+            if (system) {
+                launcherMapsTheArchive(touchline);
+            }
 
             int port = freeUdpPort();
             try (RobotProcess robot = RobotProcess.of(List.of(app.resolve("robot-side/touchline-robot").toString(),
@@ -115,7 +127,62 @@ class PackageTest {
             if (system) {
                 Result removed = run(List.of("dpkg", "-r", "touchline"), 120);
                 assertEquals(0, removed.exit(), "dpkg -r:\n" + removed.output());
+                assertTrue(Files.notExists(SYSTEM_ARCHIVE_DIR), "the postrm removes " + SYSTEM_ARCHIVE_DIR);
             }
+        }
+    }
+
+    private static final Path SYSTEM_ARCHIVE_DIR = Path.of("/var/cache/touchline");
+
+    /**
+     * The class-data archive of the installed console (the postinst's, or made here by the same script into a
+     * scratch directory where the package was only unpacked) serves the application's classes for the class
+     * path the launcher builds from the installed touchline.cfg: -Xshare:on fails when it does not map, and
+     * the class-load log names where touchline.cli.Main came from. Returns the archive's size in KB.
+     */
+    private long classArchiveServesTheInstalledClassPath(Path root, boolean system) throws Exception {
+        Path lib = root.resolve("opt/touchline/lib");
+        Path dir = system ? SYSTEM_ARCHIVE_DIR : scratch.resolve("cache");
+        if (!system) {
+            Result made = run(List.of(lib.resolve("touchline-class-archive").toString(), dir.toString()), 600);
+            assertEquals(0, made.exit(), made.output());
+        }
+        Path archive = dir.resolve("touchline.jsa");
+        assertTrue(Files.isRegularFile(archive), archive + " was made (postinst: " + system + ")");
+        String cfg = Files.readString(lib.resolve("app/touchline.cfg"));
+        assertTrue(cfg.contains("java-options=-XX:SharedArchiveFile=" + SYSTEM_ARCHIVE_DIR.resolve("touchline.jsa")),
+                "the launcher maps the archive:\n" + cfg);
+        String appDir = lib.resolve("app").toString();
+        String classPath = String.join(":", cfg.lines().filter(l -> l.startsWith("app.classpath=$APPDIR"))
+                .map(l -> appDir + l.substring("app.classpath=$APPDIR".length())).toList());
+        Result on = run(List.of(lib.resolve("runtime/bin/java").toString(), "-XX:+UseZGC", "-Xshare:on",
+                "-XX:SharedArchiveFile=" + archive, "-Xlog:class+load=info", "-cp", classPath, "touchline.cli.Main",
+                "--version"), 120);
+        assertEquals(0, on.exit(), tail(on.output()));
+        assertTrue(on.output().lines().anyMatch(l -> l.endsWith(" touchline.cli.Main source: shared objects file")),
+                "touchline.cli.Main comes from the archive:\n" + tail(on.output()));
+        return Files.size(archive) / 1024;
+    }
+
+    /** The installed launcher maps the postinst's archive: it shows in the process's memory map. */
+    private void launcherMapsTheArchive(Path touchline) throws Exception {
+        Process p = new ProcessBuilder(touchline.toString(), "listen", "--bind", "127.0.0.1", "--port",
+                Integer.toString(freeUdpPort()), "--seconds", "20", "--quiet").redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            Path maps = Path.of("/proc", Long.toString(p.pid()), "maps");
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+            boolean mapped = false;
+            while (!mapped && p.isAlive() && System.nanoTime() < deadline) {
+                mapped = Files.readString(maps).contains(SYSTEM_ARCHIVE_DIR.resolve("touchline.jsa").toString());
+                if (!mapped) {
+                    TimeUnit.MILLISECONDS.sleep(50); // polling the JVM's memory map, not synchronisation
+                }
+            }
+            assertTrue(mapped, "the installed launcher's JVM maps " + SYSTEM_ARCHIVE_DIR.resolve("touchline.jsa"));
+        } finally {
+            p.destroy();
+            p.waitFor(10, TimeUnit.SECONDS);
         }
     }
 

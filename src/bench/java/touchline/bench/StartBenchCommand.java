@@ -18,8 +18,10 @@ import java.util.concurrent.TimeUnit;
  * the console's own start. The .deb is unpacked ({@code dpkg -x}) into a scratch root, its
  * desktop entry's Exec line is started (with the scratch root's path), and the time until a
  * window titled "Touchline …" is mapped and visible is taken by polling {@code xdotool search
- * --onlyvisible} every 20 ms. Baseline, alternating in the same run: the console as the
- * developer launcher starts it ({@code java -XX:+UseZGC -Xmx512m -cp target/classes:… console}).
+ * --onlyvisible} every 20 ms. With {@code --root DIR} the package is the one installed in DIR (by
+ * {@code apt-get install} in {@code packaging/check-fresh.sh --keep}'s Debian root, postinst and class-data
+ * archive included) and the Exec line runs there through {@code chroot}. Baseline, alternating in the
+ * same run: the developer launcher, {@code ./touchline console} (the built jar with its class-data archive).
  * Both get {@code --port 0} so a running demo's port 11011 does not stop them. Needs a display:
  * {@code xvfb-run -a ./touchline bench start}.
  */
@@ -29,6 +31,11 @@ final class StartBenchCommand implements Callable<Integer> {
 
     @Option(names = "--deb", description = "the package (default: target/package/touchline_<version>_amd64.deb)")
     Path deb;
+
+    @Option(names = "--root", description = "a root the package is installed in (e.g. kept by packaging/check-fresh.sh "
+            + "--keep, with its /proc and /dev mounted): the desktop entry's command runs there through chroot, with "
+            + "the class-data archive its postinst made (needs root)")
+    Path installedRoot;
 
     @Option(names = "--rounds", defaultValue = "5", description = "starts of each (default ${DEFAULT-VALUE})")
     int rounds;
@@ -49,23 +56,42 @@ final class StartBenchCommand implements Callable<Integer> {
         if (consoleOnly) {
             return new ConsoleStartBench(rounds, demo).run();
         }
-        String version = touchline.app.ProductVersion.ofThisBuild().version();
-        Path pkg = deb != null ? deb : Path.of("target/package/touchline_" + version + "_amd64.deb");
-        if (!Files.isRegularFile(pkg)) {
-            System.err.println(pkg + " missing: ./touchline package builds it");
-            return 2;
+        List<String> packaged;
+        Path root;
+        if (installedRoot != null) {
+            root = null;
+            if (!Files.isRegularFile(installedRoot.resolve("proc/self/maps"))) {
+                System.err.println(installedRoot + "/proc is not mounted: packaging/check-fresh.sh --keep leaves it mounted");
+                return 2;
+            }
+            // the Exec line as it is, in the installed root; the display is this machine's (one network namespace),
+            // its cookie (xvfb-run's) copied into the root
+            packaged = new ArrayList<>(List.of("chroot", installedRoot.toString(), "/usr/bin/env", "-i",
+                    "PATH=/usr/sbin:/usr/bin:/sbin:/bin", "HOME=/root", "LANG=C.UTF-8", "DISPLAY=" + System.getenv("DISPLAY")));
+            String xauthority = System.getenv("XAUTHORITY");
+            if (xauthority != null && Files.isRegularFile(Path.of(xauthority))) {
+                Files.copy(Path.of(xauthority), installedRoot.resolve("tmp/touchline-bench.xauth"),
+                        java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                packaged.add("XAUTHORITY=/tmp/touchline-bench.xauth");
+            }
+            packaged.addAll(Arrays.asList(desktopExec(installedRoot).split(" ")));
+        } else {
+            String version = touchline.app.ProductVersion.ofThisBuild().version();
+            Path pkg = deb != null ? deb : Path.of("target/package/touchline_" + version + "_amd64.deb");
+            if (!Files.isRegularFile(pkg)) {
+                System.err.println(pkg + " missing: ./touchline package builds it");
+                return 2;
+            }
+            root = Files.createTempDirectory("touchline-start-bench");
+            run(List.of("dpkg", "-x", pkg.toString(), root.toString()));
+            packaged = new ArrayList<>(Arrays.asList(desktopExec(root).replace("/opt/touchline", root + "/opt/touchline")
+                    .split(" ")));
         }
-        Path root = Files.createTempDirectory("touchline-start-bench");
-        run(List.of("dpkg", "-x", pkg.toString(), root.toString()));
-        String exec = Files.readAllLines(root.resolve("usr/share/applications/touchline.desktop")).stream()
-                .filter(l -> l.startsWith("Exec=")).findFirst().orElseThrow().substring(5);
-        List<String> packaged = new ArrayList<>(Arrays.asList(exec.replace("/opt/touchline", root + "/opt/touchline")
-                .split(" ")));
         packaged.addAll(List.of("--port", "0"));
-        List<String> developer = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-XX:+UseZGC", "-Xmx512m", "-cp", "target/classes:" + Files.readString(Path.of("target/classpath.txt")).trim(),
-                "touchline.cli.Main", "console", "--port", "0");
-        // one start of each first, unmeasured: JavaFX unpacks its natives into ~/.openjfx/cache once
+        // the developer launcher as a developer starts the console: the built jar with its class-data archive
+        List<String> developer = List.of("./touchline", "console", "--port", "0");
+        // one start of each first, unmeasured: the developer launcher's JavaFX unpacks its natives into
+        // ~/.openjfx/cache once (the package's lie beside its jar), and the launcher trains its archive for a new build
         windowAfter(packaged);
         windowAfter(developer);
         double[] pkgSeconds = new double[rounds];
@@ -81,8 +107,15 @@ final class StartBenchCommand implements Callable<Integer> {
         System.out.printf("desktop entry to window: median %.2f s (max %.2f s), budget 3 s: %s%n", pkgMedian,
                 Arrays.stream(pkgSeconds).max().orElse(0), pkgMedian <= 3 ? "met" : "MISSED");
         System.out.printf("developer launcher (baseline): median %.2f s; ratio %.2f%n", devMedian, pkgMedian / devMedian);
-        run(List.of("rm", "-rf", root.toString()));
+        if (root != null) {
+            run(List.of("rm", "-rf", root.toString()));
+        }
         return 0;
+    }
+
+    private static String desktopExec(Path root) throws IOException {
+        return Files.readAllLines(root.resolve("usr/share/applications/touchline.desktop")).stream()
+                .filter(l -> l.startsWith("Exec=")).findFirst().orElseThrow().substring(5);
     }
 
     /** Seconds from starting {@code command} until its window is visible; the process is stopped after. */
