@@ -54,7 +54,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
             }
             var guard = budget.guard(console, udp.bind);
             System.err.println(console.remote().map(r -> r.status().describe()).orElse("listening on UDP port "
-                    + console.udp().localPort() + " (transport: " + console.udp().backend().describe() + ")")
+                    + console.port() + " (transport: " + console.transportDescription() + ")")
                     + guard.map(g -> ", team " + g.team() + "'s messages under " + g.profile().name()).orElse(""));
             String[] lastRemote = {""};
             long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;

@@ -4,8 +4,8 @@ import touchline.app.Console;
 import touchline.app.Replay;
 import touchline.model.OptionState;
 import touchline.model.RobotSnapshot;
-import touchline.transport.TrafficCounters;
-import touchline.transport.gamecontroller.GcSender;
+import touchline.app.TransportCounts;
+import touchline.app.game.EmbeddedGameController;
 
 import java.util.Optional;
 
@@ -17,7 +17,7 @@ import java.util.Optional;
 public final class ConsoleStatus {
 
     private final Console console;
-    private GcSender countedSender;
+    private EmbeddedGameController countedSender;
     private long earlierSendersPackets;
 
     public ConsoleStatus(Console console) {
@@ -83,8 +83,8 @@ public final class ConsoleStatus {
 
     /** Datagrams sent so far: robots (UDP transport) and GameController packets; never goes down. */
     public long packetsOut() {
-        TrafficCounters c = console.udp().counters();
-        GcSender sender = console.gameController().map(gc -> gc.sender()).orElse(null);
+        TransportCounts c = console.transportCounts();
+        EmbeddedGameController sender = console.gameController().orElse(null);
         if (sender != countedSender) {
             if (countedSender != null) {
                 earlierSendersPackets += countedSender.packetsSent();

@@ -99,7 +99,7 @@ public final class ConsoleWindow {
         stage.setScene(scene);
         places.keep(stage, "main", 1400, 900);
         stage.setTitle(console.remote().map(r -> console.runtime().version().title() + " — viewing " + r.status().url())
-                .orElse(console.runtime().version().title() + " — UDP port " + console.udp().localPort()));
+                .orElse(console.runtime().version().title() + " — UDP port " + console.port()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         boolean[] restored = new boolean[1];
         Runnable restore = () -> {

@@ -81,7 +81,7 @@ public final class NaoView implements View {
     private volatile String lastResult = "";
     private volatile List<String> discovered;
     private long shownFrame;
-    private touchline.game.MatchMode matchMode;
+    private touchline.app.game.MatchMode matchMode;
 
     public NaoView(ViewContext context, ViewSource source) {
         this(context.console().bus());
@@ -190,7 +190,7 @@ public final class NaoView implements View {
             channel = new NaoEnvelopeChannel(sink);
             link = new NaoLink(h, rpc, NaoLinkConfig.defaults(), channel, keys);
             if (matchMode != null) {
-                touchline.game.MatchMode mm = matchMode;
+                touchline.app.game.MatchMode mm = matchMode;
                 link.setSendGate(() -> !mm.hold("NAO command"), mm::notice); // no commands to a robot during play
             }
             moves = new NaoMoves(link);
