@@ -219,6 +219,16 @@ public final class Console implements AutoCloseable {
         return gcMonitor;
     }
 
+    /**
+     * The robots as the field's GameController sees them at {@code nowMs} (wall time, ms), when
+     * this console is its monitor; empty otherwise.
+     */
+    public Optional<touchline.app.game.MonitorReport> monitorReport(long nowMs) {
+        GcMonitor m = gcMonitor;
+        return m == null ? Optional.empty()
+                : Optional.of(new touchline.app.game.MonitorReport(m.robots().size(), m.describe(nowMs)));
+    }
+
     private void tick() {
         try {
             robots.tick();
@@ -298,6 +308,11 @@ public final class Console implements AutoCloseable {
         remote = new touchline.transport.remote.RemoteStream(url, tls, codec, new RemoteGameState(matchMode, live),
                 java.time.Duration.ofSeconds(5));
         return remote.start();
+    }
+
+    /** The connection to the remote Touchline this console views, in words and figures, if it views one. */
+    public Optional<touchline.transport.remote.RemoteStatus> remoteStatus() {
+        return remote().map(touchline.transport.remote.RemoteStream::status);
     }
 
     /** The remote Touchline this console views, if it views one. */
@@ -386,8 +401,7 @@ public final class Console implements AutoCloseable {
 
     /** The version, runtime and portable fallbacks in use (the window's Help → About and status bar). */
     public RuntimeReport runtime() {
-        return RuntimeReport.ofThisProcess(udp.backend(),
-                new touchline.transport.gamecontroller.RealtimePriority(10).unavailable());
+        return RuntimeReport.ofThisProcess(udp.backend());
     }
     /** The reliable streams: for this package and the tests' fixture only (faces: {@link #openStream}). */
     ReliableStreamHandler reliable() { return reliable; }
@@ -580,6 +594,11 @@ public final class Console implements AutoCloseable {
         debugRateSubscription = bus.subscribe(debugRate);
         teamMessages = new TeamMessageListener(bind, live, clock);
         return budget;
+    }
+
+    /** The port a team's messages go to by the rules (10000 + team). */
+    public int defaultTeamMessagePort(int team) {
+        return TeamMessageListener.portOf(team);
     }
 
     /** The port the team's messages are heard on, or -1 without a budget guard. */

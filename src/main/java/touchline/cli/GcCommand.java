@@ -24,7 +24,6 @@ import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.app.game.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
-import touchline.transport.gamecontroller.MonitorService;
 import touchline.transport.gamecontroller.RobotLiveness;
 
 import java.io.BufferedReader;
@@ -206,9 +205,9 @@ public final class GcCommand implements Callable<Integer> {
             });
             int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
             if (profile.hsl() && monitorRequests >= 0) {
-                MonitorService m = gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
                         GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
-                print("monitors register on " + m.requestAddress());
+                print("monitors register on " + gc.monitorRequestAddress());
             }
             gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "

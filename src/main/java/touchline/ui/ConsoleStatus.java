@@ -27,7 +27,7 @@ public final class ConsoleStatus {
     /** Why the console does not send or does not listen, in words; "" when it does both. */
     public String silence() {
         StringBuilder s = new StringBuilder();
-        console.remote().ifPresent(r -> s.append(r.status().describe()).append("; ")
+        console.remoteStatus().ifPresent(r -> s.append(r.describe()).append("; ")
                 .append(touchline.app.Console.COMMANDS_OFF));
         String play = console.matchMode().play();
         if (!play.isEmpty()) {

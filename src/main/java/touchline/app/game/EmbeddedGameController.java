@@ -146,6 +146,15 @@ public final class EmbeddedGameController implements AutoCloseable {
         return m;
     }
 
+    /**
+     * Where monitors send their requests, once {@link #serveMonitors} ran (the faces show it);
+     * null before.
+     */
+    public InetSocketAddress monitorRequestAddress() throws IOException {
+        MonitorService m = monitors;
+        return m == null ? null : m.requestAddress();
+    }
+
     /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
     public Game game() {
         return game;

@@ -166,8 +166,8 @@ public final class GameControllerTab implements View {
     /** Answers monitors as the official GameController does; a busy port costs only that (said in the tab). */
     private static String serveMonitors(EmbeddedGameController gc, int port) {
         try {
-            return "monitors register on UDP " + gc.serveMonitors(new InetSocketAddress("0.0.0.0", port),
-                    GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT).requestAddress().getPort();
+            gc.serveMonitors(new InetSocketAddress("0.0.0.0", port), GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+            return "monitors register on UDP " + gc.monitorRequestAddress().getPort();
         } catch (IOException e) {
             return "no monitors: cannot listen on UDP " + port + " (" + e.getMessage() + ")";
         }
