@@ -64,6 +64,7 @@ public final class Console implements AutoCloseable {
     private final MicrosClock replayClock;
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
+    private final TeamSchemas teamSchemas = new TeamSchemas(kinds);
     private final EnvelopeBus bus = new EnvelopeBus();
     private final LiveSwitch live = new LiveSwitch(bus);
     private Recorder recorder;
@@ -392,6 +393,15 @@ public final class Console implements AutoCloseable {
             kinds.add(f).ifPresent(problems::add);
         }
         return problems;
+    }
+
+    /**
+     * Loads a team's own message types from a protoc descriptor set (the replay view's
+     * <i>Team schemas</i>): from then on they are decoded, rendered, recorded and served by name.
+     * Throws with a user-facing message when the file is not a usable descriptor set.
+     */
+    public TeamSchemas.Outcome loadTeamSchemas(Path descriptorSet) throws RecordingException {
+        return teamSchemas.load(descriptorSet);
     }
 
     /** Match mode as the JSON the live server serves ({@code /touchline/matchMode}). */
