@@ -181,10 +181,10 @@ final class IngestBenchCommand implements Callable<Integer> {
             try {
                 if (pacedRate == 0 && !flood) {
                     DrainMeter meter = withTags ? new DrainMeter(this::taggedDatagram, batch) : new DrainMeter(datagrams, batch);
-                    return meter.measure(console.udp().localPort(), secs, decoded,
-                            () -> console.udp().setReading(false), () -> console.udp().setReading(true));
+                    return meter.measure(console.port(), secs, decoded,
+                            () -> console.setReading(false), () -> console.setReading(true));
                 }
-                return drive(console.udp().localPort(), secs, pacedRate, decoded);
+                return drive(console.port(), secs, pacedRate, decoded);
             } finally {
                 if (record) {
                     console.recording().ifPresent(s -> System.out.printf("  recorded %,d, dropped %,d%n", s.written(), s.dropped()));

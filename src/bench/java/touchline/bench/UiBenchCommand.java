@@ -80,7 +80,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     public Integer call() throws Exception {
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-             SimulatedTeam team = SimulatedTeam.start(robots, console.udp().localPort(), List.of("--rate", Integer.toString(rate)))) {
+             SimulatedTeam team = SimulatedTeam.start(robots, console.port(), List.of("--rate", Integer.toString(rate)))) {
             FxThread.startToolkit();
             ConsoleWindow window = FxThread.call(() -> new ConsoleWindow(console,
                     new UiSettings(tempDir(), true, false)).show(new Stage()));
@@ -252,7 +252,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             window.pulse().takeRefreshNanos();
         });
         long startFrames = window.pulse().frames();
-        long startIn = console.udp().counters().datagramsIn();
+        long startIn = console.transportCounts().datagramsIn();
         long start = System.nanoTime();
         double fpsSum = 0;
         double fpsMin = Double.MAX_VALUE;
@@ -276,11 +276,11 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             if (s % 10 == 0) {
                 System.out.printf(Locale.ROOT, "  %4d s  %5.1f fps  p99 %6.1f ms  heap %6.1f MB  in %6.0f pkt/s%n", s, fps,
                         window.pulse().latency().quantileMillis(0.99), used,
-                        (console.udp().counters().datagramsIn() - startIn) / ((System.nanoTime() - start) / 1e9));
+                        (console.transportCounts().datagramsIn() - startIn) / ((System.nanoTime() - start) / 1e9));
             }
         }
         double elapsed = (System.nanoTime() - start) / 1e9;
-        double pps = (console.udp().counters().datagramsIn() - startIn) / elapsed;
+        double pps = (console.transportCounts().datagramsIn() - startIn) / elapsed;
         Map<String, Long> nanos = FxThread.call(() -> window.pulse().takeRefreshNanos());
         long frames = window.pulse().frames() - startFrames;
         double p50 = window.pulse().latency().quantileMillis(0.5);

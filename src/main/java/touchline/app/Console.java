@@ -1,16 +1,17 @@
 package touchline.app;
 
 import touchline.game.GameClock;
-import touchline.game.GameControllerSources;
-import touchline.game.MatchMode;
+import touchline.app.game.GameControllerSources;
+import touchline.app.game.MatchMode;
+import touchline.app.game.MatchModeJson;
 import touchline.model.DebugOptionSession;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.game.Game;
 import touchline.game.RefereedGame;
-import touchline.transport.gamecontroller.EmbeddedGameController;
-import touchline.transport.gamecontroller.GameStateWatch;
+import touchline.app.game.EmbeddedGameController;
+import touchline.app.game.GameStateWatch;
 import touchline.transport.gamecontroller.GcMonitor;
 import touchline.transport.gamecontroller.MonitorRegistrations;
 import touchline.transport.gamecontroller.GcConfig;
@@ -32,6 +33,8 @@ import touchline.transport.ReliableStreamHandler;
 import touchline.transport.SendGate;
 import touchline.transport.SendResult;
 import touchline.transport.UdpTransport;
+import touchline.transport.ReliableSession;
+import touchline.model.RobotSnapshot;
 
 import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
@@ -61,6 +64,7 @@ public final class Console implements AutoCloseable {
     private final MicrosClock replayClock;
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
+    private final TeamSchemas teamSchemas = new TeamSchemas(kinds);
     private final EnvelopeBus bus = new EnvelopeBus();
     private final LiveSwitch live = new LiveSwitch(bus);
     private Recorder recorder;
@@ -220,6 +224,16 @@ public final class Console implements AutoCloseable {
         return gcMonitor;
     }
 
+    /**
+     * The robots as the field's GameController sees them at {@code nowMs} (wall time, ms), when
+     * this console is its monitor; empty otherwise.
+     */
+    public Optional<touchline.app.game.MonitorReport> monitorReport(long nowMs) {
+        GcMonitor m = gcMonitor;
+        return m == null ? Optional.empty()
+                : Optional.of(new touchline.app.game.MonitorReport(m.robots().size(), m.describe(nowMs)));
+    }
+
     private void tick() {
         try {
             robots.tick();
@@ -301,6 +315,11 @@ public final class Console implements AutoCloseable {
         return remote.start();
     }
 
+    /** The connection to the remote Touchline this console views, in words and figures, if it views one. */
+    public Optional<touchline.transport.remote.RemoteStatus> remoteStatus() {
+        return remote().map(touchline.transport.remote.RemoteStream::status);
+    }
+
     /** The remote Touchline this console views, if it views one. */
     public Optional<touchline.transport.remote.RemoteStream> remote() {
         return Optional.ofNullable(remote);
@@ -310,14 +329,96 @@ public final class Console implements AutoCloseable {
     public RobotRegistry robots() { return robots; }
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
-    public UdpTransport udp() { return udp; }
+
+    /**
+     * The UDP transport itself: for this package and the tests' fixture only. The faces use the
+     * core's use cases ({@link #port()}, {@link #transportCounts()}, {@link #openStream}, ...),
+     * never the transport (ArchitectureTest keeps it so).
+     */
+    UdpTransport udp() { return udp; }
+
+    /** The UDP port robots send to (the one bound: a port of 0 asked for any free one). */
+    public int port() {
+        return udp.localPort();
+    }
+
+    /**
+     * Stops or resumes reading from the robots' socket: while stopped, datagrams wait in the
+     * socket's receive buffer (beyond it the kernel drops them). Returns once applied. The ingest
+     * benchmark measures how fast a filled buffer is drained with this.
+     */
+    public void setReading(boolean on) throws InterruptedException {
+        udp.setReading(on);
+    }
+
+    /** The UDP transport in use and why (epoll + recvmmsg, or the portable NIO), in words. */
+    public String transportDescription() {
+        return udp.backend().describe();
+    }
+
+    /** The UDP transport's counts of datagrams and bytes in and out, now. */
+    public TransportCounts transportCounts() {
+        return TransportCounts.of(udp.counters());
+    }
+
+    /**
+     * Opens (or returns) the reliable stream with a robot at {@code peer}: lossless, in-order
+     * bytes both ways, gated by match mode like every command (held segments go out when play
+     * stops; viewing a remote Touchline they never go).
+     */
+    public ReliableSession openStream(InetSocketAddress peer) {
+        return reliable.open(peer);
+    }
+
+    /**
+     * Waits until the live robot {@code robotId} has been heard from an address (at most
+     * {@code timeout}, by the console's clock); empty if it was not.
+     */
+    public Optional<RobotSnapshot> waitForRobot(int robotId, java.time.Duration timeout) throws InterruptedException {
+        long deadline = clock.nowMicros() + timeout.toNanos() / 1000;
+        Optional<RobotSnapshot> seen = robots.robot(robotId).filter(r -> r.address() != null);
+        while (seen.isEmpty() && clock.nowMicros() < deadline) {
+            Thread.sleep(ROBOT_POLL_MILLIS);
+            seen = robots.robot(robotId).filter(r -> r.address() != null);
+        }
+        return seen;
+    }
+
+    private static final long ROBOT_POLL_MILLIS = 20;
+
+    /**
+     * Adds the team's own message types (from a descriptor set, {@code record.SchemaSet}) to
+     * the kinds this console decodes, renders, records and serves; returns one sentence per file
+     * that could not be used (the others are used).
+     */
+    public List<String> loadTeamSchemas(List<com.google.protobuf.Descriptors.FileDescriptor> files) {
+        List<String> problems = new java.util.ArrayList<>();
+        for (var f : files) {
+            kinds.add(f).ifPresent(problems::add);
+        }
+        return problems;
+    }
+
+    /**
+     * Loads a team's own message types from a protoc descriptor set (the replay view's
+     * <i>Team schemas</i>): from then on they are decoded, rendered, recorded and served by name.
+     * Throws with a user-facing message when the file is not a usable descriptor set.
+     */
+    public TeamSchemas.Outcome loadTeamSchemas(Path descriptorSet) throws RecordingException {
+        return teamSchemas.load(descriptorSet);
+    }
+
+    /** Match mode as the JSON the live server serves ({@code /touchline/matchMode}). */
+    public MatchModeJson matchModeJson() {
+        return new MatchModeJson(matchMode);
+    }
 
     /** The version, runtime and portable fallbacks in use (the window's Help → About and status bar). */
     public RuntimeReport runtime() {
-        return RuntimeReport.ofThisProcess(udp.backend(),
-                new touchline.transport.gamecontroller.RealtimePriority(10).unavailable());
+        return RuntimeReport.ofThisProcess(udp.backend());
     }
-    public ReliableStreamHandler reliable() { return reliable; }
+    /** The reliable streams: for this package and the tests' fixture only (faces: {@link #openStream}). */
+    ReliableStreamHandler reliable() { return reliable; }
 
     /** Match mode and the like: what may go to robots right now (GameController packets aside). */
     public void setGate(SendGate gate) {
@@ -352,7 +453,8 @@ public final class Console implements AutoCloseable {
         return List.copyOf(naos);
     }
     public MessageKinds kinds() { return kinds; }
-    public MessageCodec codec() { return codec; }
+    /** The message codec: for this package and the tests' fixture only. */
+    MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
 
     /** The traffic meter's "now": wall time, or the replay position while a replay plays with live listening paused. */
@@ -530,6 +632,11 @@ public final class Console implements AutoCloseable {
         debugRateSubscription = bus.subscribe(debugRate);
         teamMessages = new TeamMessageListener(bind, live, clock);
         return budget;
+    }
+
+    /** The port a team's messages go to by the rules (10000 + team). */
+    public int defaultTeamMessagePort(int team) {
+        return TeamMessageListener.portOf(team);
     }
 
     /** The port the team's messages are heard on, or -1 without a budget guard. */

@@ -1,6 +1,6 @@
 package touchline.app;
 
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;

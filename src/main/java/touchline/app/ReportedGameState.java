@@ -1,6 +1,6 @@
 package touchline.app;
 
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.proto.Fumanoid;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;

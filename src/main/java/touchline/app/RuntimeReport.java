@@ -20,6 +20,14 @@ public record RuntimeReport(ProductVersion version, String java, String system, 
                             String realtimeUnavailable) {
 
     /** This process, for a console on {@code udp}. */
+    /**
+     * This process with {@code udp} as its transport: whether the GameController sender may run at
+     * real-time priority is asked of the system here.
+     */
+    public static RuntimeReport ofThisProcess(UdpBackend udp) {
+        return ofThisProcess(udp, new touchline.transport.gamecontroller.RealtimePriority(10).unavailable());
+    }
+
     public static RuntimeReport ofThisProcess(UdpBackend udp, String realtimeUnavailable) {
         return new RuntimeReport(ProductVersion.ofThisBuild(),
                 "Java " + System.getProperty("java.runtime.version", System.getProperty("java.version", "?"))

@@ -7,7 +7,7 @@ import touchline.game.ActionSyntax;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.game.Outcome;
 import touchline.game.Penalty;
 import touchline.game.RefereedGame;
@@ -21,10 +21,9 @@ import touchline.protocol.gamecontroller.MonitorRequest;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
-import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.app.game.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
-import touchline.transport.gamecontroller.MonitorService;
 import touchline.transport.gamecontroller.RobotLiveness;
 
 import java.io.BufferedReader;
@@ -206,15 +205,15 @@ public final class GcCommand implements Callable<Integer> {
             });
             int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
             if (profile.hsl() && monitorRequests >= 0) {
-                MonitorService m = gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
                         GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
-                print("monitors register on " + m.requestAddress());
+                print("monitors register on " + gc.monitorRequestAddress());
             }
             gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
             if (realtime) {
-                String why = gc.sender().awaitRealtimeOutcome(5000);
+                String why = gc.awaitRealtimeOutcome(5000);
                 print(why.isEmpty() ? "sender runs with real-time priority"
                         : "! no real-time priority (500 ms cadence may jitter on a busy machine): " + why);
             }
@@ -237,7 +236,7 @@ public final class GcCommand implements Callable<Integer> {
                 }
             }
             // The HSL schedule does not send a change at once: send the final state before closing.
-            gc.sender().sendNow();
+            gc.sendNow();
             Thread.sleep(100);
         }
         return 0;
@@ -266,7 +265,7 @@ public final class GcCommand implements Callable<Integer> {
     private void status(EmbeddedGameController gc) {
         RefereedGame game = gc.referee();
         print("status: " + game.describe());
-        print("packets sent: " + gc.sender().packetsSent() + ", send errors: " + gc.sender().sendErrors());
+        print("packets sent: " + gc.packetsSent() + ", send errors: " + gc.sendErrors());
         long now = game.now();
         GameControlData data = game.trueData();
         for (var e : gc.liveness().all(now).entrySet()) {

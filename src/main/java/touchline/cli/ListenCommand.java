@@ -53,8 +53,8 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 console.start();
             }
             var guard = budget.guard(console, udp.bind);
-            System.err.println(console.remote().map(r -> r.status().describe()).orElse("listening on UDP port "
-                    + console.udp().localPort() + " (transport: " + console.udp().backend().describe() + ")")
+            System.err.println(console.remoteStatus().map(r -> r.describe()).orElse("listening on UDP port "
+                    + console.port() + " (transport: " + console.transportDescription() + ")")
                     + guard.map(g -> ", team " + g.team() + "'s messages under " + g.profile().name()).orElse(""));
             String[] lastRemote = {""};
             long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
@@ -63,13 +63,13 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                         TimeUnit.NANOSECONDS)) {
                     break;
                 }
-                console.remote().map(r -> r.status().describe()).filter(d -> !d.equals(lastRemote[0])).ifPresent(d -> {
+                console.remoteStatus().map(r -> r.describe()).filter(d -> !d.equals(lastRemote[0])).ifPresent(d -> {
                     lastRemote[0] = d;
                     System.err.println(d);
                 });
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
-                    monitorTable.print(out, console.gcMonitor(), System.currentTimeMillis());
+                    monitorTable.print(out, console.monitorReport(System.currentTimeMillis()));
                     out.println(console.gcSources().describe());
                     String gcWarning = console.gcSources().warning();
                     if (!gcWarning.isEmpty()) {

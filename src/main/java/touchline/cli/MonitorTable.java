@@ -1,17 +1,17 @@
 package touchline.cli;
 
-import touchline.transport.gamecontroller.GcMonitor;
+import touchline.app.game.MonitorReport;
 
 import java.io.PrintStream;
 
 /** Each robot as the field's GameController sees it (with {@code --gc-monitor}), as text lines. */
 final class MonitorTable {
 
-    void print(PrintStream out, GcMonitor monitor, long nowMs) {
-        if (monitor == null) {
+    void print(PrintStream out, java.util.Optional<MonitorReport> monitor) {
+        if (monitor.isEmpty()) {
             return;
         }
-        out.println("GameController sees " + monitor.robots().size() + " robot(s):");
-        monitor.describe(nowMs).forEach(line -> out.println("  " + line));
+        out.println("GameController sees " + monitor.get().robots() + " robot(s):");
+        monitor.get().lines().forEach(line -> out.println("  " + line));
     }
 }

@@ -45,7 +45,7 @@ final class OptionsCommand implements Callable<Integer> {
                 System.err.println(console.robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : "robot " + robot + " was not seen within " + timeoutSeconds + " s (is it sending to port "
-                        + console.udp().localPort() + "?)");
+                        + console.port() + "?)");
                 return 2;
             }
             int status = 0;

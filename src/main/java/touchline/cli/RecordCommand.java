@@ -75,7 +75,7 @@ public final class RecordCommand implements Callable<Integer> {
     public RecordCommand() {
         this((config, teamFiles) -> sink -> {
             Console console = new Console(config);
-            teamFiles.forEach(f -> console.kinds().add(f));
+            console.loadTeamSchemas(teamFiles);
             console.bus().subscribe(sink);
             return console.start();
         });
@@ -137,7 +137,7 @@ public final class RecordCommand implements Callable<Integer> {
             err.println("touchline record: cannot listen on port " + udp.port + ": " + e.getMessage());
             return 1;
         }
-        int port = source instanceof Console c ? c.udp().localPort() : udp.port;
+        int port = source instanceof Console c ? c.port() : udp.port;
         stdout.println("recording UDP port " + port + " to " + file.toAbsolutePath() + " (Ctrl+C to stop)");
         stdout.flush();
         long deadline = seconds > 0 ? System.nanoTime() + seconds * 1_000_000_000L : Long.MAX_VALUE;

@@ -62,7 +62,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         Files.createDirectories(out);
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-             SimulatedTeam team = SimulatedTeam.start(3, console.udp().localPort(), List.of())) {
+             SimulatedTeam team = SimulatedTeam.start(3, console.port(), List.of())) {
             FxThread.startToolkit();
             Path layouts = Files.createTempDirectory("touchline-layouts");
             ConsoleWindow window = FxThread.call(() -> new ConsoleWindow(console,

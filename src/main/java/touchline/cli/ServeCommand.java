@@ -1,5 +1,6 @@
 package touchline.cli;
 
+import touchline.app.game.MatchModeJson;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -128,10 +129,12 @@ final class ServeCommand implements Callable<Integer> {
             return e.exitCode();
         }
         try (Console console = new Console(consoleConfig)) {
-            schemas.teamFiles().forEach(f -> console.kinds().add(f).ifPresent(r -> err.println("touchline serve: " + r)));
+            console.loadTeamSchemas(schemas.teamFiles()).forEach(r -> err.println("touchline serve: " + r));
             Serving serving;
             try {
-                serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
+                serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
+                    new touchline.serve.JsonChannel(MatchModeJson.TOPIC, MatchModeJson.SCHEMA_NAME, MatchModeJson.SCHEMA,
+                            console.matchModeJson()::now),
                     new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
                     touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
             } catch (IllegalArgumentException e) {
@@ -166,7 +169,7 @@ final class ServeCommand implements Callable<Integer> {
                         err.println("touchline serve: " + e.getMessage());
                         return e.exitCode();
                     }
-                    out.println("hearing robots on UDP port " + console.udp().localPort()
+                    out.println("hearing robots on UDP port " + console.port()
                             + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
                 }
                 out.println("serving Foxglove WebSocket (Foxglove/Lichtblick: Open connection → Foxglove WebSocket):");

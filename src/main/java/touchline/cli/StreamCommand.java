@@ -39,17 +39,12 @@ final class StreamCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         try (Console console = new Console(udp.config()).start()) {
-            long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
-            Optional<RobotSnapshot> seen = Optional.empty();
-            while (seen.isEmpty() && System.nanoTime() < deadline) {
-                seen = console.robots().robot(robot);
-                Thread.sleep(20);
-            }
-            if (seen.isEmpty() || seen.get().address() == null) {
+            Optional<RobotSnapshot> seen = console.waitForRobot(robot, java.time.Duration.ofSeconds(timeoutSeconds));
+            if (seen.isEmpty()) {
                 System.err.println("robot " + robot + " was not seen within " + timeoutSeconds + " s");
                 return 2;
             }
-            ReliableSession session = console.reliable().open(seen.get().address());
+            ReliableSession session = console.openStream(seen.get().address());
             session.onReceive(p -> {
                 System.out.write(p, 0, p.length);
                 System.out.flush();

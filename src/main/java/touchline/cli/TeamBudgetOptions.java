@@ -5,7 +5,6 @@ import touchline.app.Console;
 import touchline.model.RuleProfile;
 import touchline.model.RuleProfileException;
 import touchline.model.TeamMessageBudget;
-import touchline.transport.TeamMessageListener;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
@@ -37,7 +36,7 @@ final class TeamBudgetOptions {
         } catch (RuleProfileException e) {
             throw StartFailure.badInput(e.getMessage());
         }
-        int port = teamPort > 0 ? teamPort : TeamMessageListener.portOf(team);
+        int port = teamPort > 0 ? teamPort : console.defaultTeamMessagePort(team);
         try {
             return Optional.of(console.guardTeamMessages(rules, team, new InetSocketAddress(bind, port)));
         } catch (IOException e) {

@@ -169,11 +169,6 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         }
     }
 
-    /** Serves match mode as the JSON channel {@code /touchline/matchMode}. */
-    public void serveMatchMode(touchline.game.MatchMode matchMode) {
-        states.add(new ServedState(new MatchModeState(matchMode), channels));
-    }
-
     /** Serves {@code state} as its JSON channel (advertised once it has a value), e.g. the team's budget meter. */
     public void serveJson(JsonChannel state) {
         states.add(new ServedState(state, channels));

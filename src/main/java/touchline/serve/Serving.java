@@ -1,6 +1,5 @@
 package touchline.serve;
 
-import touchline.game.MatchMode;
 import touchline.protocol.MessageKinds;
 import touchline.transport.EnvelopeBus;
 import touchline.transport.MicrosClock;
@@ -18,14 +17,13 @@ public final class Serving implements AutoCloseable {
     /**
      * Binds and starts serving; IllegalArgumentException (a sentence for the user) for a
      * configuration that cannot be served (no token beyond loopback, a certificate that does
-     * not load), the bind's own exception when the port cannot be had. {@code states}: more of
-     * the console's state served as JSON channels (the budget meter).
+     * not load), the bind's own exception when the port cannot be had. {@code states}: the
+     * console's state served as JSON channels (match mode, the budget meter; the faces make them
+     * from the application core, which the server does not know).
      */
-    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, MatchMode matchMode,
-                   JsonChannel... states)
+    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, JsonChannel... states)
             throws InterruptedException {
         server = new FoxgloveServer(config, kinds, clock);
-        server.serveMatchMode(matchMode);
         for (JsonChannel s : states) {
             server.serveJson(s);
         }

@@ -175,6 +175,13 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     /**
      * Sends bytes that are already framed; not gated here: callers gate. With a team key the
      * datagram is tagged for {@code robotId} here, so nothing reaches a robot untagged.
+     *
+     * <p>The tag, the write and the OUT envelope happen on the socket's event loop, never on the
+     * caller's thread: a click in a view must not run the bus's subscribers (the recorder's
+     * encoding, the stores) on the JavaFX thread, and tags leave in the order of their counters
+     * whoever sends. "Sent" therefore means accepted: checked here (socket open, room for the tag)
+     * and queued to the event loop, which writes it and then publishes it; the traffic counters
+     * count it at once.
      */
     public SendResult sendRaw(InetSocketAddress target, byte[] datagram, Channel kindChannel, int robotId, String kind,
                               com.google.protobuf.Message decoded) {
@@ -182,16 +189,27 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         if (ch == null || !ch.isActive()) {
             return SendResult.failed("the console's UDP socket is closed");
         }
-        if (security.tagger().isPresent()) {
-            if (datagram.length + Trailer.SIZE > FrameCodec.MAX_DATAGRAM) {
-                return SendResult.failed("datagram of " + datagram.length + " bytes leaves no room for its "
-                        + Trailer.SIZE + "-byte tag within " + FrameCodec.MAX_DATAGRAM + " bytes");
-            }
-            datagram = security.tagger().get().tag(robotId, datagram);
+        boolean tagged = security.tagger().isPresent();
+        if (tagged && datagram.length + Trailer.SIZE > FrameCodec.MAX_DATAGRAM) {
+            return SendResult.failed("datagram of " + datagram.length + " bytes leaves no room for its "
+                    + Trailer.SIZE + "-byte tag within " + FrameCodec.MAX_DATAGRAM + " bytes");
         }
-        counters.countOut(datagram.length);
-        ch.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(datagram), target));
-        sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, kindChannel, target, robotId, kind, decoded, datagram, null));
+        Runnable write = () -> {
+            byte[] wire = tagged ? security.tagger().get().tag(robotId, datagram) : datagram;
+            ch.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(wire), target));
+            sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, kindChannel, target, robotId, kind, decoded,
+                    wire, null));
+        };
+        if (ch.eventLoop().inEventLoop()) {
+            write.run();
+        } else {
+            try {
+                ch.eventLoop().execute(write);
+            } catch (java.util.concurrent.RejectedExecutionException e) {
+                return SendResult.failed("the console's UDP socket is closed");
+            }
+        }
+        counters.countOut(datagram.length + (tagged ? Trailer.SIZE : 0));
         return SendResult.sent();
     }
 

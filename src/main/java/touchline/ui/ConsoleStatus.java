@@ -4,8 +4,8 @@ import touchline.app.Console;
 import touchline.app.Replay;
 import touchline.model.OptionState;
 import touchline.model.RobotSnapshot;
-import touchline.transport.TrafficCounters;
-import touchline.transport.gamecontroller.GcSender;
+import touchline.app.TransportCounts;
+import touchline.app.game.EmbeddedGameController;
 
 import java.util.Optional;
 
@@ -17,7 +17,7 @@ import java.util.Optional;
 public final class ConsoleStatus {
 
     private final Console console;
-    private GcSender countedSender;
+    private EmbeddedGameController countedSender;
     private long earlierSendersPackets;
 
     public ConsoleStatus(Console console) {
@@ -27,7 +27,7 @@ public final class ConsoleStatus {
     /** Why the console does not send or does not listen, in words; "" when it does both. */
     public String silence() {
         StringBuilder s = new StringBuilder();
-        console.remote().ifPresent(r -> s.append(r.status().describe()).append("; ")
+        console.remoteStatus().ifPresent(r -> s.append(r.describe()).append("; ")
                 .append(touchline.app.Console.COMMANDS_OFF));
         String play = console.matchMode().play();
         if (!play.isEmpty()) {
@@ -83,8 +83,8 @@ public final class ConsoleStatus {
 
     /** Datagrams sent so far: robots (UDP transport) and GameController packets; never goes down. */
     public long packetsOut() {
-        TrafficCounters c = console.udp().counters();
-        GcSender sender = console.gameController().map(gc -> gc.sender()).orElse(null);
+        TransportCounts c = console.transportCounts();
+        EmbeddedGameController sender = console.gameController().orElse(null);
         if (sender != countedSender) {
             if (countedSender != null) {
                 earlierSendersPackets += countedSender.packetsSent();

@@ -98,8 +98,8 @@ public final class ConsoleWindow {
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
         places.keep(stage, "main", 1400, 900);
-        stage.setTitle(console.remote().map(r -> console.runtime().version().title() + " — viewing " + r.status().url())
-                .orElse(console.runtime().version().title() + " — UDP port " + console.udp().localPort()));
+        stage.setTitle(console.remoteStatus().map(r -> console.runtime().version().title() + " — viewing " + r.url())
+                .orElse(console.runtime().version().title() + " — UDP port " + console.port()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         boolean[] restored = new boolean[1];
         Runnable restore = () -> {

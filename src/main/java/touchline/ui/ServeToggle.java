@@ -1,5 +1,6 @@
 package touchline.ui;
 
+import touchline.app.game.MatchModeJson;
 import touchline.app.Console;
 import touchline.serve.AccessToken;
 import touchline.serve.FoxgloveServer;
@@ -62,7 +63,9 @@ public final class ServeToggle implements AutoCloseable {
             config = config.withBind("0.0.0.0").withToken(AccessToken.generate(new SecureRandom()));
         }
         try {
-            serving = new Serving(config, console.kinds(), console.clock(), console.bus(), console.matchMode(),
+            serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
+                    new touchline.serve.JsonChannel(MatchModeJson.TOPIC, MatchModeJson.SCHEMA_NAME, MatchModeJson.SCHEMA,
+                            console.matchModeJson()::now),
                     new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
                     touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
             said = "Serving to viewers: " + String.join("  ", serving.server().urls());

@@ -7,7 +7,7 @@ import javafx.scene.layout.HBox;
 import javafx.scene.layout.Priority;
 import javafx.scene.layout.Region;
 import touchline.model.TrafficMeter;
-import touchline.transport.TrafficCounters;
+import touchline.app.TransportCounts;
 
 /**
  * The bottom line: a banner whenever the console is silent and why (match mode, a replay),
@@ -87,7 +87,7 @@ public final class StatusBar extends HBox {
         if (nowMicros - lastMicros < 500_000) {
             return;
         }
-        TrafficCounters c = console.udp().counters();
+        TransportCounts c = console.transportCounts();
         double dt = lastMicros == 0 ? 1 : (nowMicros - lastMicros) / 1e6;
         packetsPerSecond = (c.datagramsIn() - lastIn) / dt;
         long out = readings.packetsOut();

@@ -4,7 +4,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.game.Game;
 import touchline.game.GameClock;
-import touchline.game.GameControllerSources;
+import touchline.app.game.GameControllerSources;
 import touchline.game.LeagueParams;
 import touchline.game.ToPlaying;
 import touchline.game.ToReady;
@@ -18,7 +18,7 @@ import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.SendResult;
 import touchline.transport.UdpConfig;
-import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.app.game.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
 
@@ -75,7 +75,7 @@ class GameControllerSpoofingIntegrationTest {
         InetSocketAddress consoleGcPort = new InetSocketAddress(InetAddress.getLoopbackAddress(), gcPort);
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.udp().localPort()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
              EmbeddedGameController referee = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,
                      List.of(consoleGcPort), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null);
              DatagramSocket forger = new DatagramSocket(new InetSocketAddress("127.0.0.2", 0));

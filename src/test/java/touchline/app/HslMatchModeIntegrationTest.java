@@ -52,7 +52,7 @@ class HslMatchModeIntegrationTest {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))
                 .withGameControllerPort(gcPort);
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.udp().localPort()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
              DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
             console.bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT) {

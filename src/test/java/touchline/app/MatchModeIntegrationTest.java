@@ -40,7 +40,7 @@ class MatchModeIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.udp().localPort()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
              DatagramSocket gc = new DatagramSocket()) {
             console.bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT) {

@@ -77,12 +77,12 @@ class OptionsAcrossConsolesTest {
                     Await.until("demo.plotter stops for A", 10_000, () -> !streaming(a, "demo.plotter"));
                     assertTrue(streaming(a, "demo.text"), "B switching its option off left A's on");
                     assertFalse(b.setOption(ROBOT, "demo.text", false).isSent(), "B may not switch off A's option");
-                    field.forget(b.udp().localPort());
+                    field.forget(b.port());
                 }
                 assertTrue(streaming(a, "demo.text"), "closing B switched nothing off");
 
                 // A and the robot stop; the robot starts afresh, so nothing is on when A comes back
-                field.forget(a.udp().localPort());
+                field.forget(a.port());
             }
             }
             try (RobotProcess robot = RobotProcess.robot(ROBOT, field.port()).start();

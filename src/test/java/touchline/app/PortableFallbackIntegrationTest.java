@@ -74,7 +74,7 @@ class PortableFallbackIntegrationTest {
                     + "(-Dtouchline.realtime=off))"), report.lines().toString());
 
             console.bus().subscribe(seen::add);
-            try (RobotProcess r = RobotProcess.robot(9, console.udp().localPort()).start()) {
+            try (RobotProcess r = RobotProcess.robot(9, console.port()).start()) {
                 Await.until("robot 9 appears over NIO", 5000,
                         () -> console.robots().robot(9).map(RobotSnapshot::online).orElse(false));
                 assertEquals(13, console.robots().robot(9).orElseThrow().teamId());

@@ -37,7 +37,7 @@ class RecordReplayIntegrationTest {
         try (Console console = new Console(loopback()).start()) {
             console.startRecording(file);
             console.bus().subscribe(live::add);
-            int port = console.udp().localPort();
+            int port = console.port();
             try (RobotProcess a = RobotProcess.robot(1, port).start(); RobotProcess b = RobotProcess.robot(2, port).start()) {
                 Await.until("both option lists", 5000, () -> console.options().options(1).listReceived()
                         && console.options().options(2).listReceived());

@@ -56,7 +56,7 @@ class ReplaySandboxIntegrationTest {
     private static void recordAMatch(Path file) throws Exception {
         List<Envelope> seen = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start();
-             RobotProcess robot = RobotProcess.robot(8, console.udp().localPort()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
              DatagramSocket gc = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
             console.startRecording(file);
             console.bus().subscribe(seen::add);
@@ -64,7 +64,7 @@ class ReplaySandboxIntegrationTest {
             assertTrue(console.setOption(8, PLOT, true).isSent());
             Await.until("plots", 5000, () -> count(seen, "debugPlot") >= 10);
             byte[] playing = golden("04-playing.bin");
-            for (int port : new int[] {robot.port(), console.udp().localPort()}) {
+            for (int port : new int[] {robot.port(), console.port()}) {
                 gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), port));
             }
             Await.until("the robot reports PLAYING", 5000,
@@ -87,7 +87,7 @@ class ReplaySandboxIntegrationTest {
         List<Envelope> sentLive = new CopyOnWriteArrayList<>();
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start();
-             RobotProcess robot = RobotProcess.robot(8, console.udp().localPort()).start()) {
+             RobotProcess robot = RobotProcess.robot(8, console.port()).start()) {
             console.bus().subscribe(e -> {
                 if (e.replayed()) {
                     replayed.add(e);

@@ -2,7 +2,7 @@ package touchline.app;
 
 import org.junit.jupiter.api.Test;
 import touchline.game.ManualClock;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.proto.Fumanoid;
 import touchline.transport.Channel;
 import touchline.transport.Direction;

@@ -94,7 +94,7 @@ class SecureRobotLinkIntegrationTest {
         KeyDir team = keys("team");
         KeyDir rival = keys("rival");
         try (Console console = console(team.teamKey());
-             RobotProcess robot = RobotProcess.robot(3, console.udp().localPort(), "--team-key",
+             RobotProcess robot = RobotProcess.robot(3, console.port(), "--team-key",
                      team.file(KeyDir.TEAM_KEY).toString()).start();
              DatagramChannel attacker = DatagramChannel.open()) {
             Await.until("robot 3 verified with its option list", 5000, () -> console.options().options(3).listReceived()
@@ -141,9 +141,9 @@ class SecureRobotLinkIntegrationTest {
         KeyDir team = keys("team");
         KeyDir rival = keys("rival");
         try (Console console = console(team.teamKey());
-             RobotProcess impostor = RobotProcess.robot(4, console.udp().localPort(), "--team-key",
+             RobotProcess impostor = RobotProcess.robot(4, console.port(), "--team-key",
                      rival.file(KeyDir.TEAM_KEY).toString()).start();
-             RobotProcess lab = RobotProcess.robot(5, console.udp().localPort()).start()) {
+             RobotProcess lab = RobotProcess.robot(5, console.port()).start()) {
             Await.until("robot 4 forged, robot 5 unverified with its list", 5000, () ->
                     console.robots().robot(4).map(r -> r.auth().state() == Authenticity.FORGED
                             && r.auth().forged() >= 3).orElse(false)
@@ -153,7 +153,7 @@ class SecureRobotLinkIntegrationTest {
             assertEquals(0, r4.packets());
             assertTrue(r4.auth().lastForgery().contains("another team key"), r4.auth().lastForgery());
             assertTrue(r4.auth().lastForgery().startsWith("127.0.0.1:" + impostor.port()), "with its source");
-            assertTrue(console.udp().counters().forgedIn() >= 3);
+            assertTrue(console.transportCounts().forgedIn() >= 3);
             assertFalse(console.options().options(4).listReceived(), "nothing of the impostor's reached the model");
 
             assertEquals(Authenticity.UNVERIFIED, console.robots().robot(5).orElseThrow().auth().state());
@@ -172,9 +172,9 @@ class SecureRobotLinkIntegrationTest {
         Path file = java.nio.file.Files.writeString(tmp.resolve("stream.txt"), line);
         String key = team.file(KeyDir.TEAM_KEY).toString();
         try (Console console = console(team.teamKey());
-             RobotProcess printer = RobotProcess.robot(6, console.udp().localPort(), "--team-key", key,
+             RobotProcess printer = RobotProcess.robot(6, console.port(), "--team-key", key,
                      "--reliable-print").start();
-             RobotProcess sender = RobotProcess.robot(7, console.udp().localPort(), "--team-key", key).start()) {
+             RobotProcess sender = RobotProcess.robot(7, console.port(), "--team-key", key).start()) {
             Await.until("robots 6 and 7 verified", 5000, () -> console.robots().robots().stream()
                     .filter(r -> r.auth().state() == Authenticity.VERIFIED).count() == 2);
             touchline.transport.ReliableSession toPrinter = console.reliable()
@@ -192,7 +192,7 @@ class SecureRobotLinkIntegrationTest {
         // robot to console: a robot with the key sends a file; the console takes its tagged segments
         try (Console console = console(team.teamKey())) {
             java.io.ByteArrayOutputStream got = new java.io.ByteArrayOutputStream();
-            try (RobotProcess sender = RobotProcess.robot(8, console.udp().localPort(), "--team-key", key,
+            try (RobotProcess sender = RobotProcess.robot(8, console.port(), "--team-key", key,
                     "--reliable-send", file.toString()).start()) {
                 touchline.transport.ReliableSession fromSender = console.reliable()
                         .open(new InetSocketAddress("127.0.0.1", sender.port()));
@@ -209,7 +209,7 @@ class SecureRobotLinkIntegrationTest {
                 synchronized (got) {
                     assertEquals(line, got.toString(java.nio.charset.StandardCharsets.US_ASCII));
                 }
-                assertEquals(0, console.udp().counters().forgedIn(), "no segment was taken for a forgery");
+                assertEquals(0, console.transportCounts().forgedIn(), "no segment was taken for a forgery");
             }
         }
     }

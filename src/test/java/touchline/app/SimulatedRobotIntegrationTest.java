@@ -45,7 +45,7 @@ class SimulatedRobotIntegrationTest {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start()) {
             console.bus().subscribe(seen::add);
-            int port = console.udp().localPort();
+            int port = console.port();
             RobotProcess robot = RobotProcess.robot(7, port).start();
             try {
                 Await.until("robot 7 appears", 5000, () -> console.robots().robot(7).map(RobotSnapshot::online).orElse(false));
@@ -86,14 +86,14 @@ class SimulatedRobotIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start()) {
-            int port = console.udp().localPort();
+            int port = console.port();
             try (RobotProcess r1 = RobotProcess.robot(1, port, "--framing", "legacy").start();
                  RobotProcess r2 = RobotProcess.robot(2, port, "--framing", "length").start();
                  RobotProcess r3 = RobotProcess.robot(3, port).start()) {
                 Await.until("three robots online", 5000, () -> console.robots().robots().stream().filter(RobotSnapshot::online).count() == 3);
                 Await.until("all option lists", 5000, () -> console.options().options(1).listReceived()
                         && console.options().options(2).listReceived() && console.options().options(3).listReceived());
-                assertEquals(0, console.udp().counters().malformedIn());
+                assertEquals(0, console.transportCounts().malformedIn());
             }
         }
     }
@@ -105,11 +105,11 @@ class SimulatedRobotIntegrationTest {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start()) {
             console.bus().subscribe(seen::add);
-            try (RobotProcess robot = RobotProcess.robot(9, console.udp().localPort(), "--wifi-sim").start()) {
+            try (RobotProcess robot = RobotProcess.robot(9, console.port(), "--wifi-sim").start()) {
                 Await.until("robot 9 and its option list", 10_000, () -> console.options().options(9).listReceived());
                 assertTrue(console.setOption(9, "demo.text", true).isSent());
                 Await.until("demo.text data through the serial module", 10_000, () -> dataFrom(9, "demo.text") > 0);
-                assertEquals(0, console.udp().counters().malformedIn());
+                assertEquals(0, console.transportCounts().malformedIn());
             }
         }
     }

@@ -39,7 +39,7 @@ class OptionsOffCommandTest {
                     Await.until("the other console has the list", 10_000, () -> other.options().options(8).listReceived());
                     assertTrue(other.setOption(8, "demo.text", true).isSent());
                     Await.until("demo.text streams", 10_000, () -> streaming(watcher));
-                    field.forget(other.udp().localPort());
+                    field.forget(other.port());
                 }
                 int port;
                 try (DatagramSocket free = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {

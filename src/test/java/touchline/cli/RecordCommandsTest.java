@@ -155,7 +155,7 @@ class RecordCommandsTest {
             touchline.app.Console console = new touchline.app.Console(config);
             console.bus().subscribe(sink);
             console.start();
-            port.set(console.udp().localPort());
+            port.set(console.port());
             return console;
         });
         Thread recording = new Thread(() -> run(command, "--out", file.toString(), "--port", "0", "--bind", "127.0.0.1",

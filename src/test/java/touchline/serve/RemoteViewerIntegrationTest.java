@@ -48,7 +48,7 @@ class RemoteViewerIntegrationTest {
     void aSecondTouchlineShowsTheSameRobotOptionsAndTextAndSendsNothing() throws Exception {
         Requirement.robotSide("touchline-robot");
         try (ServedField field = new ServedField();
-             RobotProcess robot = RobotProcess.robot(4, field.console().udp().localPort()).start();
+             RobotProcess robot = RobotProcess.robot(4, field.console().port()).start();
              Console second = viewer()) {
             Console first = field.console();
             Await.until("the first console has robot 4's option list", 5000,
@@ -78,7 +78,7 @@ class RemoteViewerIntegrationTest {
                     new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 4, 0, 5, 1,
                             touchline.game.GameClock.system()),
                     touchline.transport.gamecontroller.GcConfig.defaults(touchline.transport.gamecontroller.GcProfile.HL12)));
-            assertEquals(0, second.udp().counters().datagramsOut(), "the viewing console sent nothing to any robot");
+            assertEquals(0, second.transportCounts().datagramsOut(), "the viewing console sent nothing to any robot");
             assertTrue(first.options().options(4).option(TEXT).orElseThrow().wanted(), "the first console's wish stands");
         }
     }
@@ -127,14 +127,14 @@ class RemoteViewerIntegrationTest {
                 try (java.net.DatagramSocket s = new java.net.DatagramSocket()) {
                     Await.until("the malformed datagram on the viewer", 10_000, () -> {
                         send(s, new java.net.DatagramPacket(garbage, garbage.length,
-                                java.net.InetAddress.getLoopbackAddress(), field.console().udp().localPort()));
+                                java.net.InetAddress.getLoopbackAddress(), field.console().port()));
                         return heard.stream().anyMatch(e -> e.error() != null);
                     });
                 }
                 touchline.transport.Envelope bad = heard.stream().filter(e -> e.error() != null).findFirst().orElseThrow();
                 org.junit.jupiter.api.Assertions.assertArrayEquals(garbage, bad.raw());
                 assertFalse(bad.error().isEmpty());
-                assertEquals(0, second.udp().counters().datagramsOut(), "the viewing console sent nothing");
+                assertEquals(0, second.transportCounts().datagramsOut(), "the viewing console sent nothing");
             }
         }
     }

@@ -32,7 +32,9 @@ final class ServedField implements AutoCloseable {
         console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
         server = new FoxgloveServer(config, console.kinds(), console.clock());
-        server.serveMatchMode(console.matchMode());
+        server.serveJson(new JsonChannel(touchline.app.game.MatchModeJson.TOPIC,
+                touchline.app.game.MatchModeJson.SCHEMA_NAME, touchline.app.game.MatchModeJson.SCHEMA,
+                console.matchModeJson()::now));
         subscription = console.bus().subscribe(server);
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
     }
@@ -62,7 +64,7 @@ final class ServedField implements AutoCloseable {
     /** A robot's datagram to the console's UDP port. */
     void send(Fumanoid.Message m) throws Exception {
         byte[] d = frames.encode(Framing.LENGTH_PREFIX, m.toByteArray());
-        robot.send(new DatagramPacket(d, d.length, InetAddress.getLoopbackAddress(), console.udp().localPort()));
+        robot.send(new DatagramPacket(d, d.length, InetAddress.getLoopbackAddress(), console.port()));
     }
 
     /** Publishes {@code m} into the console's Envelope stream as if its robot had sent it; returns when every subscriber has it. */

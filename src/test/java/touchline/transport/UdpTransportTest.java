@@ -275,4 +275,31 @@ class UdpTransportTest {
         assertTrue(Thread.getAllStackTraces().keySet().stream()
                 .noneMatch(t -> t.isAlive() && t.getName().equals("touchline-decode")), "a decode thread is left running");
     }
+
+    @Test
+    void anOutboundEnvelopeReachesTheSubscribersOnTheTransportsThreadNotTheCallers() throws Exception {
+        // today's cause: a click in the options view ran every subscriber (the recorder's encoding
+        // included) on the JavaFX thread; the caller here stands in for it
+        LinkedBlockingQueue<String> threads = new LinkedBlockingQueue<>();
+        transport.close();
+        transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
+                new MessageCodec(new MessageKinds()), e -> {
+                    threads.add(e.direction() + " " + Thread.currentThread().getName());
+                    received.add(e);
+                }, MicrosClock.system()).start();
+        send(status(4, Framing.LENGTH_PREFIX));
+        next();
+        String in = threads.poll(5, TimeUnit.SECONDS);
+        assertNotNull(in);
+        String transportThread = in.substring("IN ".length());
+
+        assertTrue(transport.send(4, new MessageCodec(new MessageKinds()).optionListRequest()).isSent());
+        assertEquals(1, transport.counters().datagramsOut(), "counted when accepted");
+        assertEquals(Direction.OUT, next().direction());
+        String out = threads.poll(5, TimeUnit.SECONDS);
+        assertEquals("OUT " + transportThread, out, "published on the transport's event loop");
+        assertNotEquals(Thread.currentThread().getName(), transportThread);
+        DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
+        robot.receive(p); // and written
+    }
 }

@@ -56,7 +56,7 @@ final class ConsoleWindowFixture implements AutoCloseable {
     }
 
     int port() {
-        return console.udp().localPort();
+        return console.port();
     }
 
     <T> T fx(Callable<T> step) throws Exception {

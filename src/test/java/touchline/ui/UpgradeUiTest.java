@@ -76,7 +76,7 @@ class UpgradeUiTest {
                     .map(w -> w.getScene() == null ? null : w.getScene().lookup("#help-about-text"))
                     .filter(java.util.Objects::nonNull).map(n -> ((javafx.scene.control.Label) n).getText())
                     .findFirst().orElseThrow());
-            assertTrue(about.contains("UDP transport: " + ui.console.udp().backend().describe()), about);
+            assertTrue(about.contains("UDP transport: " + ui.console.transportDescription()), about);
             assertTrue(about.contains("GameController sender: " + ui.console.runtime().priority()), about);
         } finally {
             ui.close();

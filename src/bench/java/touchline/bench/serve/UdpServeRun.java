@@ -62,14 +62,16 @@ final class UdpServeRun implements Callable<Integer> {
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)), clock).start();
              Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.kinds(), clock, console.bus(),
-                     console.matchMode(), new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                     new touchline.serve.JsonChannel(touchline.app.game.MatchModeJson.TOPIC,
+                    touchline.app.game.MatchModeJson.SCHEMA_NAME, touchline.app.game.MatchModeJson.SCHEMA,
+                    console.matchModeJson()::now), new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
                     touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now))) {
             for (Envelope e : team) {
                 if (!robots.containsKey(e.robotId())) {
                     robots.put(e.robotId(), new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)));
                 }
             }
-            InetSocketAddress to = new InetSocketAddress(InetAddress.getLoopbackAddress(), console.udp().localPort());
+            InetSocketAddress to = new InetSocketAddress(InetAddress.getLoopbackAddress(), console.port());
             send(console, robots, to, team.size()); // every channel exists before the viewers come
             drained(console);
             for (int r = 0; r < rounds; r++) {
@@ -100,7 +102,7 @@ final class UdpServeRun implements Callable<Integer> {
         long deadline = System.nanoTime() + 5_000_000_000L;
         long last = -1;
         while (System.nanoTime() < deadline) {
-            long now = console.udp().counters().datagramsIn();
+            long now = console.transportCounts().datagramsIn();
             if (now == last) {
                 return;
             }
@@ -112,7 +114,7 @@ final class UdpServeRun implements Callable<Integer> {
     /** Sends {@code total} of the team's datagrams at the rate, in 10 ms steps; the console's ingest rate over that time. */
     private double send(Console console, Map<Integer, DatagramSocket> robots, InetSocketAddress to, long total)
             throws java.io.IOException {
-        long inBefore = console.udp().counters().datagramsIn();
+        long inBefore = console.transportCounts().datagramsIn();
         long start = System.nanoTime();
         long n = 0;
         int i = 0;
@@ -126,6 +128,6 @@ final class UdpServeRun implements Callable<Integer> {
             LockSupport.parkNanos(10_000_000L);
         }
         double secs = (System.nanoTime() - start) / 1e9;
-        return (console.udp().counters().datagramsIn() - inBefore) / secs;
+        return (console.transportCounts().datagramsIn() - inBefore) / secs;
     }
 }

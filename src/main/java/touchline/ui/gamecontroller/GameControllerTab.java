@@ -15,12 +15,12 @@ import touchline.app.Console;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.game.RefereedGame;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
-import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.app.game.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.GcSender;
@@ -166,8 +166,8 @@ public final class GameControllerTab implements View {
     /** Answers monitors as the official GameController does; a busy port costs only that (said in the tab). */
     private static String serveMonitors(EmbeddedGameController gc, int port) {
         try {
-            return "monitors register on UDP " + gc.serveMonitors(new InetSocketAddress("0.0.0.0", port),
-                    GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT).requestAddress().getPort();
+            gc.serveMonitors(new InetSocketAddress("0.0.0.0", port), GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+            return "monitors register on UDP " + gc.monitorRequestAddress().getPort();
         } catch (IOException e) {
             return "no monitors: cannot listen on UDP " + port + " (" + e.getMessage() + ")";
         }
@@ -240,7 +240,7 @@ public final class GameControllerTab implements View {
         }
         if (referee != null) {
             referee.refresh(frame);
-            priority.setText(priorityText(shown.sender().realtimeOutcome()));
+            priority.setText(priorityText(shown.realtimeOutcome()));
         }
         String notice = console.matchMode().notice();
         matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);

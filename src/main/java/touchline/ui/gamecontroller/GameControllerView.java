@@ -31,7 +31,7 @@ import touchline.game.ToPlaying;
 import touchline.game.ToReady;
 import touchline.game.ToSet;
 import touchline.game.Unpenalise;
-import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.app.game.EmbeddedGameController;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 

@@ -17,7 +17,7 @@ import javafx.scene.layout.VBox;
 import touchline.app.Console;
 import touchline.game.hsl.HslAction;
 import touchline.protocol.gamecontroller.HslPenalty;
-import touchline.transport.gamecontroller.EmbeddedGameController;
+import touchline.app.game.EmbeddedGameController;
 import touchline.ui.FrameContext;
 import touchline.ui.FramePulse;
 import touchline.ui.View;

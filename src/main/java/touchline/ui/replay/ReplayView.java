@@ -1,5 +1,6 @@
 package touchline.ui.replay;
 
+import touchline.app.TeamSchemas;
 import javafx.scene.Node;
 import javafx.scene.control.Button;
 import javafx.scene.control.CheckBox;
@@ -46,7 +47,6 @@ public final class ReplayView implements View {
     private final WorkQueue work;
     private final WorkQueue scans;
     private final RecordPanel record;
-    private final TeamSchemas schemas;
     private final TimelineCanvas timeline;
     private final TextField path = new TextField();
     private final Label message = new Label();
@@ -75,7 +75,6 @@ public final class ReplayView implements View {
         this.work = new WorkQueue("touchline-replay-view", this::fail);
         this.scans = new WorkQueue("touchline-replay-events", this::fail);
         this.record = new RecordPanel(console, work);
-        this.schemas = new TeamSchemas(console.kinds());
         this.timeline = new TimelineCanvas(this::requestSeek);
         root = new VBox(10, record.node(), new Separator(), replayPane(), new Separator(), schemaPane());
         root.setStyle("-fx-padding: 8;");
@@ -361,7 +360,7 @@ public final class ReplayView implements View {
         work.run(() -> {
             List<String> lines = new ArrayList<>();
             try {
-                TeamSchemas.Outcome o = schemas.load(file);
+                TeamSchemas.Outcome o = console.loadTeamSchemas(file);
                 o.extensions().forEach(x -> lines.add("✔ " + x));
                 o.refusals().forEach(x -> lines.add("✖ " + x));
             } catch (RecordingException e) {

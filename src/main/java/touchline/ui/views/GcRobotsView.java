@@ -4,12 +4,13 @@ import javafx.scene.Node;
 import javafx.scene.control.Label;
 import javafx.scene.control.TextArea;
 import javafx.scene.layout.BorderPane;
-import touchline.transport.gamecontroller.GcMonitor;
+import touchline.app.game.MonitorReport;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
 
 import java.util.List;
+import java.util.Optional;
 
 /**
  * Each robot as the field's HSL GameController sees it: its forwarded return packet (fallen,
@@ -45,14 +46,14 @@ public final class GcRobotsView implements View {
         if (frame.frame() % 30 != 0) {
             return;
         }
-        GcMonitor monitor = context.console().gcMonitor();
-        if (monitor == null) {
+        Optional<MonitorReport> monitor = context.console().monitorReport(System.currentTimeMillis());
+        if (monitor.isEmpty()) {
             status.setText("Not a monitor of the field's GameController: start with --gc-monitor HOST to see the "
                     + "robots as the referee sees them.");
             return;
         }
-        List<String> now = monitor.describe(System.currentTimeMillis());
-        status.setText("The field's GameController sees " + monitor.robots().size() + " robot(s)");
+        List<String> now = monitor.get().lines();
+        status.setText("The field's GameController sees " + monitor.get().robots() + " robot(s)");
         if (!now.equals(shown)) {
             shown = now;
             lines.setText(String.join("\n", now));

@@ -37,7 +37,7 @@ public final class RobotsView implements View {
         this.context = context;
         table.setId("robot-table");
         table.setPlaceholder(new Label("No robot seen yet: robots send keep-alives to UDP port "
-                + context.console().udp().localPort()));
+                + context.console().port()));
         TableColumn<RobotSnapshot, String> online = column("", r -> r.online() ? "●" : "○", 36);
         online.setCellFactory(c -> new TableCell<>() {
             @Override

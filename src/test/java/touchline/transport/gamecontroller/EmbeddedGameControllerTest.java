@@ -1,10 +1,12 @@
 package touchline.transport.gamecontroller;
 
+import touchline.app.game.EmbeddedGameController;
+
 import org.junit.jupiter.api.Test;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.game.Penalty;
 import touchline.game.ToPlaying;
 import touchline.game.ToReady;

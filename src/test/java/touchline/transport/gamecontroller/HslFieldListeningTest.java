@@ -1,10 +1,13 @@
 package touchline.transport.gamecontroller;
 
+import touchline.app.game.EmbeddedGameController;
+import touchline.app.game.GameStateWatch;
+
 import org.junit.jupiter.api.Test;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.transport.Envelope;
 
 import java.io.IOException;

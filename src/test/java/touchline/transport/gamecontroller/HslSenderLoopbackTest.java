@@ -1,5 +1,7 @@
 package touchline.transport.gamecontroller;
 
+import touchline.app.game.EmbeddedGameController;
+
 import org.junit.jupiter.api.Test;
 import touchline.game.ManualClock;
 import touchline.game.hsl.HslGame;

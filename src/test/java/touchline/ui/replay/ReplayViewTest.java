@@ -229,7 +229,7 @@ class ReplayViewTest {
     @Test
     void aTeamSchemaLoadsFromTheView() throws Exception {
         Path desc = dir.resolve("team.desc");
-        Files.write(desc, TeamSchemasTest.teamSet("teamBall", 1042).toByteArray());
+        Files.write(desc, touchline.app.TeamSchemasTest.teamSet("teamBall", 1042).toByteArray());
         fx(() -> {
             view.loadSchema(desc);
             return null;

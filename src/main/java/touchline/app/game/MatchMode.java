@@ -1,4 +1,6 @@
-package touchline.game;
+package touchline.app.game;
+
+import touchline.game.GameClock;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

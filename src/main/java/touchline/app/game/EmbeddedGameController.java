@@ -1,10 +1,18 @@
-package touchline.transport.gamecontroller;
+package touchline.app.game;
+
+import touchline.transport.gamecontroller.GcConfig;
+import touchline.transport.gamecontroller.GcSender;
+import touchline.transport.gamecontroller.MonitorService;
+import touchline.transport.gamecontroller.BadPackets;
+import touchline.transport.gamecontroller.GcProfile;
+import touchline.transport.gamecontroller.RobotLiveness;
+import touchline.transport.gamecontroller.GcListener;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import touchline.game.Action;
 import touchline.game.Game;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.game.Outcome;
 import touchline.game.RefereedGame;
 import touchline.protocol.gamecontroller.Decoded;
@@ -39,6 +47,9 @@ import java.util.function.Consumer;
  * requests) go to event listeners as text.
  */
 public final class EmbeddedGameController implements AutoCloseable {
+
+    /** Envelope time stamps: microseconds since the epoch. */
+    private final touchline.transport.MicrosClock stamps = touchline.transport.MicrosClock.system();
 
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
     private static final String OWN_SOURCE = "this console's GameController";
@@ -135,6 +146,15 @@ public final class EmbeddedGameController implements AutoCloseable {
         return m;
     }
 
+    /**
+     * Where monitors send their requests, once {@link #serveMonitors} ran (the faces show it);
+     * null before.
+     */
+    public InetSocketAddress monitorRequestAddress() throws IOException {
+        MonitorService m = monitors;
+        return m == null ? null : m.requestAddress();
+    }
+
     /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
     public Game game() {
         return game;
@@ -163,6 +183,31 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     public GcSender sender() {
         return sender;
+    }
+
+    /** Game-state packets sent so far (every format counted). */
+    public long packetsSent() {
+        return sender.packetsSent();
+    }
+
+    /** Packets the socket refused so far. */
+    public long sendErrors() {
+        return sender.sendErrors();
+    }
+
+    /** What became of the real-time priority asked for the sender, in words (see {@link GcSender}). */
+    public String realtimeOutcome() {
+        return sender.realtimeOutcome();
+    }
+
+    /** {@link #realtimeOutcome()} once the sender's thread has tried (at most {@code timeoutMs}). */
+    public String awaitRealtimeOutcome(long timeoutMs) {
+        return sender.awaitRealtimeOutcome(timeoutMs);
+    }
+
+    /** Sends the current state now, out of schedule (a change the referee just made). */
+    public void sendNow() {
+        sender.sendNow();
     }
 
     /** The bound return-packet address (useful when port 0 was configured). */
@@ -214,7 +259,7 @@ public final class EmbeddedGameController implements AutoCloseable {
             rejectReturn(data, from, "team " + p.team() + " is not playing in this game");
             return;
         }
-        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 p.kind(), null, data, null));
         liveness.heard(p.team(), p.player(), referee.now());
         MonitorService m = monitors;
@@ -232,7 +277,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     private void rejectReturn(byte[] data, InetSocketAddress from, String reason) {
         boolean first = badPackets.bySource().keySet().stream().noneMatch(k -> k.equals(sourceKey(from)));
         badPackets.count(from, reason);
-        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 "gc.return.malformed", null, data, reason));
         if (first) {
             emit("bad return packet from " + sourceKey(from) + ": " + reason + " (counted, not applied)");
@@ -257,7 +302,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         }
         boolean wasActive = rivals.active(referee.now()).containsKey(sourceKey(from));
         rivals.heard(from, kind, decoded, referee.now());
-        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
+        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
                 null, data, error));
         if (matchMode != null && decoded != null) {
             matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));

@@ -1,7 +1,11 @@
-package touchline.transport.gamecontroller;
+package touchline.app.game;
 
-import touchline.game.GameControllerSources;
-import touchline.game.MatchMode;
+import touchline.transport.gamecontroller.MonitorRegistrations;
+import touchline.transport.gamecontroller.BadPackets;
+import touchline.transport.gamecontroller.GcListener;
+
+import touchline.app.game.GameControllerSources;
+import touchline.app.game.MatchMode;
 import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.transport.Channel;
@@ -25,6 +29,9 @@ import java.net.InetSocketAddress;
  * mode, where a claim of play from anyone keeps the console silent.
  */
 public final class GameStateWatch implements AutoCloseable {
+
+    /** Envelope time stamps: microseconds since the epoch. */
+    private final touchline.transport.MicrosClock stamps = touchline.transport.MicrosClock.system();
 
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private final BadPackets badPackets = new BadPackets();
@@ -97,7 +104,7 @@ public final class GameStateWatch implements AutoCloseable {
         if (error != null) {
             badPackets.count(from, error);
         }
-        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 m == null ? "gc.unknown" : m.format().kind(), null, data, error));
         if (m != null && (error == null || intruder)) {
             // the strictest claim wins: an intruder saying PLAYING silences the console too

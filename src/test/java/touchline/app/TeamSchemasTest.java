@@ -1,4 +1,4 @@
-package touchline.ui.replay;
+package touchline.app;
 
 import com.google.protobuf.DescriptorProtos.DescriptorProto;
 import com.google.protobuf.DescriptorProtos.FieldDescriptorProto;
@@ -18,13 +18,13 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** Loading a team's descriptor set: what decodes afterwards, what is refused and why. */
-class TeamSchemasTest {
+public class TeamSchemasTest {
 
     @TempDir
     Path dir;
 
     /** {@code <name>.proto}: message Payload { float x = 1; } extend fumanoid.Message { Payload <name> = <number>; } */
-    static FileDescriptorSet teamSet(String name, int number) {
+    public static FileDescriptorSet teamSet(String name, int number) {
         FileDescriptorProto team = FileDescriptorProto.newBuilder().setName(name + ".proto").setPackage(name)
                 .addDependency("fumanoid.proto")
                 .addMessageType(DescriptorProto.newBuilder().setName("Payload").addField(FieldDescriptorProto.newBuilder()

@@ -1,4 +1,4 @@
-package touchline.ui.replay;
+package touchline.app;
 
 import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Descriptors.FileDescriptor;
@@ -15,22 +15,23 @@ import java.util.List;
  * A team's own message types loaded at run time from a protoc descriptor set: the files are
  * built onto the compiled FUmanoids types and their {@code Message} extensions handed to the
  * console's {@link MessageKinds}, which then decodes them by name. Remembers what was loaded
- * and what was refused, for the view to list.
+ * and what was refused, for the view to list. The console owns one
+ * ({@link Console#loadTeamSchemas(Path)}): the replay view asks it, never the kinds.
  */
-final class TeamSchemas {
+public final class TeamSchemas {
 
     /** What one descriptor set brought: extensions now decoded, and what was refused and why. */
-    record Outcome(Path file, List<String> extensions, List<String> refusals) { }
+    public record Outcome(Path file, List<String> extensions, List<String> refusals) { }
 
     private final SchemaSet schemas = new SchemaSet();
     private final MessageKinds kinds;
 
-    TeamSchemas(MessageKinds kinds) {
+    public TeamSchemas(MessageKinds kinds) {
         this.kinds = kinds;
     }
 
     /** Loads {@code file}; throws with a user-facing message when it is not a usable descriptor set. */
-    Outcome load(Path file) throws RecordingException {
+    public synchronized Outcome load(Path file) throws RecordingException {
         List<FileDescriptor> added = schemas.load(file);
         List<String> extensions = new ArrayList<>();
         List<String> refusals = new ArrayList<>();

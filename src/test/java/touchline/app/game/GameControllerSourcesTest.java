@@ -1,4 +1,6 @@
-package touchline.game;
+package touchline.app.game;
+
+import touchline.game.ManualClock;
 
 import org.junit.jupiter.api.Test;
 import touchline.protocol.gamecontroller.GameStateFormat;

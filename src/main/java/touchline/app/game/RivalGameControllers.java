@@ -1,4 +1,4 @@
-package touchline.transport.gamecontroller;
+package touchline.app.game;
 
 import touchline.protocol.gamecontroller.GameControlData;
 

@@ -1,0 +1,81 @@
+package touchline.app;
+
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import touchline.proto.Fumanoid;
+import touchline.protocol.FrameCodec;
+import touchline.protocol.Framing;
+import touchline.transport.MicrosClock;
+import touchline.transport.ReliableSession;
+import touchline.transport.UdpConfig;
+
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicLong;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * The use cases the faces call instead of the transports (issue #11): the port, the transport's
+ * counts, waiting for a robot, the reliable stream. A real console on loopback, a plain UDP
+ * socket standing in for the robot.
+ */
+@Tag("integration")
+class ConsoleUseCasesTest {
+
+    private static ConsoleConfig loopback() {
+        return ConsoleConfig.defaults().withGameControllerPort(0)
+                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+    }
+
+    private static void sendStatus(DatagramSocket robot, int id, int port) throws Exception {
+        byte[] d = new FrameCodec().encode(Framing.LENGTH_PREFIX, Fumanoid.Message.newBuilder().setRobotID(id)
+                .setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTeamID(13).build()).build().toByteArray());
+        robot.send(new DatagramPacket(d, d.length, InetAddress.getLoopbackAddress(), port));
+    }
+
+    @Test
+    void waitsForARobotHeardOnThePortItNamesAndCountsItsDatagram() throws Exception {
+        try (Console console = new Console(loopback()).start();
+             DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            assertEquals(console.udp().localPort(), console.port());
+            assertEquals(0, console.transportCounts().datagramsIn());
+            sendStatus(robot, 6, console.port());
+            var seen = console.waitForRobot(6, Duration.ofSeconds(10));
+            assertTrue(seen.isPresent(), "robot 6 was heard");
+            assertEquals(robot.getLocalPort(), seen.get().address().getPort());
+            assertEquals(1, console.transportCounts().datagramsIn());
+            assertFalse(console.transportDescription().isBlank());
+
+            ReliableSession stream = console.openStream(seen.get().address());
+            assertSame(stream, console.openStream(seen.get().address()), "one session per peer");
+            stream.offer(new byte[]{1, 2, 3});
+            robot.setSoTimeout(10_000);
+            boolean segment = false;
+            for (int i = 0; i < 5 && !segment; i++) { // the option-list request to a new robot may come first
+                DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
+                robot.receive(p);
+                assertEquals(console.port(), p.getPort(), "sent from the console's socket");
+                byte[] got = java.util.Arrays.copyOf(p.getData(), p.getLength());
+                segment = got.length > 3 && java.util.Arrays.equals(new byte[]{1, 2, 3},
+                        java.util.Arrays.copyOfRange(got, got.length - 3, got.length));
+            }
+            assertTrue(segment, "the stream's first segment reached the robot");
+        }
+    }
+
+    @Test
+    void aRobotNeverHeardIsNotWaitedForBeyondTheTimeoutByTheConsolesClock() throws Exception {
+        // a clock that moves 1 s at each reading: the 5 s timeout passes after a few polls, whatever the wall clock does
+        AtomicLong micros = new AtomicLong(1_000_000_000L);
+        MicrosClock clock = () -> micros.getAndAdd(1_000_000L);
+        try (Console console = new Console(loopback(), clock).start()) {
+            long before = micros.get();
+            assertTrue(console.waitForRobot(9, Duration.ofSeconds(5)).isEmpty());
+            assertTrue(micros.get() - before >= 5_000_000L, "it waited the timeout by the console's clock");
+        }
+    }
+}
