@@ -134,18 +134,28 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
      * channel (the server the window's Serve to viewers starts), then the views open with
      * serving off again, so the serving phase has a baseline on each side in the same run.
      */
+    /** The server the window's Serve to viewers starts (ui.ServeToggle): the stream, match mode and the budget. */
+    private static touchline.serve.Serving serving(Console console) throws InterruptedException {
+        return new touchline.serve.Serving(touchline.serve.ServeConfig.defaults().withPort(0), console.kinds(),
+                console.clock(), console.bus(),
+                new touchline.serve.JsonChannel(touchline.app.game.MatchModeJson.TOPIC,
+                        touchline.app.game.MatchModeJson.SCHEMA_NAME, touchline.app.game.MatchModeJson.SCHEMA,
+                        console.matchModeJson()::now),
+                new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
+                        touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA,
+                        console.teamBudgetJson()::now));
+    }
+
     private List<Phase> servedPhases(Console console, ConsoleWindow window) throws Exception {
         touchline.transport.MicrosClock clock = console.clock();
         Phase on;
         if (viewersApart) {
-            try (touchline.serve.Serving serving = new touchline.serve.Serving(touchline.serve.ServeConfig.defaults()
-                    .withPort(0), console.kinds(), clock, console.bus(), console.matchMode())) {
+            try (touchline.serve.Serving serving = serving(console)) {
                 on = servedApart(serving, console, window);
             }
             return List.of(on, phase("views open, serving off again", console, window, seconds));
         }
-        try (touchline.serve.Serving serving = new touchline.serve.Serving(touchline.serve.ServeConfig.defaults().withPort(0),
-                console.kinds(), clock, console.bus(), console.matchMode());
+        try (touchline.serve.Serving serving = serving(console);
              touchline.bench.serve.ViewerCrowd crowd = new touchline.bench.serve.ViewerCrowd(serving.server(), viewers,
                      false, clock)) {
             touchline.bench.serve.RoundConditions conditions = new touchline.bench.serve.RoundConditions();

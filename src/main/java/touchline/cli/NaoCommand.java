@@ -7,7 +7,7 @@ import picocli.CommandLine.Parameters;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.app.NaoSession;
-import touchline.game.MatchMode;
+import touchline.app.game.MatchMode;
 import touchline.protocol.nao.ParamSyntax;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
