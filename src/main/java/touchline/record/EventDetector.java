@@ -27,7 +27,6 @@ final class EventDetector {
 
     /** Five keep-alive periods without any datagram: the robot counts as lost. */
     static final long LOST_AFTER_MICROS = 1_000_000;
-    private static final String[] GC_STATES = {"INITIAL", "READY", "SET", "PLAYING", "FINISHED"};
 
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private final List<TimelineEvent> events = new ArrayList<>();
@@ -99,7 +98,7 @@ final class EventDetector {
         int state = data.state();
         if (gcState[d] >= 0 && state != gcState[d]) {
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.STATE_CHANGE, -1,
-                    who + stateName(gcState[d]) + " → " + stateName(state)));
+                    who + GameControlData.stateName(gcState[d]) + " → " + GameControlData.stateName(state)));
         }
         TeamInfo a = data.teams().get(0);
         TeamInfo b = data.teams().get(1);
@@ -127,10 +126,6 @@ final class EventDetector {
     private static String penaltyName(int neutralCode) {
         HslPenalty p = HslPenalty.ofNeutral(neutralCode);
         return p == null ? "penalty " + neutralCode : p.name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
-    }
-
-    private static String stateName(int s) {
-        return s < GC_STATES.length ? GC_STATES[s] : "state " + s;
     }
 
     List<TimelineEvent> finish() {
