@@ -21,6 +21,7 @@ import touchline.protocol.gamecontroller.MonitorRequest;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
+import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
@@ -140,6 +141,14 @@ public final class GcCommand implements Callable<Integer> {
         if (profile == null) {
             out.println("error: unknown format '" + format + "' (" + GcProfile.names() + ")");
             return 2;
+        }
+        for (String d : destinations) {
+            try {
+                HostPort.parse(d, GcProfile.GAME_STATE_PORT);
+            } catch (IllegalArgumentException e) {
+                out.println("error: --dest " + e.getMessage());
+                return 2;
+            }
         }
         TeamColour[] a = {colour(colourA), colour(goalkeeperColourA)};
         TeamColour[] b = {colour(colourB), colour(goalkeeperColourB)};
@@ -298,7 +307,7 @@ public final class GcCommand implements Callable<Integer> {
     private GcConfig config(GcProfile profile) {
         List<InetSocketAddress> dests = new ArrayList<>();
         for (String d : destinations) {
-            dests.add(parseAddress(d, GcProfile.GAME_STATE_PORT));
+            dests.add(HostPort.parse(d, GcProfile.GAME_STATE_PORT).resolved());
         }
         GcConfig defaults = GcConfig.defaults(profile);
         if (dests.isEmpty()) {
@@ -313,14 +322,6 @@ public final class GcCommand implements Callable<Integer> {
         }
         return new GcConfig(profile, v7Compat, dests, null, new InetSocketAddress(bind, returns), rivals,
                 intervalMs, realtime);
-    }
-
-    static InetSocketAddress parseAddress(String text, int defaultPort) {
-        int colon = text.lastIndexOf(':');
-        if (colon > 0 && text.indexOf(':') == colon) {
-            return new InetSocketAddress(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)));
-        }
-        return new InetSocketAddress(text, defaultPort);
     }
 
     private synchronized void print(String line) {

@@ -5,6 +5,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import touchline.protocol.nao.ParamSyntax;
+import touchline.transport.HostPort;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
 import touchline.transport.nao.CameraSettings;
@@ -51,21 +52,6 @@ public final class NaoCommand implements Runnable {
     }
 
 
-    /** HOST or HOST:PORT. */
-    record Target(String host, int port) {
-        static Target parse(String text, int defaultPort) {
-            int colon = text.lastIndexOf(':');
-            if (colon < 0) {
-                return new Target(text, defaultPort);
-            }
-            try {
-                return new Target(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)));
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("bad port in '" + text + "'");
-            }
-        }
-    }
-
     abstract static class LinkOptions {
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
@@ -98,8 +84,15 @@ public final class NaoCommand implements Runnable {
             return spec.commandLine().getErr();
         }
 
-        /** Null (after printing why) when the keys are unusable or the robot did not come online in time. */
-        NaoLink connect(Target t) throws InterruptedException {
+        /** Null (after printing why) when the address or the keys are unusable or the robot did not come online in time. */
+        NaoLink connect(String target, int defaultPort) throws InterruptedException {
+            HostPort t;
+            try {
+                t = HostPort.parse(target, defaultPort);
+            } catch (IllegalArgumentException e) {
+                err().println(e.getMessage());
+                return null;
+            }
             NaoClientKeys keys;
             try {
                 keys = security.load();
@@ -155,7 +148,7 @@ public final class NaoCommand implements Runnable {
                 err().println(e.getMessage());
                 return 2;
             }
-            try (NaoLink link = connect(Target.parse(target, RPC_PORT))) {
+            try (NaoLink link = connect(target, RPC_PORT)) {
                 if (link == null) {
                     return 1;
                 }
@@ -177,7 +170,7 @@ public final class NaoCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            try (NaoLink link = connect(Target.parse(target, RPC_PORT))) {
+            try (NaoLink link = connect(target, RPC_PORT)) {
                 if (link == null) {
                     return 1;
                 }
@@ -218,11 +211,11 @@ public final class NaoCommand implements Runnable {
         @Override
         public Integer call() throws Exception {
             CameraSettings settings;
-            Target t;
+            HostPort t;
             NaoClientKeys keys;
             try {
                 settings = new CameraSettings(resolution, colorSpace, fps);
-                t = Target.parse(target, CAM_PORT);
+                t = HostPort.parse(target, CAM_PORT);
             } catch (IllegalArgumentException e) {
                 spec.commandLine().getErr().println(e.getMessage());
                 return 2;

@@ -20,6 +20,7 @@ import touchline.game.RefereedGame;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
+import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
@@ -126,7 +127,7 @@ public final class GameControllerTab implements View {
             List<InetSocketAddress> dests = new ArrayList<>();
             for (String d : destinations.getText().split(",")) {
                 if (!d.isBlank()) {
-                    dests.add(address(d.strip()));
+                    dests.add(HostPort.parse(d, GcProfile.GAME_STATE_PORT).resolved());
                 }
             }
             if (dests.isEmpty()) {
@@ -202,12 +203,6 @@ public final class GameControllerTab implements View {
         root.setCenter(setup);
         format.requestFocus();
         setupMessage.setText("stopped");
-    }
-
-    private static InetSocketAddress address(String text) {
-        int colon = text.lastIndexOf(':');
-        return colon > 0 ? new InetSocketAddress(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)))
-                : new InetSocketAddress(text, GcProfile.GAME_STATE_PORT);
     }
 
     private void toggleOverride() {
