@@ -167,11 +167,12 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
 
     /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
     private void shootNao(ConsoleWindow window) throws Exception {
-        java.nio.file.Path sim = new RobotSideBinaries().of("touchline-nao-sim");
-        if (!Files.isExecutable(sim)) {
-            System.err.println("no NAO screenshot: " + sim + " is missing");
+        RobotSideBinaries binaries = new RobotSideBinaries();
+        if (binaries.missing("touchline-nao-sim").isPresent()) {
+            System.err.println("no NAO screenshot: " + binaries.missing("touchline-nao-sim").get());
             return;
         }
+        java.nio.file.Path sim = binaries.of("touchline-nao-sim");
         // the NAO tab as every user sees it: the link encrypted with CURVE keys (made for the shot)
         java.nio.file.Path keys = Files.createTempDirectory("touchline-shot-keys");
         new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(), java.time.Instant.now());
