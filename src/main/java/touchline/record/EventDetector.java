@@ -8,6 +8,7 @@ import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.transport.GameStateReader;
 
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -28,7 +29,7 @@ final class EventDetector {
     /** Five keep-alive periods without any datagram: the robot counts as lost. */
     static final long LOST_AFTER_MICROS = 1_000_000;
 
-    private final KnownGameStateFormats formats = new KnownGameStateFormats();
+    private final GameStateReader gameStates = new GameStateReader();
     private final List<TimelineEvent> events = new ArrayList<>();
     private final Map<Integer, Long> lastSeen = new HashMap<>();
     // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
@@ -80,7 +81,7 @@ final class EventDetector {
     }
 
     private void gameController(Envelope e) {
-        KnownGameStateFormats.Match m = e.isMalformed() ? null : formats.decode(e.raw());
+        KnownGameStateFormats.Match m = gameStates.read(e);
         if (m == null) {
             return;
         }
