@@ -5,7 +5,6 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import touchline.game.ActionSyntax;
 import touchline.game.Game;
-import touchline.game.GameClock;
 import touchline.game.LeagueParams;
 import touchline.game.MatchMode;
 import touchline.game.Outcome;
@@ -21,6 +20,7 @@ import touchline.protocol.gamecontroller.MonitorRequest;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
+import touchline.app.SystemClock;
 import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.EmbeddedGameController;
 import touchline.transport.gamecontroller.GcConfig;
@@ -135,6 +135,9 @@ public final class GcCommand implements Callable<Integer> {
         this.out = out;
     }
 
+    /** The real clock, made once for this command (it has no console). */
+    private final SystemClock clock = new SystemClock();
+
     @Override
     public Integer call() throws Exception {
         GcProfile profile = GcProfile.parse(format);
@@ -170,7 +173,7 @@ public final class GcCommand implements Callable<Integer> {
                 return 2;
             }
             HslGame game = new HslGame(HslRules.forVersion(profile.hslVersion(), c), teamA, a, teamB, b,
-                    GameClock.system());
+                    clock);
             HslActionSyntax syntax = new HslActionSyntax();
             referee = game;
             handler = line -> {
@@ -180,7 +183,7 @@ public final class GcCommand implements Callable<Integer> {
         } else {
             LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(
                     players == null ? 4 : players, halfSeconds == null ? 600 : halfSeconds);
-            Game game = new Game(params, teamA, a[0].ordinal(), teamB, b[0].ordinal(), GameClock.system());
+            Game game = new Game(params, teamA, a[0].ordinal(), teamB, b[0].ordinal(), clock);
             ActionSyntax syntax = new ActionSyntax();
             referee = game;
             handler = line -> {
@@ -202,7 +205,7 @@ public final class GcCommand implements Callable<Integer> {
 
     private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
-        MatchMode matchMode = new MatchMode(GameClock.system());
+        MatchMode matchMode = new MatchMode(clock);
         try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode)) {
             gc.addEventListener(event -> print("! " + event));
             String[] last = {""};

@@ -39,7 +39,7 @@ class UdpTransportTest {
     @BeforeEach
     void start() throws Exception {
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
-                new MessageCodec(new MessageKinds()), received::add, MicrosClock.system()).start();
+                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock()).start();
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         robot.setSoTimeout(5000);
     }
@@ -59,7 +59,7 @@ class UdpTransportTest {
         transport.close();
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
                 LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                new MessageCodec(new MessageKinds()), received::add, MicrosClock.system()).start();
+                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock()).start();
     }
 
     private void send(byte[] bytes) throws Exception {
@@ -268,7 +268,7 @@ class UdpTransportTest {
             UdpTransport second = new UdpTransport(
                     UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(taken.getLocalPort()),
                     LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                    new MessageCodec(new MessageKinds()), received::add, MicrosClock.system());
+                    new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock());
             assertThrows(java.io.IOException.class, second::start); // BindException with NIO, NativeIoException with epoll
             second.close();
         }

@@ -13,7 +13,6 @@ import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
 import touchline.app.Console;
 import touchline.game.Game;
-import touchline.game.GameClock;
 import touchline.game.LeagueParams;
 import touchline.game.MatchMode;
 import touchline.game.RefereedGame;
@@ -148,9 +147,9 @@ public final class GameControllerTab implements View {
                     return;
                 }
                 game = new HslGame(HslRules.forVersion(profile.hslVersion(), hsl.competition()), a, hsl.coloursA(), b,
-                        hsl.coloursB(), GameClock.system());
+                        hsl.coloursB(), console.gameClock());
             } else {
-                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
+                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, console.gameClock());
             }
             Integer monitors = profile.hsl() ? hsl.monitorPort() : null;
             remembered.save(format, teamA, teamB, destinations, returnPort, hsl);

@@ -51,7 +51,7 @@ public final class GcRobotsView implements View {
                     + "robots as the referee sees them.");
             return;
         }
-        List<String> now = monitor.describe(System.currentTimeMillis());
+        List<String> now = monitor.describe(context.console().clock().nowMicros() / 1000);
         status.setText("The field's GameController sees " + monitor.robots().size() + " robot(s)");
         if (!now.equals(shown)) {
             shown = now;
