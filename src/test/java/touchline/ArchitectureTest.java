@@ -101,6 +101,48 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    /**
+     * One clock: the wall clock is read only by {@code app.SystemClock}, which the console and
+     * the commands without a console make once and hand down through constructors. Known debt,
+     * moving with other work: the GameController runtime's envelope time ({@code
+     * transport.gamecontroller.Clock}) and the NAO link ({@code transport.nao}).
+     */
+    @Test
+    void theWallClockIsReadOnlyByTheSystemClock() {
+        noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class)
+                .and().doNotHaveFullyQualifiedName("touchline.transport.gamecontroller.Clock")
+                .and().resideOutsideOfPackage("touchline.transport.nao..")
+                .should().callMethod(System.class, "currentTimeMillis")
+                .orShould().callMethod(java.time.Instant.class, "now")
+                .orShould().callMethod(java.time.LocalDateTime.class, "now")
+                .orShould().callMethod(java.time.LocalDate.class, "now")
+                .orShould().callMethod(java.time.LocalTime.class, "now")
+                .orShould().callMethod(java.time.ZonedDateTime.class, "now")
+                .orShould().callMethod(java.time.OffsetDateTime.class, "now")
+                .orShould().callMethod(java.time.Clock.class, "systemUTC")
+                .orShould().callMethod(java.time.Clock.class, "systemDefaultZone")
+                .orShould().callConstructor(java.util.Date.class)
+                .check(classes);
+    }
+
+    /**
+     * {@code System.nanoTime()} is no time source for data, models or the game: besides the
+     * SystemClock only code that measures a duration or bounds its own wait reads it (a command
+     * waiting for its deadline, the frame pulse timing a view, the recorder's disk thread aging
+     * its open chunk, the GameController sender's real-time schedule) and the NAO link (known
+     * debt, with its split).
+     */
+    @Test
+    void theMonotonicClockOnlyMeasuresDurationsOutsideTheSystemClock() {
+        noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class, touchline.ui.FramePulse.class,
+                        touchline.record.McapWriter.class, touchline.transport.gamecontroller.GcSender.class)
+                .and().doNotHaveFullyQualifiedName("touchline.record.BackgroundFiles")
+                .and().resideOutsideOfPackage("touchline.cli..")
+                .and().resideOutsideOfPackage("touchline.transport.nao..")
+                .should().callMethod(System.class, "nanoTime")
+                .check(classes);
+    }
+
     @Test
     void noMainMethodOrExitOutsideTheLaunchers() {
         noClasses().that().doNotHaveFullyQualifiedName("touchline.cli.Main")

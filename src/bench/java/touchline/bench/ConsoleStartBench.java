@@ -37,11 +37,11 @@ final class ConsoleStartBench {
         try (DatagramSocket probe = new DatagramSocket(0)) {
             port = probe.getLocalPort(); // a free port for the console; the robots send to it before it binds
         }
-        String bin = System.getProperty("touchline.robotside.bin", "robot-side/build/bin");
+        Path robot = new touchline.cli.RobotSideBinaries().of("touchline-robot");
         List<Process> team = new ArrayList<>();
         try {
             for (int id = 1; id <= 3; id++) {
-                team.add(new ProcessBuilder(Path.of(bin, "touchline-robot").toString(), "--id", String.valueOf(id),
+                team.add(new ProcessBuilder(robot.toString(), "--id", String.valueOf(id),
                         "--team", "13", "--console", "127.0.0.1:" + port, "--port", String.valueOf(24000 + id * 10))
                         .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start());
             }

@@ -166,7 +166,7 @@ final class IngestBenchCommand implements Callable<Integer> {
                     new touchline.security.CounterSource(System::currentTimeMillis,
                             touchline.security.CounterSource.inMemory())));
         }
-        try (Console console = transportOnly ? new Console(config, touchline.transport.MicrosClock.system(), false)
+        try (Console console = transportOnly ? new Console(config, new touchline.app.SystemClock(), false)
                 : new Console(config)) {
             console.bus().subscribe(e -> {
                 if (!e.isMalformed() && e.direction() == touchline.transport.Direction.IN) {

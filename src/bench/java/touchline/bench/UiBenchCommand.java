@@ -205,7 +205,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
         GcIntervalProbe probe = new GcIntervalProbe("gc-probe", GcConfig.INTERVAL_MS, realtime);
         GcConfig config = new GcConfig(GcProfile.HL12, false, List.of(probe.address()), null,
                 new InetSocketAddress("127.0.0.1", 0), null, GcConfig.INTERVAL_MS, realtime);
-        console.startGameController(new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system()), config);
+        console.startGameController(new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock()), config);
         return probe;
     }
 

@@ -76,7 +76,9 @@ public final class Console implements AutoCloseable {
     private final UdpTransport udp;
     private final ReliableStreamHandler reliable;
     private final ScheduledExecutorService ticker;
-    private final MatchMode matchMode = new MatchMode(GameClock.system());
+    /** The real clock's monotonic faces (match mode, the game, replay pacing); stateless, like every SystemClock. */
+    private final SystemClock realClock = new SystemClock();
+    private final MatchMode matchMode = new MatchMode(realClock);
     private GameStateWatch gcWatch;
     private final GameControllerSources gcSources;
     private final MonitorRegistrations monitorRegistrations = new MonitorRegistrations();
@@ -99,7 +101,7 @@ public final class Console implements AutoCloseable {
     private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     public Console(ConsoleConfig config) {
-        this(config, MicrosClock.system());
+        this(config, new SystemClock());
     }
 
     public Console(ConsoleConfig config, MicrosClock clock) {
@@ -110,7 +112,7 @@ public final class Console implements AutoCloseable {
     public Console(ConsoleConfig config, MicrosClock clock, boolean withModel) {
         this.config = config;
         this.clock = clock;
-        this.gcSources = new GameControllerSources(GameClock.system(), pinnedGameController(config));
+        this.gcSources = new GameControllerSources(realClock, pinnedGameController(config));
         // The traffic meter's "now" follows a replay while one plays with live listening paused,
         // so its rates are the recording's rates.
         modelClock = () -> {
@@ -187,7 +189,7 @@ public final class Console implements AutoCloseable {
         }
         try {
             gcMonitor = new GcMonitor(config.gcMonitor(), new InetSocketAddress(config.udp().bindAddress(),
-                    config.gcForwardPort()), monitorRegistrations, live, System::currentTimeMillis);
+                    config.gcForwardPort()), monitorRegistrations, live, () -> clock.nowMicros() / 1000);
         } catch (IOException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot monitor the GameController at {}: {}",
                     config.gcMonitor(), e.toString());
@@ -456,6 +458,8 @@ public final class Console implements AutoCloseable {
     /** The message codec: for this package and the tests' fixture only. */
     MessageCodec codec() { return codec; }
     public MicrosClock clock() { return clock; }
+    /** Monotonic milliseconds for a game a face sets up ({@link #startGameController}). */
+    public GameClock gameClock() { return realClock; }
 
     /** The traffic meter's "now": wall time, or the replay position while a replay plays with live listening paused. */
     public MicrosClock modelClock() { return modelClock; }
@@ -535,7 +539,7 @@ public final class Console implements AutoCloseable {
         ReplaySession session = ReplaySession.open(files, offsets, kinds);
         long start = session.startMicros();
         stores.restartReplay(start);
-        replay = new Replay(session, bus, () -> {
+        replay = new Replay(session, bus, realClock, () -> {
             stores.restartReplay(start);
             robots.forgetReplayed();
         });

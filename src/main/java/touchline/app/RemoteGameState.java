@@ -2,8 +2,8 @@ package touchline.app;
 
 import touchline.app.game.MatchMode;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
-import touchline.transport.Channel;
 import touchline.transport.Envelope;
+import touchline.transport.GameStateReader;
 import touchline.transport.EnvelopeSink;
 
 /**
@@ -15,7 +15,7 @@ import touchline.transport.EnvelopeSink;
  */
 final class RemoteGameState implements EnvelopeSink {
 
-    private final KnownGameStateFormats formats = new KnownGameStateFormats();
+    private final GameStateReader gameStates = new GameStateReader();
     private final MatchMode matchMode;
     private final EnvelopeSink next;
 
@@ -26,13 +26,10 @@ final class RemoteGameState implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        if (e.channel() == Channel.GAMECONTROLLER && e.error() == null && e.raw() != null
-                && KnownGameStateFormats.isGameState(e.raw())) {
-            KnownGameStateFormats.Match m = formats.decode(e.raw());
-            if (m != null) {
-                matchMode.observe(m.data().state(), "the remote console's GameController"
-                        + (e.peer() == null ? "" : " at " + e.peer().getHostString() + ":" + e.peer().getPort()));
-            }
+        KnownGameStateFormats.Match m = gameStates.read(e);
+        if (m != null) {
+            matchMode.observe(m.data().state(), "the remote console's GameController"
+                    + (e.peer() == null ? "" : " at " + e.peer().getHostString() + ":" + e.peer().getPort()));
         }
         next.accept(e);
     }

@@ -21,15 +21,17 @@ public final class Replay implements AutoCloseable {
     private final Player player;
     private final Thread pump;
     private volatile boolean running = true;
-    /** The player's state as last seen, and when (System.nanoTime()): see {@link #state()}. */
+    private final PlaybackClock clock;
+    /** The player's state as last seen, and when (the clock's nanoseconds): see {@link #state()}. */
     private volatile Seen seen;
 
     private record Seen(PlayerState state, long nanos) { }
 
     /** @param jumped run when the position jumps (a seek, a loop going round), before anything plays from there */
-    Replay(ReplaySession session, EnvelopeSink sink, Runnable jumped) {
+    Replay(ReplaySession session, EnvelopeSink sink, PlaybackClock clock, Runnable jumped) {
         this.session = session;
-        this.player = new Player(session, sink, PlaybackClock.system(), jumped);
+        this.clock = clock;
+        this.player = new Player(session, sink, clock, jumped);
         remember();
         this.pump = new Thread(this::loop, "touchline-replay");
         pump.setDaemon(true);
@@ -93,7 +95,7 @@ public final class Replay implements AutoCloseable {
             return p;
         }
         long end = p.loopToMicros() >= 0 ? p.loopToMicros() : p.endMicros();
-        long pos = Math.min(end, p.positionMicros() + (long) ((System.nanoTime() - s.nanos()) / 1000 * p.speed()));
+        long pos = Math.min(end, p.positionMicros() + (long) ((clock.nanoTime() - s.nanos()) / 1000 * p.speed()));
         return new PlayerState(Math.max(p.positionMicros(), pos), p.startMicros(), p.endMicros(), true, false,
                 p.speed(), p.loopFromMicros(), p.loopToMicros(), p.emitted(), p.notes());
     }
@@ -101,7 +103,7 @@ public final class Replay implements AutoCloseable {
     /** Takes a fresh snapshot; serialised so an older snapshot never replaces a newer one. */
     private synchronized void remember() {
         PlayerState p = player.snapshot();
-        seen = new Seen(p, System.nanoTime());
+        seen = new Seen(p, clock.nanoTime());
     }
 
     public List<TimelineEvent> events() { return player.events(); }

@@ -2,11 +2,11 @@ package touchline.app;
 
 import touchline.app.game.MatchMode;
 import touchline.proto.Fumanoid;
+import touchline.protocol.gamecontroller.GameControlData;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 
-import java.util.List;
 
 /**
  * Feeds match mode with the game state each robot reports in its keep-alive (what it last
@@ -15,8 +15,6 @@ import java.util.List;
  * Replayed robots are not on the field: what they reported never changes match mode.
  */
 final class ReportedGameState implements EnvelopeSink {
-
-    private static final List<String> STATES = List.of("INITIAL", "READY", "SET", "PLAYING", "FINISHED");
 
     private final MatchMode matchMode;
 
@@ -28,8 +26,9 @@ final class ReportedGameState implements EnvelopeSink {
     public void accept(Envelope e) {
         Fumanoid.Status status = e.direction() == Direction.IN && !e.replayed() ? e.extension(Fumanoid.status) : null;
         if (status != null) {
-            int state = STATES.indexOf(status.getGameState());
-            if (state >= 0) {
+            int state = GameControlData.stateCode(status.getGameState());
+            // the five states every league's robots report; SPL's STANDBY never reached match mode
+            if (state >= 0 && state <= GameControlData.STATE_FINISHED) {
                 matchMode.observe(state, "robot " + e.robotId());
             }
         }

@@ -47,7 +47,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     public Integer call() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
             budget.guard(console, udp.bind);
-            StartMarks marks = new StartMarks(System.err);
+            StartMarks marks = new StartMarks(System.err, console.clock());
             console.robots().addPresenceListener(marks);
             String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
                     System.getProperty("os.name", ""));

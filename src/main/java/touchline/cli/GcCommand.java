@@ -5,7 +5,6 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import touchline.game.ActionSyntax;
 import touchline.game.Game;
-import touchline.game.GameClock;
 import touchline.game.LeagueParams;
 import touchline.app.game.MatchMode;
 import touchline.game.Outcome;
@@ -21,7 +20,9 @@ import touchline.protocol.gamecontroller.MonitorRequest;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
+import touchline.app.SystemClock;
 import touchline.app.game.EmbeddedGameController;
+import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.RobotLiveness;
@@ -133,12 +134,23 @@ public final class GcCommand implements Callable<Integer> {
         this.out = out;
     }
 
+    /** The real clock, made once for this command (it has no console). */
+    private final SystemClock clock = new SystemClock();
+
     @Override
     public Integer call() throws Exception {
         GcProfile profile = GcProfile.parse(format);
         if (profile == null) {
             out.println("error: unknown format '" + format + "' (" + GcProfile.names() + ")");
             return 2;
+        }
+        for (String d : destinations) {
+            try {
+                HostPort.parse(d, GcProfile.GAME_STATE_PORT);
+            } catch (IllegalArgumentException e) {
+                out.println("error: --dest " + e.getMessage());
+                return 2;
+            }
         }
         TeamColour[] a = {colour(colourA), colour(goalkeeperColourA)};
         TeamColour[] b = {colour(colourB), colour(goalkeeperColourB)};
@@ -160,7 +172,7 @@ public final class GcCommand implements Callable<Integer> {
                 return 2;
             }
             HslGame game = new HslGame(HslRules.forVersion(profile.hslVersion(), c), teamA, a, teamB, b,
-                    GameClock.system());
+                    clock);
             HslActionSyntax syntax = new HslActionSyntax();
             referee = game;
             handler = line -> {
@@ -170,7 +182,7 @@ public final class GcCommand implements Callable<Integer> {
         } else {
             LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(
                     players == null ? 4 : players, halfSeconds == null ? 600 : halfSeconds);
-            Game game = new Game(params, teamA, a[0].ordinal(), teamB, b[0].ordinal(), GameClock.system());
+            Game game = new Game(params, teamA, a[0].ordinal(), teamB, b[0].ordinal(), clock);
             ActionSyntax syntax = new ActionSyntax();
             referee = game;
             handler = line -> {
@@ -192,7 +204,7 @@ public final class GcCommand implements Callable<Integer> {
 
     private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
-        MatchMode matchMode = new MatchMode(GameClock.system());
+        MatchMode matchMode = new MatchMode(clock);
         try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode)) {
             gc.addEventListener(event -> print("! " + event));
             String[] last = {""};
@@ -297,7 +309,7 @@ public final class GcCommand implements Callable<Integer> {
     private GcConfig config(GcProfile profile) {
         List<InetSocketAddress> dests = new ArrayList<>();
         for (String d : destinations) {
-            dests.add(parseAddress(d, GcProfile.GAME_STATE_PORT));
+            dests.add(HostPort.parse(d, GcProfile.GAME_STATE_PORT).resolved());
         }
         GcConfig defaults = GcConfig.defaults(profile);
         if (dests.isEmpty()) {
@@ -312,14 +324,6 @@ public final class GcCommand implements Callable<Integer> {
         }
         return new GcConfig(profile, v7Compat, dests, null, new InetSocketAddress(bind, returns), rivals,
                 intervalMs, realtime);
-    }
-
-    static InetSocketAddress parseAddress(String text, int defaultPort) {
-        int colon = text.lastIndexOf(':');
-        if (colon > 0 && text.indexOf(':') == colon) {
-            return new InetSocketAddress(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)));
-        }
-        return new InetSocketAddress(text, defaultPort);
     }
 
     private synchronized void print(String line) {

@@ -42,7 +42,7 @@ final class KeyChoice {
         }
         try {
             LinkSecurity s = LinkSecurity.with(dir.teamKey(),
-                    new CounterSource(() -> System.currentTimeMillis() * 1000, dir.counterStore()));
+                    new CounterSource(new touchline.app.SystemClock()::nowMicros, dir.counterStore()));
             System.err.println("keys: " + s.describe() + " (" + dir.path() + ")");
             return s;
         } catch (KeyException e) {

@@ -13,7 +13,6 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.security.SecureRandom;
-import java.time.Instant;
 import java.util.Map;
 import java.util.Optional;
 
@@ -69,7 +68,7 @@ public final class KeysCommand {
             PrintWriter out = spec.commandLine().getOut();
             KeyDir dir = dir();
             try {
-                TeamKey key = dir.create(force, new SecureRandom(), Instant.now());
+                TeamKey key = dir.create(force, new SecureRandom(), new touchline.app.SystemClock().instant());
                 out.printf("made team key %s and the NAO link's CURVE key pairs in %s (owner-only)%n", key.idHex(),
                         dir.path());
                 out.println("next: `touchline keys show` says what each robot needs");

@@ -69,7 +69,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 });
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
-                    monitorTable.print(out, console.monitorReport(System.currentTimeMillis()));
+                    monitorTable.print(out, console.monitorReport(console.clock().nowMicros() / 1000));
                     out.println(console.gcSources().describe());
                     String gcWarning = console.gcSources().warning();
                     if (!gcWarning.isEmpty()) {

@@ -9,6 +9,7 @@ import touchline.app.ConsoleConfig;
 import touchline.app.NaoSession;
 import touchline.app.game.MatchMode;
 import touchline.protocol.nao.ParamSyntax;
+import touchline.transport.HostPort;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.CameraFrame;
 import touchline.transport.nao.CameraSettings;
@@ -59,21 +60,6 @@ public final class NaoCommand implements Runnable {
         spec.commandLine().usage(spec.commandLine().getOut());
     }
 
-
-    /** HOST or HOST:PORT. */
-    record Target(String host, int port) {
-        static Target parse(String text, int defaultPort) {
-            int colon = text.lastIndexOf(':');
-            if (colon < 0) {
-                return new Target(text, defaultPort);
-            }
-            try {
-                return new Target(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)));
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("bad port in '" + text + "'");
-            }
-        }
-    }
 
     abstract static class LinkOptions {
         @CommandLine.Spec
@@ -139,9 +125,17 @@ public final class NaoCommand implements Runnable {
 
         /**
          * A session on {@code console}, online, once the console has listened for a GameController;
-         * null (after printing why) when the keys are unusable or the robot did not come online in time.
+         * null (after printing why) when the address or the keys are unusable or the robot did not
+         * come online in time.
          */
-        NaoSession connect(Console console, Target t) throws InterruptedException {
+        NaoSession connect(Console console, String target, int defaultPort) throws InterruptedException {
+            HostPort t;
+            try {
+                t = HostPort.parse(target, defaultPort);
+            } catch (IllegalArgumentException e) {
+                err().println(e.getMessage());
+                return null;
+            }
             NaoClientKeys keys;
             try {
                 keys = security.load();
@@ -204,7 +198,7 @@ public final class NaoCommand implements Runnable {
                 err().println(e.getMessage());
                 return 2;
             }
-            try (Console console = startConsole(); NaoSession link = connect(console, Target.parse(target, RPC_PORT))) {
+            try (Console console = startConsole(); NaoSession link = connect(console, target, RPC_PORT)) {
                 if (link == null) {
                     return 1;
                 }
@@ -224,7 +218,7 @@ public final class NaoCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            try (Console console = startConsole(); NaoSession link = connect(console, Target.parse(target, RPC_PORT))) {
+            try (Console console = startConsole(); NaoSession link = connect(console, target, RPC_PORT)) {
                 if (link == null) {
                     return 1;
                 }
@@ -267,11 +261,11 @@ public final class NaoCommand implements Runnable {
         @Override
         public Integer call() throws Exception {
             CameraSettings settings;
-            Target t;
+            HostPort t;
             NaoClientKeys keys;
             try {
                 settings = new CameraSettings(resolution, colorSpace, fps);
-                t = Target.parse(target, CAM_PORT);
+                t = HostPort.parse(target, CAM_PORT);
             } catch (IllegalArgumentException e) {
                 spec.commandLine().getErr().println(e.getMessage());
                 return 2;

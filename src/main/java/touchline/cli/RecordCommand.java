@@ -91,7 +91,7 @@ public final class RecordCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
         Path file = out != null ? out
-                : Path.of("touchline-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
+                : Path.of("touchline-" + LocalDateTime.ofInstant(new touchline.app.SystemClock().instant(), java.time.ZoneId.systemDefault()).format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
         EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults().withCompression(compression)
                 .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L).withCameraRate(cameraFps);
         List<FileDescriptor> teamFiles = List.of();

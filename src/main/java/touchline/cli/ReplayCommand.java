@@ -4,7 +4,6 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import touchline.record.PlaybackClock;
 import touchline.record.Player;
 import touchline.protocol.MessageKinds;
 import touchline.record.RecordingException;
@@ -117,7 +116,7 @@ public final class ReplayCommand implements Callable<Integer> {
             }
             Player[] playing = new Player[1];
             Player player = new Player(session, e -> out.println(several
-                    ? text.format(e) + " file=" + playing[0].deliveringSource() : text.format(e)), PlaybackClock.system());
+                    ? text.format(e) + " file=" + playing[0].deliveringSource() : text.format(e)), new touchline.app.SystemClock());
             playing[0] = player;
             player.seek(session.startMicros() + (long) (from * 1e6));
             long n;

@@ -167,14 +167,15 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
 
     /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
     private void shootNao(ConsoleWindow window) throws Exception {
-        java.nio.file.Path sim = new RobotSideBinaries().of("touchline-nao-sim");
-        if (!Files.isExecutable(sim)) {
-            System.err.println("no NAO screenshot: " + sim + " is missing");
+        RobotSideBinaries binaries = new RobotSideBinaries();
+        if (binaries.missing("touchline-nao-sim").isPresent()) {
+            System.err.println("no NAO screenshot: " + binaries.missing("touchline-nao-sim").get());
             return;
         }
+        java.nio.file.Path sim = binaries.of("touchline-nao-sim");
         // the NAO tab as every user sees it: the link encrypted with CURVE keys (made for the shot)
         java.nio.file.Path keys = Files.createTempDirectory("touchline-shot-keys");
-        new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(), java.time.Instant.now());
+        new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(), new touchline.app.SystemClock().instant());
         Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0", "--curve-secret",
                 keys.resolve("nao-server.secret").toString(), "--curve-clients", keys.resolve("console.public").toString())
                 .redirectErrorStream(true).start();
@@ -222,7 +223,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 touchline.transport.gamecontroller.GcProfile.HL12, false, robots, null,
                 new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), true); // as the tab does
         touchline.game.Game game = new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0,
-                touchline.game.GameClock.system());
+                console.gameClock());
         console.startGameController(game, config);
         game.perform(new touchline.game.ToReady());
         game.perform(new touchline.game.ToSet());

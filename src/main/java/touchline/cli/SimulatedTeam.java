@@ -17,10 +17,12 @@ public final class SimulatedTeam implements AutoCloseable {
 
     /** Starts robots 1..n; fails with one sentence when the binary was not built. */
     public static SimulatedTeam start(int n, int consolePort, List<String> extra) throws IOException, StartFailure {
-        Path bin = new RobotSideBinaries().of("touchline-robot");
-        if (!Files.isExecutable(bin)) {
-            throw StartFailure.robotSideMissing(bin);
+        RobotSideBinaries binaries = new RobotSideBinaries();
+        java.util.Optional<String> missing = binaries.missing("touchline-robot");
+        if (missing.isPresent()) {
+            throw StartFailure.robotSideMissing(missing.get());
         }
+        Path bin = binaries.of("touchline-robot");
         SimulatedTeam team = new SimulatedTeam();
         Path logs = Files.createTempDirectory("touchline-team");
         for (int i = 1; i <= n; i++) {

@@ -1,7 +1,6 @@
 package touchline.cli;
 
 import java.net.BindException;
-import java.nio.file.Path;
 
 /**
  * Why a command could not start, in one sentence that says what to do, with the exit code the
@@ -47,10 +46,9 @@ final class StartFailure extends Exception {
                 + "ssh -X, or use the headless commands (touchline listen, touchline record).", NO_DISPLAY);
     }
 
-    static StartFailure robotSideMissing(Path program) {
-        return new StartFailure("The robot-side programs are not built (" + program + " is missing): run "
-                + "./touchline build, or point -Dtouchline.robotside.bin at the directory that holds them.",
-                ROBOT_SIDE_MISSING);
+    /** {@code sentence} from {@link RobotSideBinaries#missing}. */
+    static StartFailure robotSideMissing(String sentence) {
+        return new StartFailure(sentence, ROBOT_SIDE_MISSING);
     }
 
     /** True when {@code t} or one of its causes says the address is taken (Netty's native bind says it in words). */

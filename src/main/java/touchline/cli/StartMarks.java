@@ -1,5 +1,6 @@
 package touchline.cli;
 
+import touchline.transport.MicrosClock;
 import touchline.model.RobotPresence;
 
 import java.io.PrintStream;
@@ -27,16 +28,19 @@ final class StartMarks implements RobotPresence {
 
     private final PrintStream out;
     private final long jvmStartMillis;
+    private final MicrosClock clock;
     private final AtomicBoolean window = new AtomicBoolean();
     private final AtomicBoolean data = new AtomicBoolean();
 
-    StartMarks(PrintStream out) {
-        this(out, ManagementFactory.getRuntimeMXBean().getStartTime());
+    /** @param clock the console's wall clock */
+    StartMarks(PrintStream out, MicrosClock clock) {
+        this(out, ManagementFactory.getRuntimeMXBean().getStartTime(), clock);
     }
 
-    StartMarks(PrintStream out, long jvmStartMillis) {
+    StartMarks(PrintStream out, long jvmStartMillis, MicrosClock clock) {
         this.out = out;
         this.jvmStartMillis = jvmStartMillis;
+        this.clock = clock;
     }
 
     void windowShown() {
@@ -55,7 +59,7 @@ final class StartMarks implements RobotPresence {
 
     private void mark(AtomicBoolean once, String what) {
         if (once.compareAndSet(false, true)) {
-            out.println(what + " " + (System.currentTimeMillis() - jvmStartMillis) + " ms after the JVM started");
+            out.println(what + " " + (clock.nowMicros() / 1000 - jvmStartMillis) + " ms after the JVM started");
         }
     }
 }

@@ -1,6 +1,7 @@
 package touchline.model;
 
 import touchline.proto.Fumanoid;
+import touchline.protocol.gamecontroller.GameControlData;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -10,7 +11,6 @@ import touchline.transport.MicrosClock;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
 
 /**
@@ -23,7 +23,6 @@ public final class DebugRateGuard implements EnvelopeSink {
 
     private static final long WINDOW_MICROS = 10_000_000;
     private static final int BUCKETS = 5;
-    private static final Set<String> IN_PLAY = Set.of("READY", "SET", "PLAYING");
 
     /** A robot over the limit: its number, rate and the game state it reported. */
     public record OverLimit(int robotId, double perSecond, String gameState) {
@@ -69,7 +68,7 @@ public final class DebugRateGuard implements EnvelopeSink {
         for (Map.Entry<Integer, Counts> r : robots.entrySet()) {
             Counts c = r.getValue();
             double perSecond = c.perSecond(now);
-            if (c.gameState != null && IN_PLAY.contains(c.gameState) && perSecond > limit.value()) {
+            if (GameControlData.isPlay(GameControlData.stateCode(c.gameState)) && perSecond > limit.value()) {
                 over.add(new OverLimit(r.getKey(), perSecond, c.gameState));
             }
         }

@@ -8,6 +8,7 @@ import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.transport.GameStateReader;
 
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -27,9 +28,8 @@ final class EventDetector {
 
     /** Five keep-alive periods without any datagram: the robot counts as lost. */
     static final long LOST_AFTER_MICROS = 1_000_000;
-    private static final String[] GC_STATES = {"INITIAL", "READY", "SET", "PLAYING", "FINISHED"};
 
-    private final KnownGameStateFormats formats = new KnownGameStateFormats();
+    private final GameStateReader gameStates = new GameStateReader();
     private final List<TimelineEvent> events = new ArrayList<>();
     private final Map<Integer, Long> lastSeen = new HashMap<>();
     // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
@@ -81,7 +81,7 @@ final class EventDetector {
     }
 
     private void gameController(Envelope e) {
-        KnownGameStateFormats.Match m = e.isMalformed() ? null : formats.decode(e.raw());
+        KnownGameStateFormats.Match m = gameStates.read(e);
         if (m == null) {
             return;
         }
@@ -99,7 +99,7 @@ final class EventDetector {
         int state = data.state();
         if (gcState[d] >= 0 && state != gcState[d]) {
             events.add(new TimelineEvent(e.timeMicros(), TimelineEvent.Type.STATE_CHANGE, -1,
-                    who + stateName(gcState[d]) + " → " + stateName(state)));
+                    who + GameControlData.stateName(gcState[d]) + " → " + GameControlData.stateName(state)));
         }
         TeamInfo a = data.teams().get(0);
         TeamInfo b = data.teams().get(1);
@@ -127,10 +127,6 @@ final class EventDetector {
     private static String penaltyName(int neutralCode) {
         HslPenalty p = HslPenalty.ofNeutral(neutralCode);
         return p == null ? "penalty " + neutralCode : p.name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
-    }
-
-    private static String stateName(int s) {
-        return s < GC_STATES.length ? GC_STATES[s] : "state " + s;
     }
 
     List<TimelineEvent> finish() {

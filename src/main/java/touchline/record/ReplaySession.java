@@ -1,9 +1,8 @@
 package touchline.record;
 
 import touchline.protocol.MessageKinds;
-import touchline.protocol.gamecontroller.KnownGameStateFormats;
-import touchline.transport.Channel;
 import touchline.transport.Envelope;
+import touchline.transport.GameStateReader;
 
 import java.io.Closeable;
 import java.nio.file.Path;
@@ -93,7 +92,7 @@ public final class ReplaySession implements Closeable {
         List<ClockAlignment.Packet> packets = new ArrayList<>();
         Recording.Cursor c = r.cursor(Long.MIN_VALUE);
         for (Envelope e = c.next(); e != null; e = c.next()) {
-            if (e.channel() == Channel.GAMECONTROLLER && !e.isMalformed() && KnownGameStateFormats.isGameState(e.raw())) {
+            if (GameStateReader.isGameState(e)) {
                 packets.add(new ClockAlignment.Packet(e.timeMicros(), e.raw()));
             }
         }

@@ -6,8 +6,8 @@ import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.protocol.gamecontroller.RobotInfo;
 import touchline.protocol.gamecontroller.TeamInfo;
-import touchline.transport.Channel;
 import touchline.transport.Envelope;
+import touchline.transport.GameStateReader;
 
 import java.nio.charset.StandardCharsets;
 
@@ -29,7 +29,7 @@ final class GameControllerState {
             "players":{"type":"array","items":{"type":"object","properties":{\
             "penalty":{"type":"integer"},"secsTillUnpenalised":{"type":"integer"}}}}}}}}}""";
 
-    private final KnownGameStateFormats formats = new KnownGameStateFormats();
+    private final GameStateReader gameStates = new GameStateReader();
     private final ServedChannel channel;
 
     GameControllerState(ChannelTable channels) {
@@ -38,11 +38,7 @@ final class GameControllerState {
 
     /** Serves {@code e} when it is a well-formed game-state packet. */
     void accept(Envelope e) {
-        if (channel == null || e.channel() != Channel.GAMECONTROLLER || e.error() != null
-                || !KnownGameStateFormats.isGameState(e.raw())) {
-            return;
-        }
-        KnownGameStateFormats.Match m = formats.decode(e.raw());
+        KnownGameStateFormats.Match m = channel == null ? null : gameStates.read(e);
         if (m == null) {
             return;
         }

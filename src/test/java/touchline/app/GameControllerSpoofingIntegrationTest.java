@@ -73,7 +73,7 @@ class GameControllerSpoofingIntegrationTest {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))
                 .withGameControllerPort(gcPort);
         InetSocketAddress consoleGcPort = new InetSocketAddress(InetAddress.getLoopbackAddress(), gcPort);
-        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         try (Console console = new Console(config).start();
              RobotProcess robot = RobotProcess.robot(8, console.port()).start();
              EmbeddedGameController referee = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,

@@ -90,7 +90,7 @@ class PortableFallbackIntegrationTest {
 
     @Test
     void theGameControllerSendsAtNormalPriorityWhenRealTimeIsNotAvailable() throws Exception {
-        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         HlGameState12 format = new HlGameState12();
         try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
              GcSender sender = new GcSender(p -> game.controlData(), List.of(format),

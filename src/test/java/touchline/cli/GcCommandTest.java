@@ -52,6 +52,17 @@ class GcCommandTest {
     }
 
     @Test
+    void aBadDestinationIsSaidBeforeAnythingStarts() {
+        ByteArrayOutputStream buf = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(buf, true, StandardCharsets.UTF_8);
+        int code = new CommandLine(new GcCommand(new ByteArrayInputStream(new byte[0]), out))
+                .execute("--format", "hl12", "--team-a", "13", "--team-b", "7", "--dest", "127.0.0.1:38x8");
+        assertEquals(2, code);
+        assertEquals("error: --dest bad port in '127.0.0.1:38x8': give a number from 1 to 65535",
+                buf.toString(StandardCharsets.UTF_8).strip());
+    }
+
+    @Test
     void refereesAGameFromStdin() throws Exception {
         try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
             String dest = "127.0.0.1:" + robot.getLocalPort();

@@ -15,8 +15,9 @@ class StartMarksTest {
     void eachStartMarkIsWrittenOnceWithTheTimeSinceTheJvmStarted() {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
-        // a JVM started at 0 ms since the epoch: the marks' figures are the current time, above zero
-        StartMarks marks = new StartMarks(out, 0);
+        long[] nowMicros = {1_500_000};
+        StartMarks marks = new StartMarks(out, 1_000, () -> nowMicros[0]); // the JVM started at 1 000 ms
+        nowMicros[0] = 1_750_000;
         marks.cameOnline(3, true);
         marks.windowShown();
         marks.cameOnline(4, true);
@@ -25,9 +26,8 @@ class StartMarksTest {
         marks.windowShown();
         String[] lines = bytes.toString(StandardCharsets.UTF_8).split("\n");
         assertEquals(2, lines.length, String.join("|", lines));
-        assertTrue(lines[0].startsWith(StartMarks.DATA_MARK + " (robot 3) "), lines[0]);
-        assertTrue(lines[1].startsWith(StartMarks.WINDOW_MARK + " "), lines[1]);
-        assertTrue(lines[1].endsWith(" ms after the JVM started"), lines[1]);
+        assertEquals(StartMarks.DATA_MARK + " (robot 3) 750 ms after the JVM started", lines[0]);
+        assertEquals(StartMarks.WINDOW_MARK + " 750 ms after the JVM started", lines[1]);
     }
 
     @Test

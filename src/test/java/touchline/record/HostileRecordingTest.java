@@ -239,7 +239,7 @@ class HostileRecordingTest {
         try (Recording r = Recording.open(file)) {
             new Player(r, e -> {
                 throw new IllegalStateException("a view that cannot show it");
-            }, PlaybackClock.system()).runToEnd();
+            }, new touchline.app.SystemClock()).runToEnd();
             assertTrue(noted(r, "showing a replayed envelope failed"), r.problems().toString());
         }
     }

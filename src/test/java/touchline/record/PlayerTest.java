@@ -166,7 +166,7 @@ class PlayerTest {
 
     @Test
     void theDeliveryThreadPlaysWithoutPumping() throws Exception {
-        Player threaded = new Player(recording, got::add, PlaybackClock.system());
+        Player threaded = new Player(recording, got::add, new touchline.app.SystemClock());
         try {
             threaded.setSpeed(50);
             threaded.start();

@@ -363,7 +363,7 @@ class FoxgloveServerTest {
     void servingBeyondLoopbackWithoutATokenIsRefusedBeforeAnythingIsBound() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () ->
                 new FoxgloveServer(ServeConfig.defaults().withBind("0.0.0.0").withPort(0),
-                        new touchline.protocol.MessageKinds(), touchline.transport.MicrosClock.system()));
+                        new touchline.protocol.MessageKinds(), new touchline.app.SystemClock()));
         assertTrue(e.getMessage().contains("token"), e.getMessage());
     }
 }

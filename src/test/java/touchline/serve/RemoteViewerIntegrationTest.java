@@ -76,7 +76,7 @@ class RemoteViewerIntegrationTest {
             assertEquals(Console.COMMANDS_OFF, refused.reason());
             assertThrows(java.io.IOException.class, () -> second.startGameController(
                     new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 4, 0, 5, 1,
-                            touchline.game.GameClock.system()),
+                            new touchline.app.SystemClock()),
                     touchline.transport.gamecontroller.GcConfig.defaults(touchline.transport.gamecontroller.GcProfile.HL12)));
             assertEquals(0, second.transportCounts().datagramsOut(), "the viewing console sent nothing to any robot");
             assertTrue(first.options().options(4).option(TEXT).orElseThrow().wanted(), "the first console's wish stands");

@@ -94,7 +94,7 @@ class ServeTlsTest {
         Path notAKey = Files.writeString(dir.resolve("not-a-key.pem"), "not a key");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new FoxgloveServer(
                 ServeConfig.defaults().withPort(0).withTls(pem[0], notAKey), new touchline.protocol.MessageKinds(),
-                touchline.transport.MicrosClock.system()));
+                new touchline.app.SystemClock()));
         assertTrue(e.getMessage().contains("cannot use the TLS certificate"), e.getMessage());
     }
 }

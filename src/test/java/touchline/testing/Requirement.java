@@ -1,6 +1,9 @@
 package touchline.testing;
 
 import org.junit.jupiter.api.Assumptions;
+import touchline.cli.RobotSideBinaries;
+
+import java.util.Optional;
 
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -32,9 +35,9 @@ public final class Requirement {
         Assumptions.assumeTrue(false, reason);
     }
 
-    /** The robot-side program {@code name}, built into {@link RobotProcess#binDir()}. */
+    /** The robot-side program {@code name}, found by the product's own lookup ({@link RobotSideBinaries}). */
     public static void robotSide(String name) {
-        require(RobotProcess.available(name), name + " not built in " + RobotProcess.binDir()
-                + " (./touchline build builds the robot side)");
+        Optional<String> missing = new RobotSideBinaries().missing(name);
+        require(missing.isEmpty(), missing.orElse(""));
     }
 }

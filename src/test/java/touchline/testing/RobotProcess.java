@@ -1,10 +1,11 @@
 package touchline.testing;
 
+import touchline.cli.RobotSideBinaries;
+
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -28,11 +29,11 @@ public final class RobotProcess implements AutoCloseable {
 
     /** The directory the binaries are built into; tests skip (via Assumptions) when it is missing. */
     public static Path binDir() {
-        return Path.of(System.getProperty("touchline.robotside.bin", "robot-side/build/bin"));
+        return new RobotSideBinaries().dir();
     }
 
     public static boolean available(String binary) {
-        return Files.isExecutable(binDir().resolve(binary));
+        return new RobotSideBinaries().isBuilt(binary);
     }
 
     /** A simulated small robot sending to the console at {@code consolePort} on loopback. */

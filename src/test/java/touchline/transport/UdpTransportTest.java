@@ -39,7 +39,7 @@ class UdpTransportTest {
     @BeforeEach
     void start() throws Exception {
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
-                new MessageCodec(new MessageKinds()), received::add, MicrosClock.system()).start();
+                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock()).start();
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         robot.setSoTimeout(5000);
     }
@@ -59,7 +59,7 @@ class UdpTransportTest {
         transport.close();
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
                 LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                new MessageCodec(new MessageKinds()), received::add, MicrosClock.system()).start();
+                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock()).start();
     }
 
     private void send(byte[] bytes) throws Exception {
@@ -268,7 +268,7 @@ class UdpTransportTest {
             UdpTransport second = new UdpTransport(
                     UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(taken.getLocalPort()),
                     LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                    new MessageCodec(new MessageKinds()), received::add, MicrosClock.system());
+                    new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock());
             assertThrows(java.io.IOException.class, second::start); // BindException with NIO, NativeIoException with epoll
             second.close();
         }
@@ -286,17 +286,17 @@ class UdpTransportTest {
                 new MessageCodec(new MessageKinds()), e -> {
                     threads.add(e.direction() + " " + Thread.currentThread().getName());
                     received.add(e);
-                }, MicrosClock.system()).start();
+                }, new touchline.app.SystemClock()).start();
         send(status(4, Framing.LENGTH_PREFIX));
         next();
-        String in = threads.poll(5, TimeUnit.SECONDS);
+        String in = threads.poll(touchline.testing.Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS);
         assertNotNull(in);
         String transportThread = in.substring("IN ".length());
 
         assertTrue(transport.send(4, new MessageCodec(new MessageKinds()).optionListRequest()).isSent());
         assertEquals(1, transport.counters().datagramsOut(), "counted when accepted");
         assertEquals(Direction.OUT, next().direction());
-        String out = threads.poll(5, TimeUnit.SECONDS);
+        String out = threads.poll(touchline.testing.Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS);
         assertEquals("OUT " + transportThread, out, "published on the transport's event loop");
         assertNotEquals(Thread.currentThread().getName(), transportThread);
         DatagramPacket p = new DatagramPacket(new byte[2048], 2048);

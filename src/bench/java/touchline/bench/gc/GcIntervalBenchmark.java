@@ -73,7 +73,7 @@ public final class GcIntervalBenchmark {
             hslBursts(seconds, warmupSeconds, realtime);
             return 0;
         }
-        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         HlGameState12 format = new HlGameState12();
         try (GcIntervalProbe ours = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
              GcIntervalProbe baseline = new GcIntervalProbe("probe-baseline", INTERVAL_MS, realtime);
@@ -85,7 +85,7 @@ public final class GcIntervalBenchmark {
              }, List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS);
              DatagramSocket naive = new DatagramSocket()) {
             // Its own game: a shared lock would let the baseline thread delay ours (priority inversion).
-            Game baselineGame = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+            Game baselineGame = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
             Thread naiveSender = new Thread(() -> sleepAfterSend(naive, baselineGame, format, baseline.address()),
                     "baseline-sender");
             naiveSender.setDaemon(true);
@@ -115,7 +115,7 @@ public final class GcIntervalBenchmark {
     private static void hslBursts(int seconds, int warmupSeconds, boolean realtime) throws Exception {
         HslGame game = new HslGame(HslRules.v7(Competition.MIDDLE_ADVANCED), 5,
                 new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
-                new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, GameClock.system());
+                new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, new touchline.app.SystemClock());
         List<Long> stops = new ArrayList<>();
         try (GcIntervalProbe probe = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
              GcSender sender = new GcSender(p -> {

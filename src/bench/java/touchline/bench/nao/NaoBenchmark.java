@@ -68,20 +68,20 @@ public final class NaoBenchmark {
 
     /** Runs from the command line's arguments; returns the exit status (1: the simulator is not built). */
     public static int run(String[] args) throws Exception {
-        String bin = System.getProperty("touchline.robotside.bin", "robot-side/build/bin");
+        touchline.cli.RobotSideBinaries binaries = new touchline.cli.RobotSideBinaries();
         int seconds = 4;
         for (int i = 0; i < args.length - 1; i++) {
             if (args[i].equals("--bin")) {
-                bin = args[i + 1];
+                binaries = new touchline.cli.RobotSideBinaries(Path.of(args[i + 1]));
             } else if (args[i].equals("--seconds")) {
                 seconds = Integer.parseInt(args[i + 1]);
             }
         }
-        Path binary = Path.of(bin, "touchline-nao-sim");
-        if (!Files.isExecutable(binary)) {
-            System.err.println("touchline-nao-sim not found at " + binary + "; build the robot side first");
+        if (binaries.missing("touchline-nao-sim").isPresent()) {
+            System.err.println(binaries.missing("touchline-nao-sim").get());
             return 1;
         }
+        Path binary = binaries.of("touchline-nao-sim");
         new NaoBenchmark(binary, seconds, Arrays.asList(args).contains("--curve-only")).run();
         return 0;
     }

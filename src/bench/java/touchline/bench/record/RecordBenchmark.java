@@ -99,7 +99,7 @@ public final class RecordBenchmark implements Callable<Integer> {
             Random random = new Random(1);
             long[] seeks = new long[50];
             List<Envelope> got = new ArrayList<>();
-            Player p = new Player(r, got::add, PlaybackClock.system());
+            Player p = new Player(r, got::add, new touchline.app.SystemClock());
             for (int i = 0; i < seeks.length; i++) {
                 long target = r.startMicros() + (long) (random.nextDouble() * r.durationMicros());
                 long t1 = System.nanoTime();

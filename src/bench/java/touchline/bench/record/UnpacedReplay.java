@@ -14,7 +14,7 @@ record UnpacedReplay(long envelopes, double seconds) {
     static UnpacedReplay intoNothing(Path file) throws RecordingException {
         try (Recording r = Recording.open(file)) {
             AtomicLong n = new AtomicLong();
-            Player p = new Player(r, e -> n.incrementAndGet(), PlaybackClock.system());
+            Player p = new Player(r, e -> n.incrementAndGet(), new touchline.app.SystemClock());
             long t0 = System.nanoTime();
             p.runToEnd();
             return new UnpacedReplay(n.get(), (System.nanoTime() - t0) / 1e9);

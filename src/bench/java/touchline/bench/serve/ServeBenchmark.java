@@ -50,7 +50,7 @@ public final class ServeBenchmark implements Callable<Integer> {
             + "does; latency is from the datagram's receive time stamp to the frame")
     boolean udp;
 
-    private final MicrosClock clock = MicrosClock.system();
+    private final MicrosClock clock = new touchline.app.SystemClock();
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
 
     /** Envelopes/s achieved and CPU nanoseconds per envelope of the publishing thread. */

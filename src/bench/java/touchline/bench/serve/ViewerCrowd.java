@@ -25,7 +25,7 @@ public final class ViewerCrowd implements AutoCloseable {
      * line {@code go} on standard input, and at its end prints {@link #summary()} and exits.
      */
     public static void main(String[] args) throws Exception {
-        MicrosClock clock = MicrosClock.system();
+        MicrosClock clock = new touchline.app.SystemClock();
         ViewerCrowd crowd = new ViewerCrowd(Integer.parseInt(args[0]), Integer.parseInt(args[1]), clock);
         System.out.println("connected");
         java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(System.in,

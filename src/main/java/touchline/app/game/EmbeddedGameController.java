@@ -49,7 +49,7 @@ import java.util.function.Consumer;
 public final class EmbeddedGameController implements AutoCloseable {
 
     /** Envelope time stamps: microseconds since the epoch. */
-    private final touchline.transport.MicrosClock stamps = touchline.transport.MicrosClock.system();
+    private final touchline.transport.MicrosClock stamps = new touchline.app.SystemClock();
 
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
     private static final String OWN_SOURCE = "this console's GameController";

@@ -161,7 +161,7 @@ public final class GameControllerSources {
         int from = last.state();
         int to = data.state();
         String change = GameControlData.stateName(from) + " → " + GameControlData.stateName(to);
-        boolean play = from >= GameControlData.STATE_READY && from <= GameControlData.STATE_PLAYING;
+        boolean play = GameControlData.isPlay(from);
         if (to == GameControlData.STATE_INITIAL && play) {
             flag(now, "state went back: " + change, true);
         } else if (from == GameControlData.STATE_INITIAL

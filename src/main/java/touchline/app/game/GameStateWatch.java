@@ -31,7 +31,7 @@ import java.net.InetSocketAddress;
 public final class GameStateWatch implements AutoCloseable {
 
     /** Envelope time stamps: microseconds since the epoch. */
-    private final touchline.transport.MicrosClock stamps = touchline.transport.MicrosClock.system();
+    private final touchline.transport.MicrosClock stamps = new touchline.app.SystemClock();
 
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private final BadPackets badPackets = new BadPackets();
@@ -46,15 +46,15 @@ public final class GameStateWatch implements AutoCloseable {
      * @param sink      receives one GAMECONTROLLER envelope per game-state datagram
      * @param matchMode told each decoded state
      */
-    public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode) throws IOException {
-        this(bind, sink, matchMode, new MonitorRegistrations(), new GameControllerSources(
-                touchline.game.GameClock.system(), null));
+    public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode, touchline.game.GameClock clock)
+            throws IOException {
+        this(bind, sink, matchMode, new MonitorRegistrations(), new GameControllerSources(clock, null));
     }
 
     /** @param registrations the GameControllers whose true data ("RGTD") this console asked for */
     public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode,
-                          MonitorRegistrations registrations) throws IOException {
-        this(bind, sink, matchMode, registrations, new GameControllerSources(touchline.game.GameClock.system(), null));
+                          MonitorRegistrations registrations, touchline.game.GameClock clock) throws IOException {
+        this(bind, sink, matchMode, registrations, new GameControllerSources(clock, null));
     }
 
     /**

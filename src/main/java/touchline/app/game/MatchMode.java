@@ -101,7 +101,7 @@ public final class MatchMode {
         synchronized (this) {
             Heard h = new Heard(gameState, clock.millis());
             heard.put(source, h);
-            if (isPlay(gameState)) {
+            if (GameControlData.isPlay(gameState)) {
                 lastPlayClaim.put(source, h);
             }
         }
@@ -190,7 +190,7 @@ public final class MatchMode {
                 return override || !listening() ? "" : "listening for a GameController before talking to robots";
             }
             Heard now = heard.get(source);
-            if (isPlay(now.state)) {
+            if (GameControlData.isPlay(now.state)) {
                 return "game is " + GameControlData.stateName(now.state) + " (" + source + ")";
             }
             return "game was " + GameControlData.stateName(lastPlayClaim.get(source).state) + " " + (clock.millis()
@@ -223,16 +223,12 @@ public final class MatchMode {
         return clock.millis() < listeningUntilMs;
     }
 
-    private static boolean isPlay(int state) {
-        return state >= GameControlData.STATE_READY && state <= GameControlData.STATE_PLAYING;
-    }
-
     /** The source whose claim of play keeps match mode on (as "source", or "source, earlier"), or null. */
     private String playingSource() {
         long now = clock.millis();
         for (Map.Entry<String, Heard> e : heard.entrySet()) {
             Heard h = e.getValue();
-            if (now - h.atMs <= STALE_MS && isPlay(h.state)) {
+            if (now - h.atMs <= STALE_MS && GameControlData.isPlay(h.state)) {
                 return e.getKey();
             }
         }

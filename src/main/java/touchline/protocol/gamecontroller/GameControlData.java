@@ -44,6 +44,8 @@ public record GameControlData(int packetNumber, int playersPerTeam, int gameType
     public static final int STATE_SET = 2;
     public static final int STATE_PLAYING = 3;
     public static final int STATE_FINISHED = 4;
+    /** SPL only: between halves and before the game, robots stand still. */
+    public static final int STATE_STANDBY = 5;
 
     public static final int GAME_PHASE_NORMAL = 0;
     public static final int GAME_PHASE_PENALTY_SHOOT_OUT = 1;
@@ -84,15 +86,24 @@ public record GameControlData(int packetNumber, int playersPerTeam, int gameType
         return null;
     }
 
+    /**
+     * The one source of the game-state names (the GameController's own words, also what robots
+     * report in their Status): {@code INITIAL}, {@code READY}, ... or {@code STATE}n for a code
+     * without a name.
+     */
     public static String stateName(int state) {
-        return switch (state) {
-            case 0 -> "INITIAL";
-            case 1 -> "READY";
-            case 2 -> "SET";
-            case 3 -> "PLAYING";
-            case 4 -> "FINISHED";
-            case 5 -> "STANDBY";
-            default -> "STATE" + state;
-        };
+        return state >= 0 && state < STATE_NAMES.size() ? STATE_NAMES.get(state) : "STATE" + state;
     }
+
+    /** The code of a state name ({@link #stateName} read back), -1 for a name that is not one. */
+    public static int stateCode(String name) {
+        return name == null ? -1 : STATE_NAMES.indexOf(name);
+    }
+
+    /** READY, SET and PLAYING: the states in which robots are on the field and play. */
+    public static boolean isPlay(int state) {
+        return state >= STATE_READY && state <= STATE_PLAYING;
+    }
+
+    private static final List<String> STATE_NAMES = List.of("INITIAL", "READY", "SET", "PLAYING", "FINISHED", "STANDBY");
 }

@@ -13,7 +13,6 @@ import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
 import touchline.app.Console;
 import touchline.game.Game;
-import touchline.game.GameClock;
 import touchline.game.LeagueParams;
 import touchline.app.game.MatchMode;
 import touchline.game.RefereedGame;
@@ -21,6 +20,7 @@ import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.app.game.EmbeddedGameController;
+import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.GcSender;
@@ -126,7 +126,7 @@ public final class GameControllerTab implements View {
             List<InetSocketAddress> dests = new ArrayList<>();
             for (String d : destinations.getText().split(",")) {
                 if (!d.isBlank()) {
-                    dests.add(address(d.strip()));
+                    dests.add(HostPort.parse(d, GcProfile.GAME_STATE_PORT).resolved());
                 }
             }
             if (dests.isEmpty()) {
@@ -147,9 +147,9 @@ public final class GameControllerTab implements View {
                     return;
                 }
                 game = new HslGame(HslRules.forVersion(profile.hslVersion(), hsl.competition()), a, hsl.coloursA(), b,
-                        hsl.coloursB(), GameClock.system());
+                        hsl.coloursB(), console.gameClock());
             } else {
-                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, GameClock.system());
+                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, console.gameClock());
             }
             Integer monitors = profile.hsl() ? hsl.monitorPort() : null;
             remembered.save(format, teamA, teamB, destinations, returnPort, hsl);
@@ -202,12 +202,6 @@ public final class GameControllerTab implements View {
         root.setCenter(setup);
         format.requestFocus();
         setupMessage.setText("stopped");
-    }
-
-    private static InetSocketAddress address(String text) {
-        int colon = text.lastIndexOf(':');
-        return colon > 0 ? new InetSocketAddress(text.substring(0, colon), Integer.parseInt(text.substring(colon + 1)))
-                : new InetSocketAddress(text, GcProfile.GAME_STATE_PORT);
     }
 
     private void toggleOverride() {

@@ -41,7 +41,7 @@ final class RecordPanel {
         this.console = console;
         this.work = work;
         path.setId("record-path");
-        path.setText(defaultFile().toString());
+        path.setText(defaultFile(console.clock().nowMicros()).toString());
         toggle.setId("record-toggle");
         counters.setId("record-counters");
         failure.setId("record-failure");
@@ -60,8 +60,10 @@ final class RecordPanel {
     }
 
     /** {@code recordings/touchline-<date-time>.mcap} under the working directory. */
-    static Path defaultFile() {
-        return Path.of("recordings", "touchline-" + STAMP.format(LocalDateTime.now()) + ".mcap");
+    static Path defaultFile(long nowMicros) {
+        LocalDateTime now = LocalDateTime.ofInstant(java.time.Instant.EPOCH.plusNanos(nowMicros * 1000),
+                java.time.ZoneId.systemDefault());
+        return Path.of("recordings", "touchline-" + STAMP.format(now) + ".mcap");
     }
 
     Node node() {
@@ -97,7 +99,7 @@ final class RecordPanel {
             return;
         }
         String text = path.getText().trim();
-        Path file = Path.of(text.isEmpty() ? defaultFile().toString() : text);
+        Path file = Path.of(text.isEmpty() ? defaultFile(console.clock().nowMicros()).toString() : text);
         toggle.setDisable(true);
         work.run(() -> {
             try {
@@ -125,7 +127,7 @@ final class RecordPanel {
             toggle.setText(now ? "Stop recording" : "Start recording");
             path.setDisable(now);
             if (!now) {
-                path.setText(defaultFile().toString()); // the next recording must not overwrite this one
+                path.setText(defaultFile(console.clock().nowMicros()).toString()); // the next recording must not overwrite this one
             }
         }
         if (s != null) {

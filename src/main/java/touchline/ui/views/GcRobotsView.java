@@ -46,7 +46,7 @@ public final class GcRobotsView implements View {
         if (frame.frame() % 30 != 0) {
             return;
         }
-        Optional<MonitorReport> monitor = context.console().monitorReport(System.currentTimeMillis());
+        Optional<MonitorReport> monitor = context.console().monitorReport(context.console().clock().nowMicros() / 1000);
         if (monitor.isEmpty()) {
             status.setText("Not a monitor of the field's GameController: start with --gc-monitor HOST to see the "
                     + "robots as the referee sees them.");

@@ -49,8 +49,11 @@ public final class ViewersView implements View {
     private final BorderPane root = new BorderPane();
     private final Map<String, long[]> lastSent = new HashMap<>(); // address -> {sent, micros}
 
+    private final touchline.transport.MicrosClock clock;
+
     public ViewersView(ViewContext context) {
         this.toggle = context.serving();
+        this.clock = context.console().clock();
         serve.setId("viewers-toggle");
         port.setId("viewers-port");
         port.setPrefColumnCount(6);
@@ -141,7 +144,7 @@ public final class ViewersView implements View {
             status.setText(said);
             saidShown = said;
         }
-        table.getItems().setAll(rows(server.map(FoxgloveServer::viewers).orElse(List.of()), System.nanoTime() / 1000));
+        table.getItems().setAll(rows(server.map(FoxgloveServer::viewers).orElse(List.of()), clock.nowMicros()));
     }
 
     private List<Row> rows(List<ViewerInfo> viewers, long nowMicros) {

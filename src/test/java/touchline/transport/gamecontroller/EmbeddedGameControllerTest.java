@@ -36,7 +36,7 @@ class EmbeddedGameControllerTest {
 
     private EmbeddedGameController start(GcProfile profile, InetSocketAddress dest, boolean watchRivals,
                                          MatchMode matchMode) throws Exception {
-        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         GcConfig config = new GcConfig(profile, false, List.of(dest), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT,
                 watchRivals ? ANY_LOOPBACK_PORT : null, 500, false);
         EmbeddedGameController gc = new EmbeddedGameController(game, config, envelopes::add, matchMode);
@@ -108,7 +108,7 @@ class EmbeddedGameControllerTest {
              EmbeddedGameController gc = start(GcProfile.HL12, ANY_LOOPBACK_PORT, true, null)) {
             // a second GameController sends to our rival-watch port (own packets: see the 2014 test)
             try (EmbeddedGameController self = new EmbeddedGameController(
-                    new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system()),
+                    new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock()),
                     new GcConfig(GcProfile.HL12, false, List.of(gc.rivalAddress()), ANY_LOOPBACK_PORT,
                             ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null)) {
                 self.start();
@@ -130,7 +130,7 @@ class EmbeddedGameControllerTest {
     @Test
     void ownPacketsOnTheSharedPortOfThe2014ProfileAreIgnored() throws Exception {
         // the destination is the instance's own return port, as with broadcasts in a 2014 game
-        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         try (LoopbackReceiver robot = new LoopbackReceiver();
              java.net.DatagramSocket probe = new java.net.DatagramSocket(ANY_LOOPBACK_PORT)) {
             int port = probe.getLocalPort();
@@ -153,7 +153,7 @@ class EmbeddedGameControllerTest {
 
     @Test
     void matchModeFollowsTheStateWeSend() throws Exception {
-        MatchMode matchMode = new MatchMode(GameClock.system());
+        MatchMode matchMode = new MatchMode(new touchline.app.SystemClock());
         try (LoopbackReceiver robot = new LoopbackReceiver();
              EmbeddedGameController gc = start(GcProfile.HL12, robot.address(), false, matchMode)) {
             Await.until(() -> gc.sender().packetsSent() >= 1, 2000, "first packet");

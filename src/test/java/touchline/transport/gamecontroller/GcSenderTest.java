@@ -27,7 +27,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class GcSenderTest {
 
     private static Game game() {
-        return new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        return new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
     }
 
     @Test

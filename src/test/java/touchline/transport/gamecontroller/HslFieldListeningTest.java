@@ -32,7 +32,7 @@ class HslFieldListeningTest {
     private static final InetSocketAddress ANY_LOOPBACK_PORT = new InetSocketAddress(InetAddress.getLoopbackAddress(), 0);
 
     private final List<Envelope> envelopes = new CopyOnWriteArrayList<>();
-    private final MatchMode matchMode = new MatchMode(GameClock.system());
+    private final MatchMode matchMode = new MatchMode(new touchline.app.SystemClock());
 
     static byte[] golden(String file) throws IOException {
         try (InputStream in = HslFieldListeningTest.class.getResourceAsStream("/golden/gamecontroller/hsl20/" + file)) {
@@ -48,7 +48,7 @@ class HslFieldListeningTest {
 
     @Test
     void theOfficialVersion20PlayingSilencesTheConsole() throws Exception {
-        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode);
+        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock());
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(golden("00-initial.bin"), watch.localAddress());
             Await.until(() -> envelopes.size() == 1, 2000, "INITIAL heard");
@@ -69,7 +69,7 @@ class HslFieldListeningTest {
                 golden("05-playing-delayed.monitor.bin"), with(playing, 10, 5));
         List<String> reasons = List.of("expected 158 bytes, got 157", "version byte 21", "got 118",
                 "did not register as its monitor", "state 5 not in 0..4");
-        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode);
+        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock());
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(golden("00-initial.bin"), watch.localAddress());
             for (byte[] b : bad) {
@@ -92,7 +92,7 @@ class HslFieldListeningTest {
     void trueDataFromTheGameControllerWeRegisteredWithIsBelieved() throws Exception {
         MonitorRegistrations registrations = new MonitorRegistrations();
         registrations.requested(InetAddress.getLoopbackAddress());
-        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, registrations);
+        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, registrations, new touchline.app.SystemClock());
              LoopbackReceiver gc = new LoopbackReceiver()) {
             // during the 10 s after the whistle robots see SET, the monitor copy says PLAYING
             gc.send(golden("05-playing-delayed.monitor.bin"), watch.localAddress());
@@ -104,7 +104,7 @@ class HslFieldListeningTest {
 
     @Test
     void anOfficialVersion20GameControllerIsARivalOfOurs() throws Exception {
-        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, GameClock.system());
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         try (LoopbackReceiver robot = new LoopbackReceiver();
              LoopbackReceiver official = new LoopbackReceiver();
              EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,

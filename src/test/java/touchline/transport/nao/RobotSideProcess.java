@@ -31,13 +31,11 @@ final class RobotSideProcess implements AutoCloseable {
     final int camPort;
 
     static Path binary() {
-        String dir = System.getProperty("touchline.robotside.bin", "robot-side/build/bin");
-        return Path.of(dir, "touchline-nao-sim");
+        return new touchline.cli.RobotSideBinaries().of("touchline-nao-sim");
     }
 
     static void assumeBuilt() {
-        touchline.testing.Requirement.require(Files.isExecutable(binary()),
-                "robot side not built (" + binary() + "); run ./touchline build first");
+        touchline.testing.Requirement.robotSide("touchline-nao-sim");
     }
 
     RobotSideProcess(int rpcPort, int camPort, String... extra) throws Exception {

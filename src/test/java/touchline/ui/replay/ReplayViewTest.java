@@ -196,7 +196,7 @@ class ReplayViewTest {
         await(5, () -> robot.lookup("#replay-problems").queryAs(ListView.class).getItems().equals(items));
         // the same sentence replay prints
         try (Recording r = Recording.open(foreign)) {
-            touchline.record.Player p = new touchline.record.Player(r, e -> { }, touchline.record.PlaybackClock.system());
+            touchline.record.Player p = new touchline.record.Player(r, e -> { }, new touchline.app.SystemClock());
             assertEquals(25, p.runToEnd());
             assertEquals(java.util.List.of(said), r.notes().lines());
         }
