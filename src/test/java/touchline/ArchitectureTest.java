@@ -129,14 +129,15 @@ class ArchitectureTest {
      * {@code System.nanoTime()} is no time source for data, models or the game: besides the
      * SystemClock only code that measures a duration or bounds its own wait reads it (a command
      * waiting for its deadline, the frame pulse timing a view, the recorder's disk thread aging
-     * its open chunk, the GameController sender's real-time schedule) and the NAO link (known
-     * debt, with its split).
+     * its open chunk, the GameController sender's real-time schedule, the remote viewer's
+     * handshake timeout and silence watchdog) and the NAO link (known debt, with its split).
      */
     @Test
     void theMonotonicClockOnlyMeasuresDurationsOutsideTheSystemClock() {
         noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class, touchline.ui.FramePulse.class,
                         touchline.record.McapWriter.class, touchline.transport.gamecontroller.GcSender.class)
                 .and().doNotHaveFullyQualifiedName("touchline.record.BackgroundFiles")
+                .and().doNotHaveFullyQualifiedName("touchline.transport.remote.RemoteStream$Session")
                 .and().resideOutsideOfPackage("touchline.cli..")
                 .and().resideOutsideOfPackage("touchline.transport.nao..")
                 .should().callMethod(System.class, "nanoTime")
@@ -223,7 +224,9 @@ class ArchitectureTest {
             "touchline.transport.MicrosClock", "touchline.transport.SendResult", "touchline.transport.SendResult$Outcome",
             // configuration and descriptions handed to the core
             "touchline.transport.UdpConfig", "touchline.transport.UdpBackend", "touchline.transport.UdpBackend$Kind",
-            "touchline.transport.PeerText",
+            "touchline.transport.PeerText", "touchline.transport.HostPort",
+            // the one reader of the game state an envelope carries (pure; the live server's /gc/state)
+            "touchline.transport.GameStateReader",
             // a reliable stream the core opened (Console.openStream)
             "touchline.transport.ReliableSession",
             // the GameController's configuration and the tallies its views read (liveness, bad packets)
