@@ -76,8 +76,9 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     public UdpTransport start() throws InterruptedException {
         // epoll + recvmmsg on Linux, NIO as the portable fallback (UdpBackend says which and why)
         backend = UdpBackend.onThisMachine(config.transport());
-        // with a team key the tag is checked on the event loop and the decode runs beside it (DecodeStage)
-        stage = verifier.hasKey() ? new DecodeStage(sink) : null;
+        // the model's work runs beside the event loop (DecodeStage); with a team key the decode too,
+        // the event loop checking the tags
+        stage = new DecodeStage(sink);
         boolean epoll = backend.epoll();
         boolean mmsg = backend.recvmmsg();
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
