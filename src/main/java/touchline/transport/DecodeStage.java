@@ -29,7 +29,7 @@ final class DecodeStage implements AutoCloseable {
     private final BlockingQueue<List<Object>> queue = new ArrayBlockingQueue<>(CAPACITY);
     private final EnvelopeSink sink;
     private final Thread thread;
-    /** Envelopes decoded on the event loop, or the work that makes one here. */
+    /** Envelopes decoded on the event loop, or the work that makes one here (or an {@link #awaitPublished} marker). */
     private List<Object> batch = new ArrayList<>(MAX_BATCH);
     private volatile boolean closed;
 
@@ -75,6 +75,16 @@ final class DecodeStage implements AutoCloseable {
         }
     }
 
+    /**
+     * Returns once everything handed over before has been published (call after the event loop's
+     * last {@link #flush}, e.g. when reading was stopped): a marker goes through the queue.
+     */
+    void awaitPublished() throws InterruptedException {
+        java.util.concurrent.CountDownLatch published = new java.util.concurrent.CountDownLatch(1);
+        queue.put(List.of(published));
+        published.await();
+    }
+
     @SuppressWarnings("unchecked") // the batch holds Envelopes and Supplier<Envelope>s only
     private void run() {
         while (true) {
@@ -88,6 +98,10 @@ final class DecodeStage implements AutoCloseable {
                 return;
             }
             for (Object w : work) {
+                if (w instanceof java.util.concurrent.CountDownLatch published) {
+                    published.countDown();
+                    continue;
+                }
                 try {
                     sink.accept(w instanceof Envelope e ? e : ((Supplier<Envelope>) w).get());
                 } catch (RuntimeException e) {

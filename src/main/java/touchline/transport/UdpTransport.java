@@ -120,10 +120,14 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     /**
      * Stops or resumes reading from the socket; while stopped, datagrams wait in the socket's
      * receive buffer (and beyond it are dropped by the kernel). Returns once the event loop has
-     * applied it. The ingest benchmark measures how fast a filled buffer is drained with this.
+     * applied it and, when stopping, once every envelope read before is published. The ingest
+     * benchmark measures how fast a filled buffer is drained with this.
      */
     public void setReading(boolean on) throws InterruptedException {
         channel.eventLoop().submit(() -> channel.config().setAutoRead(on)).sync();
+        if (!on && stage != null) {
+            stage.awaitPublished();
+        }
     }
 
     /** The transport this endpoint runs on and why (before {@link #start()}: what it would choose). */

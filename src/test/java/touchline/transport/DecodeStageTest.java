@@ -73,4 +73,37 @@ class DecodeStageTest {
         }
         assertEquals(List.of("touchline-decode"), threads.stream().distinct().toList(), "published on the stage's thread");
     }
+
+    @Test
+    void awaitPublishedReturnsOnlyOnceEverythingHandedOverBeforeIsPublished() throws Exception {
+        List<Long> seen = Collections.synchronizedList(new ArrayList<>());
+        java.util.concurrent.CountDownLatch hold = new java.util.concurrent.CountDownLatch(1);
+        DecodeStage stage = new DecodeStage(e -> {
+            try {
+                hold.await(); // the model is slow: the first envelope is held until the test lets it go
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+            seen.add(e.timeMicros());
+        });
+        for (int i = 0; i < 100; i++) {
+            stage.add(numbered(i));
+        }
+        stage.flush();
+        Thread waiter = new Thread(() -> {
+            try {
+                stage.awaitPublished();
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        waiter.start();
+        waiter.join(200); // bounded wait only to see that it is still blocked, not to synchronise
+        assertTrue(waiter.isAlive(), "returned while envelopes were still waiting");
+        hold.countDown();
+        waiter.join(10_000);
+        assertFalse(waiter.isAlive());
+        assertEquals(100, seen.size(), "every envelope handed over before was published when it returned");
+        stage.close();
+    }
 }
