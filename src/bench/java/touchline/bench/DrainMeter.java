@@ -4,6 +4,8 @@ import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * The ingest benchmark's default measurement: how fast a receiver empties a socket buffer
@@ -43,6 +45,8 @@ final class DrainMeter {
         try (DatagramChannel out = DatagramChannel.open()) {
             out.connect(new InetSocketAddress("127.0.0.1", port));
             pause.run();
+            ThreadCpu cpu = new ThreadCpu();
+            long decodedAll = 0; // batches left out included: their CPU is counted too
             long end = System.nanoTime() + secs * 1_000_000_000L;
             long sent = 0;
             long received = 0;
@@ -59,12 +63,15 @@ final class DrainMeter {
                     throw new IllegalStateException("the receiver read while paused");
                 }
                 decoded.expect(before + size);
+                cpu.begin();
                 long t0 = System.nanoTime();
                 resume.run();
                 // parked, not spinning: the second core stays free for the receiver's own threads
                 long t1 = decoded.await(t0 + 1_000_000_000L);
                 pause.run();
+                cpu.end();
                 long got = decoded.sum() - before;
+                decodedAll += got;
                 if (got < size) {
                     incomplete++;
                     size = Math.max(100, size * 3 / 4);
@@ -77,7 +84,10 @@ final class DrainMeter {
             if (incomplete > 0) {
                 System.out.printf("  (%d batches not taken whole by the kernel, left out; batch now %d)%n", incomplete, size);
             }
-            return new IngestResult(received, received, received / (drainingNanos / 1e9));
+            Map<String, Double> cpuPerMessage = new TreeMap<>();
+            double perDatagram = 1.0 / Math.max(1, decodedAll);
+            cpu.total().forEach((role, ns) -> cpuPerMessage.put(role, ns * perDatagram));
+            return new IngestResult(received, received, received / (drainingNanos / 1e9), cpuPerMessage);
         }
     }
 }

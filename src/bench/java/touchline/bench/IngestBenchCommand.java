@@ -108,6 +108,7 @@ final class IngestBenchCommand implements Callable<Integer> {
         List<Double> ratios = new ArrayList<>();
         List<Double> recordingRatios = new ArrayList<>();
         List<Double> taggedRatios = new ArrayList<>();
+        List<Double> cpuRatios = new ArrayList<>();
         for (int round = 1; round <= rounds; round++) {
             IngestResult base = baseline(seconds);
             double baseline = base.perSecond();
@@ -134,9 +135,20 @@ final class IngestBenchCommand implements Callable<Integer> {
             bestPipeline = Math.max(bestPipeline, pipeline);
             System.out.printf("round %d: baseline %,.0f msg/s, pipeline %,.0f msg/s, ratio %.2f%n", round, baseline,
                     pipeline, pipeline / baseline);
+            if (!pipe.cpuNanosPerMessage().isEmpty()) {
+                double cpuRatio = base.busiestNanosPerMessage() / pipe.busiestNanosPerMessage();
+                cpuRatios.add(cpuRatio);
+                System.out.printf("  CPU per datagram: %s | %s; busiest thread's ratio %.2f%n", base.cpuText(),
+                        pipe.cpuText(), cpuRatio);
+            }
         }
         System.out.printf("best: baseline %,.0f msg/s, pipeline %,.0f msg/s, ratio %.2f; median of the rounds' ratios"
                         + " %.2f (target >= 0.80)%n", bestBaseline, bestPipeline, bestPipeline / bestBaseline, median(ratios));
+        if (!cpuRatios.isEmpty()) {
+            System.out.printf("CPU: median of the rounds' baseline receiver / busiest pipeline thread, per datagram:"
+                    + " %.2f (what two free cores would give; wall-clock figures above count waits for a core)%n",
+                    median(cpuRatios));
+        }
         if (compareRecording) {
             System.out.printf("recording overhead: median %.1f%% over %d rounds (target <= 10%%)%n",
                     100 * (1 - median(recordingRatios)), recordingRatios.size());

@@ -294,10 +294,14 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     }
 
     private void requestList(int robotId) {
+        // noted before sending: the tick on its own thread must not send a second request while
+        // this one is on its way (publishing it to the bus takes a while on a busy machine)
+        synchronized (this) {
+            robot(robotId).lastListRequest = clock.nowMicros();
+        }
         SendResult result = commands.send(robotId, codec.optionListRequest());
         synchronized (this) {
             PerRobot r = robot(robotId);
-            r.lastListRequest = clock.nowMicros();
             r.listRequests++;
             r.lastHold = result.isSent() ? "" : result.reason();
             version++;

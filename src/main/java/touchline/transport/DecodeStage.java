@@ -8,24 +8,29 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 
 /**
- * The second thread of a console with a team key: the event loop checks each datagram's tag
- * (in arrival order, dropping forgeries) and hands what passed here, where it is decoded and
- * published, so that on two cores the HMAC runs beside the decode instead of before it
- * (docs/benchmarks.md, issue 15). One thread and one FIFO queue: the order of the envelopes is
- * the order of the datagrams. Handed over in batches (one per socket read), so the wake-up
- * costs once per batch, not per datagram. Bounded: when {@link #CAPACITY} batches wait, the
- * event loop waits too and the datagrams stay in the socket's receive buffer.
+ * The UDP pipeline's second thread, where envelopes are published to the model. Without a
+ * team key the event loop receives and decodes each datagram and hands the envelope here, so
+ * that on two cores the model's work per envelope (robot registry, option session, traffic
+ * meter, view stores, recorder) runs beside the next read and decode instead of after it
+ * (docs/benchmarks.md, issue 11). With a key the event loop checks each datagram's tag (in
+ * arrival order, dropping forgeries) and hands what passed here, where it is decoded and
+ * published, so that the HMAC runs beside the decode (issue 15). One thread and one FIFO queue:
+ * the order of the envelopes is the order of the datagrams. Handed over in batches (one per
+ * socket read), so the wake-up costs once per batch, not per datagram. Bounded: when
+ * {@link #CAPACITY} batches wait, the event loop waits too and the datagrams stay in the
+ * socket's receive buffer.
  */
 final class DecodeStage implements AutoCloseable {
 
     static final int CAPACITY = 256;
     private static final int MAX_BATCH = 64;
-    private static final List<Supplier<Envelope>> STOP = List.of();
+    private static final List<Object> STOP = List.of();
 
-    private final BlockingQueue<List<Supplier<Envelope>>> queue = new ArrayBlockingQueue<>(CAPACITY);
+    private final BlockingQueue<List<Object>> queue = new ArrayBlockingQueue<>(CAPACITY);
     private final EnvelopeSink sink;
     private final Thread thread;
-    private List<Supplier<Envelope>> batch = new ArrayList<>(MAX_BATCH);
+    /** Envelopes decoded on the event loop, or the work that makes one here (or an {@link #awaitPublished} marker). */
+    private List<Object> batch = new ArrayList<>(MAX_BATCH);
     private volatile boolean closed;
 
     DecodeStage(EnvelopeSink sink) {
@@ -37,7 +42,16 @@ final class DecodeStage implements AutoCloseable {
 
     /** Event loop: one datagram's remaining work (decode, envelope), published in order. */
     void add(Supplier<Envelope> work) {
-        batch.add(work);
+        append(work);
+    }
+
+    /** Event loop: one decoded envelope, published in order. */
+    void add(Envelope decoded) {
+        append(decoded);
+    }
+
+    private void append(Object item) {
+        batch.add(item);
         if (batch.size() >= MAX_BATCH) {
             flush();
         }
@@ -48,7 +62,7 @@ final class DecodeStage implements AutoCloseable {
         if (batch.isEmpty()) {
             return;
         }
-        List<Supplier<Envelope>> full = batch;
+        List<Object> full = batch;
         batch = new ArrayList<>(MAX_BATCH);
         try {
             while (!queue.offer(full, 100, TimeUnit.MILLISECONDS)) {
@@ -61,9 +75,20 @@ final class DecodeStage implements AutoCloseable {
         }
     }
 
+    /**
+     * Returns once everything handed over before has been published (call after the event loop's
+     * last {@link #flush}, e.g. when reading was stopped): a marker goes through the queue.
+     */
+    void awaitPublished() throws InterruptedException {
+        java.util.concurrent.CountDownLatch published = new java.util.concurrent.CountDownLatch(1);
+        queue.put(List.of(published));
+        published.await();
+    }
+
+    @SuppressWarnings("unchecked") // the batch holds Envelopes and Supplier<Envelope>s only
     private void run() {
         while (true) {
-            List<Supplier<Envelope>> work;
+            List<Object> work;
             try {
                 work = queue.take();
             } catch (InterruptedException e) {
@@ -72,9 +97,13 @@ final class DecodeStage implements AutoCloseable {
             if (work == STOP) {
                 return;
             }
-            for (Supplier<Envelope> w : work) {
+            for (Object w : work) {
+                if (w instanceof java.util.concurrent.CountDownLatch published) {
+                    published.countDown();
+                    continue;
+                }
                 try {
-                    sink.accept(w.get());
+                    sink.accept(w instanceof Envelope e ? e : ((Supplier<Envelope>) w).get());
                 } catch (RuntimeException e) {
                     // as on the event loop: this datagram is lost, the next one is not
                     org.slf4j.LoggerFactory.getLogger(DecodeStage.class).warn("inbound decode: {}", e.toString());

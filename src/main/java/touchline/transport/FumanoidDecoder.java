@@ -27,10 +27,13 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     private final TrafficCounters counters;
     private final EnvelopeSink sink;
     private final InboundVerifier verifier;
-    /** With a team key: where decoding and publishing run, beside this thread's checks; else null. */
+    /**
+     * Where envelopes are published, beside this thread: with a team key decoded there too
+     * (after the tag check here); without one decoded here. Null: everything on this thread.
+     */
     private final DecodeStage stage;
 
-    /** @param stage null: everything on the event loop (no key); else decode and publish there */
+    /** @param stage null: everything on the event loop; else publish there (and decode there too with a key) */
     FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters,
                     EnvelopeSink sink, InboundVerifier verifier, DecodeStage stage) {
         this.verifier = verifier;
@@ -48,6 +51,8 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
             ctx.fireChannelRead(msg);
         } else if (stage == null) {
             sink.accept(toEnvelope(d));
+        } else if (!verifier.hasKey()) {
+            stage.add(toEnvelope(d)); // decoded here; the model's work runs on the stage, beside the next read
         } else {
             stage.add(checked(d));
         }

@@ -76,8 +76,9 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     public UdpTransport start() throws InterruptedException {
         // epoll + recvmmsg on Linux, NIO as the portable fallback (UdpBackend says which and why)
         backend = UdpBackend.onThisMachine(config.transport());
-        // with a team key the tag is checked on the event loop and the decode runs beside it (DecodeStage)
-        stage = verifier.hasKey() ? new DecodeStage(sink) : null;
+        // the model's work runs beside the event loop (DecodeStage); with a team key the decode too,
+        // the event loop checking the tags
+        stage = new DecodeStage(sink);
         boolean epoll = backend.epoll();
         boolean mmsg = backend.recvmmsg();
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
@@ -119,10 +120,14 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     /**
      * Stops or resumes reading from the socket; while stopped, datagrams wait in the socket's
      * receive buffer (and beyond it are dropped by the kernel). Returns once the event loop has
-     * applied it. The ingest benchmark measures how fast a filled buffer is drained with this.
+     * applied it and, when stopping, once every envelope read before is published. The ingest
+     * benchmark measures how fast a filled buffer is drained with this.
      */
     public void setReading(boolean on) throws InterruptedException {
         channel.eventLoop().submit(() -> channel.config().setAutoRead(on)).sync();
+        if (!on && stage != null) {
+            stage.awaitPublished();
+        }
     }
 
     /** The transport this endpoint runs on and why (before {@link #start()}: what it would choose). */

@@ -244,4 +244,25 @@ class DebugOptionSessionTest {
         assertEquals(2, sent.size(), "the data stopped: nothing more to switch off");
         assertFalse(session.options(3).option("demo.text").orElseThrow().wanted());
     }
+
+    @Test
+    void theTickDoesNotAskAgainWhileTheFirstListRequestIsOnItsWay() {
+        // the request is published on the UDP stage's thread while the tick runs on its own:
+        // here the tick runs from inside the send, i.e. while the first request is on its way
+        List<String> requests = new ArrayList<>();
+        DebugOptionSession[] self = new DebugOptionSession[1];
+        self[0] = new DebugOptionSession((id, m) -> {
+            requests.add(id + ":" + describe(m));
+            if (requests.size() == 1) {
+                now[0] += DebugOptionSession.LIST_RETRY_MICROS - 1; // slow, but not yet due for a retry
+                self[0].tick();
+            }
+            return SendResult.sent();
+        }, codec, () -> now[0]);
+        self[0].cameOnline(4, true);
+        assertEquals(List.of("4:list?"), requests, "one list request, not a second one from the tick");
+        now[0] += DebugOptionSession.LIST_RETRY_MICROS;
+        self[0].tick();
+        assertEquals(List.of("4:list?", "4:list?"), requests, "retried when due");
+    }
 }

@@ -8,7 +8,7 @@ import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** The decode thread of a console with a team key: order, failures, and what waits at close. */
+/** The UDP pipeline's second thread: order, failures, and what waits at close. */
 class DecodeStageTest {
 
     private static Envelope numbered(int n) {
@@ -47,5 +47,63 @@ class DecodeStageTest {
         stage.flush();
         stage.close();
         assertEquals(List.of(1L, 3L), seen);
+    }
+
+    @Test
+    void envelopesDecodedOnTheEventLoopAndWorkDoneHereArePublishedInOneOrder() {
+        List<Long> seen = Collections.synchronizedList(new ArrayList<>());
+        List<String> threads = Collections.synchronizedList(new ArrayList<>());
+        DecodeStage stage = new DecodeStage(e -> {
+            seen.add(e.timeMicros());
+            threads.add(Thread.currentThread().getName());
+        });
+        for (int i = 0; i < 200; i++) {
+            int k = i;
+            if (i % 3 == 0) {
+                stage.add(() -> numbered(k)); // with a team key: decoded on the stage
+            } else {
+                stage.add(numbered(k)); // without: decoded on the event loop, only published here
+            }
+        }
+        stage.flush();
+        stage.close();
+        assertEquals(200, seen.size());
+        for (int i = 0; i < 200; i++) {
+            assertEquals(i, seen.get(i), "envelope " + i + " in its place");
+        }
+        assertEquals(List.of("touchline-decode"), threads.stream().distinct().toList(), "published on the stage's thread");
+    }
+
+    @Test
+    void awaitPublishedReturnsOnlyOnceEverythingHandedOverBeforeIsPublished() throws Exception {
+        List<Long> seen = Collections.synchronizedList(new ArrayList<>());
+        java.util.concurrent.CountDownLatch hold = new java.util.concurrent.CountDownLatch(1);
+        DecodeStage stage = new DecodeStage(e -> {
+            try {
+                hold.await(); // the model is slow: the first envelope is held until the test lets it go
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+            seen.add(e.timeMicros());
+        });
+        for (int i = 0; i < 100; i++) {
+            stage.add(numbered(i));
+        }
+        stage.flush();
+        Thread waiter = new Thread(() -> {
+            try {
+                stage.awaitPublished();
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        waiter.start();
+        waiter.join(200); // bounded wait only to see that it is still blocked, not to synchronise
+        assertTrue(waiter.isAlive(), "returned while envelopes were still waiting");
+        hold.countDown();
+        waiter.join(10_000);
+        assertFalse(waiter.isAlive());
+        assertEquals(100, seen.size(), "every envelope handed over before was published when it returned");
+        stage.close();
     }
 }
