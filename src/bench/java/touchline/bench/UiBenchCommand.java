@@ -59,6 +59,21 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     @Option(names = "--gc-no-realtime", description = "with --gc: the sender at default scheduling instead of real-time priority")
     boolean gcNoRealtime;
 
+    @Option(names = "--laptop", description = "instead: issue 14's laptop budgets, the console's CPU and PSS on the demo"
+            + " team and demo layout (its own JVM), against the headless listen in the same run")
+    boolean laptop;
+
+    @Option(names = "--laptop-minutes", defaultValue = "10", description = "with --laptop: minutes of the window (default ${DEFAULT-VALUE})")
+    int laptopMinutes;
+
+    @Option(names = "--laptop-baseline-minutes", defaultValue = "2",
+            description = "with --laptop: minutes of the headless listen (0: none; default ${DEFAULT-VALUE})")
+    int laptopBaselineMinutes;
+
+    @Option(names = "--laptop-jvm", defaultValue = LaptopLoadBench.WINDOW_JVM,
+            description = "with --laptop: the window's JVM options, as the launcher gives them (default ${DEFAULT-VALUE})")
+    String laptopJvm;
+
     @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
     String only;
 
@@ -70,6 +85,9 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
 
     @Override
     public Integer call() throws Exception {
+        if (laptop) {
+            return new LaptopLoadBench(laptopMinutes, laptopBaselineMinutes, 30, List.of(laptopJvm.trim().split("\\s+"))).run();
+        }
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
              SimulatedTeam team = SimulatedTeam.start(robots, console.udp().localPort(), List.of("--rate", Integer.toString(rate)))) {

@@ -68,7 +68,8 @@ public final class ConsoleWindow {
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(console);
-        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep);
+        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep, new ConsoleChanges(console)::read);
+        shell.onChange(pulse::input);
         MenuBar bar = menus();
         shortcuts = new Shortcuts(bar);
         root.setTop(bar);
@@ -97,6 +98,7 @@ public final class ConsoleWindow {
         scene.getStylesheets().add(ConsoleWindow.class.getResource("bento-themed.css").toExternalForm());
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
+        InputWake input = new InputWake(pulse::input); // any of the console's windows touched: wake up
         places.keep(stage, "main", 1400, 900);
         stage.setTitle(console.remote().map(r -> console.runtime().version().title() + " — viewing " + r.status().url())
                 .orElse(console.runtime().version().title() + " — UDP port " + console.udp().localPort()));
@@ -115,12 +117,15 @@ public final class ConsoleWindow {
             if (restored[0]) { // closed before its views were built: the saved "last" layout stays as it was
                 saveQuietly("last");
             }
-            pulse.stop();
+            pulse.close();
+            input.close();
             serving.close();
             // closing the window ends a recording as its Stop button does: the file is finished
             // (summary, footer) before the process can exit, however the window was closed
             console.finishRecording(FINISH_RECORDING_MILLIS);
         });
+        // light on the laptop: a minimised window does no frame work; a touched one wakes up
+        stage.iconifiedProperty().addListener((o, was, minimised) -> pulse.iconified(minimised));
         stage.show();
         pulse.start();
         if (viewsAfterShown) {
