@@ -28,7 +28,7 @@ final class LaptopLoadBench {
     private final List<String> windowJvm;
 
     /** The launcher's JVM options for the window ({@code ./touchline}: JVM_OPTS and UI_HEAP). */
-    static final String WINDOW_JVM = "-XX:+UseZGC -Xmx512m";
+    static final String WINDOW_JVM = "-XX:+UseZGC -Xmx512m -XX:SoftMaxHeapSize=160m -XX:ZUncommitDelay=10";
 
     LaptopLoadBench(int minutes, int baselineMinutes, int warmupSeconds, List<String> windowJvm) {
         this.minutes = minutes;

@@ -81,7 +81,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     /** One phase's figures. */
     record Phase(String name, double fpsMean, double fpsMin, double p50, double p99, long shown, double packetsPerSecond,
                  double heapMaxMb, double heapAfterGcFirstMinuteMb, double heapAfterGcEndMb, Map<String, Long> viewNanos,
-                 long frames) { }
+                 long frames, double pullsPerSecond) { }
 
     @Override
     public Integer call() throws Exception {
@@ -200,6 +200,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             window.pulse().takeRefreshNanos();
         });
         long startFrames = window.pulse().frames();
+        long startPulls = window.pulse().workFrames();
         long startIn = console.udp().counters().datagramsIn();
         long start = System.nanoTime();
         double fpsSum = 0;
@@ -231,11 +232,12 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
         double pps = (console.udp().counters().datagramsIn() - startIn) / elapsed;
         Map<String, Long> nanos = FxThread.call(() -> window.pulse().takeRefreshNanos());
         long frames = window.pulse().frames() - startFrames;
+        double pulls = (window.pulse().workFrames() - startPulls) / elapsed;
         double p50 = window.pulse().latency().quantileMillis(0.5);
         double p99 = window.pulse().latency().quantileMillis(0.99);
         long shown = window.pulse().latency().count();
         return new Phase(name, fpsSum / Math.max(1, samples), samples == 0 ? 0 : fpsMin, p50, p99, shown, pps, heapMax,
-                heapFirstMinute, heapAfterGc(rt), nanos, frames);
+                heapFirstMinute, heapAfterGc(rt), nanos, frames, pulls);
     }
 
     private static double heapAfterGc(Runtime rt) {
@@ -244,13 +246,13 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     }
 
     static String header() {
-        return "| phase | fps mean | fps min | latency p50 | latency p99 | items shown | packets/s in | heap max | heap after GC at 1 min | heap after GC at end |\n"
-                + "|---|---|---|---|---|---|---|---|---|---|";
+        return "| phase | fps mean | fps min | view pulls/s | latency p50 | latency p99 | items shown | packets/s in | heap max | heap after GC at 1 min | heap after GC at end |\n"
+                + "|---|---|---|---|---|---|---|---|---|---|---|";
     }
 
     static String row(Phase p) {
-        return String.format(Locale.ROOT, "| %s | %.1f | %.1f | %s | %s | %d | %.0f | %.0f MB | %.0f MB | %.0f MB |",
-                p.name(), p.fpsMean(), p.fpsMin(), ms(p.p50()), ms(p.p99()), p.shown(), p.packetsPerSecond(), p.heapMaxMb(),
+        return String.format(Locale.ROOT, "| %s | %.1f | %.1f | %.1f | %s | %s | %d | %.0f | %.0f MB | %.0f MB | %.0f MB |",
+                p.name(), p.fpsMean(), p.fpsMin(), p.pullsPerSecond(), ms(p.p50()), ms(p.p99()), p.shown(), p.packetsPerSecond(), p.heapMaxMb(),
                 p.heapAfterGcFirstMinuteMb(), p.heapAfterGcEndMb());
     }
 

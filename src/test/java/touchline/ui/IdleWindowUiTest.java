@@ -25,7 +25,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * Light on the laptop (issue 14, item 9): a view redraws only when what it shows changed, the
  * frame pulse stops when nothing changed and starts again on the next change, and a minimised
- * window does no frame work. Also the Plot fields view's series kept with the layout.
+ * window does no frame work. Also the Plot fields view's series kept with the layout, and F1 in
+ * a window other than the main one.
  */
 @Tag("ui")
 class IdleWindowUiTest {
@@ -140,6 +141,25 @@ class IdleWindowUiTest {
             ui.await(10, () -> restored.fields().series().size() == 2);
             assertEquals(List.of("robot " + ROBOT + " status:batteryPercent", "robot " + ROBOT + " status:robotPosition.x"),
                     ui.fx(() -> restored.fields().series().stream().map(s -> s.name()).toList()));
+        }
+    }
+
+    @Test
+    void f1InTheQuickOpenWindowGivesEveryViewsHelp() throws Exception {
+        try (ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts)) {
+            Stage quick = ui.fx(() -> new QuickOpen(ui.window.context(), ui.window.places()).show(ui.window.scene().getWindow()));
+            ui.fxRun(() -> {
+                quick.requestFocus();
+                quick.getScene().lookup("#quick-open-filter").requestFocus();
+            });
+            ui.await(10, () -> quick.isFocused() && quick.getScene().getFocusOwner() != null);
+            ui.robot.type(javafx.scene.input.KeyCode.F1);
+            ui.await(10, () -> javafx.stage.Window.getWindows().stream().anyMatch(w -> w instanceof Stage s
+                    && "Help — Views".equals(s.getTitle()) && s.isShowing()));
+            String text = ui.fx(() -> javafx.stage.Window.getWindows().stream()
+                    .filter(w -> w instanceof Stage s && "Help — Views".equals(s.getTitle())).findFirst()
+                    .map(w -> ((javafx.scene.control.TextArea) w.getScene().lookup("#help-text")).getText()).orElse(""));
+            assertTrue(text.contains(ui.window.registry().byId("network").orElseThrow().help()), text);
         }
     }
 }
