@@ -26,11 +26,13 @@ final class LaptopLoadBench {
     private final int baselineMinutes;
     private final int warmupSeconds;
     private final List<String> windowJvm;
+    private final int idleMinutes;
 
     /** The launcher's JVM options for the window ({@code ./touchline}: JVM_OPTS and UI_HEAP). */
     static final String WINDOW_JVM = "-XX:+UseZGC -Xmx512m -XX:SoftMaxHeapSize=160m -XX:ZUncommitDelay=10";
 
-    LaptopLoadBench(int minutes, int baselineMinutes, int warmupSeconds, List<String> windowJvm) {
+    LaptopLoadBench(int minutes, int baselineMinutes, int warmupSeconds, List<String> windowJvm, int idleMinutes) {
+        this.idleMinutes = idleMinutes;
         this.minutes = minutes;
         this.baselineMinutes = baselineMinutes;
         this.warmupSeconds = warmupSeconds;
@@ -55,6 +57,14 @@ final class LaptopLoadBench {
             if (baselineMinutes > 0) {
                 loads.add(measure("headless listen (baseline)", List.of("listen", "--port", String.valueOf(port),
                         "--team", "13", "--insecure"), false, baselineMinutes));
+            }
+            if (idleMinutes > 0) {
+                int quiet;
+                try (DatagramSocket probe = new DatagramSocket(0)) {
+                    quiet = probe.getLocalPort(); // no robot sends here: the window has nothing to show
+                }
+                loads.add(measure("window, demo layout, no robot sending", List.of("console", "--demo", "--team", "13",
+                        "--insecure", "--port", String.valueOf(quiet), "--layouts", scratch.toString()), true, idleMinutes));
             }
             loads.add(measure("window, demo layout", List.of("console", "--demo", "--team", "13", "--insecure",
                     "--port", String.valueOf(port), "--layouts", scratch.toString()), true, minutes));

@@ -70,6 +70,10 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             description = "with --laptop: minutes of the headless listen (0: none; default ${DEFAULT-VALUE})")
     int laptopBaselineMinutes;
 
+    @Option(names = "--laptop-idle-minutes", defaultValue = "0",
+            description = "with --laptop: first this many minutes of the window with no robot sending (default ${DEFAULT-VALUE})")
+    int laptopIdleMinutes;
+
     @Option(names = "--laptop-jvm", defaultValue = LaptopLoadBench.WINDOW_JVM,
             description = "with --laptop: the window's JVM options, as the launcher gives them (default ${DEFAULT-VALUE})")
     String laptopJvm;
@@ -86,7 +90,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     @Override
     public Integer call() throws Exception {
         if (laptop) {
-            return new LaptopLoadBench(laptopMinutes, laptopBaselineMinutes, 30, List.of(laptopJvm.trim().split("\\s+"))).run();
+            return new LaptopLoadBench(laptopMinutes, laptopBaselineMinutes, 30, List.of(laptopJvm.trim().split("\\s+")), laptopIdleMinutes).run();
         }
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
