@@ -67,6 +67,25 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             + "machines: not in the window's heap), instead of in the window's JVM")
     boolean viewersApart;
 
+    @Option(names = "--laptop", description = "instead: issue 14's laptop budgets, the console's CPU and PSS on the demo"
+            + " team and demo layout (its own JVM), against the headless listen in the same run")
+    boolean laptop;
+
+    @Option(names = "--laptop-minutes", defaultValue = "10", description = "with --laptop: minutes of the window (default ${DEFAULT-VALUE})")
+    int laptopMinutes;
+
+    @Option(names = "--laptop-baseline-minutes", defaultValue = "2",
+            description = "with --laptop: minutes of the headless listen (0: none; default ${DEFAULT-VALUE})")
+    int laptopBaselineMinutes;
+
+    @Option(names = "--laptop-idle-minutes", defaultValue = "0",
+            description = "with --laptop: first this many minutes of the window with no robot sending (default ${DEFAULT-VALUE})")
+    int laptopIdleMinutes;
+
+    @Option(names = "--laptop-jvm", defaultValue = LaptopLoadBench.WINDOW_JVM,
+            description = "with --laptop: the window's JVM options, as the launcher gives them (default ${DEFAULT-VALUE})")
+    String laptopJvm;
+
     @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
     String only;
 
@@ -74,10 +93,13 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     /** One phase's figures. */
     record Phase(String name, double fpsMean, double fpsMin, double p50, double p99, long shown, double packetsPerSecond,
                  double heapMaxMb, double heapAfterGcFirstMinuteMb, double heapAfterGcEndMb, Map<String, Long> viewNanos,
-                 long frames) { }
+                 long frames, double pullsPerSecond) { }
 
     @Override
     public Integer call() throws Exception {
+        if (laptop) {
+            return new LaptopLoadBench(laptopMinutes, laptopBaselineMinutes, 30, List.of(laptopJvm.trim().split("\\s+")), laptopIdleMinutes).run();
+        }
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
              SimulatedTeam team = SimulatedTeam.start(robots, console.port(), List.of("--rate", Integer.toString(rate)))) {
@@ -262,6 +284,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             window.pulse().takeRefreshNanos();
         });
         long startFrames = window.pulse().frames();
+        long startPulls = window.pulse().workFrames();
         long startIn = console.transportCounts().datagramsIn();
         long start = System.nanoTime();
         double fpsSum = 0;
@@ -293,11 +316,12 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
         double pps = (console.transportCounts().datagramsIn() - startIn) / elapsed;
         Map<String, Long> nanos = FxThread.call(() -> window.pulse().takeRefreshNanos());
         long frames = window.pulse().frames() - startFrames;
+        double pulls = (window.pulse().workFrames() - startPulls) / elapsed;
         double p50 = window.pulse().latency().quantileMillis(0.5);
         double p99 = window.pulse().latency().quantileMillis(0.99);
         long shown = window.pulse().latency().count();
         return new Phase(name, fpsSum / Math.max(1, samples), samples == 0 ? 0 : fpsMin, p50, p99, shown, pps, heapMax,
-                heapFirstMinute, heapAfterGc(rt), nanos, frames);
+                heapFirstMinute, heapAfterGc(rt), nanos, frames, pulls);
     }
 
     private static double heapAfterGc(Runtime rt) {
@@ -306,13 +330,13 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     }
 
     static String header() {
-        return "| phase | fps mean | fps min | latency p50 | latency p99 | items shown | packets/s in | heap max | heap after GC at 1 min | heap after GC at end |\n"
-                + "|---|---|---|---|---|---|---|---|---|---|";
+        return "| phase | fps mean | fps min | view pulls/s | latency p50 | latency p99 | items shown | packets/s in | heap max | heap after GC at 1 min | heap after GC at end |\n"
+                + "|---|---|---|---|---|---|---|---|---|---|---|";
     }
 
     static String row(Phase p) {
-        return String.format(Locale.ROOT, "| %s | %.1f | %.1f | %s | %s | %d | %.0f | %.0f MB | %.0f MB | %.0f MB |",
-                p.name(), p.fpsMean(), p.fpsMin(), ms(p.p50()), ms(p.p99()), p.shown(), p.packetsPerSecond(), p.heapMaxMb(),
+        return String.format(Locale.ROOT, "| %s | %.1f | %.1f | %.1f | %s | %s | %d | %.0f | %.0f MB | %.0f MB | %.0f MB |",
+                p.name(), p.fpsMean(), p.fpsMin(), p.pullsPerSecond(), ms(p.p50()), ms(p.p99()), p.shown(), p.packetsPerSecond(), p.heapMaxMb(),
                 p.heapAfterGcFirstMinuteMb(), p.heapAfterGcEndMb());
     }
 

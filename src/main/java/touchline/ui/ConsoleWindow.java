@@ -68,7 +68,8 @@ public final class ConsoleWindow {
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(console);
-        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep);
+        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep, new ConsoleChanges(console, serving)::read);
+        shell.onChange(pulse::input);
         MenuBar bar = menus();
         shortcuts = new Shortcuts(bar);
         root.setTop(bar);
@@ -97,6 +98,11 @@ public final class ConsoleWindow {
         scene.getStylesheets().add(ConsoleWindow.class.getResource("bento-themed.css").toExternalForm());
         scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
         stage.setScene(scene);
+        // any of the console's windows touched: the idle pulse wakes up; F1 gives help in every window
+        EveryWindow<javafx.scene.input.InputEvent> input = new EveryWindow<>(javafx.scene.input.InputEvent.ANY,
+                (e, w) -> pulse.input());
+        EveryWindow<javafx.scene.input.KeyEvent> f1 = new EveryWindow<>(javafx.scene.input.KeyEvent.KEY_PRESSED,
+                this::helpKey);
         places.keep(stage, "main", 1400, 900);
         stage.setTitle(console.remoteStatus().map(r -> console.runtime().version().title() + " — viewing " + r.url())
                 .orElse(console.runtime().version().title() + " — UDP port " + console.port()));
@@ -115,12 +121,16 @@ public final class ConsoleWindow {
             if (restored[0]) { // closed before its views were built: the saved "last" layout stays as it was
                 saveQuietly("last");
             }
-            pulse.stop();
+            pulse.close();
+            input.close();
+            f1.close();
             serving.close();
             // closing the window ends a recording as its Stop button does: the file is finished
             // (summary, footer) before the process can exit, however the window was closed
             console.finishRecording(FINISH_RECORDING_MILLIS);
         });
+        // light on the laptop: a minimised window does no frame work; a touched one wakes up
+        stage.iconifiedProperty().addListener((o, was, minimised) -> pulse.iconified(minimised));
         stage.show();
         pulse.start();
         if (viewsAfterShown) {
@@ -213,12 +223,29 @@ public final class ConsoleWindow {
     /** F1: the help of the view that has the keyboard (every view's when none has). */
     public Stage helpForFocusedView() {
         javafx.scene.Node focused = stage == null || stage.getScene() == null ? null : stage.getScene().getFocusOwner();
+        return helpFor(focused, stage);
+    }
+
+    private Stage helpFor(javafx.scene.Node focused, javafx.stage.Window owner) {
         Optional<Shell.OpenView> view = shell.containing(focused);
         if (view.isPresent()) {
             ViewSpec spec = view.get().spec();
-            return help.show(stage, spec.title(), HelpWindow.text(spec, shortcuts));
+            return help.show(owner, spec.title(), HelpWindow.text(spec, shortcuts));
         }
-        return helpForViews();
+        return helpForViews(owner);
+    }
+
+    /**
+     * F1 in a window other than the main one (whose menu answers it): a view dragged out into its
+     * own window gives its help, Ctrl+K and the dialogs every view's.
+     */
+    private void helpKey(javafx.scene.input.KeyEvent e, javafx.stage.Window w) {
+        if (e.getCode() != KeyCode.F1 || w == stage || w == null
+                || (w instanceof Stage s && s.getTitle() != null && s.getTitle().startsWith(HelpWindow.TITLE))) {
+            return;
+        }
+        e.consume();
+        helpFor(w.getScene().getFocusOwner(), w);
     }
 
     /** Help → Keyboard shortcuts (Ctrl+/): the sheet, read from the menus' accelerators. */
@@ -227,13 +254,17 @@ public final class ConsoleWindow {
     }
 
     private Stage helpForViews() {
+        return helpForViews(stage);
+    }
+
+    private Stage helpForViews(javafx.stage.Window owner) {
         StringBuilder s = new StringBuilder();
         for (ViewSpec v : registry.all()) {
             s.append(v.title()).append(": ").append(v.help()).append("\n\n");
         }
         s.append("Ctrl+K opens any view. F1 gives the help of the view that has the keyboard, Ctrl+/ every "
                 + "shortcut. Drag a tab to split or move it, or out of the window.");
-        return help.show(stage, "Views", s.toString());
+        return help.show(owner, "Views", s.toString());
     }
 
     public void quickOpen() {

@@ -14,6 +14,8 @@ import javafx.stage.Window;
  */
 final class HelpWindow {
 
+    /** The start of every help window's title. */
+    static final String TITLE = "Help — ";
     private final WindowPlaces places;
 
     HelpWindow(WindowPlaces places) {
@@ -35,7 +37,7 @@ final class HelpWindow {
     Stage show(Window owner, String title, String body) {
         Stage stage = new Stage();
         stage.initOwner(owner);
-        stage.setTitle("Help — " + title);
+        stage.setTitle(TITLE + title);
         Label heading = new Label(title);
         heading.setId("help-title");
         heading.setStyle("-fx-font-size: 1.3em; -fx-font-weight: bold; -fx-padding: 8 8 4 8;");

@@ -39,6 +39,7 @@ public final class Shell {
     private final BorderPane host = new BorderPane();
     private final Map<Dockable, OpenView> open = new LinkedHashMap<>();
     private DockContainerRootBranch root;
+    private Runnable changed = () -> { };
 
     public Shell(ViewRegistry registry, Function<ViewSpec, Function<ViewSource, View>> maker) {
         this.registry = registry;
@@ -46,6 +47,11 @@ public final class Shell {
         bento.events().addDockableCloseListener((path, d) -> forget(d));
         root = bento.dockBuilding().root("main");
         host.setCenter(root);
+    }
+
+    /** Called whenever a view opens, closes or is brought to front (the idle frame pulse wakes up). */
+    public void onChange(Runnable r) {
+        changed = r;
     }
 
     public BorderPane node() {
@@ -74,6 +80,7 @@ public final class Shell {
 
     private void forget(Dockable d) {
         OpenView v = open.remove(d);
+        changed.run();
         if (v != null) {
             v.view().close();
         }
@@ -81,6 +88,7 @@ public final class Shell {
 
     /** Opens a view (or selects it when the same view with the same source is already open). */
     public OpenView open(ViewSpec spec, ViewSource source) {
+        changed.run();
         for (OpenView v : open.values()) {
             ViewSource s = v.view().source();
             if (v.spec().equals(spec) && (s == null || !source.isSet() || source.equals(s))) {
@@ -160,7 +168,9 @@ public final class Shell {
                         selected = views.size();
                     }
                     ViewSource s = v.view().source();
-                    views.add(new LayoutNode.Entry(v.spec().id(), s == null || !s.isSet() ? "" : s.encode()));
+                    String state = v.view().layoutState();
+                    views.add(new LayoutNode.Entry(v.spec().id(),
+                            state != null ? state : s == null || !s.isSet() ? "" : s.encode()));
                 }
             }
             return new LayoutNode.Leaf(selected, views);
@@ -183,6 +193,7 @@ public final class Shell {
      * windows of the layout are docked into the main window.
      */
     public void restore(List<LayoutNode> windows) {
+        changed.run();
         for (OpenView v : List.copyOf(open.values())) {
             v.view().close();
         }
@@ -216,7 +227,11 @@ public final class Shell {
         if (node instanceof LayoutNode.Leaf l) {
             List<Dockable> made = new ArrayList<>();
             for (LayoutNode.Entry e : l.views()) {
-                registry.byId(e.viewId()).ifPresent(spec -> made.add(create(spec, ViewSource.decode(e.source())).dockable()));
+                registry.byId(e.viewId()).ifPresent(spec -> {
+                    OpenView v = create(spec, ViewSource.decode(e.source()));
+                    v.view().restoreLayoutState(e.source());
+                    made.add(v.dockable());
+                });
             }
             if (made.isEmpty()) {
                 return null;

@@ -25,6 +25,10 @@ public final class SourceBar extends HBox {
     private final Label status = new Label();
     private long seenOptionsVersion = -1;
     private long seenRobotsVersion = -1;
+    private long readMicros = Long.MIN_VALUE;
+
+    /** The least time between two reads caused by the robot registry alone. */
+    public static final long REREAD_MICROS = 500_000;
 
     SourceBar(ViewContext context, Set<Integer> kinds, ViewSource initial) {
         super(8);
@@ -56,13 +60,19 @@ public final class SourceBar extends HBox {
         }
     }
 
-    /** Re-reads the option lists when they changed; cheap otherwise. */
+    /**
+     * Re-reads the option lists when they changed; cheap otherwise. Every datagram moves the robot
+     * registry's version, so a change there alone is read at most twice a second (the sources
+     * come with the option lists, whose version is read at once).
+     */
     public void refresh() {
         long ov = context.console().options().version();
         long rv = context.console().robots().version();
-        if (ov == seenOptionsVersion && rv == seenRobotsVersion) {
+        long now = context.console().clock().nowMicros();
+        if (ov == seenOptionsVersion && (rv == seenRobotsVersion || now - readMicros < REREAD_MICROS)) {
             return;
         }
+        readMicros = now;
         seenOptionsVersion = ov;
         seenRobotsVersion = rv;
         List<ViewSource> found = new ArrayList<>();

@@ -83,6 +83,11 @@ public final class StatusBar extends HBox {
         message.setText(text);
     }
 
+    /** The frame pulse stopped because nothing changed: the frame rate reads "idle" until it runs again. */
+    void idle() {
+        fps.setText("idle");
+    }
+
     void refresh(long nowMicros, double framesPerSecond, LatencyProbe latency) {
         if (nowMicros - lastMicros < 500_000) {
             return;

@@ -19,5 +19,16 @@ public interface View {
         return null;
     }
 
+    /**
+     * What a layout keeps of the view beyond its source, as one word (no white space), e.g. the
+     * Plot fields view's chosen series; null: the source alone.
+     */
+    default String layoutState() {
+        return null;
+    }
+
+    /** Takes back what {@link #layoutState} gave when the layout was saved (ignores what it does not know). */
+    default void restoreLayoutState(String state) { }
+
     default void close() { }
 }

@@ -47,6 +47,8 @@ public final class FieldPlotView implements View {
     private long listedKinds = -1;
     private boolean dirty;
     private boolean relist = true;
+    /** Series of a restored layout whose kind has not been seen yet ({@code robot:kind:path}). */
+    private final List<String> pending = new java.util.ArrayList<>();
 
     public FieldPlotView(ViewContext context) {
         this.context = context;
@@ -164,6 +166,9 @@ public final class FieldPlotView implements View {
     public void refresh(FrameContext frame) {
         robot.refresh();
         long kindsVersion = fields.kindsVersion();
+        if (kindsVersion != listedKinds && !pending.isEmpty()) {
+            pending.removeIf(this::addSaved); // their kind arrived
+        }
         if (relist || kindsVersion != listedKinds) {
             relist = false;
             listedKinds = kindsVersion;
@@ -189,6 +194,42 @@ public final class FieldPlotView implements View {
         }
         int points = plot.draw(series);
         status.setText(series.size() + " series · " + points + " points");
+    }
+
+    /** The plotted series (and those still waiting for their kind): {@code series=3:status:battery;1:status:x}. */
+    @Override
+    public String layoutState() {
+        StringBuilder s = new StringBuilder(STATE_PREFIX);
+        for (FieldPlot.Series series : fields.series()) {
+            s.append(series.robotId()).append(':').append(series.kind()).append(':').append(series.path()).append(';');
+        }
+        pending.forEach(p -> s.append(p).append(';'));
+        return s.toString();
+    }
+
+    /** Plots a saved layout's series again, each once its kind has been seen. */
+    @Override
+    public void restoreLayoutState(String state) {
+        if (state == null || !state.startsWith(STATE_PREFIX)) {
+            return;
+        }
+        for (String saved : state.substring(STATE_PREFIX.length()).split(";")) {
+            if (!saved.isBlank() && !addSaved(saved)) {
+                pending.add(saved);
+            }
+        }
+    }
+
+    private static final String STATE_PREFIX = "series=";
+
+    /** Adds one saved {@code robot:kind:path}; false while its kind has not been seen (or it is not a series). */
+    private boolean addSaved(String saved) {
+        int colon = saved.indexOf(':');
+        try {
+            return colon > 0 && fields.add(Integer.parseInt(saved.substring(0, colon)), saved.substring(colon + 1));
+        } catch (NumberFormatException e) {
+            return true; // not a series: dropped, as the layout reader drops what it does not understand
+        }
     }
 
     @Override

@@ -29,6 +29,8 @@ public final class FieldView extends SourcedView {
     private long seenRobots = -1;
     private long seenObjects = -1;
     private int drawnRobots;
+    private List<Mark> drawnMarks = List.of();
+    private long paints;
 
     public FieldView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.FIELD_VALUE), source);
@@ -51,17 +53,42 @@ public final class FieldView extends SourcedView {
         if (rv == seenRobots && ov == seenObjects && !dirty) {
             return;
         }
+        seenRobots = rv;
+        // every datagram moves the robots' version: paint only when what is drawn of them moved
+        List<RobotSnapshot> robots = context.console().robots().robots();
+        List<Mark> marks = marks(robots);
+        if (ov == seenObjects && !dirty && marks.equals(drawnMarks)) {
+            return;
+        }
         if (ov != seenObjects && objects.isPresent()) {
             frame.shown(objects.get().timeMicros());
         }
-        seenRobots = rv;
         seenObjects = ov;
         dirty = false;
-        status(paint(context.console().robots().robots(), objects.orElse(null)));
+        drawnMarks = marks;
+        paints++;
+        status(paint(robots, objects.orElse(null)));
+    }
+
+    /** What the field shows of one robot; two equal lists paint the same robots. */
+    private record Mark(int id, boolean hasPosition, double x, double y, double theta, boolean online, String role) { }
+
+    private static List<Mark> marks(List<RobotSnapshot> robots) {
+        List<Mark> out = new java.util.ArrayList<>(robots.size());
+        for (RobotSnapshot r : robots) {
+            out.add(new Mark(r.id(), r.hasPosition(), r.x(), r.y(), r.theta(), r.online(), r.role()));
+        }
+        return out;
+    }
+
+    /** Times the field was painted (for tests: a frame without a change paints nothing). */
+    public long paints() {
+        return paints;
     }
 
     @Override
     protected String draw(Latest latest) {
+        paints++;
         return paint(context.console().robots().robots(), latest);
     }
 

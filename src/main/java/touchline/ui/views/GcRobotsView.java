@@ -36,6 +36,8 @@ public final class GcRobotsView implements View {
         root.setCenter(lines);
     }
 
+    private long shownMicros = Long.MIN_VALUE / 2;
+
     @Override
     public Node node() {
         return root;
@@ -43,9 +45,10 @@ public final class GcRobotsView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        if (frame.frame() % 30 != 0) {
-            return;
+        if (frame.nowMicros() - shownMicros < 500_000) {
+            return; // twice a second (frames are few when the window is quiet)
         }
+        shownMicros = frame.nowMicros();
         Optional<MonitorReport> monitor = context.console().monitorReport(context.console().clock().nowMicros() / 1000);
         if (monitor.isEmpty()) {
             status.setText("Not a monitor of the field's GameController: start with --gc-monitor HOST to see the "

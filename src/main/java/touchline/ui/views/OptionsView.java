@@ -51,6 +51,7 @@ public final class OptionsView implements View {
     private final Map<Integer, Boolean> collapsed = new HashMap<>();
     private long seenOptions = -1;
     private long seenRobots = -1;
+    private long readMicros = Long.MIN_VALUE;
     private boolean rebuild = true;
 
     public OptionsView(ViewContext context) {
@@ -207,10 +208,13 @@ public final class OptionsView implements View {
     public void refresh(FrameContext frame) {
         long ov = context.console().options().version();
         long rv = context.console().robots().version();
-        // streaming flags age without a version change: re-read twice a second anyway
-        if (!rebuild && ov == seenOptions && rv == seenRobots && frame.frame() % 30 != 0) {
+        // every datagram moves the robots' version, and streaming flags age without any change:
+        // both are read twice a second; a changed option list at once. The tree's nodes change
+        // only when a row does.
+        if (!rebuild && ov == seenOptions && frame.nowMicros() - readMicros < touchline.ui.SourceBar.REREAD_MICROS) {
             return;
         }
+        readMicros = frame.nowMicros();
         seenOptions = ov;
         seenRobots = rv;
         rebuild = false;

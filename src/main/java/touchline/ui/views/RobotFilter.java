@@ -14,6 +14,7 @@ final class RobotFilter extends ComboBox<String> {
     static final String ALL = "all robots";
     private final ViewContext context;
     private long seenVersion = -1;
+    private long readMicros = Long.MIN_VALUE;
 
     RobotFilter(ViewContext context) {
         this.context = context;
@@ -29,9 +30,12 @@ final class RobotFilter extends ComboBox<String> {
 
     void refresh() {
         long v = context.console().robots().version();
-        if (v == seenVersion) {
+        long now = context.console().clock().nowMicros();
+        // every datagram moves the version: the robot list is read at most twice a second
+        if (v == seenVersion || now - readMicros < touchline.ui.SourceBar.REREAD_MICROS) {
             return;
         }
+        readMicros = now;
         seenVersion = v;
         List<String> items = new ArrayList<>();
         items.add(ALL);

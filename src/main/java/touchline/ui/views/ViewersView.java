@@ -122,12 +122,15 @@ public final class ViewersView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        if (frame.frame() % 30 == 0 || serve.isSelected() != toggle.serving()) {
+        // twice a second (the pulse runs when the viewers change, see ConsoleChanges), at once when switched
+        if (frame.nowMicros() - shownMicros >= 500_000 || serve.isSelected() != toggle.serving()) {
+            shownMicros = frame.nowMicros();
             show();
         }
     }
 
     private String saidShown = "";
+    private long shownMicros = Long.MIN_VALUE / 2;
 
     private void show() {
         boolean on = toggle.serving();
