@@ -202,7 +202,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         Runnable write = () -> {
             byte[] wire = tagged ? security.tagger().get().tag(robotId, datagram) : datagram;
             ch.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(wire), target));
-            sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, kindChannel, target, robotId, kind, decoded,
+            publishOut(new Envelope(clock.nowMicros(), Direction.OUT, kindChannel, target, robotId, kind, decoded,
                     wire, null));
         };
         if (ch.eventLoop().inEventLoop()) {
@@ -216,6 +216,22 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         }
         counters.countOut(datagram.length + (tagged ? Trailer.SIZE : 0));
         return SendResult.sent();
+    }
+
+    /**
+     * Event loop: an envelope of what was just sent joins the received ones on the publishing
+     * thread ({@link DecodeStage}), so the bus's subscribers see one stream in one order: a
+     * request the model sends because of a datagram is published after that datagram, never
+     * beside it on another thread (the recorder writes what it is given in this order).
+     */
+    private void publishOut(Envelope e) {
+        DecodeStage s = stage;
+        if (s == null) {
+            sink.accept(e);
+            return;
+        }
+        s.add(e);
+        s.flush();
     }
 
     public LinkSecurity security() {
