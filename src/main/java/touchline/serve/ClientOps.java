@@ -81,8 +81,8 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
                 refuse(viewer, "unknown channel " + channelId);
                 continue;
             }
-            viewer.subscribe(id.intValue(), channel.get()).ifPresentOrElse(reason -> refuse(viewer, reason),
-                    () -> viewer.catchUp(id.intValue(), channel.get(), clock.nowMicros() * 1000));
+            viewer.subscribe(id.intValue(), channel.get(), clock.nowMicros() * 1000)
+                    .ifPresent(reason -> refuse(viewer, reason));
         }
     }
 

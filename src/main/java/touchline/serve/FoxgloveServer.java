@@ -154,16 +154,13 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         if (c == null) {
             return;
         }
-        Subscription[] subscribers = c.subscribers();
         boolean latched = LATCHED_KINDS.contains(e.kind());
-        if (subscribers.length == 0 && !latched) {
+        if (c.subscribers().length == 0 && !latched) {
             return;
         }
         byte[] payload = c.payloads().payload(e);
         long timeNanos = e.timeMicros() * 1000;
-        if (latched) {
-            c.setLatest(payload, timeNanos);
-        }
+        Subscription[] subscribers = latched ? c.latch(payload, timeNanos) : c.subscribers();
         for (Subscription s : subscribers) {
             s.viewer().offer(s, timeNanos, payload);
         }

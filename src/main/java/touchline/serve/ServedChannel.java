@@ -20,8 +20,8 @@ final class ServedChannel {
     private final ChannelPayloads payloads; // null for the console's JSON state channels
     private final java.util.Map<String, String> metadata; // null: none advertised
     private volatile Subscription[] subscribers = new Subscription[0];
-    private volatile byte[] latest; // a state channel's current value, sent to each new subscriber
-    private volatile long latestTimeNanos;
+    private byte[] latest; // a state channel's current value, sent to each new subscriber (guarded by this)
+    private long latestTimeNanos; // when it was heard, 0 for a console state (guarded by this)
 
     ServedChannel(int id, String topic, String encoding, String schemaName, String schema, String schemaEncoding,
                   ChannelPayloads payloads, java.util.Map<String, String> metadata) {
@@ -56,34 +56,38 @@ final class ServedChannel {
         return payloads;
     }
 
-    /** A state channel's current value, or null (message channels keep nothing). */
-    byte[] latest() {
-        return latest;
-    }
-
-    void setLatest(byte[] value) {
+    synchronized void setLatest(byte[] value) {
+        latestTimeNanos = 0;
         latest = value;
     }
 
-    /** A robot's state-like message (its option list, its status): kept with the time it was heard, for new subscribers. */
-    void setLatest(byte[] value, long timeNanos) {
+    /**
+     * A robot's state-like message (its option list, its status): kept with the time it was
+     * heard, for new subscribers; returns the subscribers to send it to now. Atomic with
+     * {@link #add}: a subscription added before gets the value from the publisher (it is in the
+     * returned array), one added after gets it from its catch-up — never neither (a viewer
+     * subscribing while a status was being published missed it), never the same value twice.
+     */
+    synchronized Subscription[] latch(byte[] value, long timeNanos) {
         latestTimeNanos = timeNanos;
         latest = value;
+        return subscribers;
     }
 
-    /** When the latest value was heard, or 0 for a console state (which holds now). */
-    long latestTimeNanos() {
-        return latestTimeNanos;
-    }
+    /** The latched value at one moment and when it was heard (0: a console state, which holds now). */
+    record Latched(byte[] value, long timeNanos) { }
+
 
     Subscription[] subscribers() {
         return subscribers;
     }
 
-    synchronized void add(Subscription s) {
+    /** Adds a subscriber; returns the latched value as it was then, which the subscriber catches up with. */
+    synchronized Latched add(Subscription s) {
         Subscription[] now = Arrays.copyOf(subscribers, subscribers.length + 1);
         now[now.length - 1] = s;
         subscribers = now;
+        return new Latched(latest, latestTimeNanos);
     }
 
     synchronized void remove(Subscription s) {

@@ -86,8 +86,12 @@ final class Viewer {
         }
     }
 
-    /** Subscribes under the viewer's {@code id}; the reason when refused. */
-    Optional<String> subscribe(int id, ServedChannel c) {
+    /**
+     * Subscribes under the viewer's {@code id} and sends a state channel's value as it was when
+     * the subscription joined, so a viewer need not wait for a change (a console state, which
+     * holds now, is stamped {@code nowNanos}); the reason when refused.
+     */
+    Optional<String> subscribe(int id, ServedChannel c, long nowNanos) {
         if (!wants(c)) {
             return Optional.of("unknown channel " + c.id());
         }
@@ -101,18 +105,11 @@ final class Viewer {
         }
         Subscription s = new Subscription(this, id, c);
         subscriptions.put(id, s);
-        c.add(s);
-        return Optional.empty();
-    }
-
-    /** Sends a state channel's current value to a new subscription, so a viewer need not wait for a change. */
-    void catchUp(int id, ServedChannel c, long timeNanos) {
-        byte[] value = c.latest();
-        Subscription s = subscriptions.get(id);
-        if (value != null && s != null) {
-            long heard = c.latestTimeNanos();
-            offer(s, heard > 0 ? heard : timeNanos, value);
+        ServedChannel.Latched then = c.add(s);
+        if (then.value() != null) {
+            offer(s, then.timeNanos() > 0 ? then.timeNanos() : nowNanos, then.value());
         }
+        return Optional.empty();
     }
 
     /** Ends subscription {@code id}; the reason when there is none. */
