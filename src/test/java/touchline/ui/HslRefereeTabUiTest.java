@@ -153,7 +153,24 @@ class HslRefereeTabUiTest {
     private String windowGeometry() throws Exception {
         return ui.fx(() -> {
             javafx.stage.Window w = ui.window.scene().getWindow();
-            return w.getX() + "," + w.getY() + " " + w.getWidth() + "x" + w.getHeight();
+            StringBuilder b = new StringBuilder(w.getX() + "," + w.getY() + " " + w.getWidth() + "x" + w.getHeight());
+            javafx.scene.Node clock = ui.window.scene().lookup("#gc-clock");
+            for (javafx.scene.Parent p = clock.getParent(); p != null; p = p.getParent()) {
+                if (p instanceof javafx.scene.layout.BorderPane bp) {
+                    b.append(" left ").append(bp.getLeft().getLayoutBounds().getWidth())
+                            .append(" centre ").append(bp.getCenter().getLayoutBounds().getWidth())
+                            .append(" right ").append(bp.getRight().getLayoutBounds().getWidth())
+                            .append(" pane ").append(bp.getWidth()).append(" at ")
+                            .append(bp.localToScene(0, 0).getX());
+                    break;
+                }
+            }
+            for (String id : List.of("#gc-robot-text-0-1", "#gc-robot-text-1-1", "#gc-secondary", "#gc-state")) {
+                javafx.scene.Node n = ui.window.scene().lookup(id);
+                b.append(" ").append(id).append("='").append(n instanceof javafx.scene.control.Labeled l ? l.getText() : "?")
+                        .append("'");
+            }
+            return b.toString();
         });
     }
 
