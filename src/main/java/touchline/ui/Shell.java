@@ -117,6 +117,13 @@ public final class Shell {
         d.setTooltip(new javafx.scene.control.Tooltip(spec.help()));
         OpenView v = new OpenView(spec, frame, d);
         open.put(d, v);
+        // a view joins the screen a layout pass after it opens: that wakes the (maybe idle) frame
+        // pulse too, so its first pull never waits for a change of data
+        frame.sceneProperty().addListener((o, was, now) -> {
+            if (now != null) {
+                changed.run();
+            }
+        });
         return v;
     }
 
