@@ -169,7 +169,7 @@ public final class Console implements AutoCloseable {
         }
         try {
             gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
-                    live, matchMode, monitorRegistrations, gcSources);
+                    live, matchMode, monitorRegistrations, gcSources, clock);
             // started in the middle of a game, the console must hear the GameController before it talks
             matchMode.listenFirst(MatchMode.LISTEN_FIRST_MS);
         } catch (IOException e) {
@@ -580,7 +580,7 @@ public final class Console implements AutoCloseable {
             throw new IOException(COMMANDS_OFF);
         }
         stopGameController();
-        EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode);
+        EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode, clock);
         try {
             gc.start();
         } catch (RuntimeException e) {

@@ -3,6 +3,7 @@ package touchline.app;
 import touchline.game.GameClock;
 import touchline.record.PlaybackClock;
 import touchline.transport.MicrosClock;
+import touchline.transport.MonotonicClock;
 
 import java.time.Instant;
 
@@ -11,10 +12,11 @@ import java.time.Instant;
  * ArchitectureTest} forbids it everywhere else). Made once at the top (the {@link Console}, a
  * command that has no console) and handed down through constructors in the shape each part
  * asks for: wall time in microseconds for envelopes and models ({@link MicrosClock}),
- * monotonic milliseconds for the game ({@link GameClock}), monotonic nanoseconds for replay
- * pacing ({@link PlaybackClock}). Tests hand down fakes instead.
+ * monotonic milliseconds for the game ({@link GameClock}), monotonic nanoseconds for the NAO
+ * link's deadlines ({@link MonotonicClock}) and replay pacing ({@link PlaybackClock}, one of
+ * those). Tests hand down fakes instead.
  */
-public final class SystemClock implements MicrosClock, GameClock, PlaybackClock {
+public final class SystemClock implements MicrosClock, MonotonicClock, GameClock, PlaybackClock {
 
     /** Wall time, microseconds since the epoch. */
     @Override

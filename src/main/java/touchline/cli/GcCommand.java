@@ -205,7 +205,7 @@ public final class GcCommand implements Callable<Integer> {
     private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
         MatchMode matchMode = new MatchMode(clock);
-        try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode)) {
+        try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode, clock)) {
             gc.addEventListener(event -> print("! " + event));
             String[] last = {""};
             game.addListener(() -> {

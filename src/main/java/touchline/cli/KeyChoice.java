@@ -41,6 +41,7 @@ final class KeyChoice {
             return LinkSecurity.off();
         }
         try {
+            // The real clock, made here once: the keys are chosen before any console exists.
             LinkSecurity s = LinkSecurity.with(dir.teamKey(),
                     new CounterSource(new touchline.app.SystemClock()::nowMicros, dir.counterStore()));
             System.err.println("keys: " + s.describe() + " (" + dir.path() + ")");

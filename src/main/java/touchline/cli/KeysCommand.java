@@ -68,6 +68,7 @@ public final class KeysCommand {
             PrintWriter out = spec.commandLine().getOut();
             KeyDir dir = dir();
             try {
+                // The real clock, made once for this command (it has no console): the key's date.
                 TeamKey key = dir.create(force, new SecureRandom(), new touchline.app.SystemClock().instant());
                 out.printf("made team key %s and the NAO link's CURVE key pairs in %s (owner-only)%n", key.idHex(),
                         dir.path());

@@ -90,6 +90,7 @@ public final class RecordCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
+        // The real clock, made here once: the file is named before the console (which has its own) exists.
         Path file = out != null ? out
                 : Path.of("touchline-" + LocalDateTime.ofInstant(new touchline.app.SystemClock().instant(), java.time.ZoneId.systemDefault()).format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
         EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults().withCompression(compression)

@@ -115,6 +115,7 @@ public final class ReplayCommand implements Callable<Integer> {
                 }
             }
             Player[] playing = new Player[1];
+            // The real clock, made once for this command (it has no console): the replay's pacing.
             Player player = new Player(session, e -> out.println(several
                     ? text.format(e) + " file=" + playing[0].deliveringSource() : text.format(e)), new touchline.app.SystemClock());
             playing[0] = player;

@@ -89,7 +89,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             for (Map.Entry<String, String> s : SHOTS.entrySet()) {
                 shootView(window, s.getKey(), s.getValue());
             }
-            shootNao(window);
+            shootNao(console, window);
             shootGameController(console, window);
             FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                     List.of(new LayoutNode.Entry("robots", ""))))));
@@ -166,7 +166,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
     }
 
     /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
-    private void shootNao(ConsoleWindow window) throws Exception {
+    private void shootNao(Console console, ConsoleWindow window) throws Exception {
         RobotSideBinaries binaries = new RobotSideBinaries();
         if (binaries.missing("touchline-nao-sim").isPresent()) {
             System.err.println("no NAO screenshot: " + binaries.missing("touchline-nao-sim").get());
@@ -175,7 +175,8 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         java.nio.file.Path sim = binaries.of("touchline-nao-sim");
         // the NAO tab as every user sees it: the link encrypted with CURVE keys (made for the shot)
         java.nio.file.Path keys = Files.createTempDirectory("touchline-shot-keys");
-        new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(), new touchline.app.SystemClock().instant());
+        new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(),
+                java.time.Instant.EPOCH.plus(console.clock().nowMicros(), java.time.temporal.ChronoUnit.MICROS));
         Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0", "--curve-secret",
                 keys.resolve("nao-server.secret").toString(), "--curve-clients", keys.resolve("console.public").toString())
                 .redirectErrorStream(true).start();

@@ -77,7 +77,7 @@ class GameControllerSpoofingIntegrationTest {
         try (Console console = new Console(config).start();
              RobotProcess robot = RobotProcess.robot(8, console.port()).start();
              EmbeddedGameController referee = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,
-                     List.of(consoleGcPort), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null);
+                     List.of(consoleGcPort), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null, new touchline.app.SystemClock());
              DatagramSocket forger = new DatagramSocket(new InetSocketAddress("127.0.0.2", 0));
              DatagramSocket sameAddressForger = new DatagramSocket(ANY_LOOPBACK_PORT)) {
             console.bus().subscribe(e -> {

@@ -26,6 +26,7 @@ import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
+import touchline.transport.MicrosClock;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -48,9 +49,6 @@ import java.util.function.Consumer;
  */
 public final class EmbeddedGameController implements AutoCloseable {
 
-    /** Envelope time stamps: microseconds since the epoch. */
-    private final touchline.transport.MicrosClock stamps = new touchline.app.SystemClock();
-
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
     private static final String OWN_SOURCE = "this console's GameController";
 
@@ -60,6 +58,8 @@ public final class EmbeddedGameController implements AutoCloseable {
     private final GcConfig config;
     private final EnvelopeSink sink;
     private final MatchMode matchMode;
+    /** Envelope time stamps (the console's wall clock). */
+    private final MicrosClock stamps;
     private final ReturnPacketDecoder returnDecoder = new ReturnPacketDecoder();
     private final KnownGameStateFormats knownFormats = new KnownGameStateFormats();
     private final RobotLiveness liveness = new RobotLiveness();
@@ -77,10 +77,11 @@ public final class EmbeddedGameController implements AutoCloseable {
      * @param config    formats, addresses and ports
      * @param sink      receives every GameController envelope (IN and OUT)
      * @param matchMode told the state we send and the states we hear (may be null)
+     * @param stamps    the console's wall clock, for the envelopes' time stamps
      */
-    public EmbeddedGameController(Game game, GcConfig config, EnvelopeSink sink, MatchMode matchMode)
-            throws IOException {
-        this((RefereedGame) game, config, sink, matchMode);
+    public EmbeddedGameController(Game game, GcConfig config, EnvelopeSink sink, MatchMode matchMode,
+                                  MicrosClock stamps) throws IOException {
+        this((RefereedGame) game, config, sink, matchMode, stamps);
     }
 
     /**
@@ -89,10 +90,11 @@ public final class EmbeddedGameController implements AutoCloseable {
      * @param config    formats, addresses and ports
      * @param sink      receives every GameController envelope (IN and OUT)
      * @param matchMode told the state we send and the states we hear (may be null)
+     * @param stamps    the console's wall clock, for the envelopes' time stamps
      * @throws IllegalArgumentException when the game's rules do not fit the format
      */
-    public EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, MatchMode matchMode)
-            throws IOException {
+    public EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, MatchMode matchMode,
+                                  MicrosClock stamps) throws IOException {
         boolean hslGame = !(referee instanceof Game);
         if (hslGame != config.profile().hsl()) {
             throw new IllegalArgumentException(config.profile().hsl()
@@ -105,6 +107,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         this.config = config;
         this.sink = sink;
         this.matchMode = matchMode;
+        this.stamps = stamps;
         List<GameStateFormat> formats = new ArrayList<>();
         formats.add(config.profile().format());
         if (config.v7Compat() && config.profile() != GcProfile.V7) {

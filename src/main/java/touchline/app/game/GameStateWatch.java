@@ -12,6 +12,7 @@ import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
+import touchline.transport.MicrosClock;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
@@ -30,9 +31,6 @@ import java.net.InetSocketAddress;
  */
 public final class GameStateWatch implements AutoCloseable {
 
-    /** Envelope time stamps: microseconds since the epoch. */
-    private final touchline.transport.MicrosClock stamps = new touchline.app.SystemClock();
-
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private final BadPackets badPackets = new BadPackets();
     private final EnvelopeSink sink;
@@ -40,30 +38,38 @@ public final class GameStateWatch implements AutoCloseable {
     private final MonitorRegistrations registrations;
     private final GameControllerSources sources;
     private final GcListener listener;
+    /** Envelope time stamps (the console's wall clock). */
+    private final MicrosClock stamps;
 
     /**
      * @param bind      usually 0.0.0.0:3838 (shared with SO_REUSEADDR)
      * @param sink      receives one GAMECONTROLLER envelope per game-state datagram
      * @param matchMode told each decoded state
+     * @param clock     the console's monotonic clock (the pinned GameController's silence)
+     * @param stamps    the console's wall clock, for the envelopes' time stamps
      */
-    public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode, touchline.game.GameClock clock)
-            throws IOException {
-        this(bind, sink, matchMode, new MonitorRegistrations(), new GameControllerSources(clock, null));
+    public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode, touchline.game.GameClock clock,
+                          MicrosClock stamps) throws IOException {
+        this(bind, sink, matchMode, new MonitorRegistrations(), new GameControllerSources(clock, null), stamps);
     }
 
     /** @param registrations the GameControllers whose true data ("RGTD") this console asked for */
     public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode,
-                          MonitorRegistrations registrations, touchline.game.GameClock clock) throws IOException {
-        this(bind, sink, matchMode, registrations, new GameControllerSources(clock, null));
+                          MonitorRegistrations registrations, touchline.game.GameClock clock, MicrosClock stamps)
+            throws IOException {
+        this(bind, sink, matchMode, registrations, new GameControllerSources(clock, null), stamps);
     }
 
     /**
      * @param registrations the GameControllers whose true data ("RGTD") this console asked for
      * @param sources       pins the field's GameController and judges every game state heard
+     * @param stamps        the console's wall clock, for the envelopes' time stamps
      */
     public GameStateWatch(InetSocketAddress bind, EnvelopeSink sink, MatchMode matchMode,
-                          MonitorRegistrations registrations, GameControllerSources sources) throws IOException {
+                          MonitorRegistrations registrations, GameControllerSources sources, MicrosClock stamps)
+            throws IOException {
         this.sources = sources;
+        this.stamps = stamps;
         this.sink = sink;
         this.matchMode = matchMode;
         this.registrations = registrations;

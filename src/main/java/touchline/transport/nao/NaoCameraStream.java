@@ -10,6 +10,9 @@ import touchline.protocol.nao.JpegHeader;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
+import touchline.transport.MicrosClock;
+import touchline.transport.MonotonicClock;
 
 import java.net.InetSocketAddress;
 import java.util.concurrent.TimeUnit;
@@ -44,6 +47,8 @@ public final class NaoCameraStream implements AutoCloseable {
     private final InetSocketAddress peer;
     private final NaoEnvelopeChannel envelopes;
     private final boolean ownsEnvelopes;
+    private final MicrosClock wall;
+    private final MonotonicClock monotonic;
     private final Object lock = new Object();
     private final Thread thread;
     private final AtomicLong fetched = new AtomicLong();
@@ -60,26 +65,41 @@ public final class NaoCameraStream implements AutoCloseable {
     private int frameCount;
 
     /** Insecure (no CURVE), publishing into its own pipeline ending in {@code sink}. */
-    public NaoCameraStream(String host, int port, touchline.transport.EnvelopeSink sink) {
-        this(host, port, new NaoEnvelopeChannel(sink), true, null);
+    public NaoCameraStream(String host, int port, EnvelopeSink sink) {
+        this(host, port, new NaoEnvelopeChannel(sink), true, null, new UninjectedClock(), new UninjectedClock());
     }
 
     /** @param keys CURVE client keys, or null: insecure */
-    public NaoCameraStream(String host, int port, touchline.transport.EnvelopeSink sink, NaoClientKeys keys) {
-        this(host, port, new NaoEnvelopeChannel(sink), true, keys);
+    public NaoCameraStream(String host, int port, EnvelopeSink sink, NaoClientKeys keys) {
+        this(host, port, new NaoEnvelopeChannel(sink), true, keys, new UninjectedClock(), new UninjectedClock());
+    }
+
+    /** As above with the console's clocks: {@code wall} stamps frames and envelopes, {@code monotonic} paces. */
+    public NaoCameraStream(String host, int port, EnvelopeSink sink, NaoClientKeys keys, MicrosClock wall,
+                           MonotonicClock monotonic) {
+        this(host, port, new NaoEnvelopeChannel(sink), true, keys, wall, monotonic);
     }
 
     /** Insecure (no CURVE), publishing into a shared pipeline. */
     public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes) {
-        this(host, port, envelopes, false, null);
+        this(host, port, envelopes, false, null, new UninjectedClock(), new UninjectedClock());
     }
 
     /** @param keys CURVE client keys, or null: insecure */
     public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, NaoClientKeys keys) {
-        this(host, port, envelopes, false, keys);
+        this(host, port, envelopes, false, keys, new UninjectedClock(), new UninjectedClock());
     }
 
-    private NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, boolean owns, NaoClientKeys keys) {
+    /** As above with the console's clocks: {@code wall} stamps frames and envelopes, {@code monotonic} paces. */
+    public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, NaoClientKeys keys, MicrosClock wall,
+                           MonotonicClock monotonic) {
+        this(host, port, envelopes, false, keys, wall, monotonic);
+    }
+
+    private NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, boolean owns, NaoClientKeys keys,
+                            MicrosClock wall, MonotonicClock monotonic) {
+        this.wall = wall;
+        this.monotonic = monotonic;
         this.keys = keys;
         this.host = host;
         this.port = port;
@@ -158,7 +178,7 @@ public final class NaoCameraStream implements AutoCloseable {
             }
             long newest = frameNanos[(frameCount - 1) % WINDOW];
             long oldest = frameNanos[(frameCount - n) % WINDOW];
-            if (System.nanoTime() - newest > TimeUnit.SECONDS.toNanos(2) || newest == oldest) {
+            if (monotonic.nanoTime() - newest > TimeUnit.SECONDS.toNanos(2) || newest == oldest) {
                 return 0;
             }
             return (n - 1) * 1e9 / (newest - oldest);
@@ -228,7 +248,7 @@ public final class NaoCameraStream implements AutoCloseable {
     private void fetch(ZContext zmq) throws InterruptedException {
         ZMQ.Socket socket = open(zmq);
         CameraSettings configured = null;
-        long nextFetch = System.nanoTime();
+        long nextFetch = monotonic.nanoTime();
         while (running) {
             CameraSettings want;
             synchronized (lock) {
@@ -236,7 +256,7 @@ public final class NaoCameraStream implements AutoCloseable {
                     lock.wait();
                 }
                 want = requested;
-                long now = System.nanoTime();
+                long now = monotonic.nanoTime();
                 if (now < nextFetch) {
                     TimeUnit.NANOSECONDS.timedWait(lock, nextFetch - now);
                     continue;
@@ -252,16 +272,16 @@ public final class NaoCameraStream implements AutoCloseable {
                 replied = r != null;
                 if (r != null && r.response != null && !r.response.hasError()) {
                     configured = want;
-                    nextFetch = System.nanoTime();
+                    nextFetch = monotonic.nanoTime();
                 } else {
-                    nextFetch = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(500); // back off
+                    nextFetch = monotonic.nanoTime() + TimeUnit.MILLISECONDS.toNanos(500); // back off
                 }
             } else {
                 long period = TimeUnit.SECONDS.toNanos(1) / want.fps();
                 // Keep the average rate: a slightly late fetch is made up by the next slot;
                 // only when more than a whole period behind do we restart the schedule.
                 nextFetch += period;
-                long now = System.nanoTime();
+                long now = monotonic.nanoTime();
                 if (now - nextFetch > period) {
                     nextFetch = now;
                 }
@@ -305,7 +325,7 @@ public final class NaoCameraStream implements AutoCloseable {
     private Reply exchange(ZMQ.Socket socket, CamRequest configure) {
         byte[] request = configure == null ? new byte[0] : configure.toByteArray();
         if (configure != null) {
-            envelopes.publish(new Envelope(micros(), Direction.OUT, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
+            envelopes.publish(new Envelope(wall.nowMicros(), Direction.OUT, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
                     "configure", configure, request, null));
         }
         if (!socket.send(request, 0)) {
@@ -327,16 +347,16 @@ public final class NaoCameraStream implements AutoCloseable {
             response = CamResponse.parseFrom(raw);
         } catch (InvalidProtocolBufferException e) {
             fail("unreadable CamResponse: " + e.getMessage());
-            envelopes.publish(new Envelope(micros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
+            envelopes.publish(new Envelope(wall.nowMicros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
                     "malformed", null, raw, e.getMessage()));
             return new Reply(null, raw);
         }
         if (response.hasError()) {
             fail("camera server: " + response.getError());
-            envelopes.publish(new Envelope(micros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
+            envelopes.publish(new Envelope(wall.nowMicros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
                     "error", response, raw, null));
         } else if (configure != null) {
-            envelopes.publish(new Envelope(micros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
+            envelopes.publish(new Envelope(wall.nowMicros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
                     "configured", response, raw, null));
         }
         return new Reply(response, raw);
@@ -345,26 +365,22 @@ public final class NaoCameraStream implements AutoCloseable {
     private void frame(Reply r, CameraSettings settings) {
         byte[] jpeg = r.response.getImageData().toByteArray();
         int[] size = JpegHeader.size(jpeg);
-        long now = System.nanoTime();
+        long now = monotonic.nanoTime();
         long sequence = fetched.incrementAndGet();
         latest = new CameraFrame(jpeg, size == null ? 0 : size[0], size == null ? 0 : size[1], sequence,
-                micros(), settings);
+                wall.nowMicros(), settings);
         lastError = null;
         synchronized (lock) {
             frameNanos[frameCount % WINDOW] = now;
             frameBytes[frameCount % WINDOW] = jpeg.length;
             frameCount++;
         }
-        envelopes.publish(new Envelope(micros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
+        envelopes.publish(new Envelope(wall.nowMicros(), Direction.IN, Channel.NAO_CAMERA, peer, Envelope.NO_ROBOT,
                 "frame", r.response, r.raw, null));
     }
 
     private void fail(String why) {
         errors.incrementAndGet();
         lastError = why;
-    }
-
-    private static long micros() {
-        return NaoEnvelopeChannel.nowMicros();
     }
 }

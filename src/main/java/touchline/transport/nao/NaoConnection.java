@@ -21,7 +21,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * thread-safe: the link calls this only under its lock. {@link #reopen} closes the sockets and
  * opens new ones, so whatever the old ones still held can never reach the robot.
  */
-final class NaoConnection {
+final class NaoConnection implements LinkWire {
 
     static final int HEARTBEAT_IVL_MS = 500;
     static final int HEARTBEAT_TIMEOUT_MS = 1500;
@@ -107,7 +107,8 @@ final class NaoConnection {
     }
 
     /** Closes the sockets and opens new ones. */
-    void reopen() {
+    @Override
+    public void reopen() {
         close();
         open();
     }
@@ -122,7 +123,8 @@ final class NaoConnection {
      * Sends {@code [id][""][payload]} without waiting; false when there is no completed
      * connection to send on (nothing was queued then).
      */
-    boolean send(long id, byte[] payload) {
+    @Override
+    public boolean send(long id, byte[] payload) {
         byte[] idBytes = ByteBuffer.allocate(8).putLong(id).array();
         try {
             return dealer.send(idBytes, ZMQ.SNDMORE | ZMQ.DONTWAIT)
@@ -139,7 +141,8 @@ final class NaoConnection {
     }
 
     /** The frames of the next reply, or null when none is waiting. */
-    List<byte[]> receive() {
+    @Override
+    public List<byte[]> receive() {
         byte[] first = dealer.recv(ZMQ.DONTWAIT);
         if (first == null) {
             return null;
@@ -161,7 +164,8 @@ final class NaoConnection {
     }
 
     /** The next monitor event, or null when none is waiting. */
-    Event nextEvent() {
+    @Override
+    public Event nextEvent() {
         ZMQ.Event event = monitor == null ? null : ZMQ.Event.recv(monitor, ZMQ.DONTWAIT);
         if (event == null) {
             return null;

@@ -37,12 +37,6 @@ public final class NaoEnvelopeChannel implements AutoCloseable {
         }
     }
 
-    /** Envelope time stamps: wall clock, microseconds since the epoch. */
-    static long nowMicros() {
-        java.time.Instant now = java.time.Instant.now();
-        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1000;
-    }
-
     @Override
     public synchronized void close() {
         channel.finishAndReleaseAll();

@@ -39,7 +39,8 @@ class EmbeddedGameControllerTest {
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         GcConfig config = new GcConfig(profile, false, List.of(dest), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT,
                 watchRivals ? ANY_LOOPBACK_PORT : null, 500, false);
-        EmbeddedGameController gc = new EmbeddedGameController(game, config, envelopes::add, matchMode);
+        EmbeddedGameController gc = new EmbeddedGameController(game, config, envelopes::add, matchMode,
+                new touchline.app.SystemClock());
         gc.addEventListener(events::add);
         gc.start();
         return gc;
@@ -110,7 +111,7 @@ class EmbeddedGameControllerTest {
             try (EmbeddedGameController self = new EmbeddedGameController(
                     new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock()),
                     new GcConfig(GcProfile.HL12, false, List.of(gc.rivalAddress()), ANY_LOOPBACK_PORT,
-                            ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null)) {
+                            ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null, new touchline.app.SystemClock())) {
                 self.start();
                 Await.until(() -> gc.rivals().active(gc.game().now()).size() == 1, 2000, "a second GC noticed");
             }
@@ -137,7 +138,8 @@ class EmbeddedGameControllerTest {
             probe.close();
             InetSocketAddress shared = new InetSocketAddress(InetAddress.getLoopbackAddress(), port);
             try (EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.V8, true,
-                    List.of(shared), ANY_LOOPBACK_PORT, shared, null, 100, false), envelopes::add, null)) {
+                    List.of(shared), ANY_LOOPBACK_PORT, shared, null, 100, false), envelopes::add, null,
+                    new touchline.app.SystemClock())) {
                 gc.addEventListener(events::add);
                 gc.start();
                 robot.send(new ReturnPacket.V2(13, 1, ReturnPacket.ALIVE).encode(), shared);

@@ -48,7 +48,8 @@ class HslFieldListeningTest {
 
     @Test
     void theOfficialVersion20PlayingSilencesTheConsole() throws Exception {
-        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock());
+        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock(),
+                new touchline.app.SystemClock());
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(golden("00-initial.bin"), watch.localAddress());
             Await.until(() -> envelopes.size() == 1, 2000, "INITIAL heard");
@@ -69,7 +70,8 @@ class HslFieldListeningTest {
                 golden("05-playing-delayed.monitor.bin"), with(playing, 10, 5));
         List<String> reasons = List.of("expected 158 bytes, got 157", "version byte 21", "got 118",
                 "did not register as its monitor", "state 5 not in 0..4");
-        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock());
+        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock(),
+                new touchline.app.SystemClock());
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(golden("00-initial.bin"), watch.localAddress());
             for (byte[] b : bad) {
@@ -92,7 +94,8 @@ class HslFieldListeningTest {
     void trueDataFromTheGameControllerWeRegisteredWithIsBelieved() throws Exception {
         MonitorRegistrations registrations = new MonitorRegistrations();
         registrations.requested(InetAddress.getLoopbackAddress());
-        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, registrations, new touchline.app.SystemClock());
+        try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, registrations,
+                new touchline.app.SystemClock(), new touchline.app.SystemClock());
              LoopbackReceiver gc = new LoopbackReceiver()) {
             // during the 10 s after the whistle robots see SET, the monitor copy says PLAYING
             gc.send(golden("05-playing-delayed.monitor.bin"), watch.localAddress());
@@ -109,7 +112,7 @@ class HslFieldListeningTest {
              LoopbackReceiver official = new LoopbackReceiver();
              EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,
                      List.of(robot.address()), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, 500, false),
-                     envelopes::add, matchMode)) {
+                     envelopes::add, matchMode, new touchline.app.SystemClock())) {
             gc.start();
             official.send(golden("07-playing-after-delay.bin"), gc.rivalAddress());
             Await.until(() -> !gc.rivals().active(gc.game().now()).isEmpty(), 2000, "rival heard");

@@ -37,7 +37,7 @@ class HslMonitorServiceTest {
     private EmbeddedGameController start(HslGame game, LoopbackReceiver robotPort) throws Exception {
         GcConfig config = new GcConfig(GcProfile.HSL20, false, List.of(robotPort.address()), ANY_LOOPBACK_PORT,
                 ANY_LOOPBACK_PORT, null, 50, false);
-        EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, null);
+        EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, null, new touchline.app.SystemClock());
         gc.addEventListener(events::add);
         return gc;
     }

@@ -38,7 +38,7 @@ class HslSenderLoopbackTest {
             throws Exception {
         GcConfig config = new GcConfig(GcProfile.HSL20, false, List.of(dest), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT,
                 null, intervalMs, false);
-        EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, null);
+        EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, null, new touchline.app.SystemClock());
         gc.start();
         return gc;
     }
@@ -121,7 +121,8 @@ class HslSenderLoopbackTest {
         GcConfig config = new GcConfig(GcProfile.HSL20, false, List.of(ANY_LOOPBACK_PORT), ANY_LOOPBACK_PORT,
                 ANY_LOOPBACK_PORT, null, 500, false);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> new EmbeddedGameController(hl, config, x -> { }, null).close());
+                () -> new EmbeddedGameController(hl, config, x -> { }, null,
+                        new touchline.app.SystemClock()).close());
         assertTrue(e.getMessage().contains("--format hsl20"), e.getMessage());
     }
 }
