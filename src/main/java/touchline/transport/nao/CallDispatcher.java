@@ -22,6 +22,18 @@ import java.util.function.Consumer;
  * dispatcher turn by turn on a fake clock and a fake {@link LinkWire}, without a thread. Not
  * thread-safe: the link's lock guards it ({@link LinkLoop}); only {@link #queue} and the
  * counters may be used from any thread.
+ *
+ * <p>Liveness: the ZMTP handshake, not the TCP connect, makes the state
+ * {@link ConnectionState#ONLINE}; a disconnect or heartbeat timeout makes it
+ * {@link ConnectionState#LOST}: every pending, waiting or paced call then ends as
+ * {@link CallOutcome.Lost} and the wire is reopened, so nothing queued can run when the robot
+ * comes back. While LOST new calls fail at once; while first CONNECTING they wait for ONLINE
+ * within their timeout. Every request carries {@code deadlineMillis} (wall-clock now + what is
+ * left of its timeout) so the robot drops it when late.
+ *
+ * <p>Rules from {@link NaoLinkConfig}: per-method timeouts; retries (a resend under a new id at
+ * the attempt's deadline) only for idempotent methods; per-method minimum intervals
+ * ({@link CallPacing}).
  */
 final class CallDispatcher {
 

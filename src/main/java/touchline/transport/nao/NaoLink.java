@@ -10,7 +10,6 @@ import touchline.transport.MonotonicClock;
 import touchline.transport.SendGate;
 
 import java.net.InetSocketAddress;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
@@ -36,18 +35,10 @@ import java.util.function.Supplier;
  * turns, and the lock a caller sends under when it finds it free), {@link LinkTraffic} (the
  * envelopes) and {@link LinkCounters} (the {@link #stats}).
  *
- * <p>Liveness: the ZMTP handshake, not the TCP connect, makes the state
- * {@link ConnectionState#ONLINE}; a disconnect or heartbeat timeout makes it
- * {@link ConnectionState#LOST}: every pending, waiting or paced call then ends as
- * {@link CallOutcome.Lost} and the connection is reopened, so nothing queued can run when the
- * robot comes back. While LOST new calls fail at once; while first CONNECTING they wait for
- * ONLINE within their timeout. Every request also carries {@code deadlineMillis} (wall-clock now
- * + timeout) so the robot drops it when late.
- *
- * <p>Rules from {@link NaoLinkConfig}: per-method timeouts; retries (a resend under a new id)
- * only for idempotent methods; per-method minimum intervals. A send gate ({@link #setSendGate},
- * match mode) holds back every call, reads included ("during play only the GameController talks
- * to the robots"), with {@link CallOutcome.HeldBack}; nothing held back is queued for later.
+ * <p>Liveness and the rules of {@link NaoLinkConfig} (timeouts, retries of idempotent methods,
+ * minimum intervals): see {@link CallDispatcher}. A send gate ({@link #setSendGate}, match
+ * mode) holds back every call, reads included ("during play only the GameController talks to
+ * the robots"), with {@link CallOutcome.HeldBack}; nothing held back is queued for later.
  *
  * <p>Each request (OUT), reply (IN) and connection event ({@link Channel#LINK_EVENT}) is
  * published through a {@link NaoEnvelopeChannel} into the Envelope stream, stamped with the
@@ -222,26 +213,7 @@ public final class NaoLink implements AutoCloseable {
      * the first failure (whose outcome is the last in the result). Never completes exceptionally.
      */
     public CompletableFuture<SequenceOutcome> sequence(List<NaoCall> calls) {
-        List<CallOutcome> outcomes = new ArrayList<>();
-        CompletableFuture<SequenceOutcome> result = new CompletableFuture<>();
-        runStep(calls, 0, outcomes, result);
-        return result;
-    }
-
-    private void runStep(List<NaoCall> calls, int index, List<CallOutcome> outcomes,
-                         CompletableFuture<SequenceOutcome> result) {
-        if (index == calls.size()) {
-            result.complete(new SequenceOutcome(calls, outcomes));
-            return;
-        }
-        call(calls.get(index)).thenAccept(outcome -> {
-            outcomes.add(outcome);
-            if (outcome.ok()) {
-                runStep(calls, index + 1, outcomes, result);
-            } else {
-                result.complete(new SequenceOutcome(calls, outcomes));
-            }
-        });
+        return new CallSequence(this::call).run(calls);
     }
 
     /** Counters since start, for the status bar and tests. */
