@@ -56,6 +56,21 @@ class NaoCameraStreamTest {
     }
 
     @Test
+    void framesAndEnvelopesAreStampedByTheWallClockTheStreamIsHanded() throws Exception {
+        long wallMicros = 1_790_000_000_000_000L;
+        List<Envelope> envelopes = new CopyOnWriteArrayList<>();
+        try (FakeNaoCamera camera = new FakeNaoCamera();
+             NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add, null,
+                     () -> wallMicros, System::nanoTime);
+             AutoCloseable viewer = stream.subscribe()) {
+            assertTrue(Poll.until(() -> stream.framesReceived() >= 2, Duration.ofSeconds(30)));
+            assertEquals(wallMicros, stream.latestFrame().receiveTimeMicros());
+            assertTrue(envelopes.stream().anyMatch(e -> e.kind().equals("frame")));
+            assertTrue(envelopes.stream().allMatch(e -> e.timeMicros() == wallMicros));
+        }
+    }
+
+    @Test
     void anAbsentServerIsAnErrorNotACrash() throws Exception {
         int port;
         try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {

@@ -59,6 +59,22 @@ class NaoLinkTest {
     }
 
     @Test
+    void envelopesAndRequestDeadlinesRunOnTheWallClockTheLinkIsHanded() throws Exception {
+        long wallMicros = 4_000_000_000_000_000L; // 2096: the robot stand-in drops requests past their deadline
+        robot = new FakeNaoRobot(0);
+        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.defaults(), envelopes::add, null,
+                () -> wallMicros, System::nanoTime);
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(30)), "online");
+        assertEquals(new CallOutcome.Value("x"), get(link.call(NaoCall.of("Test", "echo", "x"), 700)));
+
+        Envelope request = envelopes.stream().filter(e -> e.direction() == Direction.OUT).findFirst().orElseThrow();
+        long deadline = ((touchline.proto.Nao.HAWActorRPCRequest) request.message()).getDeadlineMillis();
+        assertTrue(deadline > wallMicros / 1000 && deadline <= wallMicros / 1000 + 700, "deadline " + deadline);
+        assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.LINK_EVENT));
+        assertTrue(envelopes.stream().allMatch(e -> e.timeMicros() == wallMicros), "every envelope on the handed clock");
+    }
+
+    @Test
     void manyCallsInFlightAnswerOutOfOrder() throws Exception {
         connect(NaoLinkConfig.defaults());
         CompletableFuture<CallOutcome> slow = link.call("Test", "sleep", 400);
