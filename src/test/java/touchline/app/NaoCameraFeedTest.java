@@ -1,6 +1,5 @@
 package touchline.app;
 
-import com.google.protobuf.ByteString;
 import org.junit.jupiter.api.Test;
 import touchline.proto.Nao.CamResponse;
 import touchline.transport.Channel;
@@ -8,37 +7,22 @@ import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.Origin;
 
-import javax.imageio.ImageIO;
-import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.net.InetSocketAddress;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static touchline.testing.NaoCameraEnvelopes.CAMERA;
+import static touchline.testing.NaoCameraEnvelopes.frame;
+import static touchline.testing.NaoCameraEnvelopes.jpeg;
 
 /** The NAO cameras' newest frame read from the Envelope stream, on fake clocks. */
 class NaoCameraFeedTest {
-
-    private static final InetSocketAddress CAMERA = InetSocketAddress.createUnresolved("10.0.0.7", 5556);
 
     private final AtomicLong now = new AtomicLong(1_000_000);
     private final AtomicLong replayPosition = new AtomicLong(500);
     private final AtomicBoolean replaying = new AtomicBoolean();
     private final NaoCameraFeed feed = new NaoCameraFeed(now::get, replayPosition::get, replaying::get);
-
-    static byte[] jpeg(int w, int h) throws IOException {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ImageIO.write(new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB), "jpg", out);
-        return out.toByteArray();
-    }
-
-    static Envelope frame(byte[] jpeg, long timeMicros, Origin origin) {
-        CamResponse r = CamResponse.newBuilder().setImageData(ByteString.copyFrom(jpeg)).build();
-        return new Envelope(timeMicros, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "frame", r,
-                r.toByteArray(), null, origin);
-    }
 
     @Test
     void keepsTheNewestFrameWithItsSizeTimeAndSource() throws IOException {

@@ -80,8 +80,8 @@ class NaoViewModelTest {
             assertEquals("walk: " + Console.COMMANDS_OFF, nao.result());
             assertTrue(nao.state().startsWith("viewing a remote Touchline"), nao.state());
 
-            byte[] jpeg = NaoCameraFeedTest.jpeg(160, 120);
-            console.bus().accept(NaoCameraFeedTest.frame(jpeg, 42, Origin.REMOTE));
+            byte[] jpeg = touchline.testing.NaoCameraEnvelopes.jpeg(160, 120);
+            console.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, 42, Origin.REMOTE));
             assertArrayEquals(jpeg, nao.frame().orElseThrow().jpeg());
         }
     }
