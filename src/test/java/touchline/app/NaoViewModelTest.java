@@ -1,6 +1,7 @@
 package touchline.app;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.Await;
 import touchline.transport.Origin;
 import touchline.transport.UdpConfig;
@@ -8,6 +9,7 @@ import touchline.transport.nao.FakeNaoCamera;
 import touchline.transport.nao.FakeNaoRobot;
 
 import java.net.URI;
+import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -83,6 +85,30 @@ class NaoViewModelTest {
             byte[] jpeg = touchline.testing.NaoCameraEnvelopes.jpeg(160, 120);
             console.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, 42, Origin.REMOTE));
             assertArrayEquals(jpeg, nao.frame().orElseThrow().jpeg());
+        }
+    }
+
+    @Test
+    void aReplayedNaoCameraIsShownWhileTheReplayIsOpen(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("nao.mcap");
+        byte[] last = touchline.testing.NaoCameraEnvelopes.jpeg(320, 240);
+        try (Console recording = console()) {
+            recording.startRecording(file);
+            long t = recording.clock().nowMicros();
+            recording.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(
+                    touchline.testing.NaoCameraEnvelopes.jpeg(160, 120), t, Origin.LIVE));
+            recording.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(last, t + 66_000, Origin.LIVE));
+            recording.stopRecording();
+        }
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            Replay replay = console.openReplay(file);
+            assertTrue(nao.frame().isEmpty(), "nothing played yet");
+            assertEquals(2, replay.runFor(100));
+            NaoFrame shown = nao.frame().orElseThrow();
+            assertArrayEquals(last, shown.jpeg(), "the recording's newest frame");
+            assertEquals(240, shown.height());
+            console.closeReplay();
+            assertTrue(nao.frame().isEmpty(), "the replay's frames went with it; no live NAO");
         }
     }
 }
