@@ -26,6 +26,8 @@ public final class NaoCameraFeed implements EnvelopeSink {
     /** A rate whose newest frame is older than this is no rate any more: 0 fps. */
     static final long STALE_MICROS = 2_000_000;
 
+    /** One numbering for both origins, so a view redraws when it turns from live frames to replayed ones. */
+    private final java.util.concurrent.atomic.AtomicLong sequence = new java.util.concurrent.atomic.AtomicLong();
     private final Slot live;
     private final Slot replayed;
     private final BooleanSupplier replaying;
@@ -36,8 +38,8 @@ public final class NaoCameraFeed implements EnvelopeSink {
      * @param replaying   whether a replay is open (its frames are shown then)
      */
     NaoCameraFeed(MicrosClock clock, MicrosClock replayClock, BooleanSupplier replaying) {
-        this.live = new Slot(clock);
-        this.replayed = new Slot(replayClock);
+        this.live = new Slot(clock, sequence);
+        this.replayed = new Slot(replayClock, sequence);
         this.replaying = replaying;
     }
 
@@ -80,15 +82,16 @@ public final class NaoCameraFeed implements EnvelopeSink {
     /** The frames of one origin (live or replayed). */
     private static final class Slot {
         private final MicrosClock clock;
+        private final java.util.concurrent.atomic.AtomicLong sequence;
         private final long[] arrivals = new long[WINDOW];
         private final int[] sizes = new int[WINDOW];
         private int count;
-        private long sequence;
         private volatile NaoFrame frame;
         private String problem = "";
 
-        Slot(MicrosClock clock) {
+        Slot(MicrosClock clock, java.util.concurrent.atomic.AtomicLong sequence) {
             this.clock = clock;
+            this.sequence = sequence;
         }
 
         void take(Envelope e) {
@@ -119,7 +122,7 @@ public final class NaoCameraFeed implements EnvelopeSink {
             sizes[count % WINDOW] = jpeg.length;
             count++;
             problem = "";
-            frame = new NaoFrame(jpeg, size == null ? 0 : size[0], size == null ? 0 : size[1], ++sequence,
+            frame = new NaoFrame(jpeg, size == null ? 0 : size[0], size == null ? 0 : size[1], sequence.incrementAndGet(),
                     e.timeMicros(), e.peer() == null ? "" : e.peer().getHostString() + ":" + e.peer().getPort());
         }
 
@@ -160,7 +163,7 @@ public final class NaoCameraFeed implements EnvelopeSink {
         synchronized void clear() {
             count = 0;
             problem = "";
-            frame = null; // the sequence goes on: a view redraws the next frame whatever its number was
+            frame = null;
         }
     }
 }

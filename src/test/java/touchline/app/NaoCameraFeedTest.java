@@ -88,8 +88,10 @@ class NaoCameraFeedTest {
         feed.accept(frame(live, 10, Origin.LIVE));
         feed.accept(frame(replayed, 5, Origin.LIVE).asReplayed());
         assertArrayEquals(live, feed.latest().orElseThrow().jpeg());
+        long liveSequence = feed.latest().orElseThrow().sequence();
         replaying.set(true);
         assertArrayEquals(replayed, feed.latest().orElseThrow().jpeg());
+        assertNotEquals(liveSequence, feed.latest().orElseThrow().sequence(), "a view redraws on turning to the replay");
         feed.restartReplay();
         assertTrue(feed.latest().isEmpty(), "a jump of the replay starts its frames afresh");
         replaying.set(false);

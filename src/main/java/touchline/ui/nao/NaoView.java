@@ -190,6 +190,9 @@ public final class NaoView implements View {
             shownFrame = f.get().sequence();
             image.setImage(new Image(new ByteArrayInputStream(f.get().jpeg())));
             frame.shown(f.get().timeMicros());
+        } else if (f.isEmpty() && image.getImage() != null) {
+            image.setImage(null); // a closed replay takes its frame with it
+            shownFrame = 0;
         }
         cameraStats.setText(model.cameraFigures());
     }
