@@ -99,6 +99,8 @@ public final class Console implements AutoCloseable {
     private static final String SENT_LATER = "; goes out when play stops";
     private volatile SendGate gate = SendGate.open();
     private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final List<NaoCamera> naoCameras = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final NaoCameraFeed naoCamera;
 
     public Console(ConsoleConfig config) {
         this(config, new SystemClock());
@@ -126,6 +128,7 @@ public final class Console implements AutoCloseable {
             return r != null ? r.state().positionMicros() : clock.nowMicros();
         };
         this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
+        this.naoCamera = new NaoCameraFeed(clock, replayClock, () -> replay != null);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
         this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
@@ -141,6 +144,7 @@ public final class Console implements AutoCloseable {
             bus.subscribe(traffic);
             bus.subscribe(options);
             bus.subscribe(stores);
+            bus.subscribe(naoCamera);
             robots.addPresenceListener(options);
         }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -450,6 +454,27 @@ public final class Console implements AutoCloseable {
         return session;
     }
 
+    /**
+     * Opens a NAO's camera server alone (no RPC link), its frames entering this console's stream
+     * ({@link #naoCamera()}); fetching frames sends no command, so match mode does not hold it.
+     * Closing it (or the console) stops it.
+     *
+     * @param keys CURVE client keys, or null: insecure
+     */
+    public NaoCamera connectNaoCamera(String host, int camPort, touchline.transport.nao.NaoClientKeys keys) {
+        NaoCamera camera = new NaoCamera(host, camPort, live, keys, naoCameras::remove);
+        naoCameras.add(camera);
+        return camera;
+    }
+
+    /**
+     * The NAO cameras' newest frame and rates as this console's stream carries them: frames of
+     * the NAOs connected here, of a remote Touchline's NAO when viewing one, and of a replay.
+     */
+    public NaoCameraFeed naoCamera() {
+        return naoCamera;
+    }
+
     /** The NAOs connected through this console, oldest first. */
     public List<NaoSession> naoSessions() {
         return List.copyOf(naos);
@@ -539,8 +564,10 @@ public final class Console implements AutoCloseable {
         ReplaySession session = ReplaySession.open(files, offsets, kinds);
         long start = session.startMicros();
         stores.restartReplay(start);
+        naoCamera.restartReplay();
         replay = new Replay(session, bus, realClock, () -> {
             stores.restartReplay(start);
+            naoCamera.restartReplay();
             robots.forgetReplayed();
         });
         return replay;
@@ -558,6 +585,7 @@ public final class Console implements AutoCloseable {
             robots.forgetReplayed();
             options.forgetReplayed();
             stores.restartReplay(clock.nowMicros());
+            naoCamera.restartReplay();
         }
     }
 
@@ -691,6 +719,9 @@ public final class Console implements AutoCloseable {
     public void close() {
         for (NaoSession nao : naos) {
             nao.close();
+        }
+        for (NaoCamera camera : naoCameras) {
+            camera.close();
         }
         if (remote != null) {
             remote.close();

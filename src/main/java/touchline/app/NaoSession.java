@@ -6,7 +6,6 @@ import touchline.transport.SendGate;
 import touchline.transport.nao.CallOutcome;
 import touchline.transport.nao.ConnectionState;
 import touchline.transport.nao.NaoCall;
-import touchline.transport.nao.NaoCameraStream;
 import touchline.transport.nao.NaoClientKeys;
 import touchline.transport.nao.NaoEnvelopeChannel;
 import touchline.transport.nao.NaoLink;
@@ -23,7 +22,8 @@ import java.util.function.Consumer;
 /**
  * One NAO driven through the application core ({@link Console#connectNao}): its RPC link, its
  * high-level moves and, when a camera port is given, its camera stream, all publishing into
- * the console's Envelope stream (so the recorder and the views see the NAO's traffic). Every
+ * the console's Envelope stream (so the recorder and the views see the NAO's traffic; the
+ * camera's frames are read from there, {@link Console#naoCamera()}). Every
  * call and every move passes the console's send gate first — match mode during play, and
  * "commands are off" while the console views a remote Touchline — and then ends with a
  * {@link CallOutcome} that says in words what became of it: {@link CallOutcome.HeldBack}
@@ -38,7 +38,7 @@ public final class NaoSession implements AutoCloseable {
     private final NaoEnvelopeChannel channel;
     private final NaoLink link;
     private final NaoMoves moves;
-    private final NaoCameraStream camera;
+    private final NaoCamera camera;
     private final Consumer<NaoSession> onClose;
 
     /**
@@ -55,7 +55,7 @@ public final class NaoSession implements AutoCloseable {
         this.link = new NaoLink(host, rpcPort, config, channel, keys, clock);
         link.setSendGate(gate);
         this.moves = new NaoMoves(link);
-        this.camera = camPort > 0 ? new NaoCameraStream(host, camPort, channel, keys) : null;
+        this.camera = camPort > 0 ? new NaoCamera(host, camPort, channel, keys) : null;
     }
 
     public String host() {
@@ -88,8 +88,17 @@ public final class NaoSession implements AutoCloseable {
         return link.stats();
     }
 
-    /** The camera stream, when the session was opened with a camera port. */
-    public Optional<NaoCameraStream> camera() {
+    /** The link's state in words, as the NAO view shows it: "online (encrypted)  3 sent, 3 replies, 0 timeouts". */
+    public String describe() {
+        NaoLink.LinkStats s = link.stats();
+        String problem = link.securityProblem();
+        return link.state().name().toLowerCase() + (link.secure() ? " (encrypted)" : " (INSECURE)") + "  " + s.sent()
+                + " sent, " + s.replies() + " replies, " + s.timeouts() + " timeouts"
+                + (problem.isEmpty() ? "" : " — " + problem);
+    }
+
+    /** The camera, when the session was opened with a camera port; its frames are {@link Console#naoCamera()}'s. */
+    public Optional<NaoCamera> camera() {
         return Optional.ofNullable(camera);
     }
 

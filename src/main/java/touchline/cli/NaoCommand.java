@@ -6,18 +6,18 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.app.NaoCamera;
+import touchline.app.NaoFrame;
 import touchline.app.NaoSession;
 import touchline.app.game.MatchMode;
 import touchline.protocol.nao.ParamSyntax;
 import touchline.transport.HostPort;
 import touchline.transport.nao.CallOutcome;
-import touchline.transport.nao.CameraFrame;
 import touchline.transport.nao.CameraSettings;
 import touchline.transport.nao.ConnectionState;
 import touchline.security.KeyException;
 import touchline.transport.nao.NaoClientKeys;
 import touchline.transport.nao.NaoCall;
-import touchline.transport.nao.NaoCameraStream;
 import touchline.transport.nao.NaoLinkConfig;
 import touchline.transport.UdpConfig;
 
@@ -35,8 +35,9 @@ import java.util.concurrent.TimeUnit;
  * {@link Console} that listens for the field's GameController and open a {@link NaoSession}
  * on it, so during play every call is held back by match mode and nothing reaches the robot.
  * {@code call} invokes any NAOqi method with typed parameters (see {@link ParamSyntax}),
- * {@code methods} lists what each module offers, {@code cam} saves one camera frame (through
- * the same {@link NaoCameraStream}; it sends the robot no command). Exit code 0 on success, 1
+ * {@code methods} lists what each module offers, {@code cam} saves one camera frame (a
+ * console's {@link NaoCamera}, the frame read from its stream as the window's view reads it;
+ * fetching frames sends the robot no command, so it is not held). Exit code 0 on success, 1
  * when the robot answered with an error or could not be reached, 2 on a usage error, 3 when
  * match mode held the call back.
  */
@@ -276,20 +277,24 @@ public final class NaoCommand implements Runnable {
                 spec.commandLine().getErr().println(e.getMessage());
                 return 1;
             }
-            try (NaoCameraStream stream = new NaoCameraStream(t.host(), t.port(), envelope -> { }, keys)) {
-                stream.configure(settings);
-                try (AutoCloseable viewer = stream.subscribe()) {
-                    long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-                    while (stream.latestFrame() == null && System.nanoTime() < end) {
-                        Thread.sleep(10);
-                    }
+            // a console that listens for nothing (no robot port, no GameController): the camera's frames only
+            ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(0))
+                    .withGameControllerPort(0);
+            try (Console console = new Console(config).start();
+                 NaoCamera camera = console.connectNaoCamera(t.host(), t.port(), keys)) {
+                camera.configure(settings);
+                camera.watch(true);
+                long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+                while (console.naoCamera().latest().isEmpty() && System.nanoTime() < end) {
+                    Thread.sleep(10);
                 }
-                CameraFrame frame = stream.latestFrame();
-                if (frame == null) {
+                camera.watch(false);
+                if (console.naoCamera().latest().isEmpty()) {
                     spec.commandLine().getErr().println("no frame from " + t.host() + ":" + t.port() + " within "
-                            + timeoutMs + " ms" + (stream.lastError() == null ? "" : ": " + stream.lastError()));
+                            + timeoutMs + " ms" + (camera.problem().isEmpty() ? "" : ": " + camera.problem()));
                     return 1;
                 }
+                NaoFrame frame = console.naoCamera().latest().get();
                 Files.write(save, frame.jpeg());
                 spec.commandLine().getOut().println("saved " + save + ": " + frame.width() + "x" + frame.height()
                         + ", " + frame.jpeg().length + " bytes");

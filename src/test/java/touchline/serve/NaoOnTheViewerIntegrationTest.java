@@ -58,20 +58,30 @@ class NaoOnTheViewerIntegrationTest {
 
     /** Everything NAO-specific of this test; the NAO helper's API may rename it, so it lives here only. */
     private static Nao nao(Console console) throws Exception {
-        RobotProcess sim = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
-                "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
-        Await.until("the camera's port", 5000, () -> CAMERA_PORT.matcher(sim.stdout()).find());
-        Matcher m = CAMERA_PORT.matcher(sim.stdout());
-        assertTrue(m.find());
-        NaoLink link = new NaoLink("127.0.0.1", sim.port(), NaoLinkConfig.defaults(), console.bus());
-        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", Integer.parseInt(m.group(1)), console.bus());
+        RobotProcess sim = sim();
+        int[] ports = simPorts(sim);
+        NaoLink link = new NaoLink("127.0.0.1", ports[0], NaoLinkConfig.defaults(), console.bus());
+        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", ports[1], console.bus());
         camera.configure(new CameraSettings(1, 11, 30));
         return new Nao(sim, link, camera, camera.subscribe());
+    }
+
+    private static RobotProcess sim() throws Exception {
+        return RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
+                "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
     }
 
     private static Console viewer() throws InterruptedException {
         return new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
+    }
+
+    /** The simulated NAO, started, and its camera port. */
+    private static int[] simPorts(RobotProcess sim) throws Exception {
+        Await.until("the camera's port", 5000, () -> CAMERA_PORT.matcher(sim.stdout()).find());
+        Matcher m = CAMERA_PORT.matcher(sim.stdout());
+        assertTrue(m.find());
+        return new int[]{sim.port(), Integer.parseInt(m.group(1))};
     }
 
     private static boolean naoFrame(Envelope e) {
@@ -139,6 +149,51 @@ class NaoOnTheViewerIntegrationTest {
             assertTrue(here.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.kind().equals(reply.kind())
                     && Arrays.equals(e.raw(), reply.raw())), "the same reply, byte for byte");
             assertEquals(0, second.remote().orElseThrow().status().unusable(), second.remote().orElseThrow().status().problem());
+        }
+    }
+
+    /**
+     * The NAO view's model on the viewing Touchline draws the first one's NAO: its newest frame
+     * is one the first console's stream carried, byte for byte, though the viewer opened no
+     * camera; and the viewer's commands to the NAO are refused with the remote view's words.
+     */
+    @Test
+    void theViewersNaoViewShowsTheFirstConsolesCameraFrames() throws Exception {
+        Requirement.robotSide("touchline-nao-sim");
+        List<Envelope> here = new CopyOnWriteArrayList<>();
+        try (ServedField field = new ServedField();
+             AutoCloseable heard = field.console().bus().subscribe(here::add);
+             RobotProcess sim = sim();
+             touchline.app.NaoViewModel first = new touchline.app.NaoViewModel(field.console());
+             Console second = viewer();
+             touchline.app.NaoViewModel viewing = new touchline.app.NaoViewModel(second)) {
+            int[] ports = simPorts(sim);
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            first.setResolution(1);
+            first.showCamera(true);
+            assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), Integer.toString(ports[1]), "", true),
+                    first.result());
+            Await.until("a frame in the first console's NAO view", Await.FLOOR_MILLIS, () -> first.frame().isPresent());
+            Await.until("a frame in the viewer's NAO view", Await.FLOOR_MILLIS, () -> viewing.frame().isPresent());
+            assertTrue(second.naoSessions().isEmpty(), "the viewer opened no NAO and no camera");
+
+            byte[] shown = viewing.frame().orElseThrow().jpeg();
+            assertEquals(0xFF, shown[0] & 0xFF);
+            assertEquals(0xD8, shown[1] & 0xFF);
+            assertEquals(320, viewing.frame().orElseThrow().width());
+            List<byte[]> seenHere = new ArrayList<>();
+            for (Envelope e : here) {
+                if (naoFrame(e)) {
+                    seenHere.add(touchline.proto.Nao.CamResponse.parseFrom(e.raw()).getImageData().toByteArray());
+                }
+            }
+            assertTrue(seenHere.stream().anyMatch(b -> Arrays.equals(b, shown)),
+                    "the viewer draws a frame the first console got, byte for byte");
+
+            viewing.stand();
+            assertEquals(Console.COMMANDS_OFF, viewing.result());
+            assertFalse(viewing.connect("127.0.0.1", Integer.toString(ports[0]), "0", "", true));
+            assertEquals(Console.COMMANDS_OFF, viewing.result());
         }
     }
 }

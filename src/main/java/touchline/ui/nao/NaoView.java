@@ -16,42 +16,28 @@ import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
 import touchline.app.Console;
-import touchline.app.NaoSession;
-import touchline.protocol.nao.ParamSyntax;
-import touchline.transport.nao.CallOutcome;
-import touchline.transport.nao.CameraFrame;
-import touchline.transport.nao.CameraSettings;
-import touchline.transport.nao.NaoCall;
-import touchline.transport.nao.NaoCameraStream;
-import touchline.transport.nao.NaoLinkConfig;
-import touchline.transport.nao.WalkInput;
+import touchline.app.NaoFrame;
+import touchline.app.NaoViewModel;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
 import touchline.ui.ViewSource;
 
 import java.io.ByteArrayInputStream;
-import java.util.HashSet;
-import java.util.List;
-import java.util.Set;
-import java.util.concurrent.CompletableFuture;
+import java.util.Optional;
 
 /**
  * The NAO tab: connect to a robot's RPC module and camera server, see the connection state,
  * browse modules and methods (discovered with {@code getMethodList}) and call one with typed
  * parameters, stand / sit / turn the head / say, walk with W A S D (Q E turn) while the view
- * has focus, and watch the camera. Network results land in volatile fields and are shown by
- * {@link #refresh} on the frame pulse. The view connects through the application core
- * ({@link Console#connectNao}): every call and move passes the console's match-mode gate, a
- * held one says so in the result line, and the NAO's traffic enters the console's stream; the
- * view keeps only the {@link NaoSession} handle, which the console lists too.
+ * has focus, and watch the camera. Everything it does and shows is its {@link NaoViewModel}'s
+ * (in the application core, where a test reaches it): the view only binds its controls to it
+ * and draws what it says on the frame pulse ({@link #refresh}) — the camera image is the
+ * newest frame in the console's stream, so a remote Touchline's NAO and a replay are drawn too.
  */
 public final class NaoView implements View {
 
-    static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
-            "ALBattery", "ALVideoDevice", "Robot");
-
-    private final Console console;
+    private final NaoViewModel model;
     private final BorderPane root = new BorderPane();
     private final TextField host = new TextField("127.0.0.1");
     private final TextField rpcPort = new TextField("5555");
@@ -71,12 +57,8 @@ public final class NaoView implements View {
     private final ComboBox<Integer> resolution = new ComboBox<>();
     private final ImageView image = new ImageView();
     private final Label cameraStats = new Label();
-    private final Set<Character> heldKeys = new HashSet<>();
 
-    private volatile NaoSession session;
-    private AutoCloseable viewer;
-    private volatile String lastResult = "";
-    private volatile List<String> discovered;
+    private long shownMethods;
     private long shownFrame;
 
     public NaoView(ViewContext context, ViewSource source) {
@@ -85,7 +67,7 @@ public final class NaoView implements View {
 
     /** For tests and embedding: connects through {@code console}. */
     public NaoView(Console console) {
-        this.console = console;
+        this.model = new NaoViewModel(console);
         host.setPrefColumnCount(10);
         rpcPort.setPrefColumnCount(5);
         camPort.setPrefColumnCount(5);
@@ -106,21 +88,22 @@ public final class NaoView implements View {
         insecure.setId("nao-insecure");
         connect.setOnAction(e -> {
             if (connect.isSelected()) {
-                open();
+                connect.setSelected(model.connect(host.getText(), rpcPort.getText(), camPort.getText(),
+                        keyDir.getText(), insecure.isSelected()));
             } else {
-                shut();
+                model.disconnect();
             }
         });
         HBox top = new HBox(6, new Label("NAO"), host, new Label("RPC"), rpcPort, new Label("camera"), camPort,
                 new Label("keys"), keyDir, insecure, connect, state);
         top.setPadding(new Insets(4));
 
-        module.getItems().setAll(MODULES);
+        module.getItems().setAll(NaoViewModel.MODULES);
         module.setEditable(true);
         module.setValue("ALMotion");
         Button discover = new Button("Methods");
         discover.setId("nao-discover");
-        discover.setOnAction(e -> call(NaoCall.of(module.getValue(), "getMethodList"), true));
+        discover.setOnAction(e -> model.discover(module.getValue()));
         params.setPromptText("parameters, e.g. HeadYaw, 0.5, 0.2  or  [HeadYaw, HeadPitch], [0.1, 0.2], 0.3");
         Button call = new Button("Call");
         call.setId("nao-call");
@@ -137,13 +120,14 @@ public final class NaoView implements View {
         browser.setPrefWidth(320);
 
         Button stand = new Button("Stand");
-        stand.setOnAction(e -> sequence(session == null ? null : session.stand()));
+        stand.setId("nao-stand");
+        stand.setOnAction(e -> model.stand());
         Button sit = new Button("Sit");
-        sit.setOnAction(e -> sequence(session == null ? null : session.sit()));
+        sit.setOnAction(e -> model.sit());
         Button head = new Button("Turn head");
-        head.setOnAction(e -> sequence(session == null ? null : session.turnHead(headYaw.getValue())));
+        head.setOnAction(e -> model.turnHead(headYaw.getValue()));
         Button say = new Button("Say");
-        say.setOnAction(e -> outcome(session == null ? null : session.say(sayText.getText())));
+        say.setOnAction(e -> model.say(sayText.getText()));
         Label walkHelp = new Label("Walk: click here, hold W/S forward/back, A/D sideways, Q/E turn");
         VBox controls = new VBox(4, new HBox(4, stand, sit), new HBox(4, head, headYaw), new HBox(4, say, sayText),
                 walkHelp);
@@ -152,11 +136,13 @@ public final class NaoView implements View {
         controls.setOnMouseClicked(e -> controls.requestFocus());
         controls.addEventHandler(KeyEvent.KEY_PRESSED, e -> walkKey(e, true));
         controls.addEventHandler(KeyEvent.KEY_RELEASED, e -> walkKey(e, false));
+        controls.setId("nao-walk");
 
         resolution.getItems().setAll(0, 1, 2, 3);
         resolution.setValue(2);
-        resolution.setOnAction(e -> configureCamera());
-        cameraOn.setOnAction(e -> toggleCamera());
+        resolution.setOnAction(e -> model.setResolution(resolution.getValue()));
+        cameraOn.setOnAction(e -> model.showCamera(cameraOn.isSelected()));
+        cameraStats.setId("nao-camera-figures");
         image.setPreserveRatio(true);
         image.setFitWidth(480);
         VBox cam = new VBox(4, new HBox(4, cameraOn, new Label("resolution"), resolution, cameraStats), image);
@@ -167,168 +153,52 @@ public final class NaoView implements View {
         root.setCenter(new VBox(controls, cam));
     }
 
-    private void open() {
-        try {
-            String h = host.getText().strip();
-            int rpc = Integer.parseInt(rpcPort.getText().strip());
-            int cam = Integer.parseInt(camPort.getText().strip());
-            touchline.transport.nao.NaoClientKeys keys;
-            try {
-                keys = insecure.isSelected() ? null
-                        : touchline.transport.nao.NaoClientKeys.load(
-                                new touchline.security.KeyDir(java.nio.file.Path.of(keyDir.getText().strip())));
-            } catch (touchline.security.KeyException e) {
-                lastResult = e.getMessage() + ". For an old robot side without keys: tick 'insecure'";
-                connect.setSelected(false);
-                return;
-            }
-            session = console.connectNao(h, rpc, cam, keys, NaoLinkConfig.defaults());
-            configureCamera();
-            toggleCamera();
-        } catch (NumberFormatException e) {
-            lastResult = "bad port: " + e.getMessage();
-            connect.setSelected(false);
-        }
-    }
-
-    private void shut() {
-        closeViewer();
-        NaoSession s = session;
-        session = null;
-        if (s != null) {
-            s.close();
-        }
-    }
-
-    private void callSelected() {
-        String method = methods.getSelectionModel().getSelectedItem();
-        if (method == null) {
-            lastResult = "choose a method (\"Methods\" lists them)";
-            return;
-        }
-        try {
-            String text = params.getText().strip();
-            Object parsed = text.isEmpty() ? List.of() : ParamSyntax.parse("[" + text + "]");
-            call(new NaoCall(module.getValue(), method, (List<Object>) parsed), false);
-        } catch (IllegalArgumentException e) {
-            lastResult = e.getMessage();
-        }
-    }
-
-    private void call(NaoCall call, boolean discovery) {
-        NaoSession s = session;
-        if (s == null) {
-            lastResult = "not connected";
-            return;
-        }
-        s.call(call).thenAccept(outcome -> {
-            lastResult = call.qualifiedName() + ": " + outcome.describe();
-            if (discovery && outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
-                discovered = names.stream().map(String::valueOf).sorted().toList();
-            }
-        });
-    }
-
-    private void sequence(CompletableFuture<touchline.transport.nao.SequenceOutcome> f) {
-        if (f == null) {
-            lastResult = "not connected";
-            return;
-        }
-        f.thenAccept(o -> lastResult = o.describe());
-    }
-
-    private void outcome(CompletableFuture<CallOutcome> f) {
-        if (f == null) {
-            lastResult = "not connected";
-            return;
-        }
-        f.thenAccept(o -> lastResult = o.describe());
-    }
-
-    private void walkKey(KeyEvent e, boolean down) {
-        String t = e.getCode().getChar();
-        NaoSession s = session;
-        if (t.length() != 1 || "WASDQE".indexOf(t.charAt(0)) < 0 || s == null) {
-            return;
-        }
-        boolean changed = down ? heldKeys.add(t.charAt(0)) : heldKeys.remove(t.charAt(0));
-        if (changed) {
-            s.walk(WalkInput.fromKeys(heldKeys, 0.6f)).thenAccept(o -> {
-                if (!o.ok() && !(o instanceof CallOutcome.Superseded)) {
-                    lastResult = "walk: " + o.describe();
-                }
-            });
-        }
-        e.consume();
-    }
-
-    private NaoCameraStream camera() {
-        NaoSession s = session;
-        return s == null ? null : s.camera().orElse(null);
-    }
-
-    private void configureCamera() {
-        NaoCameraStream camera = camera();
-        if (camera != null) {
-            CameraSettings s = camera.settings();
-            camera.configure(new CameraSettings(resolution.getValue(), s.colorSpace(), s.fps()));
-        }
-    }
-
-    private void toggleCamera() {
-        closeViewer();
-        NaoCameraStream camera = camera();
-        if (camera != null && cameraOn.isSelected()) {
-            viewer = camera.subscribe();
-        }
-    }
-
-    private void closeViewer() {
-        if (viewer != null) {
-            try {
-                viewer.close();
-            } catch (Exception ignored) {
-                // a subscription handle's close does not fail
-            }
-            viewer = null;
-        }
-    }
-
     @Override
     public Node node() {
         return root;
     }
 
-    @Override
-    public void refresh(FrameContext frame) {
-        NaoSession l = session;
-        state.setText(l == null ? "not connected" : l.state().name().toLowerCase() + (l.secure() ? " (encrypted)"
-                : " (INSECURE)") + "  " + l.stats().sent() + " sent, " + l.stats().replies() + " replies, "
-                + l.stats().timeouts() + " timeouts" + (l.securityProblem().isEmpty() ? "" : " — " + l.securityProblem()));
-        if (!lastResult.equals(result.getText())) {
-            result.setText(lastResult);
-        }
-        List<String> d = discovered;
-        if (d != null) {
-            discovered = null;
-            methods.getItems().setAll(d);
-        }
-        NaoCameraStream c = camera();
-        if (c != null) {
-            CameraFrame f = c.latestFrame();
-            if (f != null && f.sequence() != shownFrame) {
-                shownFrame = f.sequence();
-                image.setImage(new Image(new ByteArrayInputStream(f.jpeg())));
-                frame.shown(f.receiveTimeMicros());
-            }
-            String err = c.lastError();
-            cameraStats.setText(String.format("%.1f fps, %.0f B/frame%s", c.measuredFps(), c.bytesPerFrame(),
-                    err == null ? "" : "  " + err));
+    /** What this view shows and does (for tests). */
+    NaoViewModel model() {
+        return model;
+    }
+
+    private void callSelected() {
+        model.call(module.getValue(), methods.getSelectionModel().getSelectedItem(), params.getText());
+    }
+
+    private void walkKey(KeyEvent e, boolean down) {
+        String t = e.getCode().getChar();
+        if (t.length() == 1 && model.walkKey(t.charAt(0), down)) {
+            e.consume();
         }
     }
 
     @Override
+    public void refresh(FrameContext frame) {
+        state.setText(model.state());
+        connect.setSelected(model.connected());
+        if (!model.result().equals(result.getText())) {
+            result.setText(model.result());
+        }
+        if (model.methodsVersion() != shownMethods) {
+            shownMethods = model.methodsVersion();
+            methods.getItems().setAll(model.methods());
+        }
+        Optional<NaoFrame> f = model.frame();
+        if (f.isPresent() && f.get().sequence() != shownFrame) {
+            shownFrame = f.get().sequence();
+            image.setImage(new Image(new ByteArrayInputStream(f.get().jpeg())));
+            frame.shown(f.get().timeMicros());
+        } else if (f.isEmpty() && image.getImage() != null) {
+            image.setImage(null); // a closed replay takes its frame with it
+            shownFrame = 0;
+        }
+        cameraStats.setText(model.cameraFigures());
+    }
+
+    @Override
     public void close() {
-        shut();
+        model.close();
     }
 }

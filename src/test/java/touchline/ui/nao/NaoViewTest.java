@@ -31,6 +31,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * The NAO tab headless (Monocle) against the in-test robot and camera stand-ins, connected
  * through an (unstarted: no GameController heard, so match mode is off) application core.
  */
+@org.junit.jupiter.api.Tag("ui")
 class NaoViewTest {
 
     private static <T> T fx(Callable<T> step) throws Exception {

@@ -1,0 +1,114 @@
+package touchline.app;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.Await;
+import touchline.transport.Origin;
+import touchline.transport.UdpConfig;
+import touchline.transport.nao.FakeNaoCamera;
+import touchline.transport.nao.FakeNaoRobot;
+
+import java.net.URI;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/**
+ * The NAO view's model without a window: against the in-test robot and camera stand-ins, on a
+ * console that views a remote Touchline, and with nothing connected.
+ */
+class NaoViewModelTest {
+
+    private static Console console() {
+        return new Console(ConsoleConfig.defaults().withGameControllerPort(0)
+                .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)));
+    }
+
+    @Test
+    void connectsDiscoversCallsAndShowsTheFramesOfTheConsolesStream() throws Exception {
+        try (FakeNaoRobot robot = new FakeNaoRobot(0); FakeNaoCamera camera = new FakeNaoCamera();
+             Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            nao.setResolution(1);
+            nao.showCamera(true);
+            assertTrue(nao.connect("127.0.0.1", " " + robot.port(), Integer.toString(camera.port()), "unused", true),
+                    nao.result());
+            assertTrue(nao.connected());
+            Await.until("online", Await.FLOOR_MILLIS, () -> nao.state().startsWith("online (INSECURE)"));
+            nao.discover("Test");
+            Await.until("the methods", Await.FLOOR_MILLIS, () -> nao.methods().contains("echo"));
+            assertEquals(1, nao.methodsVersion());
+            nao.call("Test", "echo", "[a, 1]");
+            Await.until("the echo", Await.FLOOR_MILLIS, () -> nao.result().equals("Test.echo: [\"a\", 1]"));
+            Await.until("a frame", Await.FLOOR_MILLIS, () -> nao.frame().isPresent());
+            assertEquals(320, nao.frame().orElseThrow().width(), "the resolution asked for before connecting");
+            assertTrue(nao.cameraFigures().contains("B/frame"), nao.cameraFigures());
+            nao.disconnect();
+            assertFalse(nao.connected());
+            assertEquals("not connected", nao.state());
+            assertTrue(console.naoSessions().isEmpty(), "the console forgot the session");
+        }
+    }
+
+    @Test
+    void withNothingConnectedItSaysSoAndTellsABadParameterFirst() throws Exception {
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            nao.stand();
+            assertEquals("not connected", nao.result());
+            nao.call("ALMotion", null, "");
+            assertEquals("choose a method (\"Methods\" lists them)", nao.result());
+            nao.call("ALMotion", "setAngles", "[HeadYaw, 0.5");
+            assertFalse(nao.result().isEmpty());
+            assertNotEquals("not connected", nao.result(), "the parse error, not the missing NAO");
+            assertFalse(nao.walkKey('X', true), "not a walk key");
+            assertTrue(nao.walkKey('W', true));
+            assertEquals("walk: not connected", nao.result());
+            assertFalse(nao.connect("127.0.0.1", "55x", "0", "unused", true));
+            assertTrue(nao.result().startsWith("bad port"), nao.result());
+        }
+    }
+
+    @Test
+    void onAViewerEveryCommandIsRefusedAndTheRemoteFramesAreShown() throws Exception {
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            console.viewRemote(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
+            assertFalse(nao.connect("127.0.0.1", "5555", "5556", "unused", true));
+            assertEquals(Console.COMMANDS_OFF, nao.result());
+            assertTrue(console.naoSessions().isEmpty());
+            nao.call("ALMotion", "wakeUp", "");
+            assertEquals(Console.COMMANDS_OFF, nao.result());
+            nao.say("hi");
+            assertEquals(Console.COMMANDS_OFF, nao.result());
+            assertTrue(nao.walkKey('Q', true));
+            assertEquals("walk: " + Console.COMMANDS_OFF, nao.result());
+            assertTrue(nao.state().startsWith("viewing a remote Touchline"), nao.state());
+
+            byte[] jpeg = touchline.testing.NaoCameraEnvelopes.jpeg(160, 120);
+            console.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, 42, Origin.REMOTE));
+            assertArrayEquals(jpeg, nao.frame().orElseThrow().jpeg());
+        }
+    }
+
+    @Test
+    void aReplayedNaoCameraIsShownWhileTheReplayIsOpen(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("nao.mcap");
+        byte[] last = touchline.testing.NaoCameraEnvelopes.jpeg(320, 240);
+        try (Console recording = console()) {
+            recording.startRecording(file);
+            long t = recording.clock().nowMicros();
+            recording.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(
+                    touchline.testing.NaoCameraEnvelopes.jpeg(160, 120), t, Origin.LIVE));
+            recording.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(last, t + 66_000, Origin.LIVE));
+            recording.stopRecording();
+        }
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            Replay replay = console.openReplay(file);
+            assertTrue(nao.frame().isEmpty(), "nothing played yet");
+            assertEquals(2, replay.runFor(100));
+            NaoFrame shown = nao.frame().orElseThrow();
+            assertArrayEquals(last, shown.jpeg(), "the recording's newest frame");
+            assertEquals(240, shown.height());
+            console.closeReplay();
+            assertTrue(nao.frame().isEmpty(), "the replay's frames went with it; no live NAO");
+        }
+    }
+}
