@@ -105,14 +105,12 @@ class ArchitectureTest {
      * One clock: the wall clock is read only by {@code app.SystemClock}, which the console and
      * the commands without a console make once and hand down through constructors. Known debt,
      * moving with other work: the GameController runtime's envelope time ({@code
-     * transport.gamecontroller.Clock}) and the time of the NAO link's and camera stream's
-     * constructors that are not handed a clock ({@value #NAO_UNINJECTED_CLOCK}).
+     * transport.gamecontroller.Clock}).
      */
     @Test
     void theWallClockIsReadOnlyByTheSystemClock() {
         noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class)
                 .and().doNotHaveFullyQualifiedName("touchline.transport.gamecontroller.Clock")
-                .and().doNotHaveFullyQualifiedName(NAO_UNINJECTED_CLOCK)
                 .should().callMethod(System.class, "currentTimeMillis")
                 .orShould().callMethod(java.time.Instant.class, "now")
                 .orShould().callMethod(java.time.LocalDateTime.class, "now")
@@ -132,7 +130,7 @@ class ArchitectureTest {
      * waiting for its deadline, the frame pulse timing a view, the recorder's disk thread aging
      * its open chunk, the GameController sender's real-time schedule, the remote viewer's
      * handshake timeout and silence watchdog); the NAO link and camera stream take the console's
-     * monotonic clock (known debt: {@value #NAO_UNINJECTED_CLOCK}, see above).
+     * monotonic clock.
      */
     @Test
     void theMonotonicClockOnlyMeasuresDurationsOutsideTheSystemClock() {
@@ -141,13 +139,9 @@ class ArchitectureTest {
                 .and().doNotHaveFullyQualifiedName("touchline.record.BackgroundFiles")
                 .and().doNotHaveFullyQualifiedName("touchline.transport.remote.RemoteStream$Session")
                 .and().resideOutsideOfPackage("touchline.cli..")
-                .and().doNotHaveFullyQualifiedName(NAO_UNINJECTED_CLOCK)
                 .should().callMethod(System.class, "nanoTime")
                 .check(classes);
     }
-
-    /** The one class of transport.nao that reads the system's time, for callers that do not hand down a clock yet. */
-    static final String NAO_UNINJECTED_CLOCK = "touchline.transport.nao.UninjectedClock";
 
     /**
      * The NAO link and the GameController runtime run on the clocks they are handed (the
@@ -157,7 +151,6 @@ class ArchitectureTest {
     @Test
     void theNaoLinkAndTheGameRuntimeAreHandedTheirClocks() {
         noClasses().that().resideInAnyPackage("touchline.transport.nao..", "touchline.app.game..")
-                .and().doNotHaveFullyQualifiedName(NAO_UNINJECTED_CLOCK)
                 .should().callMethod(System.class, "nanoTime")
                 .orShould().callMethod(System.class, "currentTimeMillis")
                 .orShould().callMethod(java.time.Instant.class, "now")

@@ -449,7 +449,8 @@ public final class Console implements AutoCloseable {
         // held NAO commands are dropped, never sent when play stops: say so instead of the debug requests' promise
         SendGate naoGate = () -> gate.holdReason().map(r -> r.endsWith(SENT_LATER)
                 ? r.substring(0, r.length() - SENT_LATER.length()) + "; not sent" : r);
-        NaoSession session = new NaoSession(host, rpcPort, camPort, naoConfig, keys, live, naoGate, clock, naos::remove);
+        NaoSession session = new NaoSession(host, rpcPort, camPort, naoConfig, keys, live, naoGate, clock, realClock,
+                naos::remove);
         naos.add(session);
         return session;
     }
@@ -462,7 +463,7 @@ public final class Console implements AutoCloseable {
      * @param keys CURVE client keys, or null: insecure
      */
     public NaoCamera connectNaoCamera(String host, int camPort, touchline.transport.nao.NaoClientKeys keys) {
-        NaoCamera camera = new NaoCamera(host, camPort, live, keys, naoCameras::remove);
+        NaoCamera camera = new NaoCamera(host, camPort, live, keys, clock, realClock, naoCameras::remove);
         naoCameras.add(camera);
         return camera;
     }

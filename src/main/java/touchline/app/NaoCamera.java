@@ -21,8 +21,9 @@ public final class NaoCamera implements AutoCloseable {
     private AutoCloseable watching; // guarded by this
 
     /** Publishing into a NAO session's pipeline (the session closes it). */
-    NaoCamera(String host, int port, NaoEnvelopeChannel channel, NaoClientKeys keys) {
-        this.stream = new NaoCameraStream(host, port, channel, keys);
+    NaoCamera(String host, int port, NaoEnvelopeChannel channel, NaoClientKeys keys,
+              touchline.transport.MicrosClock wall, touchline.transport.MonotonicClock monotonic) {
+        this.stream = new NaoCameraStream(host, port, channel, keys, wall, monotonic);
         this.onClose = camera -> { };
     }
 
@@ -31,8 +32,9 @@ public final class NaoCamera implements AutoCloseable {
      *
      * @param onClose told when it closes (the console forgets it)
      */
-    NaoCamera(String host, int port, EnvelopeSink sink, NaoClientKeys keys, java.util.function.Consumer<NaoCamera> onClose) {
-        this.stream = new NaoCameraStream(host, port, sink, keys);
+    NaoCamera(String host, int port, EnvelopeSink sink, NaoClientKeys keys, touchline.transport.MicrosClock wall,
+              touchline.transport.MonotonicClock monotonic, java.util.function.Consumer<NaoCamera> onClose) {
+        this.stream = new NaoCameraStream(host, port, sink, keys, wall, monotonic);
         this.onClose = onClose;
     }
 

@@ -47,15 +47,16 @@ public final class NaoSession implements AutoCloseable {
      * @param onClose told when the session closes (the console forgets it)
      */
     NaoSession(String host, int rpcPort, int camPort, NaoLinkConfig config, NaoClientKeys keys, EnvelopeSink sink,
-               SendGate gate, MicrosClock clock, Consumer<NaoSession> onClose) {
+               SendGate gate, MicrosClock clock, touchline.transport.MonotonicClock monotonic,
+               Consumer<NaoSession> onClose) {
         this.host = host;
         this.rpcPort = rpcPort;
         this.onClose = onClose;
         this.channel = new NaoEnvelopeChannel(sink);
-        this.link = new NaoLink(host, rpcPort, config, channel, keys, clock);
+        this.link = new NaoLink(host, rpcPort, config, channel, keys, clock, monotonic);
         link.setSendGate(gate);
         this.moves = new NaoMoves(link);
-        this.camera = camPort > 0 ? new NaoCamera(host, camPort, channel, keys) : null;
+        this.camera = camPort > 0 ? new NaoCamera(host, camPort, channel, keys, clock, monotonic) : null;
     }
 
     public String host() {

@@ -64,30 +64,10 @@ public final class NaoCameraStream implements AutoCloseable {
     private final int[] frameBytes = new int[WINDOW];
     private int frameCount;
 
-    /** Insecure (no CURVE), publishing into its own pipeline ending in {@code sink}. */
-    public NaoCameraStream(String host, int port, EnvelopeSink sink) {
-        this(host, port, new NaoEnvelopeChannel(sink), true, null, new UninjectedClock(), new UninjectedClock());
-    }
-
-    /** @param keys CURVE client keys, or null: insecure */
-    public NaoCameraStream(String host, int port, EnvelopeSink sink, NaoClientKeys keys) {
-        this(host, port, new NaoEnvelopeChannel(sink), true, keys, new UninjectedClock(), new UninjectedClock());
-    }
-
     /** As above with the console's clocks: {@code wall} stamps frames and envelopes, {@code monotonic} paces. */
     public NaoCameraStream(String host, int port, EnvelopeSink sink, NaoClientKeys keys, MicrosClock wall,
                            MonotonicClock monotonic) {
         this(host, port, new NaoEnvelopeChannel(sink), true, keys, wall, monotonic);
-    }
-
-    /** Insecure (no CURVE), publishing into a shared pipeline. */
-    public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes) {
-        this(host, port, envelopes, false, null, new UninjectedClock(), new UninjectedClock());
-    }
-
-    /** @param keys CURVE client keys, or null: insecure */
-    public NaoCameraStream(String host, int port, NaoEnvelopeChannel envelopes, NaoClientKeys keys) {
-        this(host, port, envelopes, false, keys, new UninjectedClock(), new UninjectedClock());
     }
 
     /** As above with the console's clocks: {@code wall} stamps frames and envelopes, {@code monotonic} paces. */

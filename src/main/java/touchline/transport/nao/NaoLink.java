@@ -59,43 +59,19 @@ public final class NaoLink implements AutoCloseable {
     private final LinkLoop loop;
     private volatile SendGate gate = SendGate.open();
 
-    /** Connects to {@code host:port}, insecure, and publishes into its own pipeline ending in {@code sink}. */
-    public NaoLink(String host, int port, NaoLinkConfig config, EnvelopeSink sink) {
-        this(host, port, config, new NaoEnvelopeChannel(sink), true, null, new UninjectedClock(), new UninjectedClock());
-    }
-
     /**
      * Connects to {@code host:port} and publishes into its own pipeline ending in {@code sink}.
      *
-     * @param keys CURVE client keys (the NAO link encrypted, the robot side checks our key), or null: insecure
+     * @param keys      CURVE client keys (the NAO link encrypted, the robot side checks our key), or null: insecure
+     * @param wall      stamps the envelopes (the console's clock)
+     * @param monotonic runs the calls' deadlines and pacing (the console's clock)
      */
-    public NaoLink(String host, int port, NaoLinkConfig config, EnvelopeSink sink, NaoClientKeys keys) {
-        this(host, port, config, new NaoEnvelopeChannel(sink), true, keys, new UninjectedClock(), new UninjectedClock());
-    }
-
-    /** As above with the console's clocks: {@code wall} stamps the envelopes, {@code monotonic} runs the deadlines. */
     public NaoLink(String host, int port, NaoLinkConfig config, EnvelopeSink sink, NaoClientKeys keys,
                    MicrosClock wall, MonotonicClock monotonic) {
         this(host, port, config, new NaoEnvelopeChannel(sink), true, keys, wall, monotonic);
     }
 
-    /** Connects to {@code host:port}, insecure, and publishes into a shared pipeline (e.g. with the camera stream). */
-    public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes) {
-        this(host, port, config, envelopes, false, null, new UninjectedClock(), new UninjectedClock());
-    }
-
-    /** As above with CURVE client keys, or null for insecure. */
-    public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, NaoClientKeys keys) {
-        this(host, port, config, envelopes, false, keys, new UninjectedClock(), new UninjectedClock());
-    }
-
-    /** As above, time-stamping envelopes with {@code wall} (the console's clock). */
-    public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, NaoClientKeys keys,
-                   MicrosClock wall) {
-        this(host, port, config, envelopes, false, keys, wall, new UninjectedClock());
-    }
-
-    /** As above with the console's clocks: {@code wall} stamps the envelopes, {@code monotonic} runs the deadlines. */
+    /** As above, publishing into a shared pipeline (e.g. with the camera stream). */
     public NaoLink(String host, int port, NaoLinkConfig config, NaoEnvelopeChannel envelopes, NaoClientKeys keys,
                    MicrosClock wall, MonotonicClock monotonic) {
         this(host, port, config, envelopes, false, keys, wall, monotonic);

@@ -22,7 +22,7 @@ class NaoCameraStreamTest {
     void fetchesOnlyWhileSubscribedSharesOneFrameAndReconfigures() throws Exception {
         List<Envelope> envelopes = new CopyOnWriteArrayList<>();
         try (FakeNaoCamera camera = new FakeNaoCamera();
-             NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add)) {
+             NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             stream.configure(new CameraSettings(1, 11, 30));
             Thread.sleep(300); // nothing to await: we check that nothing is fetched without a viewer
             assertEquals(0, camera.fetches.get());
@@ -76,7 +76,7 @@ class NaoCameraStreamTest {
         try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
             port = s.getLocalPort();
         }
-        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", port, e -> { })) {
+        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", port, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             AutoCloseable viewer = stream.subscribe();
             assertTrue(Poll.until(() -> stream.lastError() != null, Duration.ofSeconds(5)));
             viewer.close();

@@ -48,8 +48,8 @@ class NaoCurveRobotSideTest {
     void rightKeysCallAndGetAFrame() throws Exception {
         try (RobotSideProcess sim = secureSim();
              NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { },
-                     NaoClientKeys.load(new KeyDir(keys)));
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, NaoClientKeys.load(new KeyDir(keys)))) {
+                     NaoClientKeys.load(new KeyDir(keys)), new touchline.app.SystemClock(), new touchline.app.SystemClock());
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, NaoClientKeys.load(new KeyDir(keys)), new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), link.state()
                     + " " + link.securityProblem());
             assertEquals(new CallOutcome.Done(), link.call("ALTextToSpeech", "setVolume", 0.5f).get(20, TimeUnit.SECONDS));
@@ -70,8 +70,8 @@ class NaoCurveRobotSideTest {
             Files.copy(keys.resolve("nao-server.public"), otherConsole.resolve("nao-server.public"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             NaoClientKeys stranger = NaoClientKeys.load(new KeyDir(otherConsole));
-            try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, stranger);
-                 NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, stranger)) {
+            try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, stranger, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+                 NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, stranger, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
                 assertTrue(Poll.until(() -> link.state() == ConnectionState.REFUSED, Duration.ofSeconds(5)),
                         link.state().toString());
                 assertTrue(link.securityProblem().contains("the NAO refused our key: give it console.public"),
@@ -96,8 +96,8 @@ class NaoCurveRobotSideTest {
     @Test
     void anInsecureClientGetsNothing() throws Exception {
         try (RobotSideProcess sim = secureSim();
-             NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { });
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { })) {
+             NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             CallOutcome outcome = link.call("ALTextToSpeech", "getVolume").get(20, TimeUnit.SECONDS);
             assertInstanceOf(CallOutcome.Lost.class, outcome);
             assertTrue(link.state() != ConnectionState.ONLINE);
@@ -116,7 +116,7 @@ class NaoCurveRobotSideTest {
             Files.copy(keys.resolve("console.secret"), otherConsole.resolve("console.secret"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { },
-                    NaoClientKeys.load(new KeyDir(otherConsole)))) {
+                    NaoClientKeys.load(new KeyDir(otherConsole)), new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
                 assertTrue(Poll.until(() -> link.state() == ConnectionState.REFUSED, Duration.ofSeconds(10)),
                         link.state().toString());
                 assertTrue(link.securityProblem().contains("no CURVE handshake"), link.securityProblem());

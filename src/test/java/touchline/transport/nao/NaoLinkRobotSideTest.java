@@ -35,7 +35,7 @@ class NaoLinkRobotSideTest {
     }
 
     private NaoLink online(RobotSideProcess sim) throws Exception {
-        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add);
+        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
         return link;
     }
@@ -133,7 +133,7 @@ class NaoLinkRobotSideTest {
     @Test
     void cameraConfigureAndFetch() throws Exception {
         try (RobotSideProcess sim = new RobotSideProcess(0, 0);
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add)) {
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             camera.configure(new CameraSettings(2, 11, 30));
             try (AutoCloseable viewer = camera.subscribe()) {
                 assertTrue(Poll.until(() -> camera.framesReceived() >= 5, Duration.ofSeconds(10)), "" + camera.lastError());

@@ -29,7 +29,7 @@ class NaoLinkTest {
 
     private NaoLink connect(NaoLinkConfig config) throws Exception {
         robot = new FakeNaoRobot(0);
-        link = new NaoLink("127.0.0.1", robot.port(), config, envelopes::add);
+        link = new NaoLink("127.0.0.1", robot.port(), config, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
         return link;
     }
@@ -100,7 +100,7 @@ class NaoLinkTest {
         assertTrue(Poll.until(() -> count("Test.sleep") == 3, Duration.ofSeconds(3)));
         robot.executed.clear();
         link.close();
-        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.parse("retries=2\n", "test"), envelopes::add);
+        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.parse("retries=2\n", "test"), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)));
         assertInstanceOf(CallOutcome.TimedOut.class, get(link.call(NaoCall.of("Test", "sleep", 500), 100)));
         Thread.sleep(600); // nothing to await: we check that no second attempt arrives
@@ -152,7 +152,7 @@ class NaoLinkTest {
         try (ServerSocket s = new ServerSocket(0)) {
             port = s.getLocalPort();
         }
-        link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), envelopes::add);
+        link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
         CallOutcome outcome = get(link.call(NaoCall.of("Test", "echo", 1), 200));
         assertInstanceOf(CallOutcome.Lost.class, outcome);
         assertEquals(ConnectionState.CONNECTING, link.state());
@@ -232,7 +232,7 @@ class NaoLinkTest {
             if (e.direction() == Direction.OUT) {
                 sendingThreads.add(Thread.currentThread().getName());
             }
-        });
+        }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
         for (int i = 0; i < 20; i++) {
             assertEquals(new CallOutcome.Value((long) i), get(link.call("Test", "echo", i)));
