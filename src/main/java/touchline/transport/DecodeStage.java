@@ -12,10 +12,12 @@ import java.util.function.Supplier;
  * team key the event loop receives and decodes each datagram and hands the envelope here, so
  * that on two cores the model's work per envelope (robot registry, option session, traffic
  * meter, view stores, recorder) runs beside the next read and decode instead of after it
- * (docs/benchmarks.md, issue 11). With a key the event loop checks each datagram's tag (in
- * arrival order, dropping forgeries) and hands what passed here, where it is decoded and
- * published, so that the HMAC runs beside the decode (issue 15). One thread and one FIFO queue:
- * the order of the envelopes is the order of the datagrams. Handed over in batches (one per
+ * (docs/benchmarks.md, issue 11). With a key the event loop decodes too, and each datagram's
+ * tag and counter are checked here (the work handed over with it), in arrival order with the
+ * reliable stream's segments that share the robot's counter (their check and their stop-and-wait
+ * input are handed over here as {@link #addTask tasks}); a forgery is published as such, without
+ * its message. So the HMAC runs beside the next read and decode (issue 15). One thread and one
+ * FIFO queue: the order of the envelopes and tasks is the order of the datagrams. Handed over in batches (one per
  * socket read), so the wake-up costs once per batch, not per datagram. Bounded: when
  * {@link #CAPACITY} batches wait, the event loop waits too and the datagrams stay in the
  * socket's receive buffer.
@@ -29,7 +31,7 @@ final class DecodeStage implements AutoCloseable {
     private final BlockingQueue<List<Object>> queue = new ArrayBlockingQueue<>(CAPACITY);
     private final EnvelopeSink sink;
     private final Thread thread;
-    /** Envelopes decoded on the event loop, or the work that makes one here (or an {@link #awaitPublished} marker). */
+    /** Envelopes decoded on the event loop, the work that makes one here, tasks (or an {@link #awaitPublished} marker). */
     private List<Object> batch = new ArrayList<>(MAX_BATCH);
     private volatile boolean closed;
 
@@ -48,6 +50,11 @@ final class DecodeStage implements AutoCloseable {
     /** Event loop: one decoded envelope, published in order. */
     void add(Envelope decoded) {
         append(decoded);
+    }
+
+    /** Event loop: work that runs here in order with the envelopes (and publishes what it has to itself). */
+    void addTask(Runnable task) {
+        append(task);
     }
 
     private void append(Object item) {
@@ -85,7 +92,7 @@ final class DecodeStage implements AutoCloseable {
         published.await();
     }
 
-    @SuppressWarnings("unchecked") // the batch holds Envelopes and Supplier<Envelope>s only
+    @SuppressWarnings("unchecked") // the batch holds Envelopes, Supplier<Envelope>s and Runnables only
     private void run() {
         while (true) {
             List<Object> work;
@@ -103,6 +110,10 @@ final class DecodeStage implements AutoCloseable {
                     continue;
                 }
                 try {
+                    if (w instanceof Runnable task) {
+                        task.run();
+                        continue;
+                    }
                     sink.accept(w instanceof Envelope e ? e : ((Supplier<Envelope>) w).get());
                 } catch (RuntimeException e) {
                     // as on the event loop: this datagram is lost, the next one is not
