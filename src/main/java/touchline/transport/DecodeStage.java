@@ -29,6 +29,8 @@ final class DecodeStage implements AutoCloseable {
     private static final List<Object> STOP = List.of();
 
     private final BlockingQueue<List<Object>> queue = new ArrayBlockingQueue<>(CAPACITY);
+    /** Event loop: whether a whole batch still waited for this thread at the last hand-over. */
+    private boolean behind;
     private final EnvelopeSink sink;
     private final Thread thread;
     /** Envelopes decoded on the event loop, the work that makes one here, tasks (or an {@link #awaitPublished} marker). */
@@ -64,6 +66,15 @@ final class DecodeStage implements AutoCloseable {
         }
     }
 
+    /**
+     * Event loop: true when this thread had not yet taken the previous batch at the last
+     * hand-over, i.e. it is the slower of the two; the event loop then takes on work that needs
+     * no order (the tags' HMAC, issue 15), so the two share it by how busy they are.
+     */
+    boolean behind() {
+        return behind;
+    }
+
     /** Event loop: hands the batch over (at the end of each socket read). */
     void flush() {
         if (batch.isEmpty()) {
@@ -71,6 +82,7 @@ final class DecodeStage implements AutoCloseable {
         }
         List<Object> full = batch;
         batch = new ArrayList<>(MAX_BATCH);
+        behind = !queue.isEmpty();
         try {
             while (!queue.offer(full, 100, TimeUnit.MILLISECONDS)) {
                 if (closed) {

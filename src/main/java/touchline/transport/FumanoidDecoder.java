@@ -10,6 +10,7 @@ import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageResult;
 import touchline.security.Authenticity;
 import touchline.security.InboundVerifier;
+import touchline.security.MessageTag;
 
 import java.util.function.Supplier;
 
@@ -100,7 +101,9 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
      * With a team key, on the event loop: the datagram is decoded here, as without a key; its
      * tag and counter are checked on the {@link DecodeStage} (the returned work), in arrival
      * order with the reliable stream's segments, which share the robot's counter and are checked
-     * there too. So the HMAC runs beside the next read and decode. A forgery may thus be decoded
+     * there too. So the HMAC runs beside the next read and decode; while the stage is the slower
+     * thread ({@link DecodeStage#behind}) the event loop computes the HMAC itself (it needs no
+     * order) and the stage only settles the counter. A forgery may thus be decoded
      * before it is refused, but what it says is never published: its envelope carries no message,
      * its robot's address is not learned, and it is counted and shown with its source.
      */
@@ -124,15 +127,18 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
             Envelope bad = malformed(d, ((MessageResult.Malformed) result).reason());
             return () -> bad;
         }
-        return () -> verdict(d, robotId, f, result);
+        // the HMAC needs no order: the event loop takes it on while the stage is the slower thread
+        MessageTag.Check tag = stage.behind() ? verifier.precheck(robotId, bytes) : null;
+        return () -> verdict(d, robotId, f, result, tag);
     }
 
     /**
      * On the stage, in arrival order: the tag and the counter decide whether the decoded message
      * is published; a forged one is replaced by its forged envelope (no message), counted.
      */
-    private Envelope verdict(ReceivedDatagram d, int robotId, FrameResult.Frame f, MessageResult result) {
-        InboundVerifier.Result auth = verifier.check(robotId, d.bytes());
+    private Envelope verdict(ReceivedDatagram d, int robotId, FrameResult.Frame f, MessageResult result,
+                             MessageTag.Check tag) {
+        InboundVerifier.Result auth = verifier.check(robotId, d.bytes(), tag);
         if (auth.authenticity() == Authenticity.FORGED) {
             return forged(d, robotId, auth);
         }
