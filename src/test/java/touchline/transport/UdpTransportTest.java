@@ -55,12 +55,27 @@ class UdpTransportTest {
     private final MessageTag robotSide = new MessageTag(key);
     private final AtomicLong clock = new AtomicLong(1_000_000L);
 
+    /** While set, the model holds the publishing thread until it is counted down (a slow model). */
+    private volatile java.util.concurrent.CountDownLatch slowModel;
+
+    private void publish(Envelope e) {
+        java.util.concurrent.CountDownLatch hold = slowModel;
+        if (hold != null) {
+            try {
+                hold.await();
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        received.add(e);
+    }
+
     /** The same transport, restarted with a team key whose counter follows a fake clock. */
     private void useTeamKey() throws Exception {
         transport.close();
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
                 LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock()).start();
+                new MessageCodec(new MessageKinds()), this::publish, new touchline.app.SystemClock()).start();
     }
 
     /**
@@ -281,6 +296,45 @@ class UdpTransportTest {
         }
         assertEquals(n / 25, transport.counters().forgedIn());
         assertEquals(n / 25, transport.counters().malformedIn());
+    }
+
+    /**
+     * The model holds the publishing thread while a burst is read, so batches wait for it and the
+     * event loop computes their HMACs itself (the stage settling only the counters): the same
+     * verdicts, in the same order, forgeries and replays refused.
+     */
+    @Test
+    void withATeamKeyABurstReadWhileTheModelIsSlowKeepsEveryVerdictAndItsOrder() throws Exception {
+        useTeamKey();
+        java.util.concurrent.CountDownLatch hold = new java.util.concurrent.CountDownLatch(1);
+        slowModel = hold;
+        int n = 400; // a dozen socket reads or more: most handed over while the stage is held
+        long counter = 0;
+        for (int i = 0; i < n; i++) {
+            if (i % 20 == 5) {
+                send(tagged(2, counter, status(2, Framing.LEGACY))); // the last counter again: a replay
+            } else if (i % 20 == 11) {
+                byte[] bad = tagged(2, ++counter, status(2, Framing.LEGACY));
+                bad[bad.length - 1] ^= 1;
+                send(bad);
+            } else {
+                send(tagged(2, ++counter, status(2, Framing.LEGACY)));
+            }
+        }
+        touchline.testing.Await.until("every datagram read", touchline.testing.Await.FLOOR_MILLIS,
+                () -> transport.counters().datagramsIn() == n);
+        slowModel = null;
+        hold.countDown();
+        for (int i = 0; i < n; i++) {
+            Envelope e = next();
+            boolean refused = i % 20 == 5 || i % 20 == 11;
+            assertEquals(refused ? Authenticity.FORGED : Authenticity.VERIFIED, e.authenticity(), i + ": " + e);
+            if (refused) {
+                assertNull(e.message(), i + ": a forgery's message is not published");
+                assertTrue(e.error().contains(i % 20 == 5 ? "replayed" : "bad tag"), i + ": " + e.error());
+            }
+        }
+        assertEquals(2L * n / 20, transport.counters().forgedIn());
     }
 
     @Test
