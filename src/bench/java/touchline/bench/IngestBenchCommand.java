@@ -125,9 +125,13 @@ final class IngestBenchCommand implements Callable<Integer> {
                 recordingRatios.add(recorded / pipeline);
             }
             if (tagged) {
-                double withTags = pipeline(seconds, 0, false, true).perSecond();
+                IngestResult tags = pipeline(seconds, 0, false, true);
+                double withTags = tags.perSecond();
                 System.out.printf("round %d: pipeline with tags %,.0f msg/s, %.2f of the pipeline without%n", round,
                         withTags, withTags / pipeline);
+                if (!tags.cpuNanosPerMessage().isEmpty()) {
+                    System.out.printf("  CPU per datagram with tags: %s%n", tags.cpuText());
+                }
                 taggedRatios.add(withTags / pipeline);
             }
             ratios.add(pipeline / baseline);

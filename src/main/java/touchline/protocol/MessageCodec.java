@@ -49,7 +49,7 @@ public final class MessageCodec {
     /**
      * The robotID a payload carries, read from the bytes without building the message (field 1
      * as a varint, the last one winning as in the parse), or {@link #NO_ROBOT_ID}. Lets the
-     * transport check a datagram's tag, which covers the robot ID, before the full decode.
+     * transport check the tag (which covers the robot ID) of a datagram the full decode refused.
      */
     public static int robotIdOf(byte[] payload) {
         int robotId = NO_ROBOT_ID;

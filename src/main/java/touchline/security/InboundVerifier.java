@@ -17,12 +17,15 @@ public final class InboundVerifier {
     public record Result(Authenticity authenticity, int payloadLength, String reason, String note) { }
 
     private final MessageTag tag;
+    /** The {@link #precheck}'s own Mac: it runs on another thread than {@link #check} (a Mac is not thread-safe). */
+    private final MessageTag pretag;
     private final ReplayGuard guard = new ReplayGuard();
     private final boolean[] tagged = new boolean[256];
 
     /** @param key the team key, or null for a console without one (everything unverified) */
     public InboundVerifier(TeamKey key) {
         this.tag = key == null ? null : new MessageTag(key);
+        this.pretag = key == null ? null : new MessageTag(key);
     }
 
     public boolean hasKey() {
@@ -35,14 +38,31 @@ public final class InboundVerifier {
     }
 
     /** The verdict on a datagram whose payload said it comes from {@code robotId}. */
-    public synchronized Result check(int robotId, byte[] datagram) {
+    public Result check(int robotId, byte[] datagram) {
+        return check(robotId, datagram, null);
+    }
+
+    /**
+     * The tag alone (the HMAC, no counter), for {@link #check(int, byte[], MessageTag.Check)} to
+     * finish later: the costly half, which needs no order, so another thread can take it. Null
+     * without a key. One thread at a time (its own Mac), beside the thread that calls check.
+     */
+    public MessageTag.Check precheck(int robotId, byte[] datagram) {
+        return pretag == null ? null : pretag.check(MessageTag.FROM_ROBOT, robotId, datagram, Trailer.of(datagram));
+    }
+
+    /**
+     * The verdict, in arrival order (the counter): {@code prechecked} is what {@link #precheck}
+     * said of this datagram, or null to check the tag here too.
+     */
+    public synchronized Result check(int robotId, byte[] datagram, MessageTag.Check prechecked) {
         Trailer trailer = Trailer.of(datagram);
         int payload = trailer instanceof Trailer.Present p ? p.payloadLength() : datagram.length;
         if (tag == null) {
             return new Result(Authenticity.UNVERIFIED, payload, null, null);
         }
         int id = robotId & 0xFF;
-        MessageTag.Check c = tag.check(MessageTag.FROM_ROBOT, robotId, datagram, trailer);
+        MessageTag.Check c = prechecked != null ? prechecked : tag.check(MessageTag.FROM_ROBOT, robotId, datagram, trailer);
         switch (c) {
             case NO_TAG -> {
                 return tagged[id]

@@ -12,10 +12,12 @@ import java.util.function.Supplier;
  * team key the event loop receives and decodes each datagram and hands the envelope here, so
  * that on two cores the model's work per envelope (robot registry, option session, traffic
  * meter, view stores, recorder) runs beside the next read and decode instead of after it
- * (docs/benchmarks.md, issue 11). With a key the event loop checks each datagram's tag (in
- * arrival order, dropping forgeries) and hands what passed here, where it is decoded and
- * published, so that the HMAC runs beside the decode (issue 15). One thread and one FIFO queue:
- * the order of the envelopes is the order of the datagrams. Handed over in batches (one per
+ * (docs/benchmarks.md, issue 11). With a key the event loop decodes too, and each datagram's
+ * tag and counter are checked here (the work handed over with it), in arrival order with the
+ * reliable stream's segments that share the robot's counter (their check and their stop-and-wait
+ * input are handed over here as {@link #addTask tasks}); a forgery is published as such, without
+ * its message. So the HMAC runs beside the next read and decode (issue 15). One thread and one
+ * FIFO queue: the order of the envelopes and tasks is the order of the datagrams. Handed over in batches (one per
  * socket read), so the wake-up costs once per batch, not per datagram. Bounded: when
  * {@link #CAPACITY} batches wait, the event loop waits too and the datagrams stay in the
  * socket's receive buffer.
@@ -27,9 +29,11 @@ final class DecodeStage implements AutoCloseable {
     private static final List<Object> STOP = List.of();
 
     private final BlockingQueue<List<Object>> queue = new ArrayBlockingQueue<>(CAPACITY);
+    /** Event loop: whether a whole batch still waited for this thread at the last hand-over. */
+    private boolean behind;
     private final EnvelopeSink sink;
     private final Thread thread;
-    /** Envelopes decoded on the event loop, or the work that makes one here (or an {@link #awaitPublished} marker). */
+    /** Envelopes decoded on the event loop, the work that makes one here, tasks (or an {@link #awaitPublished} marker). */
     private List<Object> batch = new ArrayList<>(MAX_BATCH);
     private volatile boolean closed;
 
@@ -50,11 +54,25 @@ final class DecodeStage implements AutoCloseable {
         append(decoded);
     }
 
+    /** Event loop: work that runs here in order with the envelopes (and publishes what it has to itself). */
+    void addTask(Runnable task) {
+        append(task);
+    }
+
     private void append(Object item) {
         batch.add(item);
         if (batch.size() >= MAX_BATCH) {
             flush();
         }
+    }
+
+    /**
+     * Event loop: true when this thread had not yet taken the previous batch at the last
+     * hand-over, i.e. it is the slower of the two; the event loop then takes on work that needs
+     * no order (the tags' HMAC, issue 15), so the two share it by how busy they are.
+     */
+    boolean behind() {
+        return behind;
     }
 
     /** Event loop: hands the batch over (at the end of each socket read). */
@@ -64,6 +82,7 @@ final class DecodeStage implements AutoCloseable {
         }
         List<Object> full = batch;
         batch = new ArrayList<>(MAX_BATCH);
+        behind = !queue.isEmpty();
         try {
             while (!queue.offer(full, 100, TimeUnit.MILLISECONDS)) {
                 if (closed) {
@@ -85,7 +104,7 @@ final class DecodeStage implements AutoCloseable {
         published.await();
     }
 
-    @SuppressWarnings("unchecked") // the batch holds Envelopes and Supplier<Envelope>s only
+    @SuppressWarnings("unchecked") // the batch holds Envelopes, Supplier<Envelope>s and Runnables only
     private void run() {
         while (true) {
             List<Object> work;
@@ -103,6 +122,10 @@ final class DecodeStage implements AutoCloseable {
                     continue;
                 }
                 try {
+                    if (w instanceof Runnable task) {
+                        task.run();
+                        continue;
+                    }
                     sink.accept(w instanceof Envelope e ? e : ((Supplier<Envelope>) w).get());
                 } catch (RuntimeException e) {
                     // as on the event loop: this datagram is lost, the next one is not

@@ -10,6 +10,7 @@ import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageResult;
 import touchline.security.Authenticity;
 import touchline.security.InboundVerifier;
+import touchline.security.MessageTag;
 
 import java.util.function.Supplier;
 
@@ -28,12 +29,12 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     private final EnvelopeSink sink;
     private final InboundVerifier verifier;
     /**
-     * Where envelopes are published, beside this thread: with a team key decoded there too
-     * (after the tag check here); without one decoded here. Null: everything on this thread.
+     * Where envelopes are published, beside this thread: decoded here in both cases; with a team
+     * key their tags and counters are checked there, in order. Null: everything on this thread.
      */
     private final DecodeStage stage;
 
-    /** @param stage null: everything on the event loop; else publish there (and decode there too with a key) */
+    /** @param stage null: everything on the event loop; else publish there (and check the tags there with a key) */
     FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters,
                     EnvelopeSink sink, InboundVerifier verifier, DecodeStage stage) {
         this.verifier = verifier;
@@ -97,10 +98,14 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     }
 
     /**
-     * With a team key, on the event loop: the tag is checked here, in arrival order with the
-     * reliable stream's segments (one counter per robot), against the robot ID read from the
-     * bytes; a forgery is settled here (nothing of it is decoded or acted on), the rest is
-     * decoded and published on the {@link DecodeStage}.
+     * With a team key, on the event loop: the datagram is decoded here, as without a key; its
+     * tag and counter are checked on the {@link DecodeStage} (the returned work), in arrival
+     * order with the reliable stream's segments, which share the robot's counter and are checked
+     * there too. So the HMAC runs beside the next read and decode; while the stage is the slower
+     * thread ({@link DecodeStage#behind}) the event loop computes the HMAC itself (it needs no
+     * order) and the stage only settles the counter. A forgery may thus be decoded
+     * before it is refused, but what it says is never published: its envelope carries no message,
+     * its robot's address is not learned, and it is counted and shown with its source.
      */
     private Supplier<Envelope> checked(ReceivedDatagram d) {
         if (d.datagramClass() == DatagramClass.GAMECONTROLLER) {
@@ -114,23 +119,32 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
             return () -> bad;
         }
         FrameResult.Frame f = (FrameResult.Frame) frame;
-        int robotId = MessageCodec.robotIdOf(f.payload());
+        MessageResult result = messages.decode(f.payload());
+        int robotId = result instanceof MessageResult.Decoded decoded
+                ? decoded.message().getRobotID() : MessageCodec.robotIdOf(f.payload());
         if (robotId == MessageCodec.NO_ROBOT_ID) {
-            // the full decode says why (no robotID, not protobuf); nothing to check a tag against
-            return () -> messages.decode(f.payload()) instanceof MessageResult.Malformed m
-                    ? malformed(d, m.reason()) : malformed(d, "protobuf: message without a readable robotID");
+            // nothing to check a tag against: the decoder says why (no robotID, not protobuf)
+            Envelope bad = malformed(d, ((MessageResult.Malformed) result).reason());
+            return () -> bad;
         }
-        InboundVerifier.Result auth = verifier.check(robotId, bytes);
+        // the HMAC needs no order: the event loop takes it on while the stage is the slower thread
+        MessageTag.Check tag = stage.behind() ? verifier.precheck(robotId, bytes) : null;
+        return () -> verdict(d, robotId, f, result, tag);
+    }
+
+    /**
+     * On the stage, in arrival order: the tag and the counter decide whether the decoded message
+     * is published; a forged one is replaced by its forged envelope (no message), counted.
+     */
+    private Envelope verdict(ReceivedDatagram d, int robotId, FrameResult.Frame f, MessageResult result,
+                             MessageTag.Check tag) {
+        InboundVerifier.Result auth = verifier.check(robotId, d.bytes(), tag);
         if (auth.authenticity() == Authenticity.FORGED) {
-            Envelope forged = forged(d, robotId, auth);
-            return () -> forged;
+            return forged(d, robotId, auth);
         }
         accepted(d, robotId, f, auth);
-        return () -> {
-            MessageResult result = messages.decode(f.payload());
-            return result instanceof MessageResult.Decoded decoded
-                    ? envelope(d, robotId, decoded, auth) : malformed(d, ((MessageResult.Malformed) result).reason());
-        };
+        return result instanceof MessageResult.Decoded decoded
+                ? envelope(d, robotId, decoded, auth) : malformed(d, ((MessageResult.Malformed) result).reason());
     }
 
     private Envelope gameController(ReceivedDatagram d) {

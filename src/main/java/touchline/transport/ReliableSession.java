@@ -10,7 +10,9 @@ import java.util.function.Consumer;
 
 /**
  * A reliable stream to one peer as callers see it: offer payloads (queued, sent one at a
- * time), read what arrived in order. The stream itself runs on the UDP event loop.
+ * time), read what arrived in order. The stream itself runs on the UDP event loop; with a team
+ * key the segments that arrive are fed to it from the publishing thread (after their tag check,
+ * in order with the robots' datagrams), so its methods are synchronized.
  */
 public final class ReliableSession {
 

@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 
 /**
  * The reliable stream in the UDP pipeline: takes the segments of peers the console opened a
@@ -41,15 +42,20 @@ public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
             }
 
             @Override
-            public byte[] open(InetSocketAddress peer, byte[] datagram) {
-                return datagram;
+            public void open(InetSocketAddress peer, byte[] datagram, Consumer<byte[]> then) {
+                then.accept(datagram);
             }
         };
 
         byte[] seal(InetSocketAddress peer, byte[] segment);
 
-        /** The segment without its trailer, or null when it is forged (dropped). */
-        byte[] open(InetSocketAddress peer, byte[] datagram);
+        /**
+         * Event loop: checks a segment and hands {@code then} the segment without its trailer, or
+         * null when it is forged (dropped, counted). {@code then} may run later on another thread
+         * (with a team key: the transport's publishing thread, where every robot datagram's counter
+         * is checked in arrival order), never out of order with the other datagrams.
+         */
+        void open(InetSocketAddress peer, byte[] datagram, Consumer<byte[]> then);
     }
 
     public void useAuth(SegmentAuth auth) {
@@ -103,25 +109,35 @@ public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
         if (msg instanceof ReceivedDatagram d && d.datagramClass() == DatagramClass.RELIABLE_STREAM) {
             ReliableSession s = sessions.get(d.sender());
             if (s != null) {
-                byte[] segment = auth.open(d.sender(), d.bytes());
-                if (segment == null) {
-                    sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
-                            Envelope.NO_ROBOT, "forged", null, d.bytes(), "forged reliable-stream segment: dropped"));
-                    return;
-                }
-                sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
-                        Envelope.NO_ROBOT, segment.length == 2 ? "reliable.ack" : "reliable.data", null, d.bytes(), null));
-                s.input(segment, d.timeMicros() / 1000);
+                auth.open(d.sender(), d.bytes(), segment -> received(d, s, segment));
                 return;
             }
         }
         ctx.fireChannelRead(msg);
     }
 
+    /** A checked segment (null: forged) is published and, unless forged, fed to its session's stream. */
+    private void received(ReceivedDatagram d, ReliableSession s, byte[] segment) {
+        if (segment == null) {
+            sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
+                    Envelope.NO_ROBOT, "forged", null, d.bytes(), "forged reliable-stream segment: dropped"));
+            return;
+        }
+        sink.accept(new Envelope(d.timeMicros(), Direction.IN, Channel.RELIABLE_STREAM, d.sender(),
+                Envelope.NO_ROBOT, segment.length == 2 ? "reliable.ack" : "reliable.data", null, d.bytes(), null));
+        s.input(segment, d.timeMicros() / 1000);
+    }
+
     private void write(InetSocketAddress peer, byte[] datagram) {
         ChannelHandlerContext c = ctx;
         if (c == null || gate.holdReason().isPresent()) {
             return; // held: the stop-and-wait machine retransmits once the gate opens
+        }
+        if (!c.executor().inEventLoop()) {
+            // an ack to a segment checked on the publishing thread: tagged and written on the
+            // event loop like everything else sent, so the counters leave in the order they are taken
+            c.executor().execute(() -> write(peer, datagram));
+            return;
         }
         byte[] wire = auth.seal(peer, datagram);
         c.writeAndFlush(new DatagramPacket(Unpooled.wrappedBuffer(wire), peer));

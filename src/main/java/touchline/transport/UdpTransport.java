@@ -76,8 +76,8 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     public UdpTransport start() throws InterruptedException {
         // epoll + recvmmsg on Linux, NIO as the portable fallback (UdpBackend says which and why)
         backend = UdpBackend.onThisMachine(config.transport());
-        // the model's work runs beside the event loop (DecodeStage); with a team key the decode too,
-        // the event loop checking the tags
+        // the model's work runs beside the event loop (DecodeStage); with a team key the tag and
+        // counter checks too, in arrival order, the event loop decoding as without one
         stage = new DecodeStage(sink);
         boolean epoll = backend.epoll();
         boolean mmsg = backend.recvmmsg();
@@ -241,7 +241,8 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     /**
      * The reliable stream's segments under the same key: tagged for the robot last seen at the
      * peer's address on the way out, checked (and the trailer taken off) on the way in; null =
-     * forged, dropped and counted.
+     * forged, dropped and counted. With a key the check runs on the publishing thread
+     * ({@link DecodeStage}), in arrival order with the robots' datagrams whose counter it shares.
      */
     public ReliableStreamHandler.SegmentAuth segmentAuth() {
         return new ReliableStreamHandler.SegmentAuth() {
@@ -251,15 +252,25 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
             }
 
             @Override
-            public byte[] open(InetSocketAddress peer, byte[] datagram) {
-                InboundVerifier.Result r = verifier.check(peers.robotAt(peer).orElse(0xFF), datagram);
-                if (r.authenticity() == Authenticity.FORGED) {
-                    counters.countForged();
-                    return null;
+            public void open(InetSocketAddress peer, byte[] datagram, java.util.function.Consumer<byte[]> then) {
+                DecodeStage s = stage;
+                if (s == null || !verifier.hasKey()) {
+                    then.accept(opened(peer, datagram)); // no counter to keep in order: at once
+                } else {
+                    s.addTask(() -> then.accept(opened(peer, datagram)));
                 }
-                return r.payloadLength() == datagram.length ? datagram : java.util.Arrays.copyOf(datagram, r.payloadLength());
             }
         };
+    }
+
+    /** A segment's check: without its trailer, or null when forged (counted). */
+    private byte[] opened(InetSocketAddress peer, byte[] datagram) {
+        InboundVerifier.Result r = verifier.check(peers.robotAt(peer).orElse(0xFF), datagram);
+        if (r.authenticity() == Authenticity.FORGED) {
+            counters.countForged();
+            return null;
+        }
+        return r.payloadLength() == datagram.length ? datagram : java.util.Arrays.copyOf(datagram, r.payloadLength());
     }
 
     private String kindOf(Fumanoid.Message message) {

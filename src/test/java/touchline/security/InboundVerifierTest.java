@@ -35,6 +35,39 @@ class InboundVerifierTest {
         assertEquals(Authenticity.FORGED, v.check(3, Arrays.copyOf(bad, bad.length - 3)).authenticity());
     }
 
+    /**
+     * The HMAC checked ahead on another thread (the event loop, while the publishing thread is
+     * behind) and the counter settled later, in order: the same verdicts as one check, and a tag
+     * found right does not let a replayed counter through.
+     */
+    @Test
+    void aTagCheckedAheadGivesTheSameVerdictAndTheCounterIsStillSettledInOrder() {
+        InboundVerifier v = new InboundVerifier(key);
+        byte[] first = fromRobot(3, 0x0000_0007_0000_0001L);
+        byte[] second = fromRobot(3, 0x0000_0007_0000_0002L);
+        MessageTag.Check firstTag = v.precheck(3, first);
+        MessageTag.Check secondTag = v.precheck(3, second);
+        MessageTag.Check replayTag = v.precheck(3, first);
+        assertEquals(MessageTag.Check.OK, firstTag);
+        assertEquals(Authenticity.VERIFIED, v.check(3, first, firstTag).authenticity());
+        assertEquals(Authenticity.VERIFIED, v.check(3, second, secondTag).authenticity());
+        InboundVerifier.Result replay = v.check(3, first, replayTag);
+        assertEquals(Authenticity.FORGED, replay.authenticity(), "a right tag, an old counter");
+        assertTrue(replay.reason().contains("replayed"), replay.reason());
+
+        byte[] bad = fromRobot(3, 0x0000_0007_0000_0003L);
+        bad[bad.length - 1] ^= 1;
+        MessageTag.Check badTag = v.precheck(3, bad);
+        assertEquals(MessageTag.Check.BAD_TAG, badTag);
+        assertEquals("forged: bad tag", v.check(3, bad, badTag).reason());
+        assertEquals(Authenticity.VERIFIED, v.check(3, fromRobot(3, 0x0000_0007_0000_0003L)).authenticity(),
+                "the forgery's counter was not taken");
+        assertEquals(MessageTag.Check.NO_TAG, v.precheck(3, STATUS));
+        assertEquals(Authenticity.FORGED, v.check(3, STATUS, MessageTag.Check.NO_TAG).authenticity(),
+                "robot 3 tags: untagged data in its name is forged");
+        assertNull(new InboundVerifier(null).precheck(3, first), "nothing to check without a key");
+    }
+
     @Test
     void untaggedDataIsUnverifiedUntilTheRobotHasTagged() {
         InboundVerifier v = new InboundVerifier(key);

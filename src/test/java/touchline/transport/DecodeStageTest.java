@@ -74,6 +74,37 @@ class DecodeStageTest {
         assertEquals(List.of("touchline-decode"), threads.stream().distinct().toList(), "published on the stage's thread");
     }
 
+    /** The event loop takes on the HMACs while a whole batch still waits for this thread at a hand-over. */
+    @Test
+    void behindWhileAWholeBatchWaitsAndNotOnceEverythingIsPublished() throws Exception {
+        java.util.concurrent.CountDownLatch entered = new java.util.concurrent.CountDownLatch(1);
+        java.util.concurrent.CountDownLatch hold = new java.util.concurrent.CountDownLatch(1);
+        DecodeStage stage = new DecodeStage(e -> {
+            entered.countDown();
+            try {
+                hold.await(); // the model is slow: the first envelope is held until the test lets it go
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        stage.add(numbered(1));
+        stage.flush();
+        assertFalse(stage.behind(), "nothing waited");
+        assertTrue(entered.await(30, java.util.concurrent.TimeUnit.SECONDS));
+        stage.add(numbered(2));
+        stage.flush();
+        assertFalse(stage.behind(), "the first batch was taken: busy, but nothing waited");
+        stage.add(numbered(3));
+        stage.flush();
+        assertTrue(stage.behind(), "the second batch still waited");
+        hold.countDown();
+        stage.awaitPublished();
+        stage.add(numbered(4));
+        stage.flush();
+        assertFalse(stage.behind(), "caught up");
+        stage.close();
+    }
+
     @Test
     void awaitPublishedReturnsOnlyOnceEverythingHandedOverBeforeIsPublished() throws Exception {
         List<Long> seen = Collections.synchronizedList(new ArrayList<>());

@@ -17,7 +17,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class ReliableSessionTest {
 
-    private static byte[] segment(int seq, String text) {
+    /** A data segment: sequence {@code seq}, acknowledging nothing yet (modulus 21). */
+    static byte[] segment(int seq, String text) {
         byte[] payload = text.getBytes(StandardCharsets.US_ASCII);
         byte[] s = new byte[payload.length + 2];
         s[0] = (byte) seq;

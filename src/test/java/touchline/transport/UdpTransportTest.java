@@ -19,6 +19,7 @@ import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.HexFormat;
 import java.util.Optional;
@@ -54,12 +55,43 @@ class UdpTransportTest {
     private final MessageTag robotSide = new MessageTag(key);
     private final AtomicLong clock = new AtomicLong(1_000_000L);
 
+    /** While set, the model holds the publishing thread until it is counted down (a slow model). */
+    private volatile java.util.concurrent.CountDownLatch slowModel;
+
+    private void publish(Envelope e) {
+        java.util.concurrent.CountDownLatch hold = slowModel;
+        if (hold != null) {
+            try {
+                hold.await();
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        received.add(e);
+    }
+
     /** The same transport, restarted with a team key whose counter follows a fake clock. */
     private void useTeamKey() throws Exception {
         transport.close();
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
                 LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock()).start();
+                new MessageCodec(new MessageKinds()), this::publish, new touchline.app.SystemClock()).start();
+    }
+
+    /**
+     * With a team key and a reliable stream in the pipeline, its segments checked under the key: the
+     * event loop decodes each robot datagram and the publishing thread checks tags and counters in
+     * arrival order, the segments' among them (issue 15).
+     */
+    private ReliableStreamHandler useTeamKeyAndReliableStream() throws Exception {
+        transport.close();
+        ReliableStreamHandler reliable = new ReliableStreamHandler(received::add, new touchline.app.SystemClock());
+        transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
+                LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
+                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock(), reliable);
+        reliable.useAuth(transport.segmentAuth());
+        transport.start();
+        return reliable;
     }
 
     private void send(byte[] bytes) throws Exception {
@@ -70,6 +102,19 @@ class UdpTransportTest {
         Envelope e = received.poll(touchline.testing.Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS);
         assertNotNull(e, "no envelope within " + touchline.testing.Await.FLOOR_MILLIS + " ms");
         return e;
+    }
+
+    /** The next envelope that came in (the console's acks to the segments go out between). */
+    private Envelope nextIn() throws InterruptedException {
+        Envelope e = next();
+        while (e.direction() == Direction.OUT) {
+            e = next();
+        }
+        return e;
+    }
+
+    private byte[] tagged(int robotId, long counter, byte[] payload) {
+        return robotSide.append(MessageTag.FROM_ROBOT, robotId, counter, payload);
     }
 
     private byte[] status(int id, Framing framing) {
@@ -253,6 +298,45 @@ class UdpTransportTest {
         assertEquals(n / 25, transport.counters().malformedIn());
     }
 
+    /**
+     * The model holds the publishing thread while a burst is read, so batches wait for it and the
+     * event loop computes their HMACs itself (the stage settling only the counters): the same
+     * verdicts, in the same order, forgeries and replays refused.
+     */
+    @Test
+    void withATeamKeyABurstReadWhileTheModelIsSlowKeepsEveryVerdictAndItsOrder() throws Exception {
+        useTeamKey();
+        java.util.concurrent.CountDownLatch hold = new java.util.concurrent.CountDownLatch(1);
+        slowModel = hold;
+        int n = 400; // a dozen socket reads or more: most handed over while the stage is held
+        long counter = 0;
+        for (int i = 0; i < n; i++) {
+            if (i % 20 == 5) {
+                send(tagged(2, counter, status(2, Framing.LEGACY))); // the last counter again: a replay
+            } else if (i % 20 == 11) {
+                byte[] bad = tagged(2, ++counter, status(2, Framing.LEGACY));
+                bad[bad.length - 1] ^= 1;
+                send(bad);
+            } else {
+                send(tagged(2, ++counter, status(2, Framing.LEGACY)));
+            }
+        }
+        touchline.testing.Await.until("every datagram read", touchline.testing.Await.FLOOR_MILLIS,
+                () -> transport.counters().datagramsIn() == n);
+        slowModel = null;
+        hold.countDown();
+        for (int i = 0; i < n; i++) {
+            Envelope e = next();
+            boolean refused = i % 20 == 5 || i % 20 == 11;
+            assertEquals(refused ? Authenticity.FORGED : Authenticity.VERIFIED, e.authenticity(), i + ": " + e);
+            if (refused) {
+                assertNull(e.message(), i + ": a forgery's message is not published");
+                assertTrue(e.error().contains(i % 20 == 5 ? "replayed" : "bad tag"), i + ": " + e.error());
+            }
+        }
+        assertEquals(2L * n / 20, transport.counters().forgedIn());
+    }
+
     @Test
     void withATeamKeyAMessageWithoutRobotIdIsMalformedWithTheDecodersReason() throws Exception {
         useTeamKey();
@@ -307,5 +391,79 @@ class UdpTransportTest {
         assertNotEquals(Thread.currentThread().getName(), transportThread);
         DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
         robot.receive(p); // and written
+    }
+
+    @Test
+    void withATeamKeyAForgedDatagramIsDecodedButNeverPublishedNorLearnedAndItsCounterIsNotTaken() throws Exception {
+        useTeamKey();
+        InetSocketAddress source = (InetSocketAddress) robot.getLocalSocketAddress();
+        transport.setReading(false);
+        // a well-formed status claiming robot 3 under another team's key, then one with a bad tag and a
+        // high counter: both decode, neither may be published, teach the robot's address or take its counter
+        send(new MessageTag(new TeamKey(new byte[]{
+                1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29,
+                30, 31, 32})).append(MessageTag.FROM_ROBOT, 3, 50, status(3, Framing.LEGACY)));
+        byte[] badTag = tagged(3, 100, status(3, Framing.LEGACY));
+        badTag[badTag.length - 1] ^= 1;
+        send(badTag);
+        send(tagged(3, 7, status(3, Framing.LEGACY))); // the robot's own: below the forger's counter, still taken
+        transport.setReading(true);
+
+        for (String why : new String[]{"another team key", "bad tag"}) {
+            Envelope forged = nextIn();
+            assertEquals(Authenticity.FORGED, forged.authenticity(), forged.toString());
+            assertEquals("forged", forged.kind());
+            assertNull(forged.message(), "the forgery's decoded message is not published");
+            assertEquals(source, forged.peer(), "shown with its source");
+            assertEquals(3, forged.robotId(), "with the robot it claims");
+            assertTrue(forged.error().contains(why), forged.error());
+        }
+        Envelope genuine = nextIn();
+        assertEquals(Authenticity.VERIFIED, genuine.authenticity(), genuine.toString());
+        assertEquals("status", genuine.kind());
+        assertEquals(2, transport.counters().forgedIn());
+        assertEquals(source, transport.peers().peer(3).orElseThrow().address(),
+                "the address learned from the genuine datagram only");
+    }
+
+    @Test
+    void withATeamKeyAForgedDatagramAloneTeachesNoAddress() throws Exception {
+        useTeamKey();
+        byte[] badTag = tagged(4, 1, status(4, Framing.LEGACY));
+        badTag[badTag.length - 1] ^= 1;
+        send(badTag);
+        assertEquals(Authenticity.FORGED, nextIn().authenticity());
+        assertTrue(transport.peers().peer(4).isEmpty(), "no way back to a robot only a forger spoke for");
+        assertEquals(1, transport.counters().forgedIn());
+    }
+
+    @Test
+    void withATeamKeySegmentsAndDatagramsWithTheRobotsNextCountersAreAcceptedInArrivalOrderAndAReplayIsRefused()
+            throws Exception {
+        ReliableStreamHandler reliable = useTeamKeyAndReliableStream();
+        InetSocketAddress source = (InetSocketAddress) robot.getLocalSocketAddress();
+        ReliableSession session = reliable.open(source);
+        transport.setReading(false);
+        send(tagged(3, 1, status(3, Framing.LEGACY))); // teaches robot 3's address: the segments' robot
+        send(tagged(3, 2, ReliableSessionTest.segment(0, "first ")));
+        send(tagged(3, 3, status(3, Framing.LEGACY)));
+        send(tagged(3, 4, ReliableSessionTest.segment(1, "second")));
+        send(tagged(3, 4, ReliableSessionTest.segment(1, "second"))); // the same segment again: counter replayed
+        send(tagged(3, 3, status(3, Framing.LEGACY))); // a datagram replayed behind the segment
+        send(tagged(3, 5, status(3, Framing.LEGACY)));
+        transport.setReading(true);
+
+        String[] expected = {"status", "reliable.data", "status", "reliable.data", "forged", "forged", "status"};
+        for (int i = 0; i < expected.length; i++) {
+            Envelope e = nextIn();
+            assertEquals(expected[i], e.kind(), "datagram " + i + " in its place: " + e);
+            if (!"forged".equals(expected[i]) && e.channel() == Channel.FUMANOID) {
+                assertEquals(Authenticity.VERIFIED, e.authenticity(), e.toString());
+            }
+        }
+        assertEquals(2, transport.counters().forgedIn(), "the replayed segment and the replayed datagram");
+        assertEquals("first ", new String(session.inbox().poll(30, TimeUnit.SECONDS), StandardCharsets.US_ASCII));
+        assertEquals("second", new String(session.inbox().poll(30, TimeUnit.SECONDS), StandardCharsets.US_ASCII));
+        assertNull(session.inbox().poll(), "the replayed segment was not delivered again");
     }
 }
