@@ -419,6 +419,19 @@ public final class Console implements AutoCloseable {
         return new MatchModeJson(matchMode);
     }
 
+    /**
+     * The console's state the live server serves as JSON channels, each made by the face's
+     * {@code maker} ({@code touchline.serve.JsonChannel::new}): match mode
+     * ({@code /touchline/matchMode}) and the team-message budget ({@code /team/budget}). A new
+     * state channel is added here, and every face serving the console serves it.
+     */
+    public <T> List<T> servedStateChannels(StateChannelMaker<T> maker) {
+        MatchModeJson mode = matchModeJson();
+        TeamBudgetJson budget = teamBudgetJson();
+        return List.of(maker.channel(MatchModeJson.TOPIC, MatchModeJson.SCHEMA_NAME, MatchModeJson.SCHEMA, mode::now),
+                maker.channel(TeamBudgetJson.TOPIC, TeamBudgetJson.SCHEMA_NAME, TeamBudgetJson.SCHEMA, budget::now));
+    }
+
     /** The version, runtime and portable fallbacks in use (the window's Help → About and status bar). */
     public RuntimeReport runtime() {
         return RuntimeReport.ofThisProcess(udp.backend());
