@@ -101,6 +101,7 @@ public final class Console implements AutoCloseable {
     private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final List<NaoCamera> naoCameras = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final NaoCameraFeed naoCamera;
+    private final RobotWaits robotWaits;
 
     public Console(ConsoleConfig config) {
         this(config, new SystemClock());
@@ -129,6 +130,7 @@ public final class Console implements AutoCloseable {
         };
         this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         this.naoCamera = new NaoCameraFeed(clock, replayClock, () -> replay != null);
+        this.robotWaits = new RobotWaits(clock);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
         this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
@@ -146,6 +148,7 @@ public final class Console implements AutoCloseable {
             bus.subscribe(stores);
             bus.subscribe(naoCamera);
             robots.addPresenceListener(options);
+            robots.addPresenceListener(robotWaits);
         }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "touchline-tick");
@@ -245,6 +248,7 @@ public final class Console implements AutoCloseable {
             robots.tick();
             options.tick();
             matchMode.refresh(); // a claim of play expires with time: held requests go out then
+            robotWaits.tick();
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }
@@ -381,16 +385,8 @@ public final class Console implements AutoCloseable {
      * {@code timeout}, by the console's clock); empty if it was not.
      */
     public Optional<RobotSnapshot> waitForRobot(int robotId, java.time.Duration timeout) throws InterruptedException {
-        long deadline = clock.nowMicros() + timeout.toNanos() / 1000;
-        Optional<RobotSnapshot> seen = robots.robot(robotId).filter(r -> r.address() != null);
-        while (seen.isEmpty() && clock.nowMicros() < deadline) {
-            Thread.sleep(ROBOT_POLL_MILLIS);
-            seen = robots.robot(robotId).filter(r -> r.address() != null);
-        }
-        return seen;
+        return robotWaits.await(() -> robots.robot(robotId).filter(r -> r.address() != null), timeout.toNanos() / 1000);
     }
-
-    private static final long ROBOT_POLL_MILLIS = 20;
 
     /**
      * Adds the team's own message types (from a descriptor set, {@code record.SchemaSet}) to
