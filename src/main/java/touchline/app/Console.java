@@ -101,6 +101,7 @@ public final class Console implements AutoCloseable {
     private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final List<NaoCamera> naoCameras = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final NaoCameraFeed naoCamera;
+    private final NaoCallFeed naoCalls;
     private final RobotWaits robotWaits;
 
     public Console(ConsoleConfig config) {
@@ -130,6 +131,7 @@ public final class Console implements AutoCloseable {
         };
         this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         this.naoCamera = new NaoCameraFeed(clock, replayClock, () -> replay != null);
+        this.naoCalls = new NaoCallFeed(() -> replay != null);
         this.robotWaits = new RobotWaits(clock);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
@@ -147,6 +149,7 @@ public final class Console implements AutoCloseable {
             bus.subscribe(options);
             bus.subscribe(stores);
             bus.subscribe(naoCamera);
+            bus.subscribe(naoCalls);
             robots.addPresenceListener(options);
             robots.addPresenceListener(robotWaits);
         }
@@ -484,6 +487,11 @@ public final class Console implements AutoCloseable {
         return naoCamera;
     }
 
+    /** The NAO calls' newest outcome in words as this console's stream carries them (here, a remote Touchline's, replayed). */
+    public NaoCallFeed naoCalls() {
+        return naoCalls;
+    }
+
     /** The NAOs connected through this console, oldest first. */
     public List<NaoSession> naoSessions() {
         return List.copyOf(naos);
@@ -574,9 +582,11 @@ public final class Console implements AutoCloseable {
         long start = session.startMicros();
         stores.restartReplay(start);
         naoCamera.restartReplay();
+        naoCalls.restartReplay();
         replay = new Replay(session, bus, realClock, () -> {
             stores.restartReplay(start);
             naoCamera.restartReplay();
+            naoCalls.restartReplay();
             robots.forgetReplayed();
         });
         return replay;
@@ -595,6 +605,7 @@ public final class Console implements AutoCloseable {
             options.forgetReplayed();
             stores.restartReplay(clock.nowMicros());
             naoCamera.restartReplay();
+            naoCalls.restartReplay();
         }
     }
 

@@ -89,6 +89,28 @@ class NaoViewModelTest {
     }
 
     @Test
+    void onAViewerTheRemoteConsolesNaoCallsAndTheirOutcomesAreTheResultLine() throws Exception {
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            console.viewRemote(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
+            assertEquals("", nao.result());
+            touchline.proto.Nao.HAWActorRPCResponse volume = touchline.proto.Nao.HAWActorRPCResponse.newBuilder()
+                    .setReturnval(new touchline.protocol.nao.MixedValueCodec().encode(80L)).build();
+            console.bus().accept(new touchline.transport.Envelope(1, touchline.transport.Direction.IN,
+                    touchline.transport.Channel.NAO_RPC, touchline.testing.NaoCameraEnvelopes.CAMERA,
+                    touchline.transport.Envelope.NO_ROBOT, "ALTextToSpeech.getVolume", volume, volume.toByteArray(),
+                    null, Origin.REMOTE));
+            assertEquals("ALTextToSpeech.getVolume: 80", nao.result());
+            nao.stand();
+            assertEquals(Console.COMMANDS_OFF, nao.result(), "the view's own refusal is newer");
+            console.bus().accept(new touchline.transport.Envelope(2, touchline.transport.Direction.IN,
+                    touchline.transport.Channel.NAO_RPC, touchline.testing.NaoCameraEnvelopes.CAMERA,
+                    touchline.transport.Envelope.NO_ROBOT, "ALMotion.wakeUp",
+                    touchline.proto.Nao.HAWActorRPCResponse.getDefaultInstance(), new byte[0], null, Origin.REMOTE));
+            assertEquals("ALMotion.wakeUp: done", nao.result(), "a newer remote outcome");
+        }
+    }
+
+    @Test
     void aReplayedNaoCameraIsShownWhileTheReplayIsOpen(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("nao.mcap");
         byte[] last = touchline.testing.NaoCameraEnvelopes.jpeg(320, 240);

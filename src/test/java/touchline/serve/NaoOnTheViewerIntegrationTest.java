@@ -196,4 +196,56 @@ class NaoOnTheViewerIntegrationTest {
             assertEquals(Console.COMMANDS_OFF, viewing.result());
         }
     }
+
+    /**
+     * The NAO view's result line on the viewing Touchline says the first one's NAO calls and
+     * their outcomes (a value, the robot's error), taken from the call and reply envelopes the
+     * viewer gets, as the first console's own line says them.
+     */
+    @Test
+    void theViewersNaoViewSaysTheFirstConsolesCallsAndTheirOutcomes() throws Exception {
+        Requirement.robotSide("touchline-nao-sim");
+        try (ServedField field = new ServedField();
+             RobotProcess sim = sim();
+             touchline.app.NaoViewModel first = new touchline.app.NaoViewModel(field.console());
+             Console second = viewer();
+             touchline.app.NaoViewModel viewing = new touchline.app.NaoViewModel(second)) {
+            int[] ports = simPorts(sim);
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), "0", "", true), first.result());
+            Await.until("the NAO online", Await.FLOOR_MILLIS, () -> first.state().startsWith("online"));
+
+            String volume = outcomeOnTheViewer(first, viewing, "getVolume");
+            assertFalse(volume.contains("error"), volume);
+            assertEquals(first.result(), volume, "the viewer says what the first console says");
+
+            String refused = outcomeOnTheViewer(first, viewing, "noSuchMethod");
+            assertTrue(refused.startsWith("ALTextToSpeech.noSuchMethod: error: "), refused);
+            assertEquals(first.result(), refused);
+        }
+    }
+
+    /**
+     * Calls {@code ALTextToSpeech.method} on the first console until the viewer's NAO view says
+     * its outcome: a call's channels are made by its first envelopes, so the viewer subscribes
+     * only after them. Returns the viewer's line once the first console's says the same.
+     */
+    private static String outcomeOnTheViewer(touchline.app.NaoViewModel first, touchline.app.NaoViewModel viewing,
+                                             String method) throws InterruptedException {
+        String call = "ALTextToSpeech." + method + ": ";
+        int[] polls = {0};
+        Await.until(call + "outcome on the viewer", Await.FLOOR_MILLIS, () -> {
+            String line = viewing.result();
+            if (line.startsWith(call) && !line.endsWith(touchline.app.NaoCallFeed.NO_REPLY_YET)) {
+                return true;
+            }
+            if (polls[0]++ % 20 == 0) { // a call every ~200 ms
+                first.call("ALTextToSpeech", method, "");
+            }
+            return false;
+        });
+        Await.until(call + "outcome on the first console", Await.FLOOR_MILLIS,
+                () -> first.result().equals(viewing.result()));
+        return viewing.result();
+    }
 }
