@@ -133,4 +133,27 @@ class NaoViewModelTest {
             assertTrue(nao.frame().isEmpty(), "the replay's frames went with it; no live NAO");
         }
     }
+
+    @Test
+    void aReplayedNaoCallIsTheResultLineWhileTheReplayIsOpen(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("calls.mcap");
+        touchline.proto.Nao.HAWActorRPCResponse error = touchline.proto.Nao.HAWActorRPCResponse.newBuilder()
+                .setError("ALMotion has no method fly").build();
+        try (Console recording = console()) {
+            recording.startRecording(file);
+            recording.bus().accept(new touchline.transport.Envelope(recording.clock().nowMicros(),
+                    touchline.transport.Direction.IN, touchline.transport.Channel.NAO_RPC,
+                    touchline.testing.NaoCameraEnvelopes.CAMERA, touchline.transport.Envelope.NO_ROBOT, "ALMotion.fly",
+                    error, error.toByteArray(), null, Origin.LIVE));
+            recording.stopRecording();
+        }
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            Replay replay = console.openReplay(file);
+            assertEquals("", nao.result(), "nothing played yet");
+            assertEquals(1, replay.runFor(100));
+            assertEquals("ALMotion.fly: error: ALMotion has no method fly", nao.result());
+            console.closeReplay();
+            assertEquals("", nao.result(), "the replay's calls went with it");
+        }
+    }
 }
