@@ -66,6 +66,46 @@ class NaoOnTheViewerIntegrationTest {
         return new Nao(sim, link, camera, camera.subscribe());
     }
 
+    /**
+     * A served console with the NAO view's model, the simulated NAO (not connected yet: its
+     * {@code ports}, RPC and camera), and a second Touchline viewing the first with its own NAO view.
+     */
+    private record NaoViews(ServedField field, RobotProcess sim, int[] ports, touchline.app.NaoViewModel first,
+                            Console second, touchline.app.NaoViewModel viewing) implements AutoCloseable {
+
+        static NaoViews open() throws Exception {
+            ServedField field = new ServedField();
+            RobotProcess sim = null;
+            Console second = null;
+            try {
+                sim = NaoOnTheViewerIntegrationTest.sim();
+                int[] ports = simPorts(sim);
+                second = viewer();
+                second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+                return new NaoViews(field, sim, ports, new touchline.app.NaoViewModel(field.console()), second,
+                        new touchline.app.NaoViewModel(second));
+            } catch (Exception | AssertionError e) {
+                if (second != null) {
+                    second.close();
+                }
+                if (sim != null) {
+                    sim.close();
+                }
+                field.close();
+                throw e;
+            }
+        }
+
+        @Override
+        public void close() throws Exception {
+            viewing.close();
+            second.close();
+            first.close();
+            sim.close();
+            field.close();
+        }
+    }
+
     private static RobotProcess sim() throws Exception {
         return RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
@@ -161,14 +201,11 @@ class NaoOnTheViewerIntegrationTest {
     void theViewersNaoViewShowsTheFirstConsolesCameraFrames() throws Exception {
         Requirement.robotSide("touchline-nao-sim");
         List<Envelope> here = new CopyOnWriteArrayList<>();
-        try (ServedField field = new ServedField();
-             AutoCloseable heard = field.console().bus().subscribe(here::add);
-             RobotProcess sim = sim();
-             touchline.app.NaoViewModel first = new touchline.app.NaoViewModel(field.console());
-             Console second = viewer();
-             touchline.app.NaoViewModel viewing = new touchline.app.NaoViewModel(second)) {
-            int[] ports = simPorts(sim);
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+        try (NaoViews views = NaoViews.open(); AutoCloseable heard = views.field().console().bus().subscribe(here::add)) {
+            int[] ports = views.ports();
+            touchline.app.NaoViewModel first = views.first();
+            touchline.app.NaoViewModel viewing = views.viewing();
+            Console second = views.second();
             first.setResolution(1);
             first.showCamera(true);
             assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), Integer.toString(ports[1]), "", true),
@@ -205,13 +242,10 @@ class NaoOnTheViewerIntegrationTest {
     @Test
     void theViewersNaoViewSaysTheFirstConsolesCallsAndTheirOutcomes() throws Exception {
         Requirement.robotSide("touchline-nao-sim");
-        try (ServedField field = new ServedField();
-             RobotProcess sim = sim();
-             touchline.app.NaoViewModel first = new touchline.app.NaoViewModel(field.console());
-             Console second = viewer();
-             touchline.app.NaoViewModel viewing = new touchline.app.NaoViewModel(second)) {
-            int[] ports = simPorts(sim);
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+        try (NaoViews views = NaoViews.open()) {
+            int[] ports = views.ports();
+            touchline.app.NaoViewModel first = views.first();
+            touchline.app.NaoViewModel viewing = views.viewing();
             assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), "0", "", true), first.result());
             Await.until("the NAO online", Await.FLOOR_MILLIS, () -> first.state().startsWith("online"));
 
