@@ -122,10 +122,11 @@ class ConsoleUseCasesTest {
         AtomicLong micros = new AtomicLong(1_000_000_000L);
         CountDownLatch deadlineTaken = new CountDownLatch(1);
         MicrosClock clock = () -> {
+            long now = micros.get();
             if (Thread.currentThread().getName().equals("robot-waiter")) {
-                deadlineTaken.countDown(); // the waiter's first reading sets its deadline
+                deadlineTaken.countDown(); // the waiter's first reading (taken) sets its deadline
             }
-            return micros.get();
+            return now;
         };
         ExecutorService waiter = Executors.newSingleThreadExecutor(r -> new Thread(r, "robot-waiter"));
         try (Console console = new Console(loopback(), clock).start()) {
