@@ -159,13 +159,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     /** The server the window's Serve to viewers starts (ui.ServeToggle): the stream, match mode and the budget. */
     private static touchline.serve.Serving serving(Console console) throws InterruptedException {
         return new touchline.serve.Serving(touchline.serve.ServeConfig.defaults().withPort(0), console.kinds(),
-                console.clock(), console.bus(),
-                new touchline.serve.JsonChannel(touchline.app.game.MatchModeJson.TOPIC,
-                        touchline.app.game.MatchModeJson.SCHEMA_NAME, touchline.app.game.MatchModeJson.SCHEMA,
-                        console.matchModeJson()::now),
-                new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
-                        touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA,
-                        console.teamBudgetJson()::now));
+                console.clock(), console.bus(), console.servedStateChannels(touchline.serve.JsonChannel::new));
     }
 
     private List<Phase> servedPhases(Console console, ConsoleWindow window) throws Exception {

@@ -101,6 +101,8 @@ public final class Console implements AutoCloseable {
     private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final List<NaoCamera> naoCameras = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final NaoCameraFeed naoCamera;
+    private final NaoCallFeed naoCalls;
+    private final RobotWaits robotWaits;
 
     public Console(ConsoleConfig config) {
         this(config, new SystemClock());
@@ -129,6 +131,8 @@ public final class Console implements AutoCloseable {
         };
         this.robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         this.naoCamera = new NaoCameraFeed(clock, replayClock, () -> replay != null);
+        this.naoCalls = new NaoCallFeed(() -> replay != null);
+        this.robotWaits = new RobotWaits(clock);
         this.traffic = new TrafficMeter(modelClock);
         this.reliable = new ReliableStreamHandler(live, clock);
         this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
@@ -145,7 +149,9 @@ public final class Console implements AutoCloseable {
             bus.subscribe(options);
             bus.subscribe(stores);
             bus.subscribe(naoCamera);
+            bus.subscribe(naoCalls);
             robots.addPresenceListener(options);
+            robots.addPresenceListener(robotWaits);
         }
         this.ticker = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "touchline-tick");
@@ -245,6 +251,7 @@ public final class Console implements AutoCloseable {
             robots.tick();
             options.tick();
             matchMode.refresh(); // a claim of play expires with time: held requests go out then
+            robotWaits.tick();
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }
@@ -381,16 +388,8 @@ public final class Console implements AutoCloseable {
      * {@code timeout}, by the console's clock); empty if it was not.
      */
     public Optional<RobotSnapshot> waitForRobot(int robotId, java.time.Duration timeout) throws InterruptedException {
-        long deadline = clock.nowMicros() + timeout.toNanos() / 1000;
-        Optional<RobotSnapshot> seen = robots.robot(robotId).filter(r -> r.address() != null);
-        while (seen.isEmpty() && clock.nowMicros() < deadline) {
-            Thread.sleep(ROBOT_POLL_MILLIS);
-            seen = robots.robot(robotId).filter(r -> r.address() != null);
-        }
-        return seen;
+        return robotWaits.await(() -> robots.robot(robotId).filter(r -> r.address() != null), timeout.toNanos() / 1000);
     }
-
-    private static final long ROBOT_POLL_MILLIS = 20;
 
     /**
      * Adds the team's own message types (from a descriptor set, {@code record.SchemaSet}) to
@@ -417,6 +416,19 @@ public final class Console implements AutoCloseable {
     /** Match mode as the JSON the live server serves ({@code /touchline/matchMode}). */
     public MatchModeJson matchModeJson() {
         return new MatchModeJson(matchMode);
+    }
+
+    /**
+     * The console's state the live server serves as JSON channels, each made by the face's
+     * {@code maker} ({@code touchline.serve.JsonChannel::new}): match mode
+     * ({@code /touchline/matchMode}) and the team-message budget ({@code /team/budget}). A new
+     * state channel is added here, and every face serving the console serves it.
+     */
+    public <T> List<T> servedStateChannels(StateChannelMaker<T> maker) {
+        MatchModeJson mode = matchModeJson();
+        TeamBudgetJson budget = teamBudgetJson();
+        return List.of(maker.channel(MatchModeJson.TOPIC, MatchModeJson.SCHEMA_NAME, MatchModeJson.SCHEMA, mode::now),
+                maker.channel(TeamBudgetJson.TOPIC, TeamBudgetJson.SCHEMA_NAME, TeamBudgetJson.SCHEMA, budget::now));
     }
 
     /** The version, runtime and portable fallbacks in use (the window's Help → About and status bar). */
@@ -474,6 +486,11 @@ public final class Console implements AutoCloseable {
      */
     public NaoCameraFeed naoCamera() {
         return naoCamera;
+    }
+
+    /** The NAO calls' newest outcome in words as this console's stream carries them (here, a remote Touchline's, replayed). */
+    public NaoCallFeed naoCalls() {
+        return naoCalls;
     }
 
     /** The NAOs connected through this console, oldest first. */
@@ -566,9 +583,11 @@ public final class Console implements AutoCloseable {
         long start = session.startMicros();
         stores.restartReplay(start);
         naoCamera.restartReplay();
+        naoCalls.restartReplay();
         replay = new Replay(session, bus, realClock, () -> {
             stores.restartReplay(start);
             naoCamera.restartReplay();
+            naoCalls.restartReplay();
             robots.forgetReplayed();
         });
         return replay;
@@ -587,6 +606,7 @@ public final class Console implements AutoCloseable {
             options.forgetReplayed();
             stores.restartReplay(clock.nowMicros());
             naoCamera.restartReplay();
+            naoCalls.restartReplay();
         }
     }
 

@@ -42,6 +42,8 @@ public final class NaoViewModel implements AutoCloseable {
     private final Set<Character> heldKeys = new HashSet<>(); // guarded by itself
     private volatile NaoSession session;
     private volatile String result = "";
+    /** The stream's call line's version when this view told its own {@link #result} last. */
+    private volatile long toldAt;
     private volatile List<String> methods = List.of();
     private final java.util.concurrent.atomic.AtomicLong methodsVersion = new java.util.concurrent.atomic.AtomicLong();
     private volatile boolean cameraWanted;
@@ -61,7 +63,7 @@ public final class NaoViewModel implements AutoCloseable {
      */
     public boolean connect(String host, String rpcPort, String camPort, String keyDir, boolean insecure) {
         if (console.remote().isPresent()) {
-            result = Console.COMMANDS_OFF;
+            tell(Console.COMMANDS_OFF);
             return false;
         }
         int rpc;
@@ -70,14 +72,14 @@ public final class NaoViewModel implements AutoCloseable {
             rpc = Integer.parseInt(rpcPort.strip());
             cam = Integer.parseInt(camPort.strip());
         } catch (NumberFormatException e) {
-            result = "bad port: " + e.getMessage();
+            tell("bad port: " + e.getMessage());
             return false;
         }
         NaoClientKeys keys;
         try {
             keys = insecure ? null : NaoClientKeys.load(new KeyDir(Path.of(keyDir.strip())));
         } catch (KeyException e) {
-            result = e.getMessage() + ". For an old robot side without keys: tick 'insecure'";
+            tell(e.getMessage() + ". For an old robot side without keys: tick 'insecure'");
             return false;
         }
         disconnect();
@@ -114,8 +116,19 @@ public final class NaoViewModel implements AutoCloseable {
 
     // ---------------------------------------------------------------- calls and moves
 
-    /** The newest outcome in words: a call's value or error, a move's, a parameter that did not parse. */
+    /**
+     * The newest outcome in words: a call's value or error, a move's, a parameter that did not
+     * parse. On a console viewing a remote Touchline, or replaying, the NAO calls in the stream
+     * count too ({@link NaoCallFeed}): the newer of theirs and this view's own is shown.
+     */
     public String result() {
+        NaoCallFeed calls = console.naoCalls();
+        if (console.remote().isPresent() || calls.showsReplay()) {
+            String line = calls.line();
+            if (calls.version() > toldAt && !line.isEmpty()) {
+                return line;
+            }
+        }
         return result;
     }
 
@@ -132,7 +145,7 @@ public final class NaoViewModel implements AutoCloseable {
     public void discover(String module) {
         NaoCall call = NaoCall.of(module, "getMethodList");
         session().ifPresent(s -> s.call(call).thenAccept(outcome -> {
-            result = call.qualifiedName() + ": " + outcome.describe();
+            tell(call.qualifiedName() + ": " + outcome.describe());
             if (outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
                 methods = names.stream().map(String::valueOf).sorted().toList();
                 methodsVersion.incrementAndGet();
@@ -146,25 +159,25 @@ public final class NaoViewModel implements AutoCloseable {
      */
     public void call(String module, String method, String params) {
         if (console.remote().isPresent()) {
-            result = Console.COMMANDS_OFF;
+            tell(Console.COMMANDS_OFF);
             return;
         }
         if (method == null) {
-            result = "choose a method (\"Methods\" lists them)";
+            tell("choose a method (\"Methods\" lists them)");
             return;
         }
         NaoCall call;
         try {
             call = new NaoCall(module, method, parse(params));
         } catch (IllegalArgumentException e) {
-            result = e.getMessage();
+            tell(e.getMessage());
             return;
         }
         Optional<NaoSession> s = session();
         if (s.isEmpty()) {
             return;
         }
-        s.get().call(call).thenAccept(outcome -> result = call.qualifiedName() + ": " + outcome.describe());
+        s.get().call(call).thenAccept(outcome -> tell(call.qualifiedName() + ": " + outcome.describe()));
     }
 
     public void stand() {
@@ -180,7 +193,7 @@ public final class NaoViewModel implements AutoCloseable {
     }
 
     public void say(String text) {
-        session().ifPresent(s -> s.say(text).thenAccept(o -> result = o.describe()));
+        session().ifPresent(s -> s.say(text).thenAccept(o -> tell(o.describe())));
     }
 
     /**
@@ -193,7 +206,7 @@ public final class NaoViewModel implements AutoCloseable {
         }
         Optional<String> no = refused();
         if (no.isPresent()) {
-            result = "walk: " + no.get();
+            tell("walk: " + no.get());
             return true;
         }
         NaoSession s = session;
@@ -207,7 +220,7 @@ public final class NaoViewModel implements AutoCloseable {
         }
         s.walk(input).thenAccept(o -> {
             if (!o.ok() && !(o instanceof CallOutcome.Superseded)) {
-                result = "walk: " + o.describe();
+                tell("walk: " + o.describe());
             }
         });
         return true;
@@ -263,12 +276,18 @@ public final class NaoViewModel implements AutoCloseable {
     /** The session to command, or empty after saying why there is none. */
     private Optional<NaoSession> session() {
         Optional<String> no = refused();
-        no.ifPresent(why -> result = why);
+        no.ifPresent(this::tell);
         return no.isPresent() ? Optional.empty() : Optional.ofNullable(session);
     }
 
     private void said(CompletableFuture<SequenceOutcome> moves) {
-        moves.thenAccept(o -> result = o.describe());
+        moves.thenAccept(o -> tell(o.describe()));
+    }
+
+    /** This view's own outcome becomes the newest. */
+    private void tell(String what) {
+        toldAt = console.naoCalls().version();
+        result = what;
     }
 
     @SuppressWarnings("unchecked")

@@ -1,6 +1,5 @@
 package touchline.cli;
 
-import touchline.app.game.MatchModeJson;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -133,10 +132,7 @@ final class ServeCommand implements Callable<Integer> {
             Serving serving;
             try {
                 serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
-                    new touchline.serve.JsonChannel(MatchModeJson.TOPIC, MatchModeJson.SCHEMA_NAME, MatchModeJson.SCHEMA,
-                            console.matchModeJson()::now),
-                    new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
-                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
+                        console.servedStateChannels(touchline.serve.JsonChannel::new));
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;

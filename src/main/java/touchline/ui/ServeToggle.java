@@ -1,6 +1,5 @@
 package touchline.ui;
 
-import touchline.app.game.MatchModeJson;
 import touchline.app.Console;
 import touchline.serve.AccessToken;
 import touchline.serve.FoxgloveServer;
@@ -64,10 +63,7 @@ public final class ServeToggle implements AutoCloseable {
         }
         try {
             serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
-                    new touchline.serve.JsonChannel(MatchModeJson.TOPIC, MatchModeJson.SCHEMA_NAME, MatchModeJson.SCHEMA,
-                            console.matchModeJson()::now),
-                    new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
-                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now));
+                    console.servedStateChannels(touchline.serve.JsonChannel::new));
             said = "Serving to viewers: " + String.join("  ", serving.server().urls());
         } catch (IllegalArgumentException e) {
             said = "Cannot serve: " + e.getMessage();

@@ -14,6 +14,12 @@ import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.time.Duration;
+import java.util.Optional;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
 import static org.junit.jupiter.api.Assertions.*;
@@ -76,6 +82,61 @@ class ConsoleUseCasesTest {
             long before = micros.get();
             assertTrue(console.waitForRobot(9, Duration.ofSeconds(5)).isEmpty());
             assertTrue(micros.get() - before >= 5_000_000L, "it waited the timeout by the console's clock");
+        }
+    }
+
+    @Test
+    void aRobotAlreadyHeardIsGivenAtOnceEvenWithNoTimeLeft() throws Exception {
+        AtomicLong micros = new AtomicLong(1_000_000_000L); // stands still
+        try (Console console = new Console(loopback(), micros::get).start();
+             DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            sendStatus(robot, 6, console.port());
+            touchline.testing.Await.until("robot 6 in the registry", 30_000,
+                    () -> console.robots().robot(6).isPresent());
+            var seen = console.waitForRobot(6, Duration.ZERO);
+            assertTrue(seen.isPresent(), "a robot heard before the wait is there");
+            assertEquals(robot.getLocalPort(), seen.get().address().getPort());
+        }
+    }
+
+    @Test
+    void aRobotHeardDuringTheWaitEndsItThoughTheConsolesClockStandsStill() throws Exception {
+        // the clock never reaches the deadline: only the robot's coming can end the wait
+        AtomicLong micros = new AtomicLong(1_000_000_000L);
+        ExecutorService waiter = Executors.newSingleThreadExecutor();
+        try (Console console = new Console(loopback(), micros::get).start();
+             DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            Future<Optional<touchline.model.RobotSnapshot>> seen =
+                    waiter.submit(() -> console.waitForRobot(7, Duration.ofHours(1)));
+            sendStatus(robot, 7, console.port());
+            var got = seen.get(30, TimeUnit.SECONDS);
+            assertTrue(got.isPresent(), "robot 7 was heard");
+            assertEquals(robot.getLocalPort(), got.get().address().getPort());
+        } finally {
+            waiter.shutdownNow();
+        }
+    }
+
+    @Test
+    void aWaitEndsEmptyWhenTheConsolesClockPassesTheDeadline() throws Exception {
+        AtomicLong micros = new AtomicLong(1_000_000_000L);
+        CountDownLatch deadlineTaken = new CountDownLatch(1);
+        MicrosClock clock = () -> {
+            long now = micros.get();
+            if (Thread.currentThread().getName().equals("robot-waiter")) {
+                deadlineTaken.countDown(); // the waiter's first reading (taken) sets its deadline
+            }
+            return now;
+        };
+        ExecutorService waiter = Executors.newSingleThreadExecutor(r -> new Thread(r, "robot-waiter"));
+        try (Console console = new Console(loopback(), clock).start()) {
+            Future<Optional<touchline.model.RobotSnapshot>> seen =
+                    waiter.submit(() -> console.waitForRobot(9, Duration.ofSeconds(5)));
+            assertTrue(deadlineTaken.await(30, TimeUnit.SECONDS), "the wait began");
+            micros.addAndGet(5_000_000L); // now at the deadline, by the console's clock only
+            assertTrue(seen.get(30, TimeUnit.SECONDS).isEmpty(), "no robot 9; the wait ended at the deadline");
+        } finally {
+            waiter.shutdownNow();
         }
     }
 }

@@ -89,6 +89,28 @@ class NaoViewModelTest {
     }
 
     @Test
+    void onAViewerTheRemoteConsolesNaoCallsAndTheirOutcomesAreTheResultLine() throws Exception {
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            console.viewRemote(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
+            assertEquals("", nao.result());
+            touchline.proto.Nao.HAWActorRPCResponse volume = touchline.proto.Nao.HAWActorRPCResponse.newBuilder()
+                    .setReturnval(new touchline.protocol.nao.MixedValueCodec().encode(80L)).build();
+            console.bus().accept(new touchline.transport.Envelope(1, touchline.transport.Direction.IN,
+                    touchline.transport.Channel.NAO_RPC, touchline.testing.NaoCameraEnvelopes.CAMERA,
+                    touchline.transport.Envelope.NO_ROBOT, "ALTextToSpeech.getVolume", volume, volume.toByteArray(),
+                    null, Origin.REMOTE));
+            assertEquals("ALTextToSpeech.getVolume: 80", nao.result());
+            nao.stand();
+            assertEquals(Console.COMMANDS_OFF, nao.result(), "the view's own refusal is newer");
+            console.bus().accept(new touchline.transport.Envelope(2, touchline.transport.Direction.IN,
+                    touchline.transport.Channel.NAO_RPC, touchline.testing.NaoCameraEnvelopes.CAMERA,
+                    touchline.transport.Envelope.NO_ROBOT, "ALMotion.wakeUp",
+                    touchline.proto.Nao.HAWActorRPCResponse.getDefaultInstance(), new byte[0], null, Origin.REMOTE));
+            assertEquals("ALMotion.wakeUp: done", nao.result(), "a newer remote outcome");
+        }
+    }
+
+    @Test
     void aReplayedNaoCameraIsShownWhileTheReplayIsOpen(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("nao.mcap");
         byte[] last = touchline.testing.NaoCameraEnvelopes.jpeg(320, 240);
@@ -109,6 +131,29 @@ class NaoViewModelTest {
             assertEquals(240, shown.height());
             console.closeReplay();
             assertTrue(nao.frame().isEmpty(), "the replay's frames went with it; no live NAO");
+        }
+    }
+
+    @Test
+    void aReplayedNaoCallIsTheResultLineWhileTheReplayIsOpen(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("calls.mcap");
+        touchline.proto.Nao.HAWActorRPCResponse error = touchline.proto.Nao.HAWActorRPCResponse.newBuilder()
+                .setError("ALMotion has no method fly").build();
+        try (Console recording = console()) {
+            recording.startRecording(file);
+            recording.bus().accept(new touchline.transport.Envelope(recording.clock().nowMicros(),
+                    touchline.transport.Direction.IN, touchline.transport.Channel.NAO_RPC,
+                    touchline.testing.NaoCameraEnvelopes.CAMERA, touchline.transport.Envelope.NO_ROBOT, "ALMotion.fly",
+                    error, error.toByteArray(), null, Origin.LIVE));
+            recording.stopRecording();
+        }
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+            Replay replay = console.openReplay(file);
+            assertEquals("", nao.result(), "nothing played yet");
+            assertEquals(1, replay.runFor(100));
+            assertEquals("ALMotion.fly: error: ALMotion has no method fly", nao.result());
+            console.closeReplay();
+            assertEquals("", nao.result(), "the replay's calls went with it");
         }
     }
 }

@@ -229,9 +229,6 @@ class FoxgloveServerTest {
     @Test
     void theTeamsMessageBudgetIsAJsonChannelOnceTheConsoleGuardsATeam() throws Exception {
         try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
-            field.server().serveJson(new JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
-                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA,
-                    field.console().teamBudgetJson()::now));
             viewer.awaitChannel("/touchline/matchMode");
             Await.until("a few ticks without a guarded team", 5000, () -> viewer.times().size() >= 3);
             assertTrue(viewer.channel("/team/budget").isEmpty(), "no budget channel without --team");

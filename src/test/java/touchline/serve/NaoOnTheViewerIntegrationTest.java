@@ -66,6 +66,46 @@ class NaoOnTheViewerIntegrationTest {
         return new Nao(sim, link, camera, camera.subscribe());
     }
 
+    /**
+     * A served console with the NAO view's model, the simulated NAO (not connected yet: its
+     * {@code ports}, RPC and camera), and a second Touchline viewing the first with its own NAO view.
+     */
+    private record NaoViews(ServedField field, RobotProcess sim, int[] ports, touchline.app.NaoViewModel first,
+                            Console second, touchline.app.NaoViewModel viewing) implements AutoCloseable {
+
+        static NaoViews open() throws Exception {
+            ServedField field = new ServedField();
+            RobotProcess sim = null;
+            Console second = null;
+            try {
+                sim = NaoOnTheViewerIntegrationTest.sim();
+                int[] ports = simPorts(sim);
+                second = viewer();
+                second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+                return new NaoViews(field, sim, ports, new touchline.app.NaoViewModel(field.console()), second,
+                        new touchline.app.NaoViewModel(second));
+            } catch (Exception | AssertionError e) {
+                if (second != null) {
+                    second.close();
+                }
+                if (sim != null) {
+                    sim.close();
+                }
+                field.close();
+                throw e;
+            }
+        }
+
+        @Override
+        public void close() throws Exception {
+            viewing.close();
+            second.close();
+            first.close();
+            sim.close();
+            field.close();
+        }
+    }
+
     private static RobotProcess sim() throws Exception {
         return RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
@@ -161,14 +201,11 @@ class NaoOnTheViewerIntegrationTest {
     void theViewersNaoViewShowsTheFirstConsolesCameraFrames() throws Exception {
         Requirement.robotSide("touchline-nao-sim");
         List<Envelope> here = new CopyOnWriteArrayList<>();
-        try (ServedField field = new ServedField();
-             AutoCloseable heard = field.console().bus().subscribe(here::add);
-             RobotProcess sim = sim();
-             touchline.app.NaoViewModel first = new touchline.app.NaoViewModel(field.console());
-             Console second = viewer();
-             touchline.app.NaoViewModel viewing = new touchline.app.NaoViewModel(second)) {
-            int[] ports = simPorts(sim);
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+        try (NaoViews views = NaoViews.open(); AutoCloseable heard = views.field().console().bus().subscribe(here::add)) {
+            int[] ports = views.ports();
+            touchline.app.NaoViewModel first = views.first();
+            touchline.app.NaoViewModel viewing = views.viewing();
+            Console second = views.second();
             first.setResolution(1);
             first.showCamera(true);
             assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), Integer.toString(ports[1]), "", true),
@@ -195,5 +232,54 @@ class NaoOnTheViewerIntegrationTest {
             assertFalse(viewing.connect("127.0.0.1", Integer.toString(ports[0]), "0", "", true));
             assertEquals(Console.COMMANDS_OFF, viewing.result());
         }
+    }
+
+    /**
+     * The NAO view's result line on the viewing Touchline says the first one's NAO calls and
+     * their outcomes (a value, the robot's error), taken from the call and reply envelopes the
+     * viewer gets, as the first console's own line says them.
+     */
+    @Test
+    void theViewersNaoViewSaysTheFirstConsolesCallsAndTheirOutcomes() throws Exception {
+        Requirement.robotSide("touchline-nao-sim");
+        try (NaoViews views = NaoViews.open()) {
+            int[] ports = views.ports();
+            touchline.app.NaoViewModel first = views.first();
+            touchline.app.NaoViewModel viewing = views.viewing();
+            assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), "0", "", true), first.result());
+            Await.until("the NAO online", Await.FLOOR_MILLIS, () -> first.state().startsWith("online"));
+
+            String volume = outcomeOnTheViewer(first, viewing, "getVolume");
+            assertFalse(volume.contains("error"), volume);
+            assertEquals(first.result(), volume, "the viewer says what the first console says");
+
+            String refused = outcomeOnTheViewer(first, viewing, "noSuchMethod");
+            assertTrue(refused.startsWith("ALTextToSpeech.noSuchMethod: error: "), refused);
+            assertEquals(first.result(), refused);
+        }
+    }
+
+    /**
+     * Calls {@code ALTextToSpeech.method} on the first console until the viewer's NAO view says
+     * its outcome: a call's channels are made by its first envelopes, so the viewer subscribes
+     * only after them. Returns the viewer's line once the first console's says the same.
+     */
+    private static String outcomeOnTheViewer(touchline.app.NaoViewModel first, touchline.app.NaoViewModel viewing,
+                                             String method) throws InterruptedException {
+        String call = "ALTextToSpeech." + method + ": ";
+        int[] polls = {0};
+        Await.until(call + "outcome on the viewer", Await.FLOOR_MILLIS, () -> {
+            String line = viewing.result();
+            if (line.startsWith(call) && !line.endsWith(touchline.app.NaoCallFeed.NO_REPLY_YET)) {
+                return true;
+            }
+            if (polls[0]++ % 20 == 0) { // a call every ~200 ms
+                first.call("ALTextToSpeech", method, "");
+            }
+            return false;
+        });
+        Await.until(call + "outcome on the first console", Await.FLOOR_MILLIS,
+                () -> first.result().equals(viewing.result()));
+        return viewing.result();
     }
 }

@@ -32,9 +32,7 @@ final class ServedField implements AutoCloseable {
         console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
         server = new FoxgloveServer(config, console.kinds(), console.clock());
-        server.serveJson(new JsonChannel(touchline.app.game.MatchModeJson.TOPIC,
-                touchline.app.game.MatchModeJson.SCHEMA_NAME, touchline.app.game.MatchModeJson.SCHEMA,
-                console.matchModeJson()::now));
+        console.servedStateChannels(JsonChannel::new).forEach(server::serveJson); // as Serving does
         subscription = console.bus().subscribe(server);
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
     }

@@ -62,10 +62,7 @@ final class UdpServeRun implements Callable<Integer> {
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)), clock).start();
              Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.kinds(), clock, console.bus(),
-                     new touchline.serve.JsonChannel(touchline.app.game.MatchModeJson.TOPIC,
-                    touchline.app.game.MatchModeJson.SCHEMA_NAME, touchline.app.game.MatchModeJson.SCHEMA,
-                    console.matchModeJson()::now), new touchline.serve.JsonChannel(touchline.app.TeamBudgetJson.TOPIC,
-                    touchline.app.TeamBudgetJson.SCHEMA_NAME, touchline.app.TeamBudgetJson.SCHEMA, console.teamBudgetJson()::now))) {
+                     console.servedStateChannels(touchline.serve.JsonChannel::new))) {
             for (Envelope e : team) {
                 if (!robots.containsKey(e.robotId())) {
                     robots.put(e.robotId(), new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)));

@@ -203,6 +203,11 @@ public final class EmbeddedGameController implements AutoCloseable {
         return sender.realtimeOutcome();
     }
 
+    /** {@link #realtimeOutcome()} as a value the faces switch on. */
+    public SenderPriority senderPriority() {
+        return SenderPriority.of(sender.realtimeOutcome());
+    }
+
     /** {@link #realtimeOutcome()} once the sender's thread has tried (at most {@code timeoutMs}). */
     public String awaitRealtimeOutcome(long timeoutMs) {
         return sender.awaitRealtimeOutcome(timeoutMs);

@@ -20,10 +20,10 @@ import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.app.game.EmbeddedGameController;
+import touchline.app.game.SenderPriority;
 import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
-import touchline.transport.gamecontroller.GcSender;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
@@ -234,22 +234,20 @@ public final class GameControllerTab implements View {
         }
         if (referee != null) {
             referee.refresh(frame);
-            priority.setText(priorityText(shown.realtimeOutcome()));
+            priority.setText(priorityText(shown.senderPriority()));
         }
         String notice = console.matchMode().notice();
         matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);
         matchNotice.setStyle(notice.isEmpty() ? "" : "-fx-text-fill: #e0a000; -fx-font-weight: bold;");
     }
 
-    private static String priorityText(String outcome) {
-        if (outcome.isEmpty()) {
-            return "Sender: real-time priority (500 ms cadence held under load)";
-        } else if (outcome.equals(GcSender.NOT_REQUESTED)) {
-            return "Sender: normal priority";
-        } else if (outcome.equals(GcSender.NOT_STARTED)) {
-            return "Sender: starting";
-        }
-        return "Sender: normal priority, real-time refused (" + outcome + ")";
+    private static String priorityText(SenderPriority p) {
+        return switch (p.kind()) {
+            case REAL_TIME -> "Sender: real-time priority (500 ms cadence held under load)";
+            case NOT_REQUESTED -> "Sender: normal priority";
+            case STARTING -> "Sender: starting";
+            case REFUSED -> "Sender: normal priority, real-time refused (" + p.why() + ")";
+        };
     }
 
     @Override
