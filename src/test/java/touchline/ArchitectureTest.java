@@ -103,14 +103,11 @@ class ArchitectureTest {
 
     /**
      * One clock: the wall clock is read only by {@code app.SystemClock}, which the console and
-     * the commands without a console make once and hand down through constructors. Known debt,
-     * moving with other work: the GameController runtime's envelope time ({@code
-     * transport.gamecontroller.Clock}).
+     * the commands without a console make once and hand down through constructors.
      */
     @Test
     void theWallClockIsReadOnlyByTheSystemClock() {
         noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class)
-                .and().doNotHaveFullyQualifiedName("touchline.transport.gamecontroller.Clock")
                 .should().callMethod(System.class, "currentTimeMillis")
                 .orShould().callMethod(java.time.Instant.class, "now")
                 .orShould().callMethod(java.time.LocalDateTime.class, "now")

@@ -199,7 +199,7 @@ public final class Console implements AutoCloseable {
         }
         try {
             gcMonitor = new GcMonitor(config.gcMonitor(), new InetSocketAddress(config.udp().bindAddress(),
-                    config.gcForwardPort()), monitorRegistrations, live, () -> clock.nowMicros() / 1000);
+                    config.gcForwardPort()), monitorRegistrations, live, clock);
         } catch (IOException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot monitor the GameController at {}: {}",
                     config.gcMonitor(), e.toString());

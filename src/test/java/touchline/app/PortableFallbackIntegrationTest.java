@@ -94,7 +94,8 @@ class PortableFallbackIntegrationTest {
         HlGameState12 format = new HlGameState12();
         try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
              GcSender sender = new GcSender(p -> game.controlData(), List.of(format),
-                     List.of((InetSocketAddress) robot.getLocalSocketAddress()), null, e -> { }, 100)) {
+                     List.of((InetSocketAddress) robot.getLocalSocketAddress()), null, e -> { }, 100,
+                     new touchline.app.SystemClock())) {
             sender.useRealtimePriority(true); // asked for, as the tab and `gc` do by default
             game.addListener(sender::sendNow);
             sender.start();

@@ -82,7 +82,8 @@ public final class GcIntervalBenchmark {
                      game.advance();
                  }
                  return game.controlData();
-             }, List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS);
+             }, List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS,
+                     new touchline.app.SystemClock());
              DatagramSocket naive = new DatagramSocket()) {
             // Its own game: a shared lock would let the baseline thread delay ours (priority inversion).
             Game baselineGame = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
@@ -123,7 +124,8 @@ public final class GcIntervalBenchmark {
                      game.advance();
                  }
                  return game.controlData();
-             }, List.of(new HslGameState20()), List.of(probe.address()), null, e -> { }, INTERVAL_MS, true)) {
+             }, List.of(new HslGameState20()), List.of(probe.address()), null, e -> { }, INTERVAL_MS, true,
+                new touchline.app.SystemClock())) {
             game.addListener(() -> sender.changed(game.controlData().stopped()));
             for (HslAction a : List.<HslAction>of(new StartSetPlay(5, SetPlay.KICK_OFF), new WaitForSetPlay(),
                     new FreeSetPlay())) {

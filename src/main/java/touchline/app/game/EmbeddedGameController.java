@@ -114,7 +114,7 @@ public final class EmbeddedGameController implements AutoCloseable {
             formats.add(new GameState7());
         }
         sender = new GcSender(this::nextState, formats, config.destinations(), config.senderBind(), sink,
-                config.intervalMs(), config.profile().hsl());
+                config.intervalMs(), config.profile().hsl(), stamps);
         senderPort = sender.localAddress().getPort();
         sender.useRealtimePriority(config.realtime());
         try {

@@ -21,7 +21,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-import java.util.function.LongSupplier;
 
 /**
  * This console as a monitor of the field's HSL GameController ({@code --gc-monitor HOST}): it
@@ -51,7 +50,7 @@ public final class GcMonitor implements AutoCloseable {
 
     private final InetSocketAddress gameController;
     private final EnvelopeSink sink;
-    private final LongSupplier clockMs;
+    private final touchline.transport.MicrosClock clock;
     private final DatagramChannel requests;
     private final GcListener forwarded;
     private final ScheduledExecutorService ticker;
@@ -66,13 +65,14 @@ public final class GcMonitor implements AutoCloseable {
      * @param forwardBind    where forwarded return packets arrive (0.0.0.0:3940)
      * @param registrations  told that this GameController's true data is now expected
      * @param sink           receives the forwarded packets as GAMECONTROLLER envelopes
-     * @param clockMs        milliseconds for liveness
+     * @param clock          the console's clock: envelope stamps and liveness
      */
     public GcMonitor(InetSocketAddress gameController, InetSocketAddress forwardBind,
-                     MonitorRegistrations registrations, EnvelopeSink sink, LongSupplier clockMs) throws IOException {
+                     MonitorRegistrations registrations, EnvelopeSink sink, touchline.transport.MicrosClock clock)
+            throws IOException {
         this.gameController = gameController;
         this.sink = sink;
-        this.clockMs = clockMs;
+        this.clock = clock;
         registrations.requested(gameController.getAddress());
         requests = DatagramChannel.open();
         try {
@@ -92,7 +92,7 @@ public final class GcMonitor implements AutoCloseable {
     private void sendRequest() {
         try {
             requests.send(ByteBuffer.wrap(request), gameController);
-            sink.accept(new Envelope(Clock.micros(), Direction.OUT, Channel.GAMECONTROLLER, gameController,
+            sink.accept(new Envelope(clock.nowMicros(), Direction.OUT, Channel.GAMECONTROLLER, gameController,
                     Envelope.NO_ROBOT, "gc.monitor.request", null, request, null));
         } catch (IOException e) {
             // the field network may come and go; the next request follows in REQUEST_INTERVAL_MS
@@ -105,15 +105,15 @@ public final class GcMonitor implements AutoCloseable {
         if (!d.isOk()) {
             String reason = d.failure() + ": " + d.detail();
             badPackets.count(from, reason);
-            sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+            sink.accept(new Envelope(clock.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                     "gc.return.forwarded", null, data, reason));
             return;
         }
         ReturnPacket.V4 p = d.value().packet();
-        long now = clockMs.getAsLong();
+        long now = clock.nowMicros() / 1000;
         liveness.heard(p.team(), p.player(), now);
         lastSeen.put(new RobotLiveness.RobotKey(p.team(), p.player()), new Seen(d.value().robotHost(), p, now));
-        sink.accept(new Envelope(Clock.micros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
+        sink.accept(new Envelope(clock.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 "gc.return.forwarded", null, data, null));
     }
 

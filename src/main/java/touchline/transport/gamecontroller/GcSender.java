@@ -68,6 +68,7 @@ public final class GcSender implements AutoCloseable {
             new java.util.concurrent.CompletableFuture<>();
     private volatile Thread thread;
     private int packetNumber;
+    private final touchline.transport.MicrosClock stamps;
     private String lastError;
 
     /**
@@ -77,10 +78,12 @@ public final class GcSender implements AutoCloseable {
      * @param bind         local address to send from (null: any address, ephemeral port)
      * @param sink         receives one OUT envelope per datagram
      * @param intervalMs   send period (500 in a game)
+     * @param stamps       the console's clock, for the envelopes' time
      */
     public GcSender(Source source, List<GameStateFormat> formats, List<InetSocketAddress> destinations,
-                    InetSocketAddress bind, EnvelopeSink sink, long intervalMs) throws IOException {
-        this(source, formats, destinations, bind, sink, intervalMs, false);
+                    InetSocketAddress bind, EnvelopeSink sink, long intervalMs, touchline.transport.MicrosClock stamps)
+            throws IOException {
+        this(source, formats, destinations, bind, sink, intervalMs, false, stamps);
     }
 
     /**
@@ -88,9 +91,10 @@ public final class GcSender implements AutoCloseable {
      *                    when play gets stopped ({@link #changed})
      */
     public GcSender(Source source, List<GameStateFormat> formats, List<InetSocketAddress> destinations,
-                    InetSocketAddress bind, EnvelopeSink sink, long intervalMs, boolean burstOnStop)
-            throws IOException {
+                    InetSocketAddress bind, EnvelopeSink sink, long intervalMs, boolean burstOnStop,
+                    touchline.transport.MicrosClock stamps) throws IOException {
         this.burstOnStop = burstOnStop;
+        this.stamps = stamps;
         if (formats.isEmpty() || destinations.isEmpty()) {
             throw new IllegalArgumentException("need at least one format and one destination");
         }
@@ -237,7 +241,7 @@ public final class GcSender implements AutoCloseable {
         try {
             channel.send(ByteBuffer.wrap(bytes), dest);
             sent.incrementAndGet();
-            sink.accept(new Envelope(Clock.micros(), Direction.OUT, Channel.GAMECONTROLLER, dest, Envelope.NO_ROBOT,
+            sink.accept(new Envelope(stamps.nowMicros(), Direction.OUT, Channel.GAMECONTROLLER, dest, Envelope.NO_ROBOT,
                     f.kind(), null, bytes, null));
         } catch (IOException e) {
             sendErrors.incrementAndGet();

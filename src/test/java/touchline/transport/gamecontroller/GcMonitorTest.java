@@ -36,7 +36,7 @@ class GcMonitorTest {
         AtomicLong now = new AtomicLong(1000);
         try (LoopbackReceiver gameController = new LoopbackReceiver();
              GcMonitor monitor = new GcMonitor(gameController.address(), ANY_LOOPBACK_PORT, registrations,
-                     envelopes::add, now::get)) {
+                     envelopes::add, () -> now.get() * 1000)) {
             assertTrue(registrations.isRegisteredWith(InetAddress.getLoopbackAddress()));
             LoopbackReceiver.Received request = gameController.receive(2000);
             assertNotNull(request, "monitor request sent");

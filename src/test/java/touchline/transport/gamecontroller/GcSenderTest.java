@@ -37,7 +37,7 @@ class GcSenderTest {
         HlGameState12 format = new HlGameState12();
         try (LoopbackReceiver robot = new LoopbackReceiver();
              GcSender sender = new GcSender(p -> game.controlData(), List.of(format), List.of(robot.address()),
-                     null, e -> { }, 500)) {
+                     null, e -> { }, 500, new touchline.app.SystemClock())) {
             game.addListener(sender::sendNow);
             sender.start();
             List<LoopbackReceiver.Received> got = new ArrayList<>();
@@ -80,7 +80,7 @@ class GcSenderTest {
         List<Envelope> envelopes = new CopyOnWriteArrayList<>();
         try (LoopbackReceiver robot = new LoopbackReceiver();
              GcSender sender = new GcSender(p -> game.controlData(), List.of(new GameState8(), new GameState7()),
-                     List.of(robot.address()), null, envelopes::add, 1)) {
+                     List.of(robot.address()), null, envelopes::add, 1, new touchline.app.SystemClock())) {
             sender.start();
             int[] numbers = new int[300];
             int v7 = 0;
