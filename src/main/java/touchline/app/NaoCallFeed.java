@@ -2,8 +2,6 @@ package touchline.app;
 
 import com.google.protobuf.InvalidProtocolBufferException;
 import touchline.proto.Nao.HAWActorRPCResponse;
-import touchline.protocol.nao.MixedValueCodec;
-import touchline.protocol.nao.MixedValueException;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -28,7 +26,8 @@ public final class NaoCallFeed implements EnvelopeSink {
 
     /** One numbering for both origins, so a reader sees a change when a replay opens or closes. */
     private final AtomicLong sequence = new AtomicLong();
-    private final MixedValueCodec values = new MixedValueCodec();
+    /** Reads a response as the NAO link does: the robot's error, "done", or the value. */
+    private final touchline.transport.nao.ReplyReader replies = new touchline.transport.nao.ReplyReader();
     private final Slot live = new Slot();
     private final Slot replayed = new Slot();
     private final BooleanSupplier replaying;
@@ -85,24 +84,9 @@ public final class NaoCallFeed implements EnvelopeSink {
             return call + ": replied (the reply's bytes did not come along)";
         }
         try {
-            return call + ": " + outcome(HAWActorRPCResponse.parseFrom(e.raw())).describe();
+            return call + ": " + replies.outcomeOf(HAWActorRPCResponse.parseFrom(e.raw())).describe();
         } catch (InvalidProtocolBufferException bad) {
             return call + ": unreadable reply: " + bad.getMessage();
-        }
-    }
-
-    /** As the NAO link reads a response (transport.nao.ReplyReader): the robot's error, "done", or the value. */
-    private CallOutcome outcome(HAWActorRPCResponse response) {
-        if (response.hasError()) {
-            return new CallOutcome.Failed(response.getError());
-        }
-        if (!response.hasReturnval()) {
-            return new CallOutcome.Done();
-        }
-        try {
-            return new CallOutcome.Value(values.decode(response.getReturnval()));
-        } catch (MixedValueException unreadable) {
-            return new CallOutcome.Failed("unreadable return value: " + unreadable.getMessage());
         }
     }
 

@@ -16,7 +16,10 @@ import java.util.concurrent.atomic.AtomicLong;
  * parse, a return value the codec refuses) is a value with the reason, counted, never an
  * exception. Pure: bytes in, values out.
  */
-final class ReplyReader {
+public final class ReplyReader {
+
+    public ReplyReader() {
+    }
 
     /** What a reply's frames were. */
     sealed interface Read {
@@ -50,7 +53,7 @@ final class ReplyReader {
     }
 
     /** The outcome a response gives its call: the robot's error, "done", or the decoded value. */
-    CallOutcome outcomeOf(HAWActorRPCResponse response) {
+    public CallOutcome outcomeOf(HAWActorRPCResponse response) {
         if (response.hasError()) {
             return new CallOutcome.Failed(response.getError());
         }
