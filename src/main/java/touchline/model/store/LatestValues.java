@@ -28,6 +28,7 @@ public final class LatestValues implements EnvelopeSink {
 
     private final Map<Key, Latest> latest = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
+    private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
 
     @Override
     public void accept(Envelope e) {
@@ -51,7 +52,7 @@ public final class LatestValues implements EnvelopeSink {
     }
 
     private void keep(Envelope e, Message data) {
-        String option = DebugData.optionOf(data);
+        String option = names.optionOf(data);
         if (option != null) {
             latest.put(new Key(e.robotId(), option),
                     new Latest(e.robotId(), option, e.kind(), data, e.timeMicros(), version.incrementAndGet()));
