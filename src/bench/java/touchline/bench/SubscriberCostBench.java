@@ -71,7 +71,7 @@ final class SubscriberCostBench implements Callable<Integer> {
             // a shared machine only ever adds (time stolen from a virtual CPU counts as the thread's)
             System.out.printf("over %d rounds: decode median %.0f ns (fastest %.0f), model subscribers median %.0f ns"
                             + " (fastest %.0f) per envelope, CPU time of this thread; %d subscriber failures%n", rounds,
-                    median(decode), Collections.min(decode), median(model), Collections.min(model),
+                    IngestBenchCommand.median(decode), Collections.min(decode), IngestBenchCommand.median(model), Collections.min(model),
                     console.bus().subscriberFailures());
         }
         return 0;
@@ -111,11 +111,5 @@ final class SubscriberCostBench implements Callable<Integer> {
         MessageResult.Decoded d = (MessageResult.Decoded) messages.decode(f.payload());
         return new Envelope(nowMicros, Direction.IN, Channel.FUMANOID, peer, d.message().getRobotID(), d.kind(),
                 d.message(), bytes, null);
-    }
-
-    private static double median(List<Double> values) {
-        List<Double> sorted = values.stream().sorted().toList();
-        int n = sorted.size();
-        return n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
     }
 }
