@@ -35,7 +35,14 @@ public final class LatestValues implements EnvelopeSink {
         if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
             return;
         }
-        Message own = DebugData.ownDataOf(e.kind(), m);
+        accept(e, m, DebugData.ownDataOf(e.kind(), m));
+    }
+
+    /**
+     * Keeps an inbound robot's envelope's value: {@code own} is its data of one of our own kinds,
+     * found by the caller ({@link DebugData#ownDataOf}), null for none or a team's own type.
+     */
+    void accept(Envelope e, Fumanoid.Message m, Message own) {
         if (own != null) {
             keep(e, own);
             return;

@@ -23,7 +23,11 @@ public final class TextLog implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        Fumanoid.DebugText t = e.direction() == Direction.IN ? e.extension(Fumanoid.debugText) : null;
+        add(e, e.direction() == Direction.IN ? e.extension(Fumanoid.debugText) : null);
+    }
+
+    /** Keeps an inbound envelope's text; {@code t} found by the caller, null when it carries none. */
+    void add(Envelope e, Fumanoid.DebugText t) {
         if (t != null) {
             lines.append(new TextLine(e.timeMicros(), t.getTimestamp(), e.robotId(), names.of(t.getOptionBytes()),
                     t.getText()));
