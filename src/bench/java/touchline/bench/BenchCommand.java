@@ -19,6 +19,7 @@ import picocli.CommandLine.Command;
                 GcBenchCommand.class,
                 touchline.bench.serve.ServeBenchmark.class,
                 StartBenchCommand.class,
+                SubscriberCostBench.class,
         })
 public final class BenchCommand implements Runnable {
 

@@ -47,6 +47,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     private final MicrosClock replayClock;
     private final Map<Integer, PerRobot> robots = new HashMap<>();
     private final Map<Integer, PerRobot> replayed = new HashMap<>();
+    private final Utf8Names names = new Utf8Names();
     private long version;
 
     private static final class PerRobot {
@@ -58,9 +59,27 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         final Set<String> wanted = new LinkedHashSet<>();
         /** switched off by the user here, data still coming: off commands sent so far */
         final Map<String, Integer> releasing = new HashMap<>();
-        final Map<String, Long> lastData = new HashMap<>();
+        /** when each option's data last came; updated in place (no boxed time per message) */
+        final Map<String, LastData> lastData = new HashMap<>();
         final Map<String, Long> lastCommand = new HashMap<>();
         String lastHold = "";
+
+        void dataCame(String option, long timeMicros) {
+            LastData last = lastData.get(option);
+            if (last == null) {
+                lastData.put(option, new LastData(timeMicros));
+            } else {
+                last.micros = timeMicros;
+            }
+        }
+    }
+
+    private static final class LastData {
+        long micros;
+
+        LastData(long micros) {
+            this.micros = micros;
+        }
     }
 
     public DebugOptionSession(RobotCommands commands, MessageCodec codec, MicrosClock clock) {
@@ -93,7 +112,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         String option = optionNameOf(e, m);
         if (option != null) {
             synchronized (this) {
-                robot(e.robotId()).lastData.put(option, e.timeMicros());
+                robot(e.robotId()).dataCame(option, e.timeMicros());
             }
         }
     }
@@ -110,7 +129,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
                 r.listReceived = true;
                 version++;
             } else if (option != null) {
-                r.lastData.put(option, e.timeMicros());
+                r.dataCame(option, e.timeMicros());
             }
         }
     }
@@ -123,7 +142,8 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
     /** The {@code option} field every data message carries (teams' own types too, by convention). */
     private String optionNameOf(Envelope e, Fumanoid.Message m) {
-        return debugData.optionOf(e.kind(), m);
+        com.google.protobuf.Message data = debugData.dataOf(e.kind(), m);
+        return data == null ? null : names.optionOf(data);
     }
 
     private void onList(int robotId, Fumanoid.DebugOptionList list) {
@@ -289,8 +309,8 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     }
 
     private boolean streaming(PerRobot r, String name, long now) {
-        Long t = r.lastData.get(name);
-        return t != null && now - t <= STREAMING_WINDOW_MICROS;
+        LastData t = r.lastData.get(name);
+        return t != null && now - t.micros <= STREAMING_WINDOW_MICROS;
     }
 
     private void requestList(int robotId) {

@@ -1,5 +1,6 @@
 package touchline.protocol;
 
+import com.google.protobuf.ByteString;
 import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
@@ -59,26 +60,39 @@ public final class DebugData {
 
     /** The {@code option} string of a data message, or null when it has none. */
     public static String optionOf(Message data) {
-        if (data instanceof Fumanoid.DebugText d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.DebugPlot d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.RegionGrowing d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.DebugTable d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.Grid d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.RelativePositions d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.FieldObjects d) {
-            return d.hasOption() ? d.getOption() : null;
-        } else if (data instanceof Fumanoid.DebugImage d) {
-            return d.hasOption() ? d.getOption() : null;
+        ByteString own = ownOptionBytesOf(data);
+        if (own != null) {
+            return own.toStringUtf8(); // what the generated getter returns
         }
         FieldDescriptor name = data.getDescriptorForType().findFieldByName("option");
         if (name != null && name.getType() == FieldDescriptor.Type.STRING && !name.isRepeated() && data.hasField(name)) {
             return (String) data.getField(name);
+        }
+        return null;
+    }
+
+    /**
+     * The {@code option} of one of our own data types as the bytes it came in (nothing decoded),
+     * or null when {@code data} is another type or has no option: a caller that decodes names
+     * once ({@code touchline.model.Utf8Names}) then falls back to {@link #optionOf(Message)}.
+     */
+    public static ByteString ownOptionBytesOf(Message data) {
+        if (data instanceof Fumanoid.DebugPlot d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.DebugText d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.RegionGrowing d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.DebugTable d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.Grid d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.RelativePositions d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.FieldObjects d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
+        } else if (data instanceof Fumanoid.DebugImage d) {
+            return d.hasOption() ? d.getOptionBytes() : null;
         }
         return null;
     }

@@ -28,13 +28,21 @@ public final class LatestValues implements EnvelopeSink {
 
     private final Map<Key, Latest> latest = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
+    private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
 
     @Override
     public void accept(Envelope e) {
         if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
             return;
         }
-        Message own = DebugData.ownDataOf(e.kind(), m);
+        accept(e, m, DebugData.ownDataOf(e.kind(), m));
+    }
+
+    /**
+     * Keeps an inbound robot's envelope's value: {@code own} is its data of one of our own kinds,
+     * found by the caller ({@link DebugData#ownDataOf}), null for none or a team's own type.
+     */
+    void accept(Envelope e, Fumanoid.Message m, Message own) {
         if (own != null) {
             keep(e, own);
             return;
@@ -51,7 +59,7 @@ public final class LatestValues implements EnvelopeSink {
     }
 
     private void keep(Envelope e, Message data) {
-        String option = DebugData.optionOf(data);
+        String option = names.optionOf(data);
         if (option != null) {
             latest.put(new Key(e.robotId(), option),
                     new Latest(e.robotId(), option, e.kind(), data, e.timeMicros(), version.incrementAndGet()));

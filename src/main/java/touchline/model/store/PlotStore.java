@@ -47,6 +47,10 @@ public final class PlotStore implements EnvelopeSink {
     private long originMicros;
     private final Map<LatestValues.Key, Plot> plots = new HashMap<>();
     private long version;
+    private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
+    /** The series of the message being added (guarded by this store's lock, like the plots). */
+    private final String[] seriesNames = new String[16];
+    private int seriesCount;
 
     public PlotStore(int pointsPerSeries, long originMicros) {
         this.pointsPerSeries = pointsPerSeries;
@@ -62,17 +66,18 @@ public final class PlotStore implements EnvelopeSink {
     }
 
     synchronized void add(int robotId, Fumanoid.DebugPlot p, long timeMicros) {
-        Plot plot = plots.computeIfAbsent(new LatestValues.Key(robotId, p.getOption()), k -> new Plot(version));
+        Plot plot = plots.computeIfAbsent(new LatestValues.Key(robotId, names.of(p.getOptionBytes())),
+                k -> new Plot(version));
         double x = (timeMicros - originMicros) / 1e6;
         if (oneSamplePerSeries(p)) {
             // the usual message (one value per series): straight into the rings, nothing allocated
-            for (Fumanoid.PlotSample s : p.getSamplesList()) {
-                double v = s.getValue();
+            for (int i = 0; i < seriesCount; i++) {
+                double v = p.getSamples(i).getValue();
                 if (!Double.isFinite(v)) {
                     plot.skipped++;
                     continue;
                 }
-                plot.series.computeIfAbsent(s.getSeries(), k -> new SeriesRing(pointsPerSeries)).add(x, v);
+                ring(plot, seriesNames[i]).add(x, v);
             }
             plot.version++;
             plot.lastTimeMicros = timeMicros;
@@ -86,10 +91,10 @@ public final class PlotStore implements EnvelopeSink {
                 plot.skipped++;
                 continue;
             }
-            bySeries.computeIfAbsent(s.getSeries(), k -> new ArrayList<>()).add(v);
+            bySeries.computeIfAbsent(names.of(s.getSeriesBytes()), k -> new ArrayList<>()).add(v);
         }
         for (Map.Entry<String, List<Double>> s : bySeries.entrySet()) {
-            SeriesRing ring = plot.series.computeIfAbsent(s.getKey(), k -> new SeriesRing(pointsPerSeries));
+            SeriesRing ring = ring(plot, s.getKey());
             List<Double> values = s.getValue();
             if (values.size() == 1) {
                 ring.add(x, values.get(0));
@@ -110,19 +115,35 @@ public final class PlotStore implements EnvelopeSink {
         version++;
     }
 
-    private static boolean oneSamplePerSeries(Fumanoid.DebugPlot p) {
+    private SeriesRing ring(Plot plot, String series) {
+        SeriesRing ring = plot.series.get(series);
+        if (ring == null) {
+            ring = new SeriesRing(pointsPerSeries);
+            plot.series.put(series, ring);
+        }
+        return ring;
+    }
+
+    /**
+     * True when no series occurs twice (and the message is no burst); then the names of its
+     * samples are in {@link #seriesNames}, {@link #seriesCount} of them. The names come from
+     * {@link #names}: a series name is decoded once, not once per sample.
+     */
+    private boolean oneSamplePerSeries(Fumanoid.DebugPlot p) {
         int n = p.getSamplesCount();
-        if (n > 16) {
+        if (n > seriesNames.length) {
             return false; // a burst: grouped and spread over time below
         }
-        for (int i = 1; i < n; i++) {
-            String name = p.getSamples(i).getSeries();
+        for (int i = 0; i < n; i++) {
+            String name = names.of(p.getSamples(i).getSeriesBytes());
             for (int j = 0; j < i; j++) {
-                if (name.equals(p.getSamples(j).getSeries())) {
+                if (name.equals(seriesNames[j])) {
                     return false;
                 }
             }
+            seriesNames[i] = name;
         }
+        seriesCount = n;
         return true;
     }
 

@@ -15,6 +15,7 @@ public final class TextLog implements EnvelopeSink {
 
     public static final int DEFAULT_CAPACITY = 20_000;
     private final SequencedRing<TextLine> lines;
+    private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
 
     public TextLog(int capacity) {
         this.lines = new SequencedRing<>(capacity);
@@ -22,9 +23,14 @@ public final class TextLog implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        Fumanoid.DebugText t = e.direction() == Direction.IN ? e.extension(Fumanoid.debugText) : null;
+        add(e, e.direction() == Direction.IN ? e.extension(Fumanoid.debugText) : null);
+    }
+
+    /** Keeps an inbound envelope's text; {@code t} found by the caller, null when it carries none. */
+    void add(Envelope e, Fumanoid.DebugText t) {
         if (t != null) {
-            lines.append(new TextLine(e.timeMicros(), t.getTimestamp(), e.robotId(), t.getOption(), t.getText()));
+            lines.append(new TextLine(e.timeMicros(), t.getTimestamp(), e.robotId(), names.of(t.getOptionBytes()),
+                    t.getText()));
         }
     }
 

@@ -1,5 +1,9 @@
 package touchline.model.store;
 
+import com.google.protobuf.Message;
+import touchline.proto.Fumanoid;
+import touchline.protocol.DebugData;
+import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 
@@ -35,9 +39,18 @@ public final class ViewStores implements EnvelopeSink {
         @Override
         public void accept(Envelope e) {
             network.accept(e);
-            text.accept(e);
-            plots.accept(e);
-            latest.accept(e);
+            if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m)) {
+                return; // the other stores keep only what robots sent
+            }
+            // the data found once for the three stores (each asked the message for its extension)
+            Message own = DebugData.ownDataOf(e.kind(), m);
+            text.add(e, own instanceof Fumanoid.DebugText t ? t : null);
+            if (own instanceof Fumanoid.DebugPlot p) {
+                plots.add(e.robotId(), p, e.timeMicros());
+            }
+            if (e.robotId() >= 0) {
+                latest.accept(e, m, own);
+            }
         }
     }
 

@@ -1,6 +1,8 @@
 package touchline.model.store;
 
+import com.google.protobuf.ByteString;
 import org.junit.jupiter.api.Test;
+import touchline.proto.Fumanoid;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -72,5 +74,30 @@ class PlotStoreTest {
         assertEquals(15.0, a.y()[0]);
         assertEquals(24.0, a.y()[9]);
         assertEquals(25, store.version(1, "p"));
+    }
+
+    /**
+     * Series names are looked up by their bytes (decoded once); two byte sequences that decode
+     * to the same name (invalid UTF-8 becomes U+FFFD) are still one series, as their names are.
+     */
+    @Test
+    void seriesAreTheirDecodedNamesWhateverBytesSpelledThem() throws Exception {
+        PlotStore store = new PlotStore(1_000, T0);
+        Fumanoid.DebugPlot.Builder plot = Fumanoid.DebugPlot.newBuilder().setOption("p");
+        plot.addSamples(Fumanoid.PlotSample.newBuilder().setSeriesBytes(ByteString.copyFrom(new byte[] {(byte) 0xff})).setValue(1));
+        plot.addSamples(Fumanoid.PlotSample.newBuilder().setSeriesBytes(ByteString.copyFrom(new byte[] {(byte) 0xfe})).setValue(2));
+        plot.addSamples(Fumanoid.PlotSample.newBuilder().setSeries("ok").setValue(3));
+        byte[] wire = Fumanoid.Message.newBuilder().setRobotID(1).setExtension(Fumanoid.debugPlot, plot.build()).build().toByteArray();
+        Fumanoid.Message parsed = Fumanoid.Message.parseFrom(wire, new touchline.protocol.MessageKinds().registry());
+        for (int i = 1; i <= 300; i++) {
+            store.accept(StoreEnvelopes.in(T0 + i * 1_000_000L, 1, "debugPlot",
+                    Fumanoid.Message.parseFrom(wire, new touchline.protocol.MessageKinds().registry())));
+        }
+        PlotStore.Snapshot s = store.snapshot(1, parsed.getExtension(Fumanoid.debugPlot).getOption());
+        assertEquals(2, s.series().size(), "\ufffd and ok");
+        assertEquals("\ufffd", s.series().get(0).name());
+        assertEquals(600, s.series().get(0).count(), "both values of each message, spread over its interval");
+        assertEquals(300, s.series().get(1).count());
+        assertEquals(3.0, s.series().get(1).y()[299], 1e-9);
     }
 }
