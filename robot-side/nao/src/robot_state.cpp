@@ -64,7 +64,8 @@ const std::map<std::string, std::map<std::string, double>> kPostureAngles = {
 double clamp(double v, double lo, double hi) { return std::max(lo, std::min(hi, v)); }
 }  // namespace
 
-RobotState::RobotState(double timeScale) : timeScale_(timeScale), lastAdvance_(Clock::now()) {
+RobotState::RobotState(double timeScale, std::shared_ptr<SimClock> clock)
+    : timeScale_(timeScale), clock_(std::move(clock)), lastAdvance_(clock_->now()) {
   for (const auto& j : kJoints) joints_[j.name] = JointMotion{};
   applyPostureAnglesLocked(posture_);
 }
@@ -101,7 +102,7 @@ void RobotState::setStiffness(const std::string& joint, double value) {
   auto& m = joints_.at(joint);
   if (value <= 0.0) {
     // A limp joint stays where it is now.
-    auto now = Clock::now();
+    auto now = clock_->now();
     double here = sensedLocked(m, now);
     m.from = m.to = here;
     m.realSeconds = 0.0;
@@ -120,7 +121,7 @@ bool RobotState::anyStiffness() const {
   return false;
 }
 
-double RobotState::sensedLocked(const JointMotion& m, Clock::time_point now) const {
+double RobotState::sensedLocked(const JointMotion& m, TimePoint now) const {
   if (m.realSeconds <= 0.0) return m.to;
   double t = std::chrono::duration<double>(now - m.start).count() / m.realSeconds;
   return m.from + (m.to - m.from) * clamp(t, 0.0, 1.0);
@@ -131,11 +132,11 @@ bool RobotState::commandAngle(const std::string& jointName, double target, doubl
   std::lock_guard<std::mutex> lock(mutex_);
   auto& m = joints_.at(jointName);
   if (m.stiffness <= 0.0) return false;
-  auto now = Clock::now();
+  auto now = clock_->now();
   m.from = sensedLocked(m, now);
   m.to = m.command = clamp(target, info.min, info.max);
   m.start = now;
-  m.realSeconds = std::max(0.0, robotSeconds) * timeScale_;
+  m.realSeconds = std::max(0.0, robotSeconds) * timeScale_;  // clock seconds
   return true;
 }
 
@@ -146,7 +147,7 @@ double RobotState::commandedAngle(const std::string& joint) const {
 
 double RobotState::sensedAngle(const std::string& joint) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return sensedLocked(joints_.at(joint), Clock::now());
+  return sensedLocked(joints_.at(joint), clock_->now());
 }
 
 std::vector<std::string> RobotState::postures() {
@@ -208,49 +209,69 @@ void RobotState::applyPostureAnglesLocked(const std::string& posture) {
   }
 }
 
-void RobotState::advanceLocked(Clock::time_point now) const {
-  double real = std::chrono::duration<double>(now - lastAdvance_).count();
-  if (real <= 0) return;
-  lastAdvance_ = now;
-  double dt = real / timeScale_;  // robot seconds
+void RobotState::advanceLocked(TimePoint now) const {
+  if (now <= lastAdvance_) return;
   bool walking = velocity_[0] != 0 || velocity_[1] != 0 || velocity_[2] != 0;
+  // A moveBy's walk stops at its planned end, however late its thread wakes.
+  TimePoint walkUntil = walking && walkEnd_ ? std::clamp(*walkEnd_, lastAdvance_, now) : now;
+  auto robotSeconds = [this](SimClock::duration d) {
+    return std::chrono::duration<double>(d).count() / timeScale_;
+  };
+  double walked = walking ? robotSeconds(walkUntil - lastAdvance_) : 0.0;
+  double stood = robotSeconds(now - lastAdvance_) - walked;
+  const auto v = velocity_;
+  lastAdvance_ = now;
+  if (walkEnd_ && *walkEnd_ <= now) {
+    velocity_ = {0, 0, 0};
+    walkEnd_.reset();
+  }
   // Battery model (ours): 1 % per 2 min standing still, 1 % per 20 s walking.
-  battery_ = std::max(0.0, battery_ - dt * (walking ? 1.0 / 20.0 : 1.0 / 120.0));
-  if (!walking) return;
-  int steps = static_cast<int>(std::min(1000.0, std::ceil(dt / 0.02)));
-  double h = dt / steps;
+  battery_ = std::max(0.0, battery_ - walked / 20.0 - stood / 120.0);
+  if (walked <= 0) return;
+  int steps = static_cast<int>(std::min(1000.0, std::ceil(walked / 0.02)));
+  double h = walked / steps;
   for (int i = 0; i < steps; ++i) {
     double c = std::cos(position_[2]), s = std::sin(position_[2]);
-    position_[0] += (c * velocity_[0] - s * velocity_[1]) * h;
-    position_[1] += (s * velocity_[0] + c * velocity_[1]) * h;
-    position_[2] = std::remainder(position_[2] + velocity_[2] * h, 2 * M_PI);
+    position_[0] += (c * v[0] - s * v[1]) * h;
+    position_[1] += (s * v[0] + c * v[1]) * h;
+    position_[2] = std::remainder(position_[2] + v[2] * h, 2 * M_PI);
   }
 }
 
 void RobotState::setVelocity(double vx, double vy, double vtheta) {
+  startWalk({vx, vy, vtheta}, std::nullopt);
+}
+
+std::uint64_t RobotState::startWalk(const std::array<double, 3>& v,
+                                    std::optional<TimePoint> plannedEnd) {
+  std::uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    advanceLocked(Clock::now());
-    velocity_ = {clamp(vx, -kMaxWalkX, kMaxWalkX), clamp(vy, -kMaxWalkY, kMaxWalkY),
-                 clamp(vtheta, -kMaxWalkTheta, kMaxWalkTheta)};
+    advanceLocked(clock_->now());
+    velocity_ = {clamp(v[0], -kMaxWalkX, kMaxWalkX), clamp(v[1], -kMaxWalkY, kMaxWalkY),
+                 clamp(v[2], -kMaxWalkTheta, kMaxWalkTheta)};
+    walkEnd_ = plannedEnd;
+    generation = ++moveGeneration_;
   }
-  ++moveGeneration_;
   wakeSleepers();
+  return generation;
 }
 
 std::array<double, 3> RobotState::velocity() const {
   std::lock_guard<std::mutex> lock(mutex_);
+  advanceLocked(clock_->now());
   return velocity_;
 }
 
 std::array<double, 3> RobotState::position() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  advanceLocked(Clock::now());
+  advanceLocked(clock_->now());
   return position_;
 }
 
 bool RobotState::moving() const {
   std::lock_guard<std::mutex> lock(mutex_);
+  advanceLocked(clock_->now());
   return velocity_[0] != 0 || velocity_[1] != 0 || velocity_[2] != 0;
 }
 
@@ -259,9 +280,9 @@ bool RobotState::moveBy(double x, double y, double theta) {
   double seconds = std::max({std::hypot(x, y) / kMaxWalkX, std::abs(theta) / kMaxWalkTheta, 0.1});
   // Constant velocity in the robot frame: for a pure translation or rotation this ends
   // exactly at the target; combined moves end on an arc near it (good enough here).
-  setVelocity(x / seconds, y / seconds, theta / seconds);
-  std::uint64_t generation = moveGeneration_;
-  bool completed = sleepFor(seconds, [this, generation] { return moveGeneration_ != generation; });
+  TimePoint end = clock_->now() + clockTime(seconds);
+  std::uint64_t generation = startWalk({x / seconds, y / seconds, theta / seconds}, end);
+  bool completed = sleepUntil(end, [this, generation] { return moveGeneration_ != generation; });
   if (completed) setVelocity(0, 0, 0);
   return completed;
 }
@@ -276,16 +297,23 @@ bool RobotState::waitUntilStill() {
 
 int RobotState::batteryPercent() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  advanceLocked(Clock::now());
+  advanceLocked(clock_->now());
   return static_cast<int>(std::ceil(battery_));
 }
 
+SimClock::duration RobotState::clockTime(double robotSeconds) const {
+  return std::chrono::duration_cast<SimClock::duration>(
+      std::chrono::duration<double>(robotSeconds * timeScale_));
+}
+
 bool RobotState::sleepFor(double robotSeconds, const std::function<bool()>& cancelled) {
-  auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                     std::chrono::duration<double>(robotSeconds * timeScale_));
+  return sleepUntil(clock_->now() + clockTime(robotSeconds), cancelled);
+}
+
+bool RobotState::sleepUntil(TimePoint deadline, const std::function<bool()>& cancelled) {
   std::unique_lock<std::mutex> lock(mutex_);
-  bool woken = cv_.wait_until(lock, deadline,
-                              [&] { return shutdown_ || (cancelled && cancelled()); });
+  bool woken = clock_->waitUntil(cv_, lock, deadline,
+                                 [&] { return shutdown_ || (cancelled && cancelled()); });
   return !woken;
 }
 

@@ -1,8 +1,9 @@
 // The simulated robot's body: stiffness and angle per joint (within the joint limits),
 // posture, position and walk velocity, battery. Shared by the simulated modules; every
 // public method locks, so modules may be called from several worker threads at once.
-// Time: durations are "robot seconds"; sleepFor() waits robot seconds x timeScale of real
-// time, so unit tests can run a 3 s posture change in 150 ms.
+// Time: durations are "robot seconds"; sleepFor() waits robot seconds x timeScale of clock
+// time, so unit tests can run a 3 s posture change in 150 ms. The clock is injected
+// (SimClock): the steady clock by default, a manual clock in unit tests.
 #pragma once
 
 #include <array>
@@ -11,9 +12,13 @@
 #include <condition_variable>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "sim_clock.h"
 
 namespace touchline::nao {
 
@@ -26,14 +31,15 @@ struct JointInfo {
 
 class RobotState {
  public:
-  using Clock = std::chrono::steady_clock;
+  using TimePoint = SimClock::time_point;
 
   static constexpr double kJointMaxSpeed = 6.0;    // rad/s, all joints (simplification)
   static constexpr double kMaxWalkX = 0.10;        // m/s
   static constexpr double kMaxWalkY = 0.07;        // m/s
   static constexpr double kMaxWalkTheta = 0.5;     // rad/s
 
-  explicit RobotState(double timeScale = 1.0);
+  explicit RobotState(double timeScale = 1.0,
+                      std::shared_ptr<SimClock> clock = std::make_shared<SteadySimClock>());
 
   static const std::vector<JointInfo>& joints();
   static std::vector<std::string> chains();  // Head, LArm, LLeg, RLeg, RArm
@@ -69,6 +75,8 @@ class RobotState {
   std::array<double, 3> position() const;  // x, y, theta in the world frame
   bool moving() const;
   // Walks the displacement (robot frame) at the walk speed; blocks. False if interrupted.
+  // The walk ends where planned even if this thread wakes late: the position never
+  // integrates the walk's velocity past its planned end.
   bool moveBy(double x, double y, double theta);
   // Blocks until no walk is active (or shutdown). False on shutdown.
   bool waitUntilStill();
@@ -89,14 +97,19 @@ class RobotState {
     double command = 0.0;  // last accepted command (the actuator value)
     double from = 0.0;
     double to = 0.0;
-    Clock::time_point start{};
+    TimePoint start{};
     double realSeconds = 0.0;
   };
-  double sensedLocked(const JointMotion& m, Clock::time_point now) const;
-  void advanceLocked(Clock::time_point now) const;  // integrates walk and battery
+  double sensedLocked(const JointMotion& m, TimePoint now) const;
+  void advanceLocked(TimePoint now) const;  // integrates walk and battery
+  SimClock::duration clockTime(double robotSeconds) const;  // x timeScale
+  // Sets the walk velocity (clamped), ending at plannedEnd if given; returns its generation.
+  std::uint64_t startWalk(const std::array<double, 3>& v, std::optional<TimePoint> plannedEnd);
+  bool sleepUntil(TimePoint deadline, const std::function<bool()>& cancelled);
   void applyPostureAnglesLocked(const std::string& posture);
 
   const double timeScale_;
+  const std::shared_ptr<SimClock> clock_;
   mutable std::mutex mutex_;
   std::condition_variable cv_;
   std::atomic<bool> shutdown_{false};
@@ -106,9 +119,10 @@ class RobotState {
   std::map<std::string, JointMotion> joints_;
   std::string posture_ = "Crouch";
   mutable std::array<double, 3> position_{0, 0, 0};
-  std::array<double, 3> velocity_{0, 0, 0};
+  mutable std::array<double, 3> velocity_{0, 0, 0};
+  mutable std::optional<TimePoint> walkEnd_;  // planned end of a moveBy; none for move
   mutable double battery_ = 100.0;
-  mutable Clock::time_point lastAdvance_;
+  mutable TimePoint lastAdvance_;
 };
 
 }  // namespace touchline::nao

@@ -5,7 +5,11 @@
 namespace touchline::nao {
 
 SimulatedBroker::SimulatedBroker(double timeScale, const RpcCounters* counters)
-    : robot_(timeScale) {
+    : SimulatedBroker(timeScale, counters, std::make_shared<SteadySimClock>()) {}
+
+SimulatedBroker::SimulatedBroker(double timeScale, const RpcCounters* counters,
+                                 std::shared_ptr<SimClock> clock)
+    : robot_(timeScale, std::move(clock)) {
   std::vector<std::unique_ptr<SimModule>> all;
   all.push_back(std::make_unique<SimMotion>(robot_));
   all.push_back(std::make_unique<SimPosture>(robot_));

@@ -17,6 +17,9 @@ class SimulatedBroker : public NaoqiBroker {
  public:
   // timeScale < 1 makes blocking calls faster (tests); counters feed Robot.getRpcStats.
   explicit SimulatedBroker(double timeScale = 1.0, const RpcCounters* counters = nullptr);
+  // The robot's body runs on clock (unit tests pass a ManualSimClock); the overload above
+  // uses the steady clock.
+  SimulatedBroker(double timeScale, const RpcCounters* counters, std::shared_ptr<SimClock> clock);
   ~SimulatedBroker() override;
 
   std::optional<Value> call(const std::string& module, const std::string& method,

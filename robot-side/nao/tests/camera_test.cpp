@@ -16,7 +16,7 @@ class CameraTest : public ::testing::Test {
   CameraTest() : server_(CameraOptions{"127.0.0.1", 0}), client_(context_, loopback(server_.port())) {}
 
   ::nao::CamResponse request(const std::string& payload) {
-    auto reply = client_.roundTrip(payload, 5000ms);
+    auto reply = client_.roundTrip(payload, 30000ms);
     EXPECT_TRUE(reply) << "camera request timed out";
     ::nao::CamResponse response;
     EXPECT_TRUE(response.ParseFromString(reply.value_or("")));

@@ -94,14 +94,15 @@ TEST(SimProcess, PrintsPortsServesAndStopsOnSigterm) {
   DealerClient cam(context, loopback(camPort));
   ::nao::CamRequest configure;
   configure.set_resolution(1);
-  ASSERT_TRUE(cam.roundTrip(configure.SerializeAsString(), 5000ms));
-  auto frame = cam.roundTrip("", 5000ms);
+  ASSERT_TRUE(cam.roundTrip(configure.SerializeAsString(), 30000ms));
+  auto frame = cam.roundTrip("", 30000ms);
   ASSERT_TRUE(frame);
   ::nao::CamResponse response;
   ASSERT_TRUE(response.ParseFromString(*frame));
   EXPECT_EQ(response.imagedata().substr(0, 2), "\xff\xd8");
 
-  // A long call is running while the process is told to stop: it must still exit promptly.
-  rpc.send(encodeRequest("ALTextToSpeech", "say", {stringValue(std::string(200, 'a'))}));
-  EXPECT_EQ(sim.terminate(3000ms), 0);
+  // A long call (a 300 s say) is running while the process is told to stop: it must still
+  // exit, well before the say would have ended (30 s: a generous "did not hang" bound).
+  rpc.send(encodeRequest("ALTextToSpeech", "say", {stringValue(std::string(5000, 'a'))}));
+  EXPECT_EQ(sim.terminate(30000ms), 0) << "the simulator did not exit on SIGTERM (-1: still running)";
 }
