@@ -493,6 +493,13 @@ public final class Console implements AutoCloseable {
         return naoCalls;
     }
 
+    /** Forgets what the faces show of a replay (the view stores and the NAO feeds) as of {@code startMicros}. */
+    private void restartReplayedViews(long startMicros) {
+        stores.restartReplay(startMicros);
+        naoCamera.restartReplay();
+        naoCalls.restartReplay();
+    }
+
     /** The NAOs connected through this console, oldest first. */
     public List<NaoSession> naoSessions() {
         return List.copyOf(naos);
@@ -581,13 +588,9 @@ public final class Console implements AutoCloseable {
         closeReplay();
         ReplaySession session = ReplaySession.open(files, offsets, kinds);
         long start = session.startMicros();
-        stores.restartReplay(start);
-        naoCamera.restartReplay();
-        naoCalls.restartReplay();
+        restartReplayedViews(start);
         replay = new Replay(session, bus, realClock, () -> {
-            stores.restartReplay(start);
-            naoCamera.restartReplay();
-            naoCalls.restartReplay();
+            restartReplayedViews(start);
             robots.forgetReplayed();
         });
         return replay;
@@ -604,9 +607,7 @@ public final class Console implements AutoCloseable {
             replay = null;
             robots.forgetReplayed();
             options.forgetReplayed();
-            stores.restartReplay(clock.nowMicros());
-            naoCamera.restartReplay();
-            naoCalls.restartReplay();
+            restartReplayedViews(clock.nowMicros());
         }
     }
 
