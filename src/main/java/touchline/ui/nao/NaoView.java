@@ -97,6 +97,13 @@ public final class NaoView implements View {
         HBox top = new HBox(6, new Label("NAO"), host, new Label("RPC"), rpcPort, new Label("camera"), camPort,
                 new Label("keys"), keyDir, insecure, connect, state);
         top.setPadding(new Insets(4));
+        top.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
+        // a narrow pane scrolls the row rather than shrinking its labels and ports to "…"
+        for (javafx.scene.Node n : top.getChildren()) {
+            if (n instanceof javafx.scene.layout.Region r && n != keyDir && n != state) {
+                r.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
+            }
+        }
 
         module.getItems().setAll(NaoViewModel.MODULES);
         module.setEditable(true);
