@@ -52,6 +52,11 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     @Option(names = "--seconds", defaultValue = "600", description = "seconds with the views open (default ${DEFAULT-VALUE})")
     int seconds;
 
+    @Option(names = "--warmup-seconds", defaultValue = "0", description = "before each phase's measured seconds, this many"
+            + " not counted: the JIT compiling the views' and the viewers' code on two cores (default ${DEFAULT-VALUE};"
+            + " the first 2 s of each phase are never counted)")
+    int warmupSeconds;
+
     @Option(names = "--gc", description = "also referee inside the console (embedded GameController, HL v12 to a probe on"
             + " 127.0.0.1) and report its send intervals while the views are open")
     boolean gc;
@@ -273,6 +278,10 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
 
     private Phase phase(String name, Console console, ConsoleWindow window, int secs) throws Exception {
         System.out.printf(Locale.ROOT, "%s: %d s%n", name, secs);
+        if (warmupSeconds > 0) {
+            System.out.printf(Locale.ROOT, "  warm-up %d s, not counted%n", warmupSeconds);
+            Thread.sleep(warmupSeconds * 1000L); // the phase runs; only its figures wait
+        }
         FxThread.run(() -> {
             window.pulse().latency().reset();
             window.pulse().takeRefreshNanos();

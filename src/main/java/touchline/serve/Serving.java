@@ -13,6 +13,7 @@ public final class Serving implements AutoCloseable {
 
     private final FoxgloveServer server;
     private final AutoCloseable subscription;
+    private final HeapHeadroom headroom;
 
     /**
      * Binds and starts serving; IllegalArgumentException (a sentence for the user) for a
@@ -29,6 +30,7 @@ public final class Serving implements AutoCloseable {
             server.serveJson(s);
         }
         subscription = bus.subscribe(server);
+        headroom = new HeapHeadroom(HeapHeadroom.WHILE_SERVING); // more heap while serving: issue 16
     }
 
     public FoxgloveServer server() {
@@ -44,5 +46,6 @@ public final class Serving implements AutoCloseable {
             throw new IllegalStateException(e); // unsubscribing cannot fail
         }
         server.close();
+        headroom.close();
     }
 }

@@ -29,12 +29,13 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     private final EnvelopeSink sink;
     private final InboundVerifier verifier;
     /**
-     * Where envelopes are published, beside this thread: decoded here in both cases; with a team
-     * key their tags and counters are checked there, in order. Null: everything on this thread.
+     * Where datagrams are decoded and published, beside this thread (which receives and, with a
+     * team key, takes the frame apart and shares the HMACs); with a key their tags and counters
+     * are checked there, in order. Null: everything on this thread.
      */
     private final DecodeStage stage;
 
-    /** @param stage null: everything on the event loop; else publish there (and check the tags there with a key) */
+    /** @param stage null: everything on the event loop; else decode and publish there (and check the tags there with a key) */
     FumanoidDecoder(FrameCodec frames, MessageCodec messages, PeerTable peers, TrafficCounters counters,
                     EnvelopeSink sink, InboundVerifier verifier, DecodeStage stage) {
         this.verifier = verifier;
@@ -53,7 +54,7 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
         } else if (stage == null) {
             sink.accept(toEnvelope(d));
         } else if (!verifier.hasKey()) {
-            stage.add(toEnvelope(d)); // decoded here; the model's work runs on the stage, beside the next read
+            stage.add(() -> toEnvelope(d)); // decoded and published on the stage, beside the next read
         } else {
             stage.add(checked(d));
         }
@@ -98,14 +99,15 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
     }
 
     /**
-     * With a team key, on the event loop: the datagram is decoded here, as without a key; its
-     * tag and counter are checked on the {@link DecodeStage} (the returned work), in arrival
+     * With a team key, on the event loop: the frame is taken apart here; the message is decoded
+     * and its tag and counter checked on the {@link DecodeStage} (the returned work), in arrival
      * order with the reliable stream's segments, which share the robot's counter and are checked
-     * there too. So the HMAC runs beside the next read and decode; while the stage is the slower
-     * thread ({@link DecodeStage#behind}) the event loop computes the HMAC itself (it needs no
-     * order) and the stage only settles the counter. A forgery may thus be decoded
-     * before it is refused, but what it says is never published: its envelope carries no message,
-     * its robot's address is not learned, and it is counted and shown with its source.
+     * there too. While the stage is the slower thread ({@link DecodeStage#behind}) the event loop
+     * computes the HMAC itself (it needs no order; the robot ID read from the bytes) and the stage
+     * only settles the counter. So the two threads share the work by how busy they are. A
+     * forgery may thus be decoded before it is refused, but what it says is never published: its
+     * envelope carries no message, its robot's address is not learned, and it is counted and
+     * shown with its source.
      */
     private Supplier<Envelope> checked(ReceivedDatagram d) {
         if (d.datagramClass() == DatagramClass.GAMECONTROLLER) {
@@ -119,17 +121,24 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
             return () -> bad;
         }
         FrameResult.Frame f = (FrameResult.Frame) frame;
+        if (!stage.behind()) {
+            return () -> decodedAndChecked(d, f, MessageCodec.NO_ROBOT_ID, null);
+        }
+        int prechecked = MessageCodec.robotIdOf(f.payload());
+        MessageTag.Check tag = prechecked == MessageCodec.NO_ROBOT_ID ? null : verifier.precheck(prechecked, bytes);
+        return () -> decodedAndChecked(d, f, prechecked, tag);
+    }
+
+    /** On the stage: the message decoded, then its {@link #verdict}; {@code tag} holds for robot {@code prechecked} only. */
+    private Envelope decodedAndChecked(ReceivedDatagram d, FrameResult.Frame f, int prechecked, MessageTag.Check tag) {
         MessageResult result = messages.decode(f.payload());
         int robotId = result instanceof MessageResult.Decoded decoded
                 ? decoded.message().getRobotID() : MessageCodec.robotIdOf(f.payload());
         if (robotId == MessageCodec.NO_ROBOT_ID) {
             // nothing to check a tag against: the decoder says why (no robotID, not protobuf)
-            Envelope bad = malformed(d, ((MessageResult.Malformed) result).reason());
-            return () -> bad;
+            return malformed(d, ((MessageResult.Malformed) result).reason());
         }
-        // the HMAC needs no order: the event loop takes it on while the stage is the slower thread
-        MessageTag.Check tag = stage.behind() ? verifier.precheck(robotId, bytes) : null;
-        return () -> verdict(d, robotId, f, result, tag);
+        return verdict(d, robotId, f, result, robotId == prechecked ? tag : null);
     }
 
     /**
