@@ -32,45 +32,46 @@ class GcSenderTest {
 
     @Test
     @Tag("integration")
-    void sendsEvery500msAndAStateChangeAtOnce() throws Exception {
+    void sendsOnItsGridWithConsecutivePacketNumbers() throws Exception {
         Game game = game();
         HlGameState12 format = new HlGameState12();
         try (LoopbackReceiver robot = new LoopbackReceiver();
              GcSender sender = new GcSender(p -> game.controlData(), List.of(format), List.of(robot.address()),
-                     null, e -> { }, 500, new touchline.app.SystemClock())) {
-            game.addListener(sender::sendNow);
+                     null, e -> { }, 100, new touchline.app.SystemClock())) {
             sender.start();
             List<LoopbackReceiver.Received> got = new ArrayList<>();
             for (int i = 0; i < 6; i++) {
-                LoopbackReceiver.Received r = robot.receive(2000);
+                LoopbackReceiver.Received r = robot.receive(30_000);
                 assertNotNull(r, "packet " + i);
                 got.add(r);
             }
             for (int i = 1; i < got.size(); i++) {
-                double ms = (got.get(i).nanos() - got.get(i - 1).nanos()) / 1e6;
-                // each interval: no packet lost or doubled (the machine may be loaded; precision is
-                // measured by the benchmark, not here)
-                assertTrue(Math.abs(ms - 500) < 250, "interval " + i + " was " + ms + " ms");
+                // no packet lost or doubled; when they leave is SendSchedule's (SendScheduleTest, on
+                // explicit times) and measured by bench gc, not asserted on this machine's clock here
                 assertEquals((got.get(i - 1).data()[6] + 1) & 0xFF, got.get(i).data()[6] & 0xFF, "packetNumber");
             }
-            // On a fixed grid late packets do not accumulate: 5 intervals span 2500 ms.
-            double spanMs = (got.get(5).nanos() - got.get(0).nanos()) / 1e6;
-            assertTrue(Math.abs(spanMs - 2500) < 60, "5 intervals took " + spanMs + " ms");
-            // Change the state ~100 ms after a periodic packet: it must arrive long before the next slot.
-            Thread.sleep(100);
-            long changed = System.nanoTime();
+        }
+    }
+
+    @Test
+    @Tag("integration")
+    void aStateChangeGoesOutAtOnceNotAtTheNextSlot() throws Exception {
+        Game game = game();
+        HlGameState12 format = new HlGameState12();
+        // an interval far longer than the wait below: a change that waited for its slot would not arrive
+        try (LoopbackReceiver robot = new LoopbackReceiver();
+             GcSender sender = new GcSender(p -> game.controlData(), List.of(format), List.of(robot.address()),
+                     null, e -> { }, 3_600_000, new touchline.app.SystemClock())) {
+            game.addListener(sender::sendNow);
+            sender.start();
+            LoopbackReceiver.Received first = robot.receive(30_000);
+            assertNotNull(first, "the first packet goes out at the start");
+            assertEquals(GameControlData.STATE_INITIAL, format.decode(first.data()).value().state());
             game.perform(new ToReady());
-            LoopbackReceiver.Received r = robot.receive(1000);
-            assertNotNull(r);
-            double delayMs = (r.nanos() - changed) / 1e6;
+            LoopbackReceiver.Received r = robot.receive(30_000);
+            assertNotNull(r, "the state change was not sent at once (the next slot is an hour away)");
             assertEquals(GameControlData.STATE_READY, format.decode(r.data()).value().state());
-            // at once, not at the next slot ~400 ms later
-            assertTrue(delayMs < 200, "state change sent after " + delayMs + " ms");
-            // The grid is not shifted by the extra packet: the next periodic one follows ~400 ms later.
-            LoopbackReceiver.Received next = robot.receive(1000);
-            double gapMs = (next.nanos() - got.get(got.size() - 1).nanos()) / 1e6;
-            assertTrue(Math.abs(gapMs - 500) < 150,
-                    "periodic packet after the change came " + gapMs + " ms after the last periodic one");
+            assertEquals((first.data()[6] + 1) & 0xFF, r.data()[6] & 0xFF, "packetNumber");
         }
     }
 

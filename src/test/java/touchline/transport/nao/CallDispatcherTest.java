@@ -246,6 +246,25 @@ class CallDispatcherTest {
     }
 
     @Test
+    void aCallWithAShortTimeoutBringsTheNextTurnForwardFromTheIdleTurn() {
+        dispatcher("");
+        online();
+        long idle = dispatcher.turn();
+        assertEquals(now + CallDispatcher.IDLE_TURN_NANOS, idle, "the thread would sleep until its idle turn");
+        CompletableFuture<CallOutcome> answer = new CompletableFuture<>();
+        // sent on the caller's thread (LinkLoop.submit while the thread sleeps)
+        dispatcher.dispatch(new QueuedCall(NaoCall.of("Test", "get"),
+                HAWActorRPCRequest.newBuilder().setModule("Test").setMethod("get"), 50, false, answer, now));
+        assertEquals(1, wire.sentIds.size());
+        // what the caller compares with the sleeping thread's next turn (LinkLoop): earlier, so it wakes it
+        assertEquals(now + 50 * MS, dispatcher.nextTurnNanos(now));
+        assertTrue(dispatcher.nextTurnNanos(now) - idle < 0);
+        now += 50 * MS;
+        dispatcher.turn();
+        assertInstanceOf(CallOutcome.TimedOut.class, answer.join());
+    }
+
+    @Test
     void aSendTheWireRefusesLosesTheCall() {
         dispatcher("");
         online();
