@@ -72,6 +72,10 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             + "machines: not in the window's heap), instead of in the window's JVM")
     boolean viewersApart;
 
+    @Option(names = "--viewers-niced", description = "with --viewers-apart: the viewers' JVM at nice 19, so that it takes"
+            + " only CPU the window leaves idle — standing in for viewers on other laptops, whose CPU is not the console's")
+    boolean viewersNiced;
+
     @Option(names = "--laptop", description = "instead: issue 14's laptop budgets, the console's CPU and PSS on the demo"
             + " team and demo layout (its own JVM), against the headless listen in the same run")
     boolean laptop;
@@ -191,10 +195,14 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
 
     /** The serving phase with the viewers in a JVM of their own ({@code ViewerCrowd}'s main). */
     private Phase servedApart(touchline.serve.Serving serving, Console console, ConsoleWindow window) throws Exception {
-        Process crowd = new ProcessBuilder(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> command = new ArrayList<>();
+        if (viewersNiced) {
+            command.addAll(List.of("nice", "-n", "19"));
+        }
+        command.addAll(List.of(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-XX:+UseZGC", "-cp", System.getProperty("java.class.path"), "touchline.bench.serve.ViewerCrowd",
-                Integer.toString(serving.server().port()), Integer.toString(viewers))
-                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+                Integer.toString(serving.server().port()), Integer.toString(viewers)));
+        Process crowd = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.INHERIT).start();
         try (java.io.BufferedReader out = new java.io.BufferedReader(new java.io.InputStreamReader(crowd.getInputStream(),
                 java.nio.charset.StandardCharsets.UTF_8));
              java.io.Writer in = new java.io.OutputStreamWriter(crowd.getOutputStream(), java.nio.charset.StandardCharsets.UTF_8)) {
@@ -207,7 +215,8 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             in.write("go\n");
             in.flush();
             touchline.bench.serve.RoundConditions conditions = new touchline.bench.serve.RoundConditions();
-            Phase on = phase("views open, serving to " + viewers + " viewers in another JVM", console, window, seconds);
+            Phase on = phase("views open, serving to " + viewers + " viewers in another JVM" + (viewersNiced ? " at nice 19" : ""),
+                    console, window, seconds);
             String windowSide = conditions.since();
             in.close();
             System.out.println("  " + out.readLine() + "; sent " + serving.server().stats().sent() + ", dropped "
