@@ -20,6 +20,7 @@ import picocli.CommandLine.Command;
                 touchline.bench.serve.ServeBenchmark.class,
                 StartBenchCommand.class,
                 SubscriberCostBench.class,
+                TagBenchCommand.class,
         })
 public final class BenchCommand implements Runnable {
 

@@ -21,6 +21,9 @@ final class DrainMeter {
 
     private final java.util.function.LongFunction<byte[]> source;
     private final int batch;
+    /** Every thread's run and run-queue wait during the drains (the kernel's books), for {@code --threads}. */
+    private final SchedStats sched = new SchedStats();
+    private long drained;
 
     /** @param batch datagrams per filled buffer (made smaller when the kernel does not take a batch whole) */
     DrainMeter(List<byte[]> datagrams, int batch) {
@@ -64,12 +67,14 @@ final class DrainMeter {
                 }
                 decoded.expect(before + size);
                 cpu.begin();
+                sched.begin();
                 long t0 = System.nanoTime();
                 resume.run();
                 // parked, not spinning: the second core stays free for the receiver's own threads
                 long t1 = decoded.await(t0 + 1_000_000_000L);
                 pause.run();
                 cpu.end();
+                sched.end();
                 long got = decoded.sum() - before;
                 decodedAll += got;
                 if (got < size) {
@@ -81,6 +86,7 @@ final class DrainMeter {
                 received += got;
             }
             resume.run();
+            drained = decodedAll;
             if (incomplete > 0) {
                 System.out.printf("  (%d batches not taken whole by the kernel, left out; batch now %d)%n", incomplete, size);
             }
@@ -89,5 +95,10 @@ final class DrainMeter {
             cpu.total().forEach((role, ns) -> cpuPerMessage.put(role, ns * perDatagram));
             return new IngestResult(received, received, received / (drainingNanos / 1e9), cpuPerMessage);
         }
+    }
+
+    /** After {@link #measure}: the threads that ran most during the drains, per datagram. */
+    String threadsText() {
+        return SchedStats.text(sched.total(), drained, 7);
     }
 }

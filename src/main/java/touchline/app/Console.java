@@ -364,9 +364,12 @@ public final class Console implements AutoCloseable {
         udp.setReading(on);
     }
 
-    /** The UDP transport in use and why (epoll + recvmmsg, or the portable NIO), in words. */
+    /**
+     * The UDP transport in use and why (epoll + recvmmsg, or the portable NIO), and where its two
+     * ingest threads run, in words.
+     */
     public String transportDescription() {
-        return udp.backend().describe();
+        return udp.description();
     }
 
     /** The UDP transport's counts of datagrams and bytes in and out, now. */

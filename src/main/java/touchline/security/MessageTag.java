@@ -21,7 +21,13 @@ public final class MessageTag {
     public enum Check { OK, NO_TAG, TRUNCATED, WRONG_KEY, BAD_TAG }
 
     private final TeamKey key;
-    private final Mac mac;
+    /**
+     * The Mac with the key's inner pad already hashed (primed by an empty update, see the
+     * constructor): each tag starts from a clone of it, so the pad block is not hashed again
+     * for every datagram — one SHA-512 block compression of the ~four a short datagram's tag
+     * costs (`bench tag`).
+     */
+    private final Mac primed;
     private final byte[] head = new byte[2 + TeamKey.ID_SIZE + 8];
     /** The full HMAC-SHA-512 of the last check, reused (doFinal into it) and wiped after each use. */
     private final byte[] full = new byte[64];
@@ -29,10 +35,12 @@ public final class MessageTag {
     public MessageTag(TeamKey key) {
         this.key = key;
         try {
-            mac = Mac.getInstance("HmacSHA512");
-            mac.init(new SecretKeySpec(key.secret(), "HmacSHA512"));
-        } catch (GeneralSecurityException e) {
-            throw new IllegalStateException("the JDK has no HmacSHA512", e);
+            primed = Mac.getInstance("HmacSHA512");
+            primed.init(new SecretKeySpec(key.secret(), "HmacSHA512"));
+            primed.update(new byte[0]); // the provider hashes the inner pad at the first update
+            ((Mac) primed.clone()).doFinal(); // cloneable here, or the constructor fails, not a datagram
+        } catch (GeneralSecurityException | CloneNotSupportedException e) {
+            throw new IllegalStateException("the JDK's HmacSHA512 is missing or cannot be cloned", e);
         }
         System.arraycopy(key.id(), 0, head, 2, TeamKey.ID_SIZE);
     }
@@ -54,12 +62,13 @@ public final class MessageTag {
         head[0] = direction;
         head[1] = (byte) robotId;
         Trailer.putLong(head, 2 + TeamKey.ID_SIZE, counter);
-        mac.update(head);
-        mac.update(payload, off, len);
         try {
+            Mac mac = (Mac) primed.clone();
+            mac.update(head);
+            mac.update(payload, off, len);
             mac.doFinal(full, 0);
-        } catch (javax.crypto.ShortBufferException e) {
-            throw new IllegalStateException("HmacSHA512 wrote more than 64 bytes", e);
+        } catch (javax.crypto.ShortBufferException | CloneNotSupportedException e) {
+            throw new IllegalStateException("HmacSHA512 could not be cloned or wrote more than 64 bytes", e);
         }
     }
 

@@ -31,6 +31,9 @@ final class StandardConversion implements AutoCloseable {
             t.setDaemon(true);
             return t;
         }, (r, executor) -> dropped.incrementAndGet());
+        // started here, not at the first offer: a thread started from touchline-decode would
+        // inherit the CPU that thread is kept on (transport.CoreSplit)
+        thread.prestartCoreThread();
     }
 
     /** From the publishing thread: converts {@code e} later when a viewer may want it. Never blocks. */

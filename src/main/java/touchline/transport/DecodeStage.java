@@ -38,12 +38,20 @@ final class DecodeStage implements AutoCloseable {
     /** Envelopes decoded on the event loop, the work that makes one here, tasks (or an {@link #awaitPublished} marker). */
     private List<Object> batch = new ArrayList<>(MAX_BATCH);
     private volatile boolean closed;
+    /** This thread's kernel id, once it runs (Linux; empty elsewhere): for {@link CoreSplit}. */
+    private final java.util.concurrent.CompletableFuture<java.util.Optional<String>> threadId =
+            new java.util.concurrent.CompletableFuture<>();
 
     DecodeStage(EnvelopeSink sink) {
         this.sink = sink;
         this.thread = new Thread(this::run, "touchline-decode");
         thread.setDaemon(true);
         thread.start();
+    }
+
+    /** This thread's kernel id (waits until the thread has started), empty where there is none. */
+    java.util.Optional<String> threadId() {
+        return threadId.join();
     }
 
     /** Event loop: one datagram's remaining work (decode, envelope), published in order. */
@@ -108,6 +116,7 @@ final class DecodeStage implements AutoCloseable {
 
     @SuppressWarnings("unchecked") // the batch holds Envelopes, Supplier<Envelope>s and Runnables only
     private void run() {
+        threadId.complete(CoreSplit.currentThreadId());
         while (true) {
             List<Object> work;
             try {

@@ -47,6 +47,8 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     private EventLoopGroup group;
     private DatagramChannel channel;
     private volatile UdpBackend backend;
+    /** What {@link CoreSplit} did at start (or why not), for the description; empty when nothing to say. */
+    private volatile String cores = "";
 
     /**
      * @param extraInbound handlers placed before the FUmanoids decoder (e.g. the reliable stream),
@@ -114,7 +116,48 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
             }
             throw e;
         }
+        splitCores();
         return this;
+    }
+
+    /** The event loop and the stage on different CPUs where the machine allows ({@link CoreSplit}). */
+    private void splitCores() {
+        CoreSplit.Result here = CoreSplit.forThisProcess();
+        cores = here.note();
+        if (here.split().isEmpty()) {
+            return;
+        }
+        try {
+            Optional<String> loopThread = channel.eventLoop().submit(CoreSplit::currentThreadId).get(5,
+                    java.util.concurrent.TimeUnit.SECONDS);
+            Optional<String> stageThread = stage.threadId();
+            if (loopThread.isPresent() && stageThread.isPresent()) {
+                cores = here.split().get().apply(loopThread.get(), stageThread.get());
+            }
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            cores = "ingest threads not split across CPUs: " + e;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Tests: the stage thread's kernel id (Linux). */
+    Optional<String> stageThreadId() {
+        return stage.threadId();
+    }
+
+    /** Tests: the event loop's kernel id (Linux). */
+    String eventLoopThreadId() throws Exception {
+        return channel.eventLoop().submit(CoreSplit::currentThreadId).get().orElseThrow();
+    }
+
+    /**
+     * The transport in words: the backend and why ({@link UdpBackend#describe}), and once started
+     * where the two ingest threads run ({@link CoreSplit}).
+     */
+    public String description() {
+        String c = cores;
+        return backend().describe() + (c.isEmpty() ? "" : "; " + c);
     }
 
     /**
