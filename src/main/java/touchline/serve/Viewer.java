@@ -53,26 +53,46 @@ final class Viewer {
     }
 
     /**
-     * How long a message may wait for the ones after it, so that they leave in one write: one
-     * system call (and, on loopback, one wake-up of the viewer) per viewer per interval instead
-     * of one per message. At the UI benchmark's load (2 430 messages/s to eight viewers) sending
-     * each at once cost the window a third of its frame rate (docs/benchmarks.md, issue 16);
-     * 10 ms is a fifth of the 50 ms latency budget.
+     * The least time between two writes to a viewer: what arrives meanwhile leaves in one write,
+     * so one system call (and, on loopback, one wake-up of the viewer) per viewer per interval
+     * instead of one per message. At the UI benchmark's load (2 430 messages/s to eight viewers)
+     * sending each at once cost the window a third of its frame rate (docs/benchmarks.md, issue
+     * 16). A message after a quiet spell leaves at once; under load one waits at most this long,
+     * a fifth of the 50 ms latency budget.
      */
     static final long SEND_INTERVAL_MILLIS = 10;
 
+    /** Event loop: a write happened less than {@link #SEND_INTERVAL_MILLIS} ago; its end drains what waits. */
+    private boolean coolingDown;
+
     /**
-     * From any thread: queues a message for {@code s}; the event loop sends it with whatever
-     * else arrives within {@link #SEND_INTERVAL_MILLIS}. Never blocks.
+     * From any thread: queues a message for {@code s}; the event loop sends it at once, or after
+     * the last write's {@link #SEND_INTERVAL_MILLIS} with whatever else arrives meanwhile. Never
+     * blocks.
      */
     void offer(Subscription s, long timeNanos, byte[] payload) {
         pending.offer(s, timeNanos, payload, !channel.isWritable());
         if (drainScheduled.compareAndSet(false, true)) {
             try {
-                channel.eventLoop().schedule(this::drain, SEND_INTERVAL_MILLIS, java.util.concurrent.TimeUnit.MILLISECONDS);
+                channel.eventLoop().execute(this::drainUnlessCoolingDown);
             } catch (RejectedExecutionException e) {
                 drainScheduled.set(false); // the server is closing
             }
+        }
+    }
+
+    /** Event loop: drains now, or leaves it to the end of the interval since the last write. */
+    private void drainUnlessCoolingDown() {
+        if (!coolingDown) {
+            drain();
+        }
+    }
+
+    /** Event loop: the interval since the last write is over; what arrived meanwhile goes now. */
+    private void coolDownOver() {
+        coolingDown = false;
+        if (drainScheduled.get()) {
+            drain();
         }
     }
 
@@ -95,6 +115,15 @@ final class Viewer {
         }
         if (wrote) {
             channel.flush();
+            if (!coolingDown) {
+                coolingDown = true;
+                try {
+                    channel.eventLoop().schedule(this::coolDownOver, SEND_INTERVAL_MILLIS,
+                            java.util.concurrent.TimeUnit.MILLISECONDS);
+                } catch (RejectedExecutionException e) {
+                    coolingDown = false; // the server is closing
+                }
+            }
         }
     }
 
