@@ -19,7 +19,10 @@ import java.util.Map;
  * <ul>
  * <li>{@link #PAYLOAD}: a well-framed FUmanoids datagram. The data is the protobuf
  *     {@code fumanoid.Message} behind the header (encoding {@code protobuf}, so other MCAP
- *     tools decode it); the header is rebuilt from the channel's framing on replay.</li>
+ *     tools decode it); the header is rebuilt from the channel's framing on replay. A datagram
+ *     that carried a team key's trailer (docs/security.md) is recorded so too, without the
+ *     trailer: its tag and counter were checked when it arrived and mean nothing to a replay or
+ *     another tool; a forged one has no message and is kept whole as {@link #RAW}.</li>
  * <li>{@link #RAW}: anything else that decoded or needs no decoding (GameController packets,
  *     NAO calls, camera JPEGs, link events): the exact bytes, encoding
  *     {@value #RAW_ENCODING}, no schema.</li>
@@ -157,9 +160,16 @@ final class EnvelopeLayout {
         return RAW;
     }
 
+    /** Where a FUmanoids datagram's frame ends: before a team key's trailer, else at its end. */
+    static int frameEnd(byte[] raw) {
+        return touchline.security.InboundVerifier.payloadLength(raw);
+    }
+
+    /** The framing of {@code raw}'s frame (up to {@link #frameEnd}) when its header is the canonical one, else null. */
     static Framing exactFraming(byte[] raw) {
-        if (raw.length >= 2 && raw[0] == 0 && raw[1] == Framing.MESSAGE_TYPE) {
-            if (raw.length < 12 || lengthField(raw, 8) != raw.length - 12) {
+        int end = frameEnd(raw);
+        if (end >= 2 && raw[0] == 0 && raw[1] == Framing.MESSAGE_TYPE) {
+            if (end < 12 || lengthField(raw, 8) != end - 12) {
                 return null;
             }
             for (int i = 2; i < 8; i++) {
@@ -169,7 +179,7 @@ final class EnvelopeLayout {
             }
             return Framing.LEGACY;
         }
-        return raw.length >= 4 && lengthField(raw, 0) == raw.length - 4 ? Framing.LENGTH_PREFIX : null;
+        return end >= 4 && lengthField(raw, 0) == end - 4 ? Framing.LENGTH_PREFIX : null;
     }
 
     private static long lengthField(byte[] d, int at) {

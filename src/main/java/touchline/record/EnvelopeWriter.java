@@ -209,7 +209,7 @@ public final class EnvelopeWriter implements Closeable {
         switch (kindOfLayout) {
             case EnvelopeLayout.PAYLOAD -> {
                 int header = framing.headerSize();
-                int length = e.raw().length - header;
+                int length = EnvelopeLayout.frameEnd(e.raw()) - header; // a team key's trailer is not kept
                 writer.addMessage(channel.id, logTime, robotTime(channel, e.message(), e.raw(), header, length, logTime),
                         e.raw(), header, length);
             }

@@ -61,4 +61,32 @@ class McapInteropTest {
                 """, file);
         assertTrue(out.endsWith("fumanoid.Message 1 True"), out);
     }
+
+    /** A robot's datagram with a team key's trailer: still a protobuf message to another tool. */
+    @Test
+    void pythonProtobufSupportDecodesATaggedStatus() throws Exception {
+        PythonMcap.require("mcap_protobuf");
+        touchline.security.MessageTag tag = new touchline.security.MessageTag(new touchline.security.TeamKey(new byte[32]));
+        List<touchline.transport.Envelope> sent = new java.util.ArrayList<>();
+        long counter = 1;
+        for (touchline.transport.Envelope e : RecordingFixture.team(1, 2)) {
+            sent.add(e.message() == null ? e : new touchline.transport.Envelope(e.timeMicros(), e.direction(), e.channel(),
+                    e.peer(), e.robotId(), e.kind(), e.message(),
+                    tag.append(touchline.security.MessageTag.FROM_ROBOT, e.robotId(), counter++, e.raw()), null,
+                    touchline.transport.Origin.LIVE, touchline.security.Authenticity.VERIFIED));
+        }
+        Path file = dir.resolve("tagged.mcap");
+        RecordingFixture.write(file, sent, EnvelopeWriter.Options.defaults());
+        String out = PythonMcap.run("""
+                import sys
+                from mcap.reader import make_reader
+                from mcap_protobuf.decoder import DecoderFactory
+                with open(sys.argv[1], 'rb') as f:
+                    r = make_reader(f, decoder_factories=[DecoderFactory()])
+                    for schema, channel, message, decoded in r.iter_decoded_messages(topics=['/robot/1/status']):
+                        print(channel.message_encoding, schema.name, decoded.robotID, 'goalie' in str(decoded))
+                        break
+                """, file);
+        assertTrue(out.endsWith("protobuf fumanoid.Message 1 True"), out);
+    }
 }

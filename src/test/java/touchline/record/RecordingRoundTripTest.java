@@ -64,6 +64,45 @@ class RecordingRoundTripTest {
         }
     }
 
+    /**
+     * With a team key every robot datagram ends in a 32-byte trailer: recorded as its protobuf
+     * message all the same (other tools decode it; a replay and a remote viewer get the robot's
+     * data), without the trailer; a forgery (no message) is kept whole with its reason.
+     */
+    @Test
+    void aTaggedDatagramIsRecordedAsItsMessageWithoutItsTrailerAndAForgeryWhole() throws Exception {
+        Envelope status = RecordingFixture.team(1, 1).stream().filter(e -> e.kind().equals("status")).findFirst()
+                .orElseThrow();
+        touchline.security.MessageTag tag = new touchline.security.MessageTag(new touchline.security.TeamKey(new byte[32]));
+        byte[] tagged = tag.append(touchline.security.MessageTag.FROM_ROBOT, 1, 42, status.raw());
+        byte[] forgedBytes = tag.append(touchline.security.MessageTag.FROM_ROBOT, 1, 43, status.raw());
+        forgedBytes[forgedBytes.length - 1] ^= 1;
+        List<Envelope> sent = List.of(
+                new Envelope(status.timeMicros(), Direction.IN, Channel.FUMANOID, status.peer(), 1, "status",
+                        status.message(), tagged, null, touchline.transport.Origin.LIVE,
+                        touchline.security.Authenticity.VERIFIED),
+                new Envelope(status.timeMicros() + 1, Direction.IN, Channel.FUMANOID, status.peer(), 1, "forged", null,
+                        forgedBytes, "forged: bad tag (claims robot 1)", touchline.transport.Origin.LIVE,
+                        touchline.security.Authenticity.FORGED));
+        Path file = dir.resolve("tagged.mcap");
+        RecordingFixture.write(file, sent, EnvelopeWriter.Options.defaults());
+        try (Recording r = Recording.open(file)) {
+            McapReader.ChannelInfo channel = r.mcap().channels().values().stream()
+                    .filter(c -> c.topic().equals("/robot/1/status")).findFirst().orElseThrow();
+            assertEquals("protobuf", channel.messageEncoding());
+            assertEquals("payload", channel.metadata().get("touchline.layout"));
+            assertEquals("LEGACY", channel.metadata().get("touchline.framing"));
+            List<Envelope> back = RecordingFixture.readAll(r);
+            assertEquals(2, back.size());
+            assertEquals(status.message(), back.get(0).message(), "the robot's data comes back decoded");
+            assertEquals(status.raw().length, back.get(0).raw().length, "without the trailer");
+            assertTrue(java.util.Arrays.equals(status.raw(), back.get(0).raw()));
+            assertTrue(java.util.Arrays.equals(forgedBytes, back.get(1).raw()), "the forgery whole");
+            assertEquals("forged: bad tag (claims robot 1)", back.get(1).error());
+            assertTrue(r.problems().isEmpty(), r.problems().toString());
+        }
+    }
+
     @Test
     void envelopesThatDifferOnlyInPeerFramingOrDirectionKeepTheirOwnChannels() throws Exception {
         // the writer's channel cache compares fields in place; every one of them must count

@@ -83,6 +83,31 @@ class RemoteViewerIntegrationTest {
         }
     }
 
+    /**
+     * The demo runs with a team key, so the first console's robot datagrams carry a trailer: a
+     * second Touchline still gets their messages (the served channel says the framing of the
+     * frame before the trailer; before, it said neither framing nor schema and the viewer could
+     * use none of the robots' channels).
+     */
+    @Test
+    void aSecondTouchlineShowsTheRobotsOfAConsoleWithATeamKey() throws Exception {
+        try (ServedField field = new ServedField(); Console second = viewer()) {
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("connected", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+            long[] counter = {0};
+            // a status each time the condition is polled: the viewer subscribes once the channel is advertised
+            Await.until("robot 6 in the second console", 5000, () -> {
+                field.publishTagged(ServedField.status(6, "tagged-six", 77), "status", ++counter[0]);
+                return second.robots().robot(6).isPresent();
+            });
+            RobotSnapshot here = second.robots().robot(6).orElseThrow();
+            assertEquals("tagged-six", here.name());
+            assertEquals(Origin.REMOTE, here.origin());
+            assertEquals(0, second.remote().orElseThrow().status().unusable(),
+                    second.remote().orElseThrow().status().toString());
+        }
+    }
+
     private static void send(java.net.DatagramSocket s, java.net.DatagramPacket p) {
         try {
             s.send(p);

@@ -72,6 +72,19 @@ final class ServedField implements AutoCloseable {
                 frames.encode(Framing.LENGTH_PREFIX, m.toByteArray()), null));
     }
 
+    /**
+     * As {@link #publish}, but the datagram as a robot with a team key sends it: with the 32-byte
+     * trailer behind the frame, as the console's decoder hands it on once the tag checked out.
+     */
+    void publishTagged(Fumanoid.Message m, String kind, long counter) {
+        byte[] tagged = new touchline.security.MessageTag(new touchline.security.TeamKey(new byte[32])).append(
+                touchline.security.MessageTag.FROM_ROBOT, m.getRobotID(), counter,
+                frames.encode(Framing.LENGTH_PREFIX, m.toByteArray()));
+        console.bus().accept(new Envelope(console.clock().nowMicros(), Direction.IN, Channel.FUMANOID,
+                new InetSocketAddress("127.0.0.1", 40000 + m.getRobotID()), m.getRobotID(), kind, m, tagged, null,
+                touchline.transport.Origin.LIVE, touchline.security.Authenticity.VERIFIED));
+    }
+
     /** A GameController packet from the golden files (e.g. {@code hl12/04-playing.bin}) into the stream, as heard on 3838. */
     void publishGameState(String golden) throws Exception {
         byte[] packet;
