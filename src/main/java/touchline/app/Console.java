@@ -436,7 +436,7 @@ public final class Console implements AutoCloseable {
 
     /** The version, runtime and portable fallbacks in use (the window's Help → About and status bar). */
     public RuntimeReport runtime() {
-        return RuntimeReport.ofThisProcess(udp.backend());
+        return RuntimeReport.ofThisProcess(udp.backend()).withUdpCores(udp.cores());
     }
     /** The reliable streams: for this package and the tests' fixture only (faces: {@link #openStream}). */
     ReliableStreamHandler reliable() { return reliable; }

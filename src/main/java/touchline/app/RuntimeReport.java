@@ -15,9 +15,20 @@ import java.util.List;
  * @param system           e.g. "Linux 6.1 amd64"
  * @param udp              the console's UDP transport and why
  * @param realtimeUnavailable "" when real-time priority may be had here, else why normal priority
+ * @param udpCores         where the transport's two ingest threads run (e.g. "ingest threads on
+ *                         CPUs 0 | 1", {@code transport.CoreSplit}), "" when there is nothing to say
  */
 public record RuntimeReport(ProductVersion version, String java, String system, UdpBackend udp,
-                            String realtimeUnavailable) {
+                            String realtimeUnavailable, String udpCores) {
+
+    public RuntimeReport(ProductVersion version, String java, String system, UdpBackend udp, String realtimeUnavailable) {
+        this(version, java, system, udp, realtimeUnavailable, "");
+    }
+
+    /** The same report, saying where the ingest threads of a started transport run. */
+    public RuntimeReport withUdpCores(String cores) {
+        return new RuntimeReport(version, java, system, udp, realtimeUnavailable, cores);
+    }
 
     /** This process, for a console on {@code udp}. */
     /**
@@ -50,7 +61,8 @@ public record RuntimeReport(ProductVersion version, String java, String system, 
 
     /** The lines of Help → About and of {@code --version}. */
     public List<String> lines() {
-        return List.of(version.title(), java + ", " + system.trim(), "UDP transport: " + udp.describe(),
+        return List.of(version.title(), java + ", " + system.trim(),
+                "UDP transport: " + udp.describe() + (udpCores.isEmpty() ? "" : "; " + udpCores),
                 "GameController sender: " + priority());
     }
 }

@@ -160,6 +160,11 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         return backend().describe() + (c.isEmpty() ? "" : "; " + c);
     }
 
+    /** Where the two ingest threads run, or why not as planned ({@link CoreSplit}); "" before start or with nothing to say. */
+    public String cores() {
+        return cores;
+    }
+
     /**
      * Stops or resumes reading from the socket; while stopped, datagrams wait in the socket's
      * receive buffer (and beyond it are dropped by the kernel). Returns once the event loop has

@@ -106,7 +106,8 @@ class StatusBarUiTest {
             gc.press("#gc-ready");
             gc.press("#gc-set");
             gc.press("#gc-play");
-            ui.await(30, this::bannerShown);
+            // READY and SET already silence the console: wait for the banner of PLAYING, not the first one
+            ui.await(30, () -> bannerShown() && text("#status-silence").contains("PLAYING"));
             String banner = text("#status-silence");
             assertTrue(banner.contains("match mode") && banner.contains("PLAYING"), banner);
 
