@@ -126,4 +126,35 @@ class ViewsFitUiTest {
         org.junit.jupiter.api.Assertions.assertTrue(HEADERS_SEEN.containsAll(List.of("robots/robots/Battery", "robots/robots/Online for",
                 "network/network/Time", "network/network/Peer")), HEADERS_SEEN.toString());
     }
+
+    /**
+     * A view opened from Ctrl+K into the demo layout goes into its narrow left pane: the Viewers
+     * and NAO views keep their buttons and field names whole there too (the pane scrolls sideways).
+     */
+    @Test
+    void viewsOpenedIntoTheDemoLayoutsNarrowPaneKeepTheirControlsWhole() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (String id : List.of("viewers", "nao")) {
+            ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+            long restored = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > restored + 5);
+            ui.fxRun(() -> ui.window.open(id, ViewSource.NONE));
+            ui.await(30, () -> ui.fx(() -> ui.window.shell().openViews().stream()
+                    .anyMatch(v -> v.spec().id().equals(id) && FramePulse.showing(v.frame()))));
+            long start = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > start + 35); // past a label check of the frame
+            problems.addAll(ui.fx(() -> {
+                List<String> out = new ArrayList<>();
+                for (Shell.OpenView v : ui.window.shell().openViews()) {
+                    if (v.spec().id().equals(id) && FramePulse.showing(v.frame())) {
+                        collect(v.frame(), "demo layout + " + id, out);
+                        return out;
+                    }
+                }
+                out.add(id + " not showing after it was opened into the demo layout");
+                return out;
+            }));
+        }
+        assertEquals(List.of(), problems);
+    }
 }

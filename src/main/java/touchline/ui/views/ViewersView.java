@@ -5,7 +5,6 @@ import javafx.scene.Node;
 import javafx.scene.control.Button;
 import javafx.scene.control.CheckBox;
 import javafx.scene.control.Label;
-import javafx.scene.control.TableColumn;
 import javafx.scene.control.TableView;
 import javafx.scene.control.TextField;
 import javafx.scene.control.ToggleButton;
@@ -15,7 +14,6 @@ import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.Priority;
 import javafx.scene.layout.VBox;
-import javafx.beans.property.ReadOnlyStringWrapper;
 import touchline.serve.FoxgloveServer;
 import touchline.serve.ViewerInfo;
 import touchline.ui.FrameContext;
@@ -77,26 +75,26 @@ public final class ViewersView implements View {
         beyond.setOnAction(e -> toggle.setBeyondThisMachine(beyond.isSelected()));
         table.setId("viewers-table");
         table.setPlaceholder(new Label("No viewer connected"));
-        table.getColumns().add(column("Viewer", Row::address));
-        TableColumn<Row, String> subs = column("Subscriptions", r -> Integer.toString(r.subscriptions()));
-        table.getColumns().add(subs);
-        table.getColumns().add(column("Messages/s", r -> String.format("%.0f", r.perSecond())));
-        table.getColumns().add(column("Dropped", r -> Long.toString(r.dropped())));
-        table.getColumns().add(column("Topics", Row::topics));
-        table.setColumnResizePolicy(TableView.CONSTRAINED_RESIZE_POLICY_FLEX_LAST_COLUMN);
-        HBox controls = new HBox(8, serve, new Label("Port"), port, beyond);
+        // never narrower than their headers: in a narrow pane the table scrolls sideways
+        TextColumns<Row> columns = new TextColumns<>(false);
+        table.getColumns().add(columns.column("Viewer", Row::address, 150, "127.0.0.1:65535"));
+        table.getColumns().add(columns.column("Subscriptions", r -> Integer.toString(r.subscriptions()), 0, ""));
+        table.getColumns().add(columns.column("Messages/s", r -> String.format("%.0f", r.perSecond()), 0, ""));
+        table.getColumns().add(columns.column("Dropped", r -> Long.toString(r.dropped()), 0, ""));
+        table.getColumns().add(columns.column("Topics", Row::topics, 300, ""));
+        Label portName = new Label("Port");
+        HBox controls = new HBox(8, serve, portName, port, beyond);
         controls.setStyle("-fx-alignment: center-left;");
         HBox link = new HBox(8, url, copy);
+        // a narrow pane (the demo layout's left one) scrolls sideways rather than cutting these to "…"
+        for (javafx.scene.layout.Region r : List.of(serve, portName, port, beyond, copy)) {
+            r.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
+        }
+        url.setMinWidth(160);
         VBox top = new VBox(6, controls, link, status);
         top.setStyle("-fx-padding: 6 8 6 8;");
         root.setTop(top);
         root.setCenter(table);
-    }
-
-    private static TableColumn<Row, String> column(String title, java.util.function.Function<Row, String> value) {
-        TableColumn<Row, String> c = new TableColumn<>(title);
-        c.setCellValueFactory(d -> new ReadOnlyStringWrapper(value.apply(d.getValue())));
-        return c;
     }
 
     /** The switch: takes the port and reach from the fields, then starts or stops. */
