@@ -21,6 +21,8 @@ public final class StatusBar extends HBox {
     private final touchline.app.Console console;
     private final ConsoleStatus readings;
     private final Label silence = new Label();
+    /** The least the match-mode and remote banner is shrunk to, in pixels. */
+    static final double SILENCE_MIN_WIDTH = 260;
     private final Label rates = new Label();
     private final Label bad = new Label();
     private final Label waiting = new Label();
@@ -51,7 +53,9 @@ public final class StatusBar extends HBox {
         rates.setId("status-rates");
         silence.setId("status-silence");
         silence.getStyleClass().add("status-silence");
-        silence.setMinWidth(Region.USE_PREF_SIZE);
+        // cut with "…" when long (a remote console's server address), the whole text in the tooltip:
+        // never wider than the window can be (a 1280-pixel laptop)
+        silence.setMinWidth(SILENCE_MIN_WIDTH);
         silence.setTooltip(silenceTip);
         // the counts keep their words; the meter's text and messages give way on a narrow window
         rates.setMinWidth(Region.USE_PREF_SIZE);

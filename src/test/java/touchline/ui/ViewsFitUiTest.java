@@ -157,4 +157,27 @@ class ViewsFitUiTest {
         }
         assertEquals(List.of(), problems);
     }
+
+    /**
+     * A console viewing another Touchline says so in the status bar's banner, with the server's
+     * address: a long one is cut (the whole text in its tooltip) rather than making the window
+     * wider than a 1280-pixel screen.
+     */
+    @Test
+    void aLongBannerNeverMakesTheWindowWiderThanA1280Screen() throws Exception {
+        int nobody;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            nobody = s.getLocalPort(); // free again once closed: nothing listens there
+        }
+        ui.console.viewRemote(new java.net.URI("ws://127.0.0.1:" + nobody + "/a/rather/long/path/of/the/server"), null);
+        ui.await(30, () -> ui.fx(() -> ((Label) ui.window.scene().lookup("#status-silence")).getText().contains("lost")));
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 5);
+        double least = ui.fx(() -> ui.window.scene().getRoot().minWidth(-1));
+        org.junit.jupiter.api.Assertions.assertTrue(least <= 1280, "the window needs " + least + " px: "
+                + ui.fx(() -> ((Label) ui.window.scene().lookup("#status-silence")).getText()));
+        Bounds status = ui.fx(() -> ui.window.status().localToScene(ui.window.status().getLayoutBounds()));
+        double width = ui.fx(() -> ui.window.scene().getWidth());
+        org.junit.jupiter.api.Assertions.assertTrue(status.getMaxX() <= width + 0.5, status + " in " + width);
+    }
 }
