@@ -48,6 +48,9 @@ final class OptionsCommand implements Callable<Integer> {
                         + console.port() + "?)");
                 return 2;
             }
+            // a console that just opened the GameController port listens for one first (match mode):
+            // the requests wait for that, or for play to be heard, instead of being held for it
+            await(deadline, () -> !console.matchMode().listeningFirst());
             int status = 0;
             for (String name : on) {
                 status |= apply(console, name, true);

@@ -223,6 +223,15 @@ public final class MatchMode {
         return clock.millis() < listeningUntilMs;
     }
 
+    /**
+     * Whether robot traffic is held only because the console still listens for a GameController
+     * after it started ({@link #listenFirst}): a one-shot command waits this out rather than
+     * report its request held.
+     */
+    public synchronized boolean listeningFirst() {
+        return listening() && !override && playingSource() == null;
+    }
+
     /** The source whose claim of play keeps match mode on (as "source", or "source, earlier"), or null. */
     private String playingSource() {
         long now = clock.millis();

@@ -103,6 +103,23 @@ class MatchModeTest {
         assertEquals("", mode.notice());
     }
 
+    /** What a one-shot command waits out before it sends (`options --off`): the listening, not play. */
+    @Test
+    void listeningFirstIsTheStartsWindowOnlyNotPlay() {
+        assertFalse(mode.listeningFirst(), "not listening before listenFirst");
+        mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        assertTrue(mode.listeningFirst());
+        clock.advance(300);
+        mode.observe(3, "gc");
+        assertFalse(mode.listeningFirst(), "play heard: held for play, nothing to wait out");
+        assertFalse(mode.mayConsoleSend());
+        MatchMode fresh = new MatchMode(clock);
+        fresh.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        clock.advance(MatchMode.LISTEN_FIRST_MS);
+        assertFalse(fresh.listeningFirst(), "the window is over");
+        assertTrue(fresh.mayConsoleSend());
+    }
+
     @Test
     void aPlayingHeardWhileListeningKeepsTheConsoleSilent() {
         mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
