@@ -98,15 +98,46 @@ class HslRefereeTabUiTest {
         return ui.fx(() -> ((Label) tab.lookup(id)).getText());
     }
 
-    /** Gives the keyboard to the Robots view's table, outside the GameController tab. */
+    /**
+     * Gives the keyboard to the Robots view's table, outside the GameController tab, as a user
+     * who clicked it would have it. Once in a soak (1 of ~25 full runs) the table did not have it
+     * 30 s after it was given, the window focused or not unknown: every later change of focus
+     * owner is traced with the code that made it, and a table that lost the keyboard gets it
+     * again (printed, so a soak's log says who took it), so the keys below reach the table.
+     */
     private void focusElsewhere() throws Exception {
         ui.await(30, () -> tableOfRobots() != null && FramePulse.showing(tableOfRobots())); // skinned and shown
+        List<String> moves = new java.util.concurrent.CopyOnWriteArrayList<>();
+        javafx.beans.value.ChangeListener<Node> trace = (o, was, now) -> {
+            java.io.StringWriter w = new java.io.StringWriter();
+            new Throwable("focus " + was + " -> " + now).printStackTrace(new java.io.PrintWriter(w));
+            moves.add(w.toString());
+        };
         ui.fxRun(() -> {
+            ui.window.scene().focusOwnerProperty().addListener(trace);
             ui.window.scene().getWindow().requestFocus();
             tableOfRobots().requestFocus();
         });
-        ui.await(30, () -> ui.window.scene().getWindow().isFocused()
-                && ui.window.scene().getFocusOwner() == tableOfRobots());
+        try {
+            ui.await(30, () -> {
+                if (ui.window.scene().getWindow().isFocused() && ui.window.scene().getFocusOwner() == tableOfRobots()) {
+                    return true;
+                }
+                System.err.println("HslRefereeTabUiTest: the Robots table lost the keyboard (window focused "
+                        + ui.window.scene().getWindow().isFocused() + ", owner " + ui.window.scene().getFocusOwner()
+                        + "); given again. Focus moves so far:\n" + String.join("\n", moves));
+                ui.window.scene().getWindow().requestFocus();
+                tableOfRobots().requestFocus();
+                return false;
+            });
+        } catch (java.util.concurrent.TimeoutException e) {
+            throw new AssertionError("the Robots table never kept the keyboard: " + ui.fx(() -> "window focused "
+                    + ui.window.scene().getWindow().isFocused() + ", focus owner " + ui.window.scene().getFocusOwner()
+                    + ", showing " + FramePulse.showing(tableOfRobots()) + ", disabled " + tableOfRobots().isDisabled()
+                    + "; focus moves:\n" + String.join("\n", moves)), e);
+        } finally {
+            ui.fxRun(() -> ui.window.scene().focusOwnerProperty().removeListener(trace));
+        }
     }
 
     private TableView<?> tableOfRobots() {
