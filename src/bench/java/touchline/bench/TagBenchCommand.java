@@ -12,10 +12,9 @@ import java.util.List;
 import java.util.concurrent.Callable;
 
 /**
- * The cost of one datagram's tag (issue 15): {@link MessageTag}, which resumes each HMAC from
- * copies of two SHA-512 digests that hashed the key's inner and outer pads once, against the
- * JDK {@code Mac} "HmacSHA512" used plainly (it hashes both pads again for every message),
- * alternating in one run
+ * The cost of one datagram's tag (issue 15): {@link MessageTag}, which starts each HMAC from a
+ * clone of a {@code Mac} whose inner pad is already hashed, against the same JDK {@code Mac}
+ * "HmacSHA512" used plainly (it hashes the pad again for every message), alternating in one run
  * over the ingest benchmark's six-robot datagrams. One thread, no I/O.
  */
 @Command(name = "tag", mixinStandardHelpOptions = true,
