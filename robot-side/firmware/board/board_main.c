@@ -24,12 +24,10 @@ static volatile uint32_t g_ms;
 void SysTick_Handler(void);
 void SysTick_Handler(void) { g_ms++; }
 
-void fw_log(const char *what, const char *detail, int32_t value)
-{
-    (void)what;
-    (void)detail;
-    (void)value; /* no console on the board; the counters say what happened */
-}
+/* No console on the board: fw_log is the empty inline one of fw_robot.h (FW_LOG_NONE, footprint.sh). */
+#ifndef FW_LOG_NONE
+#error "the board has no console: build it with -DFW_LOG_NONE (footprint.sh does)"
+#endif
 
 static int uart_read(void *ctx, uint8_t *buf, uint16_t cap)
 {

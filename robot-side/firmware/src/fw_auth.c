@@ -1,10 +1,11 @@
 #include "fw_auth.h"
-#include "monocypher-ed25519.h"
-#include "monocypher.h"
+#include "crypto_auth_hmacsha256.h"
+#include "crypto_verify_16.h"
+#include "utils.h"
 
-static const uint8_t k_magic[4] = {'T', 'L', 'A', '1'};
-/* static: the HMAC context is ~340 bytes, which the receive path's stack must not carry */
-static crypto_hmac_sha512_ctx g_hmac;
+static const uint8_t k_magic[4] = {'T', 'L', 'A', '2'};
+/* static: the HMAC state is 208 bytes, which the receive path's stack need not carry */
+static crypto_auth_hmacsha256_state g_hmac;
 
 void fw_auth_init(fw_auth_state *s, const fw_team_key *key)
 {
@@ -37,17 +38,17 @@ static void mac(const fw_team_key *k, uint8_t dir, uint8_t robot, const uint8_t 
                 uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
 {
     uint8_t head[2];
-    uint8_t full[64];
+    uint8_t full[crypto_auth_hmacsha256_BYTES];
     uint8_t i;
     head[0] = dir;
     head[1] = robot;
-    crypto_hmac_sha512_init(&g_hmac, k->key, FW_AUTH_KEY_SIZE);
-    crypto_hmac_sha512_update(&g_hmac, head, sizeof head);
-    crypto_hmac_sha512_update(&g_hmac, id_counter, FW_AUTH_KEY_ID_SIZE + 8u);
-    crypto_hmac_sha512_update(&g_hmac, payload, n);
-    crypto_hmac_sha512_final(&g_hmac, full);
+    crypto_auth_hmacsha256_init(&g_hmac, k->key, FW_AUTH_KEY_SIZE);
+    crypto_auth_hmacsha256_update(&g_hmac, head, sizeof head);
+    crypto_auth_hmacsha256_update(&g_hmac, id_counter, FW_AUTH_KEY_ID_SIZE + 8u);
+    crypto_auth_hmacsha256_update(&g_hmac, payload, n);
+    crypto_auth_hmacsha256_final(&g_hmac, full);
     for (i = 0; i < FW_AUTH_TAG_SIZE; i++) tag[i] = full[i];
-    crypto_wipe(full, sizeof full);
+    sodium_memzero(full, sizeof full);
 }
 
 static void put_id_counter(const fw_team_key *k, uint64_t counter, uint8_t *p)
@@ -128,7 +129,7 @@ fw_auth_result fw_auth_check(fw_auth_state *s, uint8_t dir, uint8_t robot, const
     }
     counter = get_u64(t + 8);
     mac(s->key, dir, robot, t + 4, d, n, tag);
-    if (crypto_verify16(tag, t + 16) != 0) {
+    if (crypto_verify_16(tag, t + 16) != 0) {
         s->count.bad_tag++;
         return FW_AUTH_BAD_TAG;
     }
@@ -145,7 +146,7 @@ fw_auth_result fw_auth_check(fw_auth_state *s, uint8_t dir, uint8_t robot, const
 
 const char *fw_auth_result_name(fw_auth_result r)
 {
-    /* short: on the board they are flash, though fw_log prints nothing there */
+    /* short: flash wherever they are logged (not on the board: FW_LOG_NONE compiles the logs away) */
     static const char *const names[] = {"ok", "lab", "no tag", "truncated tag", "other key", "bad tag", "replayed"};
     return (unsigned)r < sizeof names / sizeof names[0] ? names[r] : "?";
 }

@@ -1,10 +1,12 @@
 /* Message authentication of the small-robot link (docs/security.md): a 32-byte trailer
  *
- *   payload ‖ "TLA1" ‖ key-id (4) ‖ counter (8, big-endian) ‖ tag (16)
+ *   payload ‖ "TLA2" ‖ key-id (4) ‖ counter (8, big-endian) ‖ tag (16)
  *
- * where tag = the first 16 bytes of HMAC-SHA-512(team key,
+ * where tag = the first 16 bytes of HMAC-SHA-256(team key,
  *   direction (1: 'C' console→robot, 'R' robot→console) ‖ robot id (1) ‖ key-id ‖ counter ‖ payload).
- * HMAC-SHA-512 is Monocypher's (third_party/monocypher), never our own. Static memory only. */
+ * HMAC-SHA-256 is libsodium's (third_party/libsodium, crypto_auth_hmacsha256), never our own.
+ * Trailer version 2: version 1 ("TLA1", Touchline 0.5) was HMAC-SHA-512 and is not accepted (a
+ * datagram with it counts as "no tag"). Static memory only. */
 #ifndef FW_AUTH_H
 #define FW_AUTH_H
 

@@ -138,7 +138,18 @@ bool robot_option_enabled(const char *name);
 bool robot_network_ready(void);
 rs_stream *robot_stream(void);
 
-/* Platform hook: one line of diagnostics (stderr on the host, a no-op on the board). */
+/* Platform hook: one line of diagnostics (stderr on the host). A platform without a console (the
+ * board: FW_LOG_NONE) gets an empty inline one, so the calls and their text are compiled away
+ * rather than kept in flash for nobody; the counters say what happened there. */
+#ifdef FW_LOG_NONE
+static inline void fw_log(const char *what, const char *detail, int32_t value)
+{
+    (void)what;
+    (void)detail;
+    (void)value;
+}
+#else
 void fw_log(const char *what, const char *detail, int32_t value);
+#endif
 
 #endif

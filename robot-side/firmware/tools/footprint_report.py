@@ -22,8 +22,8 @@ BUDGET_CODE = 20 * 1024
 BUDGET_RAM = 6 * 1024
 BUDGET_SEND_STACK = 1536
 BUDGET_LOOP_STACK = 1536
-# The verifier's share: the tag code and the vendored Monocypher (HMAC-SHA-512).
-VERIFIER_OBJECTS = {"fw_auth.o", "monocypher.o", "monocypher-ed25519.o"}
+# The verifier's share: the tag code and the vendored libsodium part (HMAC-SHA-256).
+VERIFIER_OBJECTS = {"fw_auth.o", "auth_hmacsha256.o", "hash_sha256_cp.o", "verify.o", "sodium_glue.o"}
 EXCEPTION_STACKING = 32  # Cortex-M3 pushes 8 words on interrupt entry (no FPU)
 # A send path is any call chain that reaches one of these.
 SEND_FUNCTIONS = {"fw_encode_message", "sendMsgToCon", "sendMsgToPeer"}

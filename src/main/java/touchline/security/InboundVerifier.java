@@ -34,7 +34,7 @@ public final class InboundVerifier {
 
     /** Where the payload ends: robots' datagrams are decoded from these bytes, before {@link #check}. */
     public static int payloadLength(byte[] datagram) {
-        return Trailer.of(datagram) instanceof Trailer.Present p ? p.payloadLength() : datagram.length;
+        return Trailer.of(datagram).payloadLength(datagram.length);
     }
 
     /** The verdict on a datagram whose payload said it comes from {@code robotId}. */
@@ -57,7 +57,7 @@ public final class InboundVerifier {
      */
     public synchronized Result check(int robotId, byte[] datagram, MessageTag.Check prechecked) {
         Trailer trailer = Trailer.of(datagram);
-        int payload = trailer instanceof Trailer.Present p ? p.payloadLength() : datagram.length;
+        int payload = trailer.payloadLength(datagram.length);
         if (tag == null) {
             return new Result(Authenticity.UNVERIFIED, payload, null, null);
         }
@@ -71,6 +71,10 @@ public final class InboundVerifier {
             }
             case TRUNCATED -> {
                 return forged(payload, "tag cut short (" + ((Trailer.Truncated) trailer).bytes() + " of 32 trailer bytes)");
+            }
+            case OUTDATED -> {
+                return forged(payload, "tagged with Touchline 0.5's HMAC-SHA-512 trailer (TLA1), which this"
+                        + " console no longer checks: flash the robot with this version's firmware (docs/security.md)");
             }
             case WRONG_KEY -> {
                 return forged(payload, "tagged with another team key (key-id "

@@ -5,11 +5,14 @@ import javax.crypto.spec.SecretKeySpec;
 import java.security.GeneralSecurityException;
 
 /**
- * The small robots' message tag (docs/security.md): the first 16 bytes of
- * HMAC-SHA-512(team key, direction ‖ robot id ‖ key-id ‖ counter ‖ payload), computed with the
- * JDK's {@code javax.crypto.Mac} "HmacSHA512". Direction is {@link #TO_ROBOT} ('C') for what
- * the console sends and {@link #FROM_ROBOT} ('R') for what a robot sends, so a robot's datagram
- * reflected back to it never passes. Pure; one instance per thread (a Mac is not thread-safe).
+ * The small robots' message tag (docs/security.md), trailer version 2 ("TLA2"): the first 16
+ * bytes of HMAC-SHA-256(team key, direction ‖ robot id ‖ key-id ‖ counter ‖ payload), computed
+ * with the JDK's {@code javax.crypto.Mac} "HmacSHA256" (the firmware: libsodium's
+ * crypto_auth_hmacsha256). Direction is {@link #TO_ROBOT} ('C') for what the console sends and
+ * {@link #FROM_ROBOT} ('R') for what a robot sends, so a robot's datagram reflected back to it
+ * never passes. Version 1 ("TLA1", Touchline 0.5) was HMAC-SHA-512: three times the cost per
+ * datagram on the console and about twice on a Cortex-M3, for the same 128-bit tag (docs/benchmarks.md,
+ * "Eleventh session"). Pure; one instance per thread (a Mac is not thread-safe).
  */
 public final class MessageTag {
 
@@ -18,29 +21,26 @@ public final class MessageTag {
     public static final int TAG_SIZE = 16;
 
     /** Why a datagram is not authentic, or OK. */
-    public enum Check { OK, NO_TAG, TRUNCATED, WRONG_KEY, BAD_TAG }
+    public enum Check { OK, NO_TAG, TRUNCATED, OUTDATED, WRONG_KEY, BAD_TAG }
 
     private final TeamKey key;
     /**
-     * The Mac with the key's inner pad already hashed (primed by an empty update, see the
-     * constructor): each tag starts from a clone of it, so the pad block is not hashed again
-     * for every datagram — one SHA-512 block compression of the ~four a short datagram's tag
-     * costs (`bench tag`).
+     * One keyed Mac, used for every tag: {@code doFinal} leaves it ready for the next message.
+     * Not a clone per datagram: the clone's allocations (the Mac's and its digest's state) cost
+     * the console's ingest more than the HMAC itself under its ZGC (docs/benchmarks.md).
      */
-    private final Mac primed;
+    private final Mac mac;
     private final byte[] head = new byte[2 + TeamKey.ID_SIZE + 8];
-    /** The full HMAC-SHA-512 of the last check, reused (doFinal into it) and wiped after each use. */
-    private final byte[] full = new byte[64];
+    /** The full HMAC-SHA-256 of the last check, reused (doFinal into it) and wiped after each use. */
+    private final byte[] full = new byte[32];
 
     public MessageTag(TeamKey key) {
         this.key = key;
         try {
-            primed = Mac.getInstance("HmacSHA512");
-            primed.init(new SecretKeySpec(key.secret(), "HmacSHA512"));
-            primed.update(new byte[0]); // the provider hashes the inner pad at the first update
-            ((Mac) primed.clone()).doFinal(); // cloneable here, or the constructor fails, not a datagram
-        } catch (GeneralSecurityException | CloneNotSupportedException e) {
-            throw new IllegalStateException("the JDK's HmacSHA512 is missing or cannot be cloned", e);
+            mac = Mac.getInstance("HmacSHA256");
+            mac.init(new SecretKeySpec(key.secret(), "HmacSHA256"));
+        } catch (GeneralSecurityException e) {
+            throw new IllegalStateException("the JDK's HmacSHA256 is missing", e);
         }
         System.arraycopy(key.id(), 0, head, 2, TeamKey.ID_SIZE);
     }
@@ -63,16 +63,15 @@ public final class MessageTag {
         head[1] = (byte) robotId;
         Trailer.putLong(head, 2 + TeamKey.ID_SIZE, counter);
         try {
-            Mac mac = (Mac) primed.clone();
             mac.update(head);
             mac.update(payload, off, len);
             mac.doFinal(full, 0);
-        } catch (javax.crypto.ShortBufferException | CloneNotSupportedException e) {
-            throw new IllegalStateException("HmacSHA512 could not be cloned or wrote more than 64 bytes", e);
+        } catch (javax.crypto.ShortBufferException e) {
+            throw new IllegalStateException("HmacSHA256 wrote more than 32 bytes", e);
         }
     }
 
-    /** A new array: payload followed by the 32-byte trailer. */
+    /** A new array: payload followed by the 32-byte trailer (version 2). */
     public byte[] append(byte direction, int robotId, long counter, byte[] payload) {
         byte[] out = java.util.Arrays.copyOf(payload, payload.length + Trailer.SIZE);
         int at = payload.length;
@@ -90,6 +89,9 @@ public final class MessageTag {
         }
         if (trailer instanceof Trailer.Truncated) {
             return Check.TRUNCATED;
+        }
+        if (trailer instanceof Trailer.Outdated) {
+            return Check.OUTDATED;
         }
         Trailer.Present p = (Trailer.Present) trailer;
         int at = p.payloadLength();

@@ -2,16 +2,24 @@ package touchline.security;
 
 /**
  * The authentication trailer of the small robots' datagrams (docs/security.md):
- * {@code payload ‖ "TLA1" ‖ key-id (4) ‖ counter (8, big-endian) ‖ tag (16)}. Pure parsing:
- * where the payload ends and what the trailer says, or why there is none.
+ * {@code payload ‖ "TLA2" ‖ key-id (4) ‖ counter (8, big-endian) ‖ tag (16)}. Pure parsing:
+ * where the payload ends and what the trailer says, or why there is none. A version-1 trailer
+ * ("TLA1": the same layout, tagged with HMAC-SHA-512 by Touchline 0.5 and its firmware) is
+ * recognised so that its bytes never reach the decoder (recordings of 0.5 still open) and the
+ * user is told to update the robot, but it is never verified.
  */
 public sealed interface Trailer {
 
     int SIZE = 32;
-    byte[] MAGIC = {'T', 'L', 'A', '1'};
+    byte[] MAGIC = {'T', 'L', 'A', '2'};
+    /** Version 1's magic (Touchline 0.5): recognised, never verified. */
+    byte[] OUTDATED_MAGIC = {'T', 'L', 'A', '1'};
 
     /** A whole trailer: the payload is {@code datagram[0, payloadLength)}. */
     record Present(int payloadLength, long counter) implements Trailer { }
+
+    /** A whole version-1 trailer (HMAC-SHA-512, Touchline 0.5): the payload is {@code datagram[0, payloadLength)}. */
+    record Outdated(int payloadLength) implements Trailer { }
 
     /** No trailer: the datagram is all payload. */
     record Absent() implements Trailer { }
@@ -22,6 +30,9 @@ public sealed interface Trailer {
     static Trailer of(byte[] d, int length) {
         if (length >= SIZE && magicAt(d, length - SIZE)) {
             return new Present(length - SIZE, getLong(d, length - SIZE + 8));
+        }
+        if (length >= SIZE && outdatedAt(d, length - SIZE)) {
+            return new Outdated(length - SIZE);
         }
         for (int back = SIZE - 1; back >= MAGIC.length; back--) {
             if (back <= length && magicAt(d, length - back)) {
@@ -36,7 +47,19 @@ public sealed interface Trailer {
     }
 
     private static boolean magicAt(byte[] d, int at) {
+        return d[at] == 'T' && d[at + 1] == 'L' && d[at + 2] == 'A' && d[at + 3] == '2';
+    }
+
+    private static boolean outdatedAt(byte[] d, int at) {
         return d[at] == 'T' && d[at + 1] == 'L' && d[at + 2] == 'A' && d[at + 3] == '1';
+    }
+
+    /** Where the payload ends: before a whole trailer of either version, else the datagram's end. */
+    default int payloadLength(int datagramLength) {
+        if (this instanceof Present p) {
+            return p.payloadLength();
+        }
+        return this instanceof Outdated o ? o.payloadLength() : datagramLength;
     }
 
     static long getLong(byte[] d, int at) {

@@ -68,6 +68,20 @@ class InboundVerifierTest {
         assertNull(new InboundVerifier(null).precheck(3, first), "nothing to check without a key");
     }
 
+    /** A robot still on Touchline 0.5's firmware (trailer "TLA1", HMAC-SHA-512): told to update, its data not taken. */
+    @Test
+    void aVersionOneTrailerIsForgedWithKeyAndStrippedWithout() {
+        byte[] v1 = fromRobot(3, 1);
+        v1[STATUS.length + 3] = '1'; // the same bytes behind 0.5's magic
+        InboundVerifier.Result keyed = new InboundVerifier(key).check(3, v1);
+        assertEquals(Authenticity.FORGED, keyed.authenticity());
+        assertTrue(keyed.reason().contains("TLA1") && keyed.reason().contains("firmware"), keyed.reason());
+        assertEquals(STATUS.length, keyed.payloadLength());
+        InboundVerifier.Result lab = new InboundVerifier(null).check(3, v1);
+        assertEquals(Authenticity.UNVERIFIED, lab.authenticity());
+        assertEquals(STATUS.length, lab.payloadLength(), "without a key the payload is decoded without the trailer");
+    }
+
     @Test
     void untaggedDataIsUnverifiedUntilTheRobotHasTagged() {
         InboundVerifier v = new InboundVerifier(key);

@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 /**
  * The tag and trailer against the golden vector that the firmware's test_auth.c also checks
- * (computed independently with Python's hmac: key 00 01 … 1f, robot 3, counter 0x0123456789abcdef,
+ * (HMAC-SHA-256, trailer version 2; computed independently with Python's hmac: key 00 01 … 1f, robot 3, counter 0x0123456789abcdef,
  * payload "hello"), and every way a datagram is refused.
  */
 class MessageTagTest {
@@ -30,18 +30,18 @@ class MessageTagTest {
         TeamKey key = goldenKey();
         assertEquals("630dcd29", key.idHex());
         MessageTag tag = new MessageTag(key);
-        assertEquals("6128746b381532b96a3de7358ff8d1bb",
+        assertEquals("23058bc4411fbf26988613233d4d9f5b",
                 HexFormat.of().formatHex(tag.tag(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
-        assertEquals("d2303baa78365196afe9afe96adb6b79",
+        assertEquals("5c6b4099c5658288dfe02f50628dca73",
                 HexFormat.of().formatHex(tag.tag(MessageTag.FROM_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
-        assertEquals("f3200273ac5a27fc1c9ccafc26a60c07",
+        assertEquals("6591e4a720424ffb325da6914e4d103e",
                 HexFormat.of().formatHex(tag.tag(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 0)));
     }
 
     @Test
     void trailerLayoutIsMagicKeyIdCounterTag() {
         byte[] d = new MessageTag(goldenKey()).append(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO);
-        assertEquals("68656c6c6f" + "544c4131" + "630dcd29" + "0123456789abcdef" + "6128746b381532b96a3de7358ff8d1bb",
+        assertEquals("68656c6c6f" + "544c4132" + "630dcd29" + "0123456789abcdef" + "23058bc4411fbf26988613233d4d9f5b",
                 HexFormat.of().formatHex(d));
         assertEquals(new Trailer.Present(5, 0x0123456789abcdefL), Trailer.of(d));
     }
@@ -80,8 +80,23 @@ class MessageTagTest {
                     "tag byte " + i);
             assertEquals(MessageTag.Check.OK, tag.check(MessageTag.FROM_ROBOT, 3, good, Trailer.of(good)));
         }
-        assertEquals("d2303baa78365196afe9afe96adb6b79",
+        assertEquals("5c6b4099c5658288dfe02f50628dca73",
                 HexFormat.of().formatHex(tag.tag(MessageTag.FROM_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
+    }
+
+    @Test
+    void aVersionOneTrailerIsRecognisedStrippedAndNeverVerified() {
+        // Touchline 0.5's trailer: the same layout behind "TLA1", its tag HMAC-SHA-512 (here the first
+        // 16 bytes of HMAC-SHA-512 over the golden bytes, from Python's hmac): the payload ends before
+        // it, and it is OUTDATED whatever its tag says, never OK.
+        byte[] v1 = HexFormat.of().parseHex("68656c6c6f" + "544c4131" + "630dcd29" + "0123456789abcdef"
+                + "d2303baa78365196afe9afe96adb6b79");
+        assertEquals(new Trailer.Outdated(5), Trailer.of(v1));
+        assertEquals(5, InboundVerifier.payloadLength(v1));
+        assertEquals(MessageTag.Check.OUTDATED, new MessageTag(goldenKey()).check(MessageTag.FROM_ROBOT, 3, v1, Trailer.of(v1)));
+        byte[] plain = "TLA1 and TLA2 early in a payload that goes on well past a trailer's 32 bytes".getBytes(StandardCharsets.US_ASCII);
+        assertEquals(new Trailer.Absent(), Trailer.of(plain));
+        assertEquals(plain.length, InboundVerifier.payloadLength(plain));
     }
 
     @Test
