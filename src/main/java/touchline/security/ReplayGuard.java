@@ -1,8 +1,6 @@
 package touchline.security;
 
-import java.util.HashMap;
 import java.util.HashSet;
-import java.util.Map;
 import java.util.Set;
 
 /**
@@ -10,12 +8,18 @@ import java.util.Set;
  * boot id (random per start) in the high word and a sequence in the low word. A higher
  * counter of the same boot is accepted; a new boot id is a restart (accepted and noted: "robot
  * 3 restarted: counter reset, accepted"); anything else (the same or an older counter, or a
- * boot id seen before in this session) is a replay. Pure; bounded by the 256 robot ids.
+ * boot id seen before in this session) is a replay. Pure; bounded by the 256 robot ids. Not
+ * thread-safe: its owner ({@link InboundVerifier}) checks one datagram at a time. Nothing is
+ * allocated per datagram of a known robot (it runs for every tagged datagram the console takes).
  */
 public final class ReplayGuard {
 
     /** The verdict on one counter; {@code restarted} when it began a new boot. */
     public record Verdict(boolean accepted, boolean restarted) { }
+
+    private static final Verdict ACCEPTED = new Verdict(true, false);
+    private static final Verdict RESTARTED = new Verdict(true, true);
+    private static final Verdict REPLAYED = new Verdict(false, false);
 
     private static final int MAX_BOOTS_REMEMBERED = 64;
 
@@ -24,34 +28,34 @@ public final class ReplayGuard {
         final Set<Integer> boots = new HashSet<>();
     }
 
-    private final Map<Integer, Seen> robots = new HashMap<>();
+    private final Seen[] robots = new Seen[256];
 
-    public synchronized Verdict check(int robotId, long counter) {
-        Seen s = robots.get(robotId & 0xFF);
+    public Verdict check(int robotId, long counter) {
+        Seen s = robots[robotId & 0xFF];
         int boot = (int) (counter >>> 32);
         if (s == null) {
             s = new Seen();
-            robots.put(robotId & 0xFF, s);
+            robots[robotId & 0xFF] = s;
             s.highest = counter;
             s.boots.add(boot);
-            return new Verdict(true, false);
+            return ACCEPTED;
         }
         int currentBoot = (int) (s.highest >>> 32);
         if (boot == currentBoot) {
             if (Long.compareUnsigned(counter, s.highest) <= 0) {
-                return new Verdict(false, false);
+                return REPLAYED;
             }
             s.highest = counter;
-            return new Verdict(true, false);
+            return ACCEPTED;
         }
         if (s.boots.contains(boot)) {
-            return new Verdict(false, false); // a capture of an earlier boot played back
+            return REPLAYED; // a capture of an earlier boot played back
         }
         if (s.boots.size() >= MAX_BOOTS_REMEMBERED) {
             s.boots.clear();
         }
         s.boots.add(boot);
         s.highest = counter;
-        return new Verdict(true, true);
+        return RESTARTED;
     }
 }
