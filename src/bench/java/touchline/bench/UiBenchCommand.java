@@ -95,6 +95,10 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             description = "with --laptop: the window's JVM options, as the launcher gives them (default ${DEFAULT-VALUE})")
     String laptopJvm;
 
+    @Option(names = "--laptop-max-fps", split = ",", defaultValue = "30",
+            description = "with --laptop: the window's --max-fps, one phase each in this order, e.g. 30,10 (default ${DEFAULT-VALUE})")
+    List<Integer> laptopMaxFps;
+
     @Option(names = "--only", description = "open only this view (by registry ID) instead of every view, e.g. to find a slow one")
     String only;
 
@@ -107,7 +111,8 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     @Override
     public Integer call() throws Exception {
         if (laptop) {
-            return new LaptopLoadBench(laptopMinutes, laptopBaselineMinutes, 30, List.of(laptopJvm.trim().split("\\s+")), laptopIdleMinutes).run();
+            return new LaptopLoadBench(laptopMinutes, laptopBaselineMinutes, 30, List.of(laptopJvm.trim().split("\\s+")), laptopIdleMinutes,
+                    laptopMaxFps).run();
         }
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();

@@ -40,11 +40,22 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
     @Option(names = "--layouts", description = "directory of named layouts (default: ~/.config/touchline/layouts)")
     String layouts;
 
+    @Option(names = "--max-fps", defaultValue = "30", paramLabel = "N",
+            description = "while data streams, redraw the views at most N times a second (1-60, default ${DEFAULT-VALUE});"
+                    + " fewer saves a laptop's battery, and what is shown is up to 1/N s older")
+    int maxFps;
+
     /** How long the way out waits for a recording's file to be finished. */
     static final long FINISH_RECORDING_MILLIS = 20_000;
 
     @Override
     public Integer call() throws Exception {
+        touchline.ui.FrameCap cap;
+        try {
+            cap = new touchline.ui.FrameCap(maxFps);
+        } catch (IllegalArgumentException e) {
+            throw StartFailure.badInput(e.getMessage() + " (30 is the standard; 10 is plenty to watch a game on battery).");
+        }
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
             budget.guard(console, udp.bind);
             StartMarks marks = new StartMarks(System.err, console.clock());
@@ -63,7 +74,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             Thread hook = new Thread(() -> console.finishRecording(FINISH_RECORDING_MILLIS), "touchline-console-stop");
             Runtime.getRuntime().addShutdownHook(hook);
             CountDownLatch closed = new CountDownLatch(1);
-            UiSettings settings = new UiSettings(layouts != null ? Path.of(layouts) : LayoutStore.defaultDir(), !light, demo);
+            UiSettings settings = new UiSettings(layouts != null ? Path.of(layouts) : LayoutStore.defaultDir(), !light, demo, cap);
             FxThread.run(() -> {
                 Stage stage = new Stage();
                 stage.addEventHandler(javafx.stage.WindowEvent.WINDOW_HIDDEN, e -> closed.countDown());

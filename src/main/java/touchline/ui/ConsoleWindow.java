@@ -68,7 +68,8 @@ public final class ConsoleWindow {
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(console);
-        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep, new ConsoleChanges(console, serving)::read);
+        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep, new ConsoleChanges(console, serving)::read,
+                settings.frameCap());
         shell.onChange(pulse::input);
         MenuBar bar = menus();
         shortcuts = new Shortcuts(bar);

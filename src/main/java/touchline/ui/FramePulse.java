@@ -9,8 +9,9 @@ import javafx.animation.AnimationTimer;
  * <p>
  * Light on the laptop: a frame in which the console's change counter ({@link ConsoleChanges})
  * did not move and no key or mouse reached the window pulls no view, except twice a second for
- * what ages without a change (an option's "streaming" flag), and while data streams at most
- * every {@link #DATA_FRAME_NANOS} (input is followed at once). After {@link #IDLE_NANOS} without
+ * what ages without a change (an option's "streaming" flag), and while data streams at most as
+ * often as its {@link FrameCap} lets it, 30 times a second unless the user chose otherwise
+ * ({@code console --max-fps}; input is followed at once). After {@link #IDLE_NANOS} without
  * a change (and at least {@link #IDLE_FRAMES} frames) the pulse stops altogether and the window
  * is idle until {@link IdleWatch} sees the counter move or the user touches the window. A
  * minimised (iconified) window does no frame work at all; it catches up when shown again.
@@ -24,11 +25,11 @@ public final class FramePulse extends AnimationTimer {
     /** Frames between the catch-up pulls of a quiet window (about twice a second). */
     static final int CATCH_UP_FRAMES = 30;
     /**
-     * While data streams, the views pull at most this often (30 a second): a datagram in every
-     * frame would otherwise redraw the consoles 60 times a second, most of the console's CPU on
-     * a laptop, for no difference a person can read. Input is followed in the same frame.
+     * While data streams, how often the views may pull: a datagram in every frame would otherwise
+     * redraw the consoles 60 times a second, most of the console's CPU on a laptop, for no
+     * difference a person can read. Input is followed in the same frame.
      */
-    static final long DATA_FRAME_NANOS = 33_000_000L;
+    private final FrameCap cap;
 
     private final Shell shell;
     private final StatusBar status;
@@ -54,7 +55,8 @@ public final class FramePulse extends AnimationTimer {
     private long workNanos;
 
     public FramePulse(Shell shell, StatusBar status, touchline.transport.MicrosClock clock, Runnable extra,
-                      java.util.function.LongSupplier changes) {
+                      java.util.function.LongSupplier changes, FrameCap cap) {
+        this.cap = cap;
         this.shell = shell;
         this.status = status;
         this.clock = clock;
@@ -96,7 +98,7 @@ public final class FramePulse extends AnimationTimer {
         }
         long c = changes.getAsLong();
         boolean changed = c != seenChanges || input;
-        if (changed && !input && nowNanos - workNanos < DATA_FRAME_NANOS) {
+        if (changed && !input && cap.holdsBack(nowNanos, workNanos)) {
             return; // a data change shown in a frame or two, with the next ones it brings
         }
         input = false;
@@ -197,6 +199,11 @@ public final class FramePulse extends AnimationTimer {
 
     public double fps() {
         return fps;
+    }
+
+    /** How often the views may pull while data streams. */
+    public FrameCap cap() {
+        return cap;
     }
 
     /** Time spent in each view's refresh since the last call, by view ID, and resets it (profiling). */

@@ -49,6 +49,15 @@ class ConsoleStartTest {
         }
     }
 
+    @Test
+    void aFrameCapOutOfRangeIsNamedBeforeAnythingStarts() throws Exception {
+        StringWriter err = new StringWriter();
+        int code = Main.execute(new String[] {"console", "--bind", "127.0.0.1", "--port", "0", "--max-fps", "0",
+                "--layouts", dir.toString()}, new PrintWriter(err, true));
+        assertEquals(StartFailure.BAD_INPUT, code);
+        assertOneSentence(err.toString(), "--max-fps must be between 1 and 60", "not 0");
+    }
+
     /** A fresh JVM, so the test's own display settings (headless Monocle) are not inherited. */
     private Run run(Map<String, String> env, String... args) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
