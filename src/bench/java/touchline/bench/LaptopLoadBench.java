@@ -91,7 +91,7 @@ final class LaptopLoadBench {
             Load window = standard; // the budget is the console as it starts: the standard cap
             System.out.printf(Locale.ROOT, "budgets: CPU <= 15 %% of one core: %s; PSS <= 500 MB: %s%n",
                     window.coreFraction() <= 0.15 ? "met" : "MISSED", window.pssEndMb() <= 500 ? "met" : "MISSED");
-            if (loads.size() > 1) {
+            if (baselineMinutes > 0) { // the headless listen is the first phase
                 System.out.printf(Locale.ROOT, "window / baseline: CPU %.2f, PSS %.2f%n",
                         window.coreFraction() / loads.get(0).coreFraction(), window.pssEndMb() / loads.get(0).pssEndMb());
             }
