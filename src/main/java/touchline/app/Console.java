@@ -80,6 +80,8 @@ public final class Console implements AutoCloseable {
     private final SystemClock realClock = new SystemClock();
     private final MatchMode matchMode = new MatchMode(realClock);
     private GameStateWatch gcWatch;
+    /** When the GameController port was opened (the console's clock), for {@link #awaitFirstListen}. */
+    private volatile long listeningSinceMicros;
     private final GameControllerSources gcSources;
     private final MonitorRegistrations monitorRegistrations = new MonitorRegistrations();
     private GcMonitor gcMonitor;
@@ -170,6 +172,25 @@ public final class Console implements AutoCloseable {
     }
 
     /**
+     * A one-shot command's wait before its first request (`touchline options`, `touchline nao`): a
+     * console that just opened the GameController port listens for one first, and match mode holds
+     * robot traffic meanwhile. Returns once that first listen is over and the port has been open
+     * for at least {@code listenMillis} (longer on a lossy network); at once when play is heard
+     * (match mode then holds the request and says why) or no GameController port is open; at the
+     * latest at {@code deadlineNanos} ({@link System#nanoTime}).
+     */
+    public void awaitFirstListen(long listenMillis, long deadlineNanos) throws InterruptedException {
+        if (gcWatch == null) {
+            return;
+        }
+        long until = listeningSinceMicros + listenMillis * 1000;
+        while (System.nanoTime() - deadlineNanos < 0 && !matchMode.playIsOn()
+                && (matchMode.listeningFirst() || clock.nowMicros() < until)) {
+            Thread.sleep(10);
+        }
+    }
+
+    /**
      * Listens on the GameController port (3838, shared with SO_REUSEADDR) so match mode hears
      * the referee box; a port that cannot be opened is reported and the console runs on.
      */
@@ -181,6 +202,7 @@ public final class Console implements AutoCloseable {
             gcWatch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
                     live, matchMode, monitorRegistrations, gcSources, clock);
             // started in the middle of a game, the console must hear the GameController before it talks
+            listeningSinceMicros = clock.nowMicros();
             matchMode.listenFirst(MatchMode.LISTEN_FIRST_MS);
         } catch (IOException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("cannot listen for GameControllers on port {}: {} "

@@ -89,13 +89,10 @@ public final class NaoCommand implements Runnable {
                         + "longer on a lossy network)")
         long listenMs;
 
-        private long consoleStartedNanos;
-
         /** The application core the calls go through: it only listens (GameController port, no robot port). */
         Console startConsole() throws InterruptedException {
             ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(0))
                     .withGameControllerPort(gcPort).withGcAddress(gcAddress);
-            consoleStartedNanos = System.nanoTime();
             return new Console(config).start();
         }
 
@@ -164,12 +161,9 @@ public final class NaoCommand implements Runnable {
                 return null;
             }
             // A console that just opened the GameController port listens for one first (match mode):
-            // the call waits for that, or for play to be heard, instead of being held for it.
-            long listened = consoleStartedNanos + TimeUnit.MILLISECONDS.toNanos(gcPort <= 0 ? 0
-                    : Math.max(listenMs, MatchMode.LISTEN_FIRST_MS + 100));
-            while (!console.matchMode().playIsOn() && System.nanoTime() - listened < 0) {
-                Thread.sleep(10);
-            }
+            // the call waits for that (at least --listen), or for play to be heard, instead of being held for it.
+            console.awaitFirstListen(listenMs, System.nanoTime()
+                    + TimeUnit.MILLISECONDS.toNanos(Math.max(listenMs, MatchMode.LISTEN_FIRST_MS) + 1000));
             return link;
         }
     }

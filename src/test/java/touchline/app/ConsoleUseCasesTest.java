@@ -43,6 +43,34 @@ class ConsoleUseCasesTest {
         robot.send(new DatagramPacket(d, d.length, InetAddress.getLoopbackAddress(), port));
     }
 
+    private static int freePort() throws Exception {
+        try (DatagramSocket s = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            return s.getLocalPort();
+        }
+    }
+
+    /**
+     * `touchline options` and `touchline nao` wait out the first listen through this one use case:
+     * without a GameController port it returns at once; with one, not before match mode's first
+     * listen is over (so a request is not held for it) and the port has been open the time asked.
+     */
+    @Test
+    void aOneShotCommandWaitsOutTheFirstListenForAGameController() throws Exception {
+        try (Console quiet = new Console(loopback()).start()) {
+            quiet.awaitFirstListen(60_000, System.nanoTime() + TimeUnit.SECONDS.toNanos(60));
+            assertFalse(quiet.matchMode().listeningFirst(), "no GameController port: nothing to wait for");
+        }
+        ConsoleConfig withGc = loopback().withGameControllerPort(freePort());
+        try (Console console = new Console(withGc).start()) {
+            long opened = console.clock().nowMicros();
+            console.awaitFirstListen(900, System.nanoTime() + TimeUnit.SECONDS.toNanos(60));
+            assertFalse(console.matchMode().listeningFirst(), "the first listen is over");
+            assertTrue(console.clock().nowMicros() - opened >= 900_000 - 50_000,
+                    "listened at least the time asked (from when the port opened, just before " + opened + ")");
+            assertFalse(console.matchMode().playIsOn());
+        }
+    }
+
     @Test
     void waitsForARobotHeardOnThePortItNamesAndCountsItsDatagram() throws Exception {
         try (Console console = new Console(loopback()).start();
