@@ -177,14 +177,15 @@ public final class Console implements AutoCloseable {
      * robot traffic meanwhile. Returns once that first listen is over and the port has been open
      * for at least {@code listenMillis} (longer on a lossy network); at once when play is heard
      * (match mode then holds the request and says why) or no GameController port is open; at the
-     * latest at {@code deadlineNanos} ({@link System#nanoTime}).
+     * latest after {@code timeout} (on the console's clock).
      */
-    public void awaitFirstListen(long listenMillis, long deadlineNanos) throws InterruptedException {
+    public void awaitFirstListen(long listenMillis, java.time.Duration timeout) throws InterruptedException {
         if (gcWatch == null) {
             return;
         }
         long until = listeningSinceMicros + listenMillis * 1000;
-        while (System.nanoTime() - deadlineNanos < 0 && !matchMode.playIsOn()
+        long end = clock.nowMicros() + timeout.toNanos() / 1000;
+        while (clock.nowMicros() < end && !matchMode.playIsOn()
                 && (matchMode.listeningFirst() || clock.nowMicros() < until)) {
             Thread.sleep(10);
         }

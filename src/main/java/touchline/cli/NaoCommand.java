@@ -162,8 +162,7 @@ public final class NaoCommand implements Runnable {
             }
             // A console that just opened the GameController port listens for one first (match mode):
             // the call waits for that (at least --listen), or for play to be heard, instead of being held for it.
-            console.awaitFirstListen(listenMs, System.nanoTime()
-                    + TimeUnit.MILLISECONDS.toNanos(Math.max(listenMs, MatchMode.LISTEN_FIRST_MS) + 1000));
+            console.awaitFirstListen(listenMs, java.time.Duration.ofMillis(Math.max(listenMs, MatchMode.LISTEN_FIRST_MS) + 1000));
             return link;
         }
     }

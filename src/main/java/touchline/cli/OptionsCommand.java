@@ -50,7 +50,7 @@ final class OptionsCommand implements Callable<Integer> {
             }
             // a console that just opened the GameController port listens for one first (match mode):
             // the requests wait for that, or for play to be heard, instead of being held for it
-            console.awaitFirstListen(0, deadline);
+            console.awaitFirstListen(0, java.time.Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
             int status = 0;
             for (String name : on) {
                 status |= apply(console, name, true);

@@ -57,13 +57,13 @@ class ConsoleUseCasesTest {
     @Test
     void aOneShotCommandWaitsOutTheFirstListenForAGameController() throws Exception {
         try (Console quiet = new Console(loopback()).start()) {
-            quiet.awaitFirstListen(60_000, System.nanoTime() + TimeUnit.SECONDS.toNanos(60));
+            quiet.awaitFirstListen(60_000, Duration.ofSeconds(60));
             assertFalse(quiet.matchMode().listeningFirst(), "no GameController port: nothing to wait for");
         }
         ConsoleConfig withGc = loopback().withGameControllerPort(freePort());
         try (Console console = new Console(withGc).start()) {
             long opened = console.clock().nowMicros();
-            console.awaitFirstListen(900, System.nanoTime() + TimeUnit.SECONDS.toNanos(60));
+            console.awaitFirstListen(900, Duration.ofSeconds(60));
             assertFalse(console.matchMode().listeningFirst(), "the first listen is over");
             assertTrue(console.clock().nowMicros() - opened >= 900_000 - 50_000,
                     "listened at least the time asked (from when the port opened, just before " + opened + ")");
