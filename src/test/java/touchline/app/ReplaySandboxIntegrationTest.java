@@ -133,8 +133,10 @@ class ReplaySandboxIntegrationTest {
             Fumanoid.DebugOptionRequest request = first.extension(Fumanoid.debugOptionRequest);
             assertNotNull(request, "the first datagram after the replay began: " + first);
             assertEquals(PLOT, request.getName());
-            assertEquals(1, sentLive.stream().filter(e -> e.extension(Fumanoid.debugOptionRequest) != null).count(),
-                    "exactly one request went to the live robot: " + sentLive);
+            // only that request went to the live robot (again, if the robot took over a second to confirm it:
+            // the option session's retry), nothing the recording held
+            assertTrue(sentLive.stream().map(e -> e.extension(Fumanoid.debugOptionRequest)).filter(java.util.Objects::nonNull)
+                    .allMatch(r -> r.getName().equals(PLOT) && r.getEnable()), "only the live request: " + sentLive);
             assertTrue(console.options().options(8, Origin.REPLAY).listReceived(), "the replayed options are shown");
 
             seekingBackStartsTheReplaysPlotsAfresh(console, replay, file);
