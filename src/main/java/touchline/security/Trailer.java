@@ -28,14 +28,14 @@ public sealed interface Trailer {
     record Truncated(int bytes) implements Trailer { }
 
     static Trailer of(byte[] d, int length) {
-        if (length >= SIZE && magicAt(d, length - SIZE)) {
+        if (length >= SIZE && magicAt(d, length - SIZE, MAGIC)) {
             return new Present(length - SIZE, getLong(d, length - SIZE + 8));
         }
-        if (length >= SIZE && outdatedAt(d, length - SIZE)) {
+        if (length >= SIZE && magicAt(d, length - SIZE, OUTDATED_MAGIC)) {
             return new Outdated(length - SIZE);
         }
         for (int back = SIZE - 1; back >= MAGIC.length; back--) {
-            if (back <= length && magicAt(d, length - back)) {
+            if (back <= length && magicAt(d, length - back, MAGIC)) {
                 return new Truncated(back);
             }
         }
@@ -46,12 +46,8 @@ public sealed interface Trailer {
         return of(d, d.length);
     }
 
-    private static boolean magicAt(byte[] d, int at) {
-        return d[at] == 'T' && d[at + 1] == 'L' && d[at + 2] == 'A' && d[at + 3] == '2';
-    }
-
-    private static boolean outdatedAt(byte[] d, int at) {
-        return d[at] == 'T' && d[at + 1] == 'L' && d[at + 2] == 'A' && d[at + 3] == '1';
+    private static boolean magicAt(byte[] d, int at, byte[] magic) {
+        return d[at] == magic[0] && d[at + 1] == magic[1] && d[at + 2] == magic[2] && d[at + 3] == magic[3];
     }
 
     /** Where the payload ends: before a whole trailer of either version, else the datagram's end. */
