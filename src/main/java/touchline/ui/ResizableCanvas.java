@@ -3,7 +3,11 @@ package touchline.ui;
 import javafx.scene.canvas.Canvas;
 import javafx.scene.layout.Pane;
 
-/** A canvas that fills its pane and asks for a redraw when the pane is resized. */
+/**
+ * A canvas that fills its pane and asks for a redraw when the pane is resized. The pane is
+ * opaque: JavaFX then starts a redraw of the canvas at this pane instead of repainting every
+ * background behind it (the views, tabs and splits around it) in each frame the canvas changes.
+ */
 public final class ResizableCanvas extends Pane {
 
     private final Canvas canvas = new Canvas(10, 10);
@@ -11,6 +15,8 @@ public final class ResizableCanvas extends Pane {
 
     public ResizableCanvas(Runnable onResize) {
         getChildren().add(canvas);
+        setBackground(new javafx.scene.layout.Background(new javafx.scene.layout.BackgroundFill(
+                javafx.scene.paint.Color.BLACK, null, null)));
         canvas.widthProperty().bind(widthProperty());
         canvas.heightProperty().bind(heightProperty());
         widthProperty().addListener((o, a, b) -> resized(onResize));

@@ -121,7 +121,22 @@ public final class ViewFrame extends BorderPane {
         scroller.setFitToWidth(true);
         scroller.setFitToHeight(true);
         scroller.getStyleClass().add("view-scroller");
+        uncacheViewport(scroller);
         setCenter(scroller);
+    }
+
+    /**
+     * The scroll pane's skin caches its viewport as an image: a view that changes is then drawn whole
+     * into that image and the image into the window, every frame (two thirds of the render thread's
+     * time with the demo layout in software, docs/benchmarks.md). Without the cache only what changed is drawn.
+     */
+    private static void uncacheViewport(javafx.scene.control.ScrollPane pane) {
+        pane.skinProperty().addListener((o, was, skin) -> {
+            javafx.scene.Node viewport = skin == null ? null : pane.lookup(".viewport");
+            if (viewport != null) {
+                viewport.setCache(false);
+            }
+        });
     }
 
     /** Buttons never shrink below their label: the pane scrolls instead (nodes the view has now). */

@@ -21,7 +21,8 @@ import java.util.function.Function;
 /**
  * Every robot ever seen, one row each, with online/offline at a glance; below, the senders
  * whose datagrams were rejected and the registry's notes (address changes, duplicate IDs).
- * Rows are rebuilt at most twice a second: rates and "last seen" need no more.
+ * Rows are brought up to date at most twice a second (rates and "last seen" need no more), and
+ * only the rows whose shown text changed ({@link ShownRows}).
  */
 public final class RobotsView implements View {
 
@@ -30,6 +31,10 @@ public final class RobotsView implements View {
     private final TextColumns<RobotSnapshot> columns = new TextColumns<>(true);
     private final TextArea problems = new TextArea();
     private final SplitPane root = new SplitPane();
+    /** What each column shows of a robot, in column order. */
+    private final List<Function<RobotSnapshot, String>> shownTexts = new java.util.ArrayList<>();
+    private final ShownRows<RobotSnapshot> rows = new ShownRows<>(r -> r.id() + "/" + r.origin(),
+            r -> shownTexts.stream().map(f -> f.apply(r)).toList());
     private long lastRebuildMicros;
     private long seenVersion = -1;
 
@@ -38,7 +43,7 @@ public final class RobotsView implements View {
         table.setId("robot-table");
         table.setPlaceholder(new Label("No robot seen yet: robots send keep-alives to UDP port "
                 + context.console().port()));
-        TableColumn<RobotSnapshot, String> online = column("", r -> r.online() ? "●" : "○", 36);
+        TableColumn<RobotSnapshot, String> online = column("", r -> r.online() ? "●" : "○", 36); // its colour follows the same flag
         online.setCellFactory(c -> new TableCell<>() {
             @Override
             protected void updateItem(String item, boolean empty) {
@@ -64,8 +69,10 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
         table.getColumns().add(column("Malformed", r -> Long.toString(r.malformed()), 72));
         table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 150));
-        table.getColumns().add(columns.column("Address", r -> r.address() == null ? "" : r.address().getHostString()
-                + ":" + r.address().getPort(), 130, "127.000.000.100:65535"));
+        Function<RobotSnapshot, String> address = r -> r.address() == null ? "" : r.address().getHostString()
+                + ":" + r.address().getPort();
+        shownTexts.add(address);
+        table.getColumns().add(columns.column("Address", address, 130, "127.000.000.100:65535"));
         problems.setEditable(false);
         problems.setPrefRowCount(4);
         problems.setPromptText("Bad sources and notes appear here.");
@@ -77,6 +84,7 @@ public final class RobotsView implements View {
     }
 
     private TableColumn<RobotSnapshot, String> column(String title, Function<RobotSnapshot, String> value, double width) {
+        shownTexts.add(value);
         return columns.column(title, value, width, "");
     }
 
@@ -117,8 +125,7 @@ public final class RobotsView implements View {
         }
         seenVersion = v;
         lastRebuildMicros = frame.nowMicros();
-        List<RobotSnapshot> robots = context.console().robots().robots();
-        table.getItems().setAll(robots);
+        rows.update(table.getItems(), context.console().robots().robots());
         StringBuilder p = new StringBuilder();
         for (SourceSnapshot s : context.console().robots().sources()) {
             if (s.malformed() > 0) {
