@@ -6,7 +6,8 @@ import javafx.scene.layout.Pane;
 /**
  * A canvas that fills its pane and asks for a redraw when the pane is resized. The pane is
  * opaque: JavaFX then starts a redraw of the canvas at this pane instead of repainting every
- * background behind it (the views, tabs and splits around it) in each frame the canvas changes.
+ * background behind it (the views, tabs and splits around it) in each frame the canvas changes
+ * (docs/benchmarks.md, "Twelfth session").
  */
 public final class ResizableCanvas extends Pane {
 
@@ -15,8 +16,10 @@ public final class ResizableCanvas extends Pane {
 
     public ResizableCanvas(Runnable onResize) {
         getChildren().add(canvas);
+        // one pixel beyond the pane: JavaFX rounds a changed area out to whole pixels, and a pane at a
+        // fractional position would otherwise not cover its own canvas's area
         setBackground(new javafx.scene.layout.Background(new javafx.scene.layout.BackgroundFill(
-                javafx.scene.paint.Color.BLACK, null, null)));
+                javafx.scene.paint.Color.BLACK, null, new javafx.geometry.Insets(-1))));
         canvas.widthProperty().bind(widthProperty());
         canvas.heightProperty().bind(heightProperty());
         widthProperty().addListener((o, a, b) -> resized(onResize));

@@ -23,6 +23,7 @@ public final class SourceBar extends HBox {
     private final Set<Integer> kinds;
     private final ComboBox<ViewSource> choice = new ComboBox<>();
     private final Label status = new Label();
+    private final PacedText paced = new PacedText();
     private long seenOptionsVersion = -1;
     private long seenRobotsVersion = -1;
     private long readMicros = Long.MIN_VALUE;
@@ -54,8 +55,13 @@ public final class SourceBar extends HBox {
         return s == null ? ViewSource.NONE : s;
     }
 
+    /** The status line as it should read now; it changes at most twice a second ({@link PacedText}). */
     public void status(String text) {
-        if (!text.equals(status.getText())) {
+        show(paced.offer(text, context.console().clock().nowMicros()));
+    }
+
+    private void show(String text) {
+        if (text != null) {
             status.setText(text);
         }
     }
@@ -69,6 +75,7 @@ public final class SourceBar extends HBox {
         long ov = context.console().options().version();
         long rv = context.console().robots().version();
         long now = context.console().clock().nowMicros();
+        show(paced.due(now));
         if (ov == seenOptionsVersion && (rv == seenRobotsVersion || now - readMicros < REREAD_MICROS)) {
             return;
         }

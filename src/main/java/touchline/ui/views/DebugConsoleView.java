@@ -39,6 +39,7 @@ public final class DebugConsoleView implements View {
     private final TextField search = new TextField();
     private final ToggleButton pause = new ToggleButton("Pause");
     private final Label count = new Label();
+    private final touchline.ui.PacedText countText = new touchline.ui.PacedText();
     /** What Copy did, shown for a few seconds ({@link #FEEDBACK_FRAMES}). */
     private final Label feedback = new Label();
     static final int FEEDBACK_FRAMES = 240;
@@ -122,13 +123,14 @@ public final class DebugConsoleView implements View {
     public void refresh(FrameContext frame) {
         robot.refresh();
         frameNow = frame.frame();
+        showCount(countText.due(frame.nowMicros()));
         if (frameNow > feedbackUntilFrame && !feedback.getText().isEmpty()) {
             feedback.setText("");
         }
         if (pause.isSelected()) {
             // every line the log took since the pause, whatever the filters (they apply on resume)
             long waiting = Math.max(0, context.stores().text().version() - pausedAtVersion);
-            count.setText("paused — " + waiting + " new");
+            showCount(countText.offer("paused — " + waiting + " new", frame.nowMicros()));
             return;
         }
         String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);
@@ -146,6 +148,12 @@ public final class DebugConsoleView implements View {
         if (atEnd && !lines.getItems().isEmpty()) {
             lines.scrollTo(lines.getItems().size() - 1);
         }
-        count.setText(lines.getItems().size() + " lines");
+        showCount(countText.offer(lines.getItems().size() + " lines", frame.nowMicros()));
+    }
+
+    private void showCount(String text) {
+        if (text != null) {
+            count.setText(text);
+        }
     }
 }

@@ -10,7 +10,9 @@ import java.util.function.Function;
 /**
  * Follows a sequenced ring (the text log, the network log) into a list control's items, once
  * per frame: appends what arrived since the last frame, read up to the store's version at the
- * start so nothing is read twice; keeps at most {@code shown} items (the newest); and after
+ * start so nothing is read twice; keeps the newest {@code shown} items, trimming the oldest in
+ * batches of a tenth of that (a list control re-indexes and redraws every row it shows when
+ * rows are taken off its front: once every few hundred lines, not in every frame); and after
  * {@link #reload()} (a filter changed) starts again from what the ring still holds. The
  * debug console, the network console and the text view share it.
  *
@@ -73,14 +75,14 @@ final class RingFollower<E, T> {
         items.addAll(add);
         added = add.size();
         int over = items.size() - shown;
-        if (over > 0) {
+        if (over > shown / 10) {
             items.remove(0, over);
             trimmed = over;
         }
         return fresh.get(fresh.size() - 1);
     }
 
-    /** Items the last {@link #follow} removed from the front (the oldest, over the cap). */
+    /** Items the last {@link #follow} removed from the front (the oldest, over the cap: at most a tenth more than shown is kept). */
     int trimmed() {
         return trimmed;
     }

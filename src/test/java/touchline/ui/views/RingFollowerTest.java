@@ -62,4 +62,21 @@ class RingFollowerTest {
         follow();
         assertEquals(List.of("A", "B"), items);
     }
+
+    @Test
+    void trimsTheOldestInBatchesOfATenth() {
+        RingFollower<String, String> twenty = new RingFollower<>(items, 20);
+        for (int i = 0; i < 22; i++) {
+            ring.append("x" + i);
+            twenty.follow(ring.version(), ring::since, s -> s);
+        }
+        assertEquals(22, items.size(), "up to a tenth over the 20 shown stays");
+        assertEquals(0, twenty.trimmed());
+        ring.append("x22");
+        twenty.follow(ring.version(), ring::since, s -> s);
+        assertEquals(3, twenty.trimmed(), "one batch: back to the 20 newest");
+        assertEquals(20, items.size());
+        assertEquals("x3", items.get(0));
+        assertEquals("x22", items.get(19));
+    }
 }
