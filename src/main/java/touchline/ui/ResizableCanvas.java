@@ -16,10 +16,7 @@ public final class ResizableCanvas extends Pane {
 
     public ResizableCanvas(Runnable onResize) {
         getChildren().add(canvas);
-        // one pixel beyond the pane: JavaFX rounds a changed area out to whole pixels, and a pane at a
-        // fractional position would otherwise not cover its own canvas's area
-        setBackground(new javafx.scene.layout.Background(new javafx.scene.layout.BackgroundFill(
-                javafx.scene.paint.Color.BLACK, null, new javafx.geometry.Insets(-1))));
+        getStyleClass().add("canvas-pane"); // opaque, one pixel beyond the pane: touchline.css
         canvas.widthProperty().bind(widthProperty());
         canvas.heightProperty().bind(heightProperty());
         widthProperty().addListener((o, a, b) -> resized(onResize));

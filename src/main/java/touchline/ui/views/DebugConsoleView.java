@@ -24,9 +24,9 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Time-stamped text from the robots: filter by robot, search, pause, copy. It shows at most
- * {@link #SHOWN} lines; the text log behind it is capped too, so a chatty robot cannot grow
- * memory.
+ * Time-stamped text from the robots: filter by robot, search, pause, copy. It shows the newest
+ * {@link #SHOWN} lines (up to a tenth more before the oldest go, {@link RingFollower}); the text
+ * log behind it is capped too, so a chatty robot cannot grow memory.
  */
 public final class DebugConsoleView implements View {
 

@@ -28,7 +28,7 @@ import java.util.function.Predicate;
 /**
  * Every datagram in and out: time, direction, peer, size, kind; the selected one as protobuf
  * text (unknown extensions field by field) and as hex. Filters by robot, direction and kind;
- * pause; at most {@link #SHOWN} rows.
+ * pause; the newest {@link #SHOWN} rows (up to a tenth more before the oldest go, {@link RingFollower}).
  */
 public final class NetworkView implements View {
 
