@@ -127,8 +127,8 @@ public final class ViewFrame extends BorderPane {
 
     /**
      * The scroll pane's skin caches its viewport as an image: a view that changes is then drawn whole
-     * into that image and the image into the window, every frame (two thirds of the render thread's
-     * time with the demo layout in software, docs/benchmarks.md). Without the cache only what changed is drawn.
+     * into that image and the image into the window, every frame (58 % of the render thread's
+     * time with the demo layout in software, docs/benchmarks.md "Twelfth session"). Without the cache only what changed is drawn.
      */
     private static void uncacheViewport(javafx.scene.control.ScrollPane pane) {
         pane.skinProperty().addListener((o, was, skin) -> {

@@ -11,8 +11,8 @@ import java.util.function.Function;
  * Follows a sequenced ring (the text log, the network log) into a list control's items, once
  * per frame: appends what arrived since the last frame, read up to the store's version at the
  * start so nothing is read twice; keeps the newest {@code shown} items, trimming the oldest in
- * batches of a tenth of that (a list control re-indexes and redraws every row it shows when
- * rows are taken off its front: once every few hundred lines, not in every frame); and after
+ * batches of a tenth of that (one removal every few hundred lines instead of one per frame; the
+ * window's CPU showed no difference either way, docs/benchmarks.md "Twelfth session"); and after
  * {@link #reload()} (a filter changed) starts again from what the ring still holds. The
  * debug console, the network console and the text view share it.
  *
