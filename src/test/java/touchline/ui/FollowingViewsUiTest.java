@@ -64,6 +64,47 @@ class FollowingViewsUiTest {
     }
 
     @Test
+    void whileFollowingTheListHoldsOnlyTheNewestLinesAndASelectionOrPauseHoldsThemAll() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            tailAndEverything(ui);
+        }
+    }
+
+    private static void tailAndEverything(ConsoleWindowFixture ui) throws Exception {
+        ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
+        DebugConsoleView view = ui.view(DebugConsoleView.class);
+        @SuppressWarnings("unchecked")
+        ListView<String> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
+        int lines = 300; // more than the tail (200), fewer than the console keeps (5 000)
+        for (int i = 1; i <= lines; i++) {
+            publish(ui, "demo.text", "line " + i + ".");
+        }
+        ui.await(10, () -> ui.fx(() -> list.getItems().isEmpty() ? "" : list.getItems().get(list.getItems().size() - 1))
+                .endsWith("line " + lines + "."));
+        assertEquals(200, (int) ui.fx(() -> list.getItems().size()), "following: only the newest 200 lines in the list");
+        assertTrue(ui.fx(() -> list.getItems().get(0)).endsWith("line 101."), "the tail is the end of the log");
+        ui.await(10, () -> ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-count").queryLabeled().getText())
+                .equals(lines + " lines"));
+
+        ui.fxRun(() -> list.getSelectionModel().select(49)); // "line 150." in the tail
+        ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines);
+        assertEquals(149, (int) ui.fx(() -> list.getSelectionModel().getSelectedIndex()), "the same line stays selected");
+        assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line 150."));
+        publish(ui, "demo.text", "line " + (lines + 1) + ".");
+        ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines + 1);
+        assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line 150."), "new lines keep the selection");
+
+        ui.fxRun(() -> list.getSelectionModel().clearSelection());
+        ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 200);
+        assertTrue(ui.fx(() -> list.getItems().get(199)).endsWith("line " + (lines + 1) + "."), "following again, newest last");
+
+        ui.fxRun(() -> ui.robot.from(view.node()).lookup("#debug-pause").queryAs(javafx.scene.control.ToggleButton.class)
+                .setSelected(true));
+        ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines + 1);
+        assertTrue(ui.fx(() -> list.getItems().get(0)).endsWith("line 1."), "paused: every line scrollable");
+    }
+
+    @Test
     void theTextViewShowsOnlyItsOptionsLines() throws Exception {
         try (ConsoleWindowFixture ui = window()) {
             onlyItsOption(ui);

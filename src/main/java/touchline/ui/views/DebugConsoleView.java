@@ -24,9 +24,11 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Time-stamped text from the robots: filter by robot, search, pause, copy. It shows the newest
+ * Time-stamped text from the robots: filter by robot, search, pause, copy. It holds the newest
  * {@link #SHOWN} lines (up to a tenth more before the oldest go, {@link RingFollower}); the text
- * log behind it is capped too, so a chatty robot cannot grow memory.
+ * log behind it is capped too, so a chatty robot cannot grow memory. While it follows the
+ * newest line its list holds only the last few hundred ({@link LogList}); a selection or a pause
+ * makes every line scrollable.
  */
 public final class DebugConsoleView implements View {
 
@@ -48,7 +50,8 @@ public final class DebugConsoleView implements View {
     /** What arrived while paused counts from the store's version at the pause. */
     private long pausedAtVersion = -1;
     private final BorderPane root = new BorderPane();
-    private final RingFollower<TextLine, String> follower = new RingFollower<>(lines.getItems(), SHOWN);
+    private final LogList<String> log = new LogList<>(lines);
+    private final RingFollower<TextLine, String> follower = new RingFollower<>(log.all(), SHOWN);
 
     public DebugConsoleView(ViewContext context) {
         this.context = context;
@@ -85,9 +88,7 @@ public final class DebugConsoleView implements View {
         copy.setId("debug-copy");
         copy.setOnAction(e -> copy());
         Button clear = new Button("Clear");
-        clear.setOnAction(e -> {
-            lines.getItems().clear();
-        });
+        clear.setOnAction(e -> log.clear());
         for (javafx.scene.control.Control c : List.of(pause, copy, clear, robot)) {
             c.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
         }
@@ -100,7 +101,7 @@ public final class DebugConsoleView implements View {
 
     private void copy() {
         List<String> chosen = lines.getSelectionModel().getSelectedItems();
-        List<String> text = chosen.isEmpty() ? lines.getItems() : chosen;
+        List<String> text = chosen.isEmpty() ? log.all() : chosen;
         ClipboardContent c = new ClipboardContent();
         c.putString(String.join("\n", text));
         Clipboard.getSystemClipboard().setContent(c);
@@ -128,27 +129,27 @@ public final class DebugConsoleView implements View {
             feedback.setText("");
         }
         if (pause.isSelected()) {
+            log.beforeAppend(false); // every line scrollable while paused
             // every line the log took since the pause, whatever the filters (they apply on resume)
             long waiting = Math.max(0, context.stores().text().version() - pausedAtVersion);
             showCount(countText.offer("paused — " + waiting + " new", frame.nowMicros()));
             return;
         }
         String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);
-        boolean atEnd = lines.getItems().isEmpty() || lines.getSelectionModel().isEmpty();
         int robotId = robot.robotId();
+        boolean follow = lines.getSelectionModel().isEmpty();
+        log.beforeAppend(follow);
         SequencedRing.Entry<TextLine> newest = follower.follow(context.stores().text().version(),
                 (after, max) -> context.stores().text().since(after, robotId, max), l -> {
                     String s = format(l);
                     return needle.isEmpty() || s.toLowerCase(Locale.ROOT).contains(needle) ? s : null;
                 });
+        log.afterAppend(follow, follower.added());
         if (newest == null) {
             return;
         }
         frame.shown(newest.value().timeMicros());
-        if (atEnd && !lines.getItems().isEmpty()) {
-            lines.scrollTo(lines.getItems().size() - 1);
-        }
-        showCount(countText.offer(lines.getItems().size() + " lines", frame.nowMicros()));
+        showCount(countText.offer(log.all().size() + " lines", frame.nowMicros()));
     }
 
     private void showCount(String text) {
