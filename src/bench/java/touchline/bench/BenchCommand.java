@@ -21,6 +21,7 @@ import picocli.CommandLine.Command;
                 StartBenchCommand.class,
                 SubscriberCostBench.class,
                 TagBenchCommand.class,
+                PresentBenchCommand.class,
         })
 public final class BenchCommand implements Runnable {
 
