@@ -196,13 +196,17 @@ class KeyboardUiTest {
             ui.await(15, () -> ui.console.options().options(5).listReceived());
             ui.console.setOption(5, "demo.text", true);
             TableView<Envelope> table = ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
-            ui.await(20, () -> table.getItems().size() >= 1_900);
+            ui.await(20, () -> shownRows() >= 1_900);
+            // following, the table holds only the newest 200 rows (LogList); a click holds them all
+            assertTrue(ui.fx(() -> table.getItems().size()) <= 200, "following: only the newest rows in the table");
             Envelope chosen = ui.fx(() -> {
                 int i = table.getItems().size() - 20;
                 table.getSelectionModel().select(i);
                 table.scrollTo(i - 3);
                 return table.getItems().get(i);
             });
+            ui.await(10, () -> ui.fx(() -> table.getItems().size()) >= 1_900);
+            assertSame(chosen, ui.fx(() -> table.getSelectionModel().getSelectedItem()), "the clicked row stays selected");
             ui.await(10, () -> visible(table, chosen));
             Envelope oldest = ui.fx(() -> table.getItems().get(0));
             // a few hundred of the oldest rows go while the user looks at the chosen one
@@ -214,6 +218,12 @@ class KeyboardUiTest {
             assertTrue(hex.lines().skip(1).findFirst().orElseThrow().matches("0000  ([0-9a-f]{2} ){8} ([0-9a-f]{2} |   ){8} \\|.*\\|"),
                     hex);
         }
+    }
+
+    /** The rows the network console holds, from its count ("N shown of M kept"). */
+    private long shownRows() throws Exception {
+        String text = ui.fx(() -> ui.robot.lookup("#network-count").queryLabeled().getText());
+        return text.contains(" shown of ") ? Long.parseLong(text.substring(0, text.indexOf(' '))) : -1;
     }
 
     /** The item is on one of the table's rows on screen. */

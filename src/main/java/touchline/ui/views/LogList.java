@@ -2,20 +2,27 @@ package touchline.ui.views;
 
 import javafx.collections.FXCollections;
 import javafx.collections.ObservableList;
+import javafx.scene.control.Control;
+import javafx.scene.control.FocusModel;
 import javafx.scene.control.IndexedCell;
 import javafx.scene.control.ListView;
+import javafx.scene.control.MultipleSelectionModel;
+import javafx.scene.control.TableView;
 import javafx.scene.control.skin.VirtualFlow;
 
 import java.util.List;
+import java.util.function.Consumer;
+import java.util.function.IntConsumer;
+import java.util.function.Supplier;
 
 /**
- * A log in a list control that costs the same to follow whatever it holds. While it follows
- * (nothing selected, not paused) the list control holds only the newest {@link #TAIL} lines:
- * JavaFX 21's list measures every item again each time it scrolls, so following a
+ * A log in a list or table control that costs the same to follow whatever it holds. While it
+ * follows (nothing selected, not paused) the control holds only the newest {@link #TAIL} lines:
+ * JavaFX 21's list and table measure every item again each time they scroll, so following a
  * 5 000-line log took most of the window's FX thread (docs/benchmarks.md, "Thirteenth
  * session"). As soon as the user selects a line or pauses, it holds every line, with the
  * selection, the focus and the line at the top kept where they were; when the selection is
- * cleared (and not paused) it follows again.
+ * cleared (and not paused) it follows again. The debug console and the network console.
  *
  * @param <T> what a line is
  */
@@ -24,14 +31,31 @@ final class LogList<T> {
     /** Lines held while following: more than any screen shows (about 45 on a 1080-px screen). */
     static final int TAIL = 200;
 
-    private final ListView<T> list;
+    private final Control control;
+    private final Consumer<ObservableList<T>> setItems;
+    private final IntConsumer scrollTo;
+    private final Supplier<MultipleSelectionModel<T>> selection;
+    private final Supplier<FocusModel<T>> focus;
     private final ObservableList<T> all = FXCollections.observableArrayList();
     private final ObservableList<T> tail = FXCollections.observableArrayList();
     private boolean following = true;
 
     LogList(ListView<T> list) {
-        this.list = list;
-        list.setItems(tail);
+        this(list, list::setItems, list::scrollTo, list::getSelectionModel, list::getFocusModel);
+    }
+
+    LogList(TableView<T> table) {
+        this(table, table::setItems, table::scrollTo, table::getSelectionModel, () -> table.getFocusModel());
+    }
+
+    private LogList(Control control, Consumer<ObservableList<T>> setItems, IntConsumer scrollTo,
+                    Supplier<MultipleSelectionModel<T>> selection, Supplier<FocusModel<T>> focus) {
+        this.control = control;
+        this.setItems = setItems;
+        this.scrollTo = scrollTo;
+        this.selection = selection;
+        this.focus = focus;
+        setItems.accept(tail);
     }
 
     /** Every line (what a {@link RingFollower} appends to and trims). */
@@ -64,12 +88,12 @@ final class LogList<T> {
         if (!following) {
             following = true;
             tail.setAll(newest());
-            list.setItems(tail);
+            setItems.accept(tail);
         } else {
             changed = keepTail(added);
         }
         if (changed && !tail.isEmpty()) {
-            list.scrollTo(tail.size() - 1);
+            scrollTo.accept(tail.size() - 1);
         }
     }
 
@@ -107,22 +131,22 @@ final class LogList<T> {
     /** Switches the list control to every line, keeping the selection, focus and top line. */
     private void holdEverything() {
         int offset = all.size() - tail.size();
-        List<Integer> selected = List.copyOf(list.getSelectionModel().getSelectedIndices());
-        int focused = list.getFocusModel().getFocusedIndex();
+        List<Integer> selected = List.copyOf(selection.get().getSelectedIndices());
+        int focused = focus.get().getFocusedIndex();
         int top = firstVisible();
         following = false;
-        list.setItems(all);
+        setItems.accept(all);
         for (int i : selected) {
-            list.getSelectionModel().select(i + offset);
+            selection.get().select(i + offset);
         }
         if (focused >= 0) {
-            list.getFocusModel().focus(focused + offset);
+            focus.get().focus(focused + offset);
         }
-        list.scrollTo(Math.max(0, top + offset));
+        scrollTo.accept(Math.max(0, top + offset));
     }
 
     private int firstVisible() {
-        if (list.lookup(".virtual-flow") instanceof VirtualFlow<?> flow) {
+        if (control.lookup(".virtual-flow") instanceof VirtualFlow<?> flow) {
             IndexedCell<?> first = flow.getFirstVisibleCell();
             if (first != null) {
                 return first.getIndex();

@@ -28,7 +28,8 @@ import java.util.function.Predicate;
 /**
  * Every datagram in and out: time, direction, peer, size, kind; the selected one as protobuf
  * text (unknown extensions field by field) and as hex. Filters by robot, direction and kind;
- * pause; the newest {@link #SHOWN} rows (up to a tenth more before the oldest go, {@link RingFollower}).
+ * pause; the newest {@link #SHOWN} rows (up to a tenth more before the oldest go, {@link RingFollower}),
+ * of which the table holds the last few hundred while it follows the newest ({@link LogList}).
  */
 public final class NetworkView implements View {
 
@@ -47,12 +48,14 @@ public final class NetworkView implements View {
     private final BorderPane root = new BorderPane();
     private final MessageText messageText = new MessageText();
     private final HexLines hexDump = new HexLines();
-    private final RingFollower<Envelope, Envelope> follower = new RingFollower<>(table.getItems(), SHOWN);
+    private final LogList<Envelope> log = new LogList<>(table);
+    private final RingFollower<Envelope, Envelope> follower = new RingFollower<>(log.all(), SHOWN);
 
     public NetworkView(ViewContext context) {
         this.context = context;
         this.robot = new RobotFilter(context);
         table.setId("network-table");
+        count.setId("network-count");
         table.setFixedCellSize(24);
         table.getColumns().add(columns.column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96,
                 "00:00:00.000"));
@@ -140,23 +143,24 @@ public final class NetworkView implements View {
     public void refresh(FrameContext frame) {
         robot.refresh();
         if (pause.isSelected()) {
+            log.beforeAppend(false); // every row scrollable while paused
             return;
         }
         Predicate<Envelope> f = filter();
-        boolean follow = table.getSelectionModel().isEmpty();
+        boolean follow = table.getSelectionModel().isEmpty(); // follow the newest until the user picks a row
+        log.beforeAppend(follow);
         int firstShown = follow ? -1 : firstVisibleRow();
         SequencedRing.Entry<Envelope> newest = follower.follow(context.stores().network().version(),
                 (after, max) -> context.stores().network().since(after, max, f), e -> e);
+        log.afterAppend(follow, follower.added());
         if (newest == null) {
             return;
         }
         frame.shown(newest.value().timeMicros());
-        if (follow) {
-            table.scrollTo(table.getItems().size() - 1); // follow the newest until the user picks a row
-        } else if (follower.trimmed() > 0 && firstShown >= 0) {
+        if (!follow && follower.trimmed() > 0 && firstShown >= 0) {
             // the oldest rows went: the rows on screen (the selected one among them) stay where they were
             table.scrollTo(Math.max(0, firstShown - follower.trimmed()));
         }
-        count.setText(table.getItems().size() + " shown of " + context.stores().network().size() + " kept");
+        count.setText(log.all().size() + " shown of " + context.stores().network().size() + " kept");
     }
 }
