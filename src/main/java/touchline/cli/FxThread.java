@@ -11,18 +11,8 @@ public final class FxThread {
 
     private FxThread() { }
 
-    /**
-     * How many separate changed areas JavaFX repaints in one frame before it merges them: its 6
-     * merged the plot, the debug console and the status bar into boxes painted from the window's
-     * root, every background under them included; 12 keeps each view's change its own (the most
-     * is 15). A {@code -Dprism.dirtyregioncount} of the user's wins.
-     */
-    static final String DIRTY_REGIONS = "12";
-
     public static void startToolkit() throws InterruptedException {
-        if (System.getProperty("prism.dirtyregioncount") == null) {
-            System.setProperty("prism.dirtyregioncount", DIRTY_REGIONS);
-        }
+        new touchline.ui.RenderDefaults().apply();
         java.util.concurrent.CountDownLatch up = new java.util.concurrent.CountDownLatch(1);
         Platform.startup(up::countDown);
         up.await(30, TimeUnit.SECONDS);

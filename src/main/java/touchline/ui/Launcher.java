@@ -11,6 +11,7 @@ public final class Launcher {
     private Launcher() { }
 
     public static void main(String[] args) {
+        new RenderDefaults().apply();
         Application.launch(TouchlineApp.class, args);
     }
 }
