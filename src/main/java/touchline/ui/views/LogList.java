@@ -63,11 +63,6 @@ final class LogList<T> {
         return all;
     }
 
-    /** True while the list control holds only the newest lines. */
-    boolean following() {
-        return following;
-    }
-
     /**
      * A frame's first step, before its lines are appended to {@link #all()}: {@code follow}
      * says whether the newest line should show (nothing selected, not paused); when it should
