@@ -123,12 +123,21 @@ final class LogList<T> {
         return true;
     }
 
-    /** Switches the list control to every line, keeping the selection, focus and top line. */
+    /**
+     * Switches the control to every line, keeping the selection, the focus and the line at the
+     * top; if the focused line (where the keyboard or a click left it) is not among the lines on
+     * screen — a scroll asked for in the same frame is not laid out yet — it is centred instead.
+     */
     private void holdEverything() {
         int offset = all.size() - tail.size();
         List<Integer> selected = List.copyOf(selection.get().getSelectedIndices());
         int focused = focus.get().getFocusedIndex();
-        int top = firstVisible();
+        int anchor = focused >= 0 ? focused : selected.isEmpty() ? -1 : selected.get(selected.size() - 1);
+        int[] shown = onScreen();
+        int top = shown == null ? Math.max(0, tail.size() - 1) : shown[0];
+        if (anchor >= 0 && shown != null && (anchor < shown[0] || anchor > shown[1])) {
+            top = Math.max(0, anchor - (shown[1] - shown[0]) / 2);
+        }
         following = false;
         setItems.accept(all);
         for (int i : selected) {
@@ -140,13 +149,15 @@ final class LogList<T> {
         scrollTo.accept(Math.max(0, top + offset));
     }
 
-    private int firstVisible() {
+    /** The first and last line on screen, or null before the control is laid out. */
+    private int[] onScreen() {
         if (control.lookup(".virtual-flow") instanceof VirtualFlow<?> flow) {
             IndexedCell<?> first = flow.getFirstVisibleCell();
-            if (first != null) {
-                return first.getIndex();
+            IndexedCell<?> last = flow.getLastVisibleCell();
+            if (first != null && last != null) {
+                return new int[] {first.getIndex(), last.getIndex()};
             }
         }
-        return Math.max(0, tail.size() - 1);
+        return null;
     }
 }
