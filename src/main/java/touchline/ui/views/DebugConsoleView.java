@@ -25,7 +25,7 @@ import java.util.Locale;
 
 /**
  * Time-stamped text from the robots: filter by robot, search, pause, copy. It holds the newest
- * {@link #SHOWN} lines (up to a tenth more before the oldest go, {@link RingFollower}); the text
+ * {@link #SHOWN} lines (up to a tenth more before the oldest go); the text
  * log behind it is capped too, so a chatty robot cannot grow memory. While it follows the
  * newest line its list holds only the last few hundred ({@link LogList}); a selection or a pause
  * makes every line scrollable.
@@ -50,8 +50,7 @@ public final class DebugConsoleView implements View {
     /** What arrived while paused counts from the store's version at the pause. */
     private long pausedAtVersion = -1;
     private final BorderPane root = new BorderPane();
-    private final LogList<String> log = new LogList<>(lines);
-    private final RingFollower<TextLine, String> follower = new RingFollower<>(log.all(), SHOWN);
+    private final LogList<TextLine, String> log = new LogList<>(lines, SHOWN);
 
     public DebugConsoleView(ViewContext context) {
         this.context = context;
@@ -76,12 +75,12 @@ public final class DebugConsoleView implements View {
                 e.consume();
             }
         });
-        robot.valueProperty().addListener((o, a, b) -> follower.reload());
-        search.textProperty().addListener((o, a, b) -> follower.reload());
+        robot.valueProperty().addListener((o, a, b) -> log.reload());
+        search.textProperty().addListener((o, a, b) -> log.reload());
         pause.selectedProperty().addListener((o, a, b) -> {
             pausedAtVersion = b ? context.stores().text().version() : -1;
             if (!b) {
-                follower.reload();
+                log.reload();
             }
         });
         Button copy = new Button("Copy");
@@ -129,7 +128,7 @@ public final class DebugConsoleView implements View {
             feedback.setText("");
         }
         if (pause.isSelected()) {
-            log.beforeAppend(false); // every line scrollable while paused
+            log.holdEverything(); // every line scrollable while paused
             // every line the log took since the pause, whatever the filters (they apply on resume)
             long waiting = Math.max(0, context.stores().text().version() - pausedAtVersion);
             showCount(countText.offer("paused — " + waiting + " new", frame.nowMicros()));
@@ -137,14 +136,11 @@ public final class DebugConsoleView implements View {
         }
         String needle = search.getText() == null ? "" : search.getText().toLowerCase(Locale.ROOT);
         int robotId = robot.robotId();
-        boolean follow = lines.getSelectionModel().isEmpty();
-        log.beforeAppend(follow);
-        SequencedRing.Entry<TextLine> newest = follower.follow(context.stores().text().version(),
+        SequencedRing.Entry<TextLine> newest = log.follow(lines.getSelectionModel().isEmpty(), context.stores().text().version(),
                 (after, max) -> context.stores().text().since(after, robotId, max), l -> {
                     String s = format(l);
                     return needle.isEmpty() || s.toLowerCase(Locale.ROOT).contains(needle) ? s : null;
                 });
-        log.afterAppend(follow, follower.added());
         if (newest == null) {
             return;
         }

@@ -10,8 +10,11 @@ import javafx.scene.control.MultipleSelectionModel;
 import javafx.scene.control.TableView;
 import javafx.scene.control.skin.VirtualFlow;
 
+import touchline.model.store.SequencedRing;
+
 import java.util.List;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.function.IntConsumer;
 import java.util.function.Supplier;
 
@@ -22,11 +25,14 @@ import java.util.function.Supplier;
  * 5 000-line log took most of the window's FX thread (docs/benchmarks.md, "Thirteenth
  * session"). As soon as the user selects a line or pauses, it holds every line, with the
  * selection, the focus and the line at the top kept where they were; when the selection is
- * cleared (and not paused) it follows again. The debug console and the network console.
+ * cleared (and not paused) it follows again; while it holds every line, the lines on screen stay
+ * where they are as the oldest go. It reads its ring through a {@link RingFollower}. The debug
+ * console and the network console.
  *
+ * @param <E> what the ring holds
  * @param <T> what a line is
  */
-final class LogList<T> {
+final class LogList<E, T> {
 
     /** Lines held while following: more than any screen shows (about 45 on a 1080-px screen). */
     static final int TAIL = 200;
@@ -38,18 +44,22 @@ final class LogList<T> {
     private final Supplier<FocusModel<T>> focus;
     private final ObservableList<T> all = FXCollections.observableArrayList();
     private final ObservableList<T> tail = FXCollections.observableArrayList();
+    private final RingFollower<E, T> follower;
     private boolean following = true;
 
-    LogList(ListView<T> list) {
-        this(list, list::setItems, list::scrollTo, list::getSelectionModel, list::getFocusModel);
+    /** @param shown lines held at most ({@link RingFollower}) */
+    LogList(ListView<T> list, int shown) {
+        this(list, list::setItems, list::scrollTo, list::getSelectionModel, list::getFocusModel, shown);
     }
 
-    LogList(TableView<T> table) {
-        this(table, table::setItems, table::scrollTo, table::getSelectionModel, () -> table.getFocusModel());
+    /** @param shown rows held at most ({@link RingFollower}) */
+    LogList(TableView<T> table, int shown) {
+        this(table, table::setItems, table::scrollTo, table::getSelectionModel, () -> table.getFocusModel(), shown);
     }
 
     private LogList(Control control, Consumer<ObservableList<T>> setItems, IntConsumer scrollTo,
-                    Supplier<MultipleSelectionModel<T>> selection, Supplier<FocusModel<T>> focus) {
+                    Supplier<MultipleSelectionModel<T>> selection, Supplier<FocusModel<T>> focus, int shown) {
+        this.follower = new RingFollower<>(all, shown);
         this.control = control;
         this.setItems = setItems;
         this.scrollTo = scrollTo;
@@ -58,26 +68,43 @@ final class LogList<T> {
         setItems.accept(tail);
     }
 
-    /** Every line (what a {@link RingFollower} appends to and trims). */
+    /** Every line held (up to {@code shown}, a tenth more before the oldest go). */
     ObservableList<T> all() {
         return all;
     }
 
-    /**
-     * A frame's first step, before its lines are appended to {@link #all()}: {@code follow}
-     * says whether the newest line should show (nothing selected, not paused); when it should
-     * not, the list control switches to every line (while the tail is still the end of all).
-     */
-    void beforeAppend(boolean follow) {
-        if (!follow && following) {
-            holdEverything();
+    /** Starts again from what the ring still holds (a filter changed; resuming after a pause). */
+    void reload() {
+        follower.reload();
+    }
+
+    /** Holds every line without reading anything new (paused). */
+    void holdEverything() {
+        if (following) {
+            showEverything();
         }
     }
 
-    /** A frame's last step: {@code added} lines were appended to {@link #all()}; shows the newest when following. */
-    void afterAppend(boolean follow, int added) {
+    /**
+     * One frame: reads what the ring gained ({@link RingFollower#follow}) and shows it.
+     * {@code follow} says whether the newest line should show (nothing selected, not paused);
+     * when it should not, the control holds every line and the lines on screen stay as the
+     * oldest go. Returns the newest entry read, or {@code null} when the ring has nothing new.
+     */
+    SequencedRing.Entry<E> follow(boolean follow, long version, RingFollower.Reader<E> reader, Function<E, T> item) {
+        int top = -1;
+        if (!follow && following) {
+            showEverything(); // before this frame's lines: the tail is still the end of all
+        } else if (!follow) {
+            int[] shown = onScreen();
+            top = shown == null ? -1 : shown[0];
+        }
+        SequencedRing.Entry<E> newest = follower.follow(version, reader, item);
         if (!follow) {
-            return;
+            if (follower.trimmed() > 0 && top >= 0) {
+                scrollTo.accept(Math.max(0, top - follower.trimmed())); // the lines on screen stay where they were
+            }
+            return newest;
         }
         boolean changed = true;
         if (!following) {
@@ -85,11 +112,12 @@ final class LogList<T> {
             tail.setAll(newest());
             setItems.accept(tail);
         } else {
-            changed = keepTail(added);
+            changed = keepTail(follower.added());
         }
         if (changed && !tail.isEmpty()) {
             scrollTo.accept(tail.size() - 1);
         }
+        return newest;
     }
 
     /** Empties the log (the user's Clear). */
@@ -128,7 +156,7 @@ final class LogList<T> {
      * top; if the focused line (where the keyboard or a click left it) is not among the lines on
      * screen — a scroll asked for in the same frame is not laid out yet — it is centred instead.
      */
-    private void holdEverything() {
+    private void showEverything() {
         int offset = all.size() - tail.size();
         List<Integer> selected = List.copyOf(selection.get().getSelectedIndices());
         int focused = focus.get().getFocusedIndex();

@@ -28,7 +28,7 @@ import java.util.function.Predicate;
 /**
  * Every datagram in and out: time, direction, peer, size, kind; the selected one as protobuf
  * text (unknown extensions field by field) and as hex. Filters by robot, direction and kind;
- * pause; the newest {@link #SHOWN} rows (up to a tenth more before the oldest go, {@link RingFollower}),
+ * pause; the newest {@link #SHOWN} rows (up to a tenth more before the oldest go),
  * of which the table holds the last few hundred while it follows the newest ({@link LogList}).
  */
 public final class NetworkView implements View {
@@ -48,8 +48,7 @@ public final class NetworkView implements View {
     private final BorderPane root = new BorderPane();
     private final MessageText messageText = new MessageText();
     private final HexLines hexDump = new HexLines();
-    private final LogList<Envelope> log = new LogList<>(table);
-    private final RingFollower<Envelope, Envelope> follower = new RingFollower<>(log.all(), SHOWN);
+    private final LogList<Envelope, Envelope> log = new LogList<>(table, SHOWN);
 
     public NetworkView(ViewContext context) {
         this.context = context;
@@ -69,12 +68,12 @@ public final class NetworkView implements View {
         direction.getItems().addAll("in and out", "in", "out");
         direction.getSelectionModel().select(0);
         kind.setPromptText("kind (e.g. status)");
-        robot.valueProperty().addListener((o, a, b) -> follower.reload());
-        direction.valueProperty().addListener((o, a, b) -> follower.reload());
-        kind.textProperty().addListener((o, a, b) -> follower.reload());
+        robot.valueProperty().addListener((o, a, b) -> log.reload());
+        direction.valueProperty().addListener((o, a, b) -> log.reload());
+        kind.textProperty().addListener((o, a, b) -> log.reload());
         pause.selectedProperty().addListener((o, a, b) -> {
             if (!b) {
-                follower.reload();
+                log.reload();
             }
         });
         text.setEditable(false);
@@ -125,15 +124,6 @@ public final class NetworkView implements View {
                 && (k.isEmpty() || e.kind().toLowerCase(Locale.ROOT).contains(k));
     }
 
-    /** The index of the first row on screen, or -1 before the table is laid out. */
-    private int firstVisibleRow() {
-        if (table.lookup(".virtual-flow") instanceof javafx.scene.control.skin.VirtualFlow<?> flow
-                && flow.getFirstVisibleCell() != null) {
-            return flow.getFirstVisibleCell().getIndex();
-        }
-        return -1;
-    }
-
     @Override
     public Node node() {
         return root;
@@ -143,24 +133,17 @@ public final class NetworkView implements View {
     public void refresh(FrameContext frame) {
         robot.refresh();
         if (pause.isSelected()) {
-            log.beforeAppend(false); // every row scrollable while paused
+            log.holdEverything(); // every row scrollable while paused
             return;
         }
         Predicate<Envelope> f = filter();
-        boolean follow = table.getSelectionModel().isEmpty(); // follow the newest until the user picks a row
-        log.beforeAppend(follow);
-        int firstShown = follow ? -1 : firstVisibleRow();
-        SequencedRing.Entry<Envelope> newest = follower.follow(context.stores().network().version(),
+        // follow the newest until the user picks a row; then the rows on screen stay as the oldest go
+        SequencedRing.Entry<Envelope> newest = log.follow(table.getSelectionModel().isEmpty(), context.stores().network().version(),
                 (after, max) -> context.stores().network().since(after, max, f), e -> e);
-        log.afterAppend(follow, follower.added());
         if (newest == null) {
             return;
         }
         frame.shown(newest.value().timeMicros());
-        if (!follow && follower.trimmed() > 0 && firstShown >= 0) {
-            // the oldest rows went: the rows on screen (the selected one among them) stay where they were
-            table.scrollTo(Math.max(0, firstShown - follower.trimmed()));
-        }
         count.setText(log.all().size() + " shown of " + context.stores().network().size() + " kept");
     }
 }
