@@ -14,7 +14,7 @@ import java.util.function.Function;
  * batches of a tenth of that (one removal every few hundred lines instead of one per frame; the
  * window's CPU showed no difference either way, docs/benchmarks.md "Twelfth session"); and after
  * {@link #reload()} (a filter changed) starts again from what the ring still holds. The
- * debug console, the network console and the text view share it.
+ * text view uses it directly, the debug console and the network console through {@link LogList}.
  *
  * @param <E> what the ring holds
  * @param <T> what the list shows
