@@ -54,4 +54,45 @@ class DrawingCostUiTest {
             });
         }
     }
+    /**
+     * A fill that is not opaque costs the software renderer a blend of every pixel it covers each
+     * time anything under it changes; the dock's split panes lay three of them under the demo
+     * layout's views (two thirds of the render thread, docs/benchmarks.md "Fourteenth session").
+     * Only buttons that light up under the mouse may have one.
+     */
+    @Test
+    void noRegionOfTheDemoLayoutFillsATransparentBackground() throws Exception {
+        try (ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts)) {
+            ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+            ui.await(10, () -> ui.window.shell().openViews().size() == 7
+                    && ui.window.shell().openViews().stream().filter(v -> v.view().node().getScene() != null).count() >= 5);
+            ui.fxRun(() -> {
+                List<String> seeThrough = new java.util.ArrayList<>();
+                javafx.scene.Scene scene = ui.window.shell().openViews().stream().map(v -> v.view().node().getScene())
+                        .filter(java.util.Objects::nonNull).findFirst().orElseThrow();
+                collectSeeThrough(scene.getRoot(), seeThrough);
+                assertEquals(List.of(), seeThrough, "regions filling a background that is not opaque");
+            });
+        }
+    }
+
+    private static void collectSeeThrough(Node node, List<String> out) {
+        if (!node.isVisible()) {
+            return;
+        }
+        if (node instanceof Region r && r.getBackground() != null
+                && !node.getStyleClass().contains("close-button") && !node.getStyleClass().contains("menu-button")
+                && !node.getStyleClass().contains("arrow")) {
+            for (var fill : r.getBackground().getFills()) {
+                if (!(fill.getFill() instanceof Color c) || !c.isOpaque()) {
+                    out.add(node.getClass().getSimpleName() + node.getStyleClass() + " " + fill.getFill());
+                }
+            }
+        }
+        if (node instanceof javafx.scene.Parent p) {
+            for (Node child : p.getChildrenUnmodifiable()) {
+                collectSeeThrough(child, out);
+            }
+        }
+    }
 }
