@@ -269,7 +269,7 @@ public final class ConsoleWindow {
     }
 
     public void quickOpen() {
-        new QuickOpen(context, places).show(stage);
+        new QuickOpen(context, places, shell::openAndFocus).show(stage);
     }
 
     /** In demo mode: switch the demo options on for every robot once its list arrived. */
@@ -314,7 +314,7 @@ public final class ConsoleWindow {
                 continue;
             }
             MenuItem item = new MenuItem(s.title());
-            item.setOnAction(e -> shell.open(s, ViewSource.NONE));
+            item.setOnAction(e -> shell.openAndFocus(s, ViewSource.NONE));
             views.getItems().add(item);
         }
         MenuItem quick = new MenuItem("_Quick open…");

@@ -34,10 +34,17 @@ public final class QuickOpen {
 
     private final ViewContext context;
     private final WindowPlaces places;
+    private final java.util.function.BiConsumer<ViewSpec, ViewSource> opener;
 
     public QuickOpen(ViewContext context, WindowPlaces places) {
+        this(context, places, context::open);
+    }
+
+    /** @param opener what Enter does with the chosen view (the console window's: open it and move the keyboard into it) */
+    public QuickOpen(ViewContext context, WindowPlaces places, java.util.function.BiConsumer<ViewSpec, ViewSource> opener) {
         this.context = context;
         this.places = places;
+        this.opener = opener;
     }
 
     public List<Choice> choices() {
@@ -78,7 +85,7 @@ public final class QuickOpen {
             Choice c = list.getSelectionModel().getSelectedItem();
             if (c != null) {
                 stage.close();
-                context.open(c.spec(), c.source());
+                opener.accept(c.spec(), c.source());
             }
         };
         filter.setOnAction(e -> go.run());

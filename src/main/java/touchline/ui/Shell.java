@@ -109,6 +109,48 @@ public final class Shell {
         return v;
     }
 
+    /**
+     * Opens a view as {@link #open} does and moves the keyboard into it: its first control that
+     * takes the keyboard gets it, now or as soon as the view is in the window (Ctrl+K, the View
+     * menu). The options tree, which opens views too, keeps the keyboard.
+     */
+    public OpenView openAndFocus(ViewSpec spec, ViewSource source) {
+        OpenView v = open(spec, source);
+        javafx.scene.Node node = v.view().node();
+        if (node.getScene() == null || !focusFirst(node)) {
+            node.sceneProperty().addListener(new javafx.beans.value.ChangeListener<javafx.scene.Scene>() {
+                @Override
+                public void changed(javafx.beans.value.ObservableValue<? extends javafx.scene.Scene> o,
+                                    javafx.scene.Scene was, javafx.scene.Scene now) {
+                    if (now != null) {
+                        o.removeListener(this);
+                        javafx.application.Platform.runLater(() -> focusFirst(node));
+                    }
+                }
+            });
+        }
+        return v;
+    }
+
+    /** The first node at or under {@code node}, in the order Tab walks, that takes the keyboard gets it. */
+    private static boolean focusFirst(javafx.scene.Node node) {
+        if (!node.isVisible() || node.isDisabled()) {
+            return false;
+        }
+        if (node.isFocusTraversable()) {
+            node.requestFocus();
+            return true;
+        }
+        if (node instanceof javafx.scene.Parent p) {
+            for (javafx.scene.Node child : p.getChildrenUnmodifiable()) {
+                if (focusFirst(child)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     private OpenView create(ViewSpec spec, ViewSource source) {
         ViewFrame frame = new ViewFrame(spec.title(), () -> maker.apply(spec).apply(source));
         Dockable d = bento.dockBuilding().dockable();

@@ -154,5 +154,35 @@ class ConsoleUiTest {
         ui.robot.type(KeyCode.ENTER);
         ui.await(5, () -> openViews().contains("network"));
         assertNotNull(ui.robot.lookup("#network-table").query());
+        // the keyboard moves into the view opened (issue 14: every action by keyboard) ...
+        ui.await(5, () -> keyboardIsIn("network"));
+        quickOpen("robots");
+        ui.await(5, () -> openViews().contains("robots") && keyboardIsIn("robots"));
+        // ... and into one already open that Ctrl+K brings to the front
+        quickOpen("network");
+        ui.await(5, () -> keyboardIsIn("network"));
+        assertEquals(2, openViews().size(), "the open network console was chosen, not a second one");
+    }
+
+    private void quickOpen(String typed) throws Exception {
+        ui.fxRun(ui.window::quickOpen);
+        ui.robot.clickOn("#quick-open-filter");
+        ui.robot.write(typed);
+        ui.robot.type(KeyCode.ENTER);
+    }
+
+    /** The window's keyboard focus lies inside the open view {@code id}. */
+    private boolean keyboardIsIn(String id) throws Exception {
+        return ui.fx(() -> {
+            javafx.scene.Node focus = ui.window.scene().getFocusOwner();
+            javafx.scene.Node view = ui.window.shell().openViews().stream().filter(v -> v.spec().id().equals(id))
+                    .map(v -> v.view().node()).findFirst().orElse(null);
+            for (javafx.scene.Node n = focus; n != null && view != null; n = n.getParent()) {
+                if (n == view) {
+                    return true;
+                }
+            }
+            return false;
+        });
     }
 }
