@@ -117,7 +117,9 @@ public final class Shell {
     public OpenView openAndFocus(ViewSpec spec, ViewSource source) {
         OpenView v = open(spec, source);
         javafx.scene.Node node = v.view().node();
-        if (node.getScene() == null || !focusFirst(node)) {
+        if (node.getScene() != null) {
+            focusFirst(node); // a view with nothing that takes the keyboard leaves it where it was
+        } else {
             node.sceneProperty().addListener(new javafx.beans.value.ChangeListener<javafx.scene.Scene>() {
                 @Override
                 public void changed(javafx.beans.value.ObservableValue<? extends javafx.scene.Scene> o,
