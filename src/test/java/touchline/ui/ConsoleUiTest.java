@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.model.RobotSnapshot;
+import touchline.ui.views.LiveRows;
 import touchline.testing.RobotProcess;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.views.PlotView;
@@ -20,6 +21,7 @@ import java.util.stream.Collectors;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The real console window (headless) against the real simulated robot. */
@@ -52,8 +54,38 @@ class ConsoleUiTest {
         try (RobotProcess robot = RobotProcess.robot(7, ui.port()).start()) {
             ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE));
             ui.await(15, () -> {
-                TableView<RobotSnapshot> table = ui.robot.lookup("#robot-table").queryAs(TableView.class);
-                return table.getItems().stream().anyMatch(r -> r.id() == 7 && r.online() && r.teamId() == 13);
+                TableView<LiveRows.Row<RobotSnapshot>> table = ui.robot.lookup("#robot-table").queryAs(TableView.class);
+                return table.getItems().stream().map(LiveRows.Row::value).anyMatch(r -> r.id() == 7 && r.online() && r.teamId() == 13);
+            });
+        }
+    }
+
+    /**
+     * A robot's changing texts change its cells, never the table's list of rows: any change to
+     * that list makes JavaFX re-style and lay out every cell of the table, twice a second.
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void theRobotTableUpdatesItsCellsWithoutTouchingItsRows() throws Exception {
+        assumeRobot();
+        try (RobotProcess robot = RobotProcess.robot(7, ui.port()).start()) {
+            ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE));
+            java.util.concurrent.atomic.AtomicReference<TableView<LiveRows.Row<RobotSnapshot>>> table = new java.util.concurrent.atomic.AtomicReference<>();
+            ui.await(15, () -> {
+                table.set(ui.robot.lookup("#robot-table").queryAs(TableView.class));
+                return table.get().getItems().size() == 1;
+            });
+            java.util.List<String> listChanges = new java.util.concurrent.CopyOnWriteArrayList<>();
+            String[] onlineFor = new String[1];
+            LiveRows.Row<RobotSnapshot> row = ui.fx(() -> {
+                table.get().getItems().addListener((javafx.collections.ListChangeListener<LiveRows.Row<RobotSnapshot>>) c -> listChanges.add(c.toString()));
+                onlineFor[0] = table.get().getItems().get(0).text(8).getValue();
+                return table.get().getItems().get(0);
+            });
+            ui.await(15, () -> !row.text(8).getValue().equals(onlineFor[0])); // "Online for" moved on a second
+            ui.fxRun(() -> {
+                assertEquals(java.util.List.of(), listChanges, "the same robot: the rows stay as they are");
+                assertSame(row, table.get().getItems().get(0));
             });
         }
     }

@@ -182,7 +182,16 @@ public final class PlotStore implements EnvelopeSink {
     }
 
     /** Copies one plot's series; {@code null} when the robot never sent that option. */
-    public synchronized Snapshot snapshot(int robotId, String option) {
+    public Snapshot snapshot(int robotId, String option) {
+        return snapshot(robotId, option, null);
+    }
+
+    /**
+     * The same, copying into the arrays of an earlier snapshot that the caller no longer reads
+     * ({@code reuse}, may be null): a plot redrawn ten times a second then makes no garbage
+     * (4 000 points of five series were 320 kB per redraw).
+     */
+    public synchronized Snapshot snapshot(int robotId, String option, Snapshot reuse) {
         Plot plot = plots.get(new LatestValues.Key(robotId, option));
         if (plot == null) {
             return null;
@@ -190,6 +199,10 @@ public final class PlotStore implements EnvelopeSink {
         List<SeriesData> out = new ArrayList<>();
         for (Map.Entry<String, SeriesRing> s : plot.series.entrySet()) {
             double[][] xy = new double[2][];
+            if (reuse != null && out.size() < reuse.series().size()) {
+                xy[0] = reuse.series().get(out.size()).x();
+                xy[1] = reuse.series().get(out.size()).y();
+            }
             int n = s.getValue().copyTo(xy);
             out.add(new SeriesData(s.getKey(), xy[0], xy[1], n));
         }

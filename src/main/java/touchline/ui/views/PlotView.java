@@ -19,6 +19,8 @@ public final class PlotView extends SourcedView {
 
     private final PlotCanvas plot = new PlotCanvas(() -> dirty = true);
     private long draws;
+    /** The last snapshot drawn, whose arrays the next one reuses. */
+    private PlotStore.Snapshot last;
 
     public PlotView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.PLOT_VALUE), source);
@@ -53,10 +55,11 @@ public final class PlotView extends SourcedView {
 
     @Override
     protected String draw(Latest latest) {
-        PlotStore.Snapshot s = context.stores().plots().snapshot(latest.robotId(), latest.option());
+        PlotStore.Snapshot s = context.stores().plots().snapshot(latest.robotId(), latest.option(), last);
         if (s == null) {
             return "no plot data";
         }
+        last = s; // drawn below and not kept: the next draw copies into its arrays
         draws++;
         int total = plot.draw(s.series());
         StringBuilder out = new StringBuilder(s.series().size() + " series · " + total + " points");

@@ -22,18 +22,21 @@ import java.util.function.Function;
  * Every robot ever seen, one row each, with online/offline at a glance; below, the senders
  * whose datagrams were rejected and the registry's notes (address changes, duplicate IDs).
  * Rows are brought up to date at most twice a second (rates and "last seen" need no more), and
- * only the rows whose shown text changed ({@link ShownRows}).
+ * only the cells whose text changed ({@link LiveRows}).
  */
 public final class RobotsView implements View {
 
+    /** The online column's text for a robot online; its colour follows it. */
+    private static final String ONLINE = "●";
+
     private final ViewContext context;
-    private final TableView<RobotSnapshot> table = new TableView<>();
-    private final TextColumns<RobotSnapshot> columns = new TextColumns<>(true);
+    private final TableView<LiveRows.Row<RobotSnapshot>> table = new TableView<>();
+    private final TextColumns<LiveRows.Row<RobotSnapshot>> columns = new TextColumns<>(true);
     private final TextArea problems = new TextArea();
     private final SplitPane root = new SplitPane();
     /** What each column shows of a robot, in column order. */
     private final List<Function<RobotSnapshot, String>> shownTexts = new java.util.ArrayList<>();
-    private final ShownRows<RobotSnapshot> rows = new ShownRows<>(r -> r.id() + "/" + r.origin(),
+    private final LiveRows<RobotSnapshot> rows = new LiveRows<>(r -> r.id() + "/" + r.origin(),
             r -> shownTexts.stream().map(f -> f.apply(r)).toList());
     private long lastRebuildMicros;
     private long seenVersion = -1;
@@ -43,14 +46,13 @@ public final class RobotsView implements View {
         table.setId("robot-table");
         table.setPlaceholder(new Label("No robot seen yet: robots send keep-alives to UDP port "
                 + context.console().port()));
-        TableColumn<RobotSnapshot, String> online = column("", r -> r.online() ? "●" : "○", 36); // its colour follows the same flag
+        TableColumn<LiveRows.Row<RobotSnapshot>, String> online = column("", r -> r.online() ? ONLINE : "○", 36);
         online.setCellFactory(c -> new TableCell<>() {
             @Override
             protected void updateItem(String item, boolean empty) {
                 super.updateItem(item, empty);
                 setText(empty ? null : item);
-                RobotSnapshot r = empty ? null : getTableRow().getItem();
-                setStyle(r == null ? "" : r.online() ? "-fx-text-fill: #2da44e;" : "-fx-text-fill: #cf222e;");
+                setStyle(empty || item == null ? "" : item.equals(ONLINE) ? "-fx-text-fill: #2da44e;" : "-fx-text-fill: #cf222e;");
             }
         });
         table.getColumns().add(online);
@@ -71,8 +73,7 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 150));
         Function<RobotSnapshot, String> address = r -> r.address() == null ? "" : r.address().getHostString()
                 + ":" + r.address().getPort();
-        shownTexts.add(address);
-        table.getColumns().add(columns.column("Address", address, 130, "127.000.000.100:65535"));
+        table.getColumns().add(column("Address", address, 130, "127.000.000.100:65535"));
         problems.setEditable(false);
         problems.setPrefRowCount(4);
         problems.setPromptText("Bad sources and notes appear here.");
@@ -83,9 +84,17 @@ public final class RobotsView implements View {
         root.setDividerPositions(0.75);
     }
 
-    private TableColumn<RobotSnapshot, String> column(String title, Function<RobotSnapshot, String> value, double width) {
+    private TableColumn<LiveRows.Row<RobotSnapshot>, String> column(String title, Function<RobotSnapshot, String> value,
+                                                                     double width) {
+        return column(title, value, width, "");
+    }
+
+    /** A column showing {@code value} of each robot; its cells change only when their text does. */
+    private TableColumn<LiveRows.Row<RobotSnapshot>, String> column(String title, Function<RobotSnapshot, String> value,
+                                                                     double width, String widest) {
+        int index = shownTexts.size();
         shownTexts.add(value);
-        return columns.column(title, value, width, "");
+        return columns.observed(title, row -> row.text(index), width, widest);
     }
 
     private static String text(String s) {

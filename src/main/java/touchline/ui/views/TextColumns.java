@@ -1,6 +1,7 @@
 package touchline.ui.views;
 
 import javafx.beans.property.ReadOnlyObjectWrapper;
+import javafx.beans.value.ObservableValue;
 import javafx.scene.control.TableColumn;
 import javafx.scene.text.Font;
 import javafx.scene.text.FontWeight;
@@ -30,8 +31,13 @@ final class TextColumns<T> {
 
     /** A column at least {@code width} wide, and wide enough for its title and for {@code widest}. */
     TableColumn<T, String> column(String title, Function<T, String> value, double width, String widest) {
+        return observed(title, row -> new ReadOnlyObjectWrapper<>(value.apply(row)), width, widest);
+    }
+
+    /** The same, for a text the row keeps up to date itself: a change redraws that one cell ({@link LiveRows}). */
+    TableColumn<T, String> observed(String title, Function<T, ObservableValue<String>> value, double width, String widest) {
         TableColumn<T, String> c = new TableColumn<>(title);
-        c.setCellValueFactory(cell -> new ReadOnlyObjectWrapper<>(value.apply(cell.getValue())));
+        c.setCellValueFactory(cell -> value.apply(cell.getValue()));
         double fit = Math.ceil(Math.max(width(title, header), width(widest, cell)) + PADDING);
         c.setMinWidth(fit);
         c.setPrefWidth(Math.max(width, fit));

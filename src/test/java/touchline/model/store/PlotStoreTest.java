@@ -6,6 +6,7 @@ import touchline.proto.Fumanoid;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 class PlotStoreTest {
@@ -61,6 +62,24 @@ class PlotStoreTest {
             }
         }
         assertEquals(99.0, max);
+    }
+
+    @Test
+    void aSnapshotCopiesIntoTheArraysOfTheOneBeforeAndShowsOnlyTheNewPoints() {
+        PlotStore store = new PlotStore(10, T0);
+        store.accept(StoreEnvelopes.plot(T0 + 1_000_000, 1, "p", "a", 1.0));
+        store.accept(StoreEnvelopes.plot(T0 + 1_000_000, 1, "p", "b", 5.0));
+        PlotStore.Snapshot first = store.snapshot(1, "p", null);
+        store.accept(StoreEnvelopes.plot(T0 + 2_000_000, 1, "p", "a", 2.0));
+        PlotStore.Snapshot second = store.snapshot(1, "p", first);
+        for (int k = 0; k < 2; k++) {
+            assertSame(first.series().get(k).x(), second.series().get(k).x(), "no new arrays for series " + k);
+            assertSame(first.series().get(k).y(), second.series().get(k).y());
+        }
+        assertEquals(2, second.series().get(0).count());
+        assertEquals(2.0, second.series().get(0).y()[1], 1e-9);
+        assertEquals(1, second.series().get(1).count());
+        assertEquals(5.0, second.series().get(1).y()[0], 1e-9);
     }
 
     @Test
