@@ -22,6 +22,12 @@ public final class RegionOverlayView extends SourcedView {
 
     static final int DEFAULT_WIDTH = 160;
     static final int DEFAULT_HEIGHT = 120;
+    /** Behind the frame and around it. */
+    static final Color BACKGROUND = Color.gray(0.12);
+    /** How much of its class's colour a grid cell shows over the background. */
+    static final double GRID_OPACITY = 0.3;
+    /** Each colour class's grid cell, mixed once ({@link #gridCell}). */
+    private static final Color[] GRID_CELLS = new Color[256];
     private final ResizableCanvas canvas = new ResizableCanvas(() -> dirty = true);
 
     public RegionOverlayView(ViewContext context, ViewSource source) {
@@ -59,7 +65,7 @@ public final class RegionOverlayView extends SourcedView {
         GraphicsContext g = canvas.canvas().getGraphicsContext2D();
         double w = canvas.getWidth();
         double h = canvas.getHeight();
-        g.setFill(Color.gray(0.12));
+        g.setFill(BACKGROUND);
         g.fillRect(0, 0, w, h);
         double legend = 24;
         double margin = 24;
@@ -125,6 +131,20 @@ public final class RegionOverlayView extends SourcedView {
         return s.toString();
     }
 
+    /**
+     * A grid cell of colour class {@code c}: its colour at {@link #GRID_OPACITY} over the
+     * background, mixed here once and opaque. Cells lie on the plain background, so they look
+     * the same as translucent fills, but JavaFX's software renderer stores an opaque pixel where
+     * it blends a translucent one, and the grid covers most of the frame ten times a second.
+     */
+    static Color gridCell(int c) {
+        int k = c & 0xFF;
+        if (GRID_CELLS[k] == null) {
+            GRID_CELLS[k] = BACKGROUND.interpolate(ColorClasses.color(k), GRID_OPACITY);
+        }
+        return GRID_CELLS[k];
+    }
+
     private <T> T newest(int robotId, String kind, Class<T> type) {
         Latest best = null;
         for (Latest l : context.stores().latest().ofKind(kind)) {
@@ -152,7 +172,7 @@ public final class RegionOverlayView extends SourcedView {
                 continue;
             }
             classes.add(c);
-            g.setFill(ColorClasses.color(c).deriveColor(0, 1, 1, 0.3));
+            g.setFill(gridCell(c));
             g.fillRect(ox + (i % cols) * cw, oy + (i / cols) * ch, cw, ch);
         }
         g.setFill(Color.gray(0.6, 0.25));
