@@ -26,7 +26,7 @@ public record FrameCap(int perSecond) {
     /**
      * Whether a frame at {@code nowNanos} waits for a later one, the last frame that pulled the
      * views having been at {@code lastWorkNanos}. With JavaFX's 60 pulses a second, a cap of 30
-     * pulls in every other pulse, 10 in every sixth ({@link FramePulse} sleeps through the others).
+     * pulls in every other pulse, 10 in every sixth.
      */
     public boolean holdsBack(long nowNanos, long lastWorkNanos) {
         return nowNanos - lastWorkNanos < minNanos();

@@ -11,9 +11,7 @@ import javafx.animation.AnimationTimer;
  * did not move and no key or mouse reached the window pulls no view, except twice a second for
  * what ages without a change (an option's "streaming" flag), and while data streams at most as
  * often as its {@link FrameCap} lets it, 30 times a second unless the user chose otherwise
- * ({@code console --max-fps}; input is followed at once). Between two such frames the pulse
- * sleeps ({@link FrameHold}) instead of running JavaFX's 60 pulses a second through a scene it
- * may not change. After {@link #IDLE_NANOS} without
+ * ({@code console --max-fps}; input is followed at once). After {@link #IDLE_NANOS} without
  * a change (and at least {@link #IDLE_FRAMES} frames) the pulse stops altogether and the window
  * is idle until {@link IdleWatch} sees the counter move or the user touches the window. A
  * minimised (iconified) window does no frame work at all; it catches up when shown again.
@@ -32,11 +30,6 @@ public final class FramePulse extends AnimationTimer {
      * difference a person can read. Input is followed in the same frame.
      */
     private final FrameCap cap;
-    /** JavaFX's pulse period (60 a second). */
-    static final long PULSE_NANOS = 1_000_000_000L / 60;
-    private final FrameHold hold = new FrameHold();
-    /** Stopped between two data frames ({@link #holdUntilDue}), not idle. */
-    private boolean held;
 
     private final Shell shell;
     private final StatusBar status;
@@ -78,8 +71,6 @@ public final class FramePulse extends AnimationTimer {
             return;
         }
         watch.stopWatching();
-        held = false;
-        hold.cancel();
         running = true;
         windowStart = 0;
         windowFrames = 0;
@@ -91,8 +82,6 @@ public final class FramePulse extends AnimationTimer {
     @Override
     public void stop() {
         running = false;
-        held = false;
-        hold.cancel();
         super.stop();
     }
 
@@ -110,8 +99,7 @@ public final class FramePulse extends AnimationTimer {
         long c = changes.getAsLong();
         boolean changed = c != seenChanges || input;
         if (changed && !input && cap.holdsBack(nowNanos, workNanos)) {
-            holdUntilDue(); // a data change shown in a frame or two, with the next ones it brings
-            return;
+            return; // a data change shown in a frame or two, with the next ones it brings
         }
         input = false;
         if (changed || quietSinceNanos == 0) {
@@ -130,32 +118,6 @@ public final class FramePulse extends AnimationTimer {
             stop();
             status.idle();
             watch.watchFrom(c);
-        } else if (changed) {
-            holdUntilDue(); // data streams: no pulse until the cap lets the views pull again
-        }
-    }
-
-    /**
-     * Stops the pulse until shortly before the next data frame is due ({@link FrameHold}): half
-     * a pulse early, so the pulse that follows is the one the cap allows. Input resumes it at once.
-     */
-    private void holdUntilDue() {
-        long wait = workNanos + cap.minNanos() - PULSE_NANOS / 2 - System.nanoTime();
-        if (wait <= 0) {
-            return; // due by the next pulse anyway
-        }
-        super.stop();
-        held = true;
-        hold.resumeIn(wait, this::resume);
-    }
-
-    private void resume() {
-        if (held) {
-            held = false;
-            hold.cancel();
-            if (running) {
-                super.start();
-            }
         }
     }
 
@@ -179,8 +141,6 @@ public final class FramePulse extends AnimationTimer {
     public void wake() {
         if (!running) {
             start();
-        } else {
-            resume(); // held between data frames: input is followed at once
         }
     }
 
@@ -207,7 +167,6 @@ public final class FramePulse extends AnimationTimer {
         closed = true;
         stop();
         watch.close();
-        hold.close();
     }
 
     /** True while the pulse runs; false when idle, minimised or closed. */
