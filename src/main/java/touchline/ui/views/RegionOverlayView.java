@@ -28,6 +28,12 @@ public final class RegionOverlayView extends SourcedView {
     static final double GRID_OPACITY = 0.3;
     /** Each colour class's grid cell, mixed once ({@link #gridCell}). */
     private static final Color[] GRID_CELLS = new Color[256];
+
+    static {
+        for (int c = 0; c < GRID_CELLS.length; c++) {
+            GRID_CELLS[c] = BACKGROUND.interpolate(ColorClasses.color(c), GRID_OPACITY);
+        }
+    }
     private final ResizableCanvas canvas = new ResizableCanvas(() -> dirty = true);
 
     public RegionOverlayView(ViewContext context, ViewSource source) {
@@ -138,11 +144,7 @@ public final class RegionOverlayView extends SourcedView {
      * it blends a translucent one, and the grid covers most of the frame ten times a second.
      */
     static Color gridCell(int c) {
-        int k = c & 0xFF;
-        if (GRID_CELLS[k] == null) {
-            GRID_CELLS[k] = BACKGROUND.interpolate(ColorClasses.color(k), GRID_OPACITY);
-        }
-        return GRID_CELLS[k];
+        return GRID_CELLS[c & 0xFF];
     }
 
     private <T> T newest(int robotId, String kind, Class<T> type) {
