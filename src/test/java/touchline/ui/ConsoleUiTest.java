@@ -47,16 +47,19 @@ class ConsoleUiTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
     }
 
-    @Test
+    /** The Robots view's table, once it is in the scene. */
     @SuppressWarnings("unchecked")
+    private TableView<LiveRows.Row<RobotSnapshot>> robotTable() {
+        return ui.robot.lookup("#robot-table").queryAs(TableView.class);
+    }
+
+    @Test
     void aRobotAppearsInTheRobotView() throws Exception {
         assumeRobot();
         try (RobotProcess robot = RobotProcess.robot(7, ui.port()).start()) {
             ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE));
-            ui.await(15, () -> {
-                TableView<LiveRows.Row<RobotSnapshot>> table = ui.robot.lookup("#robot-table").queryAs(TableView.class);
-                return table.getItems().stream().map(LiveRows.Row::value).anyMatch(r -> r.id() == 7 && r.online() && r.teamId() == 13);
-            });
+            ui.await(15, () -> robotTable().getItems().stream().map(LiveRows.Row::value)
+                    .anyMatch(r -> r.id() == 7 && r.online() && r.teamId() == 13));
         }
     }
 
@@ -65,27 +68,23 @@ class ConsoleUiTest {
      * that list makes JavaFX re-style and lay out every cell of the table, twice a second.
      */
     @Test
-    @SuppressWarnings("unchecked")
     void theRobotTableUpdatesItsCellsWithoutTouchingItsRows() throws Exception {
         assumeRobot();
         try (RobotProcess robot = RobotProcess.robot(7, ui.port()).start()) {
             ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE));
-            java.util.concurrent.atomic.AtomicReference<TableView<LiveRows.Row<RobotSnapshot>>> table = new java.util.concurrent.atomic.AtomicReference<>();
-            ui.await(15, () -> {
-                table.set(ui.robot.lookup("#robot-table").queryAs(TableView.class));
-                return table.get().getItems().size() == 1;
-            });
+            ui.await(15, () -> robotTable().getItems().size() == 1);
             java.util.List<String> listChanges = new java.util.concurrent.CopyOnWriteArrayList<>();
-            String[] onlineFor = new String[1];
             LiveRows.Row<RobotSnapshot> row = ui.fx(() -> {
-                table.get().getItems().addListener((javafx.collections.ListChangeListener<LiveRows.Row<RobotSnapshot>>) c -> listChanges.add(c.toString()));
-                onlineFor[0] = table.get().getItems().get(0).text(8).getValue();
-                return table.get().getItems().get(0);
+                robotTable().getItems().addListener(
+                        (javafx.collections.ListChangeListener<LiveRows.Row<RobotSnapshot>>) c -> listChanges.add(c.toString()));
+                return robotTable().getItems().get(0);
             });
-            ui.await(15, () -> !row.text(8).getValue().equals(onlineFor[0])); // "Online for" moved on a second
+            int onlineFor = ui.fx(() -> robotTable().getColumns().stream().map(c -> c.getText()).toList().indexOf("Online for"));
+            String first = ui.fx(() -> row.text(onlineFor).getValue());
+            ui.await(15, () -> !row.text(onlineFor).getValue().equals(first)); // "Online for" moved on a second
             ui.fxRun(() -> {
                 assertEquals(java.util.List.of(), listChanges, "the same robot: the rows stay as they are");
-                assertSame(row, table.get().getItems().get(0));
+                assertSame(row, robotTable().getItems().get(0));
             });
         }
     }
