@@ -63,6 +63,31 @@ class ConsoleUiTest {
         }
     }
 
+    /** A selected row shows it: the tables' one-fill row style must not hide the theme's selection. */
+    @Test
+    void theSelectedRobotsRowLooksSelected() throws Exception {
+        assumeRobot();
+        try (RobotProcess robot = RobotProcess.robot(7, ui.port()).start()) {
+            ui.fxRun(() -> ui.window.open("robots", ViewSource.NONE));
+            ui.await(15, () -> robotTable().getItems().size() == 1 && firstRow() != null);
+            javafx.scene.paint.Paint plain = ui.fx(() -> firstRow().getBackground().getFills().get(0).getFill());
+            ui.fxRun(() -> {
+                robotTable().requestFocus();
+                robotTable().getSelectionModel().select(0);
+            });
+            ui.await(15, () -> firstRow().isSelected()
+                    && !firstRow().getBackground().getFills().get(0).getFill().equals(plain));
+        }
+    }
+
+    /** The robot table's first row on screen, or null before it is laid out. */
+    private javafx.scene.control.TableRow<?> firstRow() {
+        return robotTable().lookupAll(".table-row-cell").stream()
+                .map(n -> (javafx.scene.control.TableRow<?>) n)
+                .filter(r -> r.getIndex() == 0 && !r.isEmpty() && r.getBackground() != null)
+                .findFirst().orElse(null);
+    }
+
     /**
      * A robot's changing texts change its cells, never the table's list of rows: any change to
      * that list makes JavaFX re-style and lay out every cell of the table, twice a second.
