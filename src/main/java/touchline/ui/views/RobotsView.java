@@ -9,6 +9,7 @@ import javafx.scene.control.TableView;
 import javafx.scene.control.TextArea;
 import javafx.geometry.Orientation;
 import javafx.scene.layout.BorderPane;
+import javafx.scene.layout.VBox;
 import touchline.model.RobotSnapshot;
 import touchline.model.SourceSnapshot;
 import touchline.ui.FrameContext;
@@ -30,7 +31,10 @@ public final class RobotsView implements View {
     private static final String ONLINE = "●";
 
     private final ViewContext context;
-    private final TableView<LiveRows.Row<RobotSnapshot>> table = new TableView<>();
+    /** A row's height: the theme's, fixed so the table can be as tall as its rows. */
+    static final double ROW_HEIGHT = 40;
+
+    private final TableView<LiveRows.Row<RobotSnapshot>> table = new FittedTable<>(ROW_HEIGHT, 3);
     private final TextColumns<LiveRows.Row<RobotSnapshot>> columns = new TextColumns<>(true);
     private final TextArea problems = new TextArea();
     private final SplitPane root = new SplitPane();
@@ -80,7 +84,7 @@ public final class RobotsView implements View {
         root.setOrientation(Orientation.VERTICAL);
         BorderPane bottom = new BorderPane(problems);
         bottom.setTop(new Label(" Bad sources and notes"));
-        root.getItems().addAll(table, bottom);
+        root.getItems().addAll(new VBox(table), bottom);
         root.setDividerPositions(0.75);
     }
 

@@ -1,0 +1,62 @@
+package touchline.ui.views;
+
+import javafx.collections.ListChangeListener;
+import javafx.scene.Node;
+import javafx.scene.control.ScrollBar;
+import javafx.scene.control.TableView;
+import javafx.geometry.Orientation;
+
+/**
+ * A table as tall as its rows (and its header and sideways scroll bar), at least
+ * {@code minRows} tall so its placeholder fits; in a box that is shorter it scrolls as any
+ * table does. JavaFX's table otherwise fills its whole height with empty rows, one cell per
+ * column each, which every changed frame walks and styles again (docs/benchmarks.md,
+ * "Sixteenth session"). Rows have one fixed height.
+ */
+final class FittedTable<T> extends TableView<T> {
+
+    private final int minRows;
+    /** The sideways bar's height the last preferred height counted: a bar that came or went since asks for a new one. */
+    private double barCounted;
+
+    FittedTable(double rowHeight, int minRows) {
+        this.minRows = minRows;
+        setFixedCellSize(rowHeight);
+        setMaxHeight(USE_PREF_SIZE);
+        getItems().addListener((ListChangeListener<T>) c -> requestLayout());
+        itemsProperty().addListener((o, was, now) -> {
+            now.addListener((ListChangeListener<T>) c -> requestLayout());
+            requestLayout();
+        });
+    }
+
+    @Override
+    protected double computePrefHeight(double width) {
+        double rows = Math.max(minRows, getItems().size()) * getFixedCellSize();
+        barCounted = sidewaysBarHeight();
+        return snappedTopInset() + shownHeight(lookup(".column-header-background")) + rows
+                + barCounted + snappedBottomInset();
+    }
+
+    @Override
+    protected void layoutChildren() {
+        super.layoutChildren();
+        if (sidewaysBarHeight() != barCounted) {
+            requestLayout(); // the columns outgrew the table, or fit it again
+        }
+    }
+
+    /** The sideways scroll bar's height while it shows (columns wider than the table), else 0. */
+    private double sidewaysBarHeight() {
+        for (Node n : lookupAll(".scroll-bar")) {
+            if (n instanceof ScrollBar bar && bar.getOrientation() == Orientation.HORIZONTAL) {
+                return shownHeight(bar);
+            }
+        }
+        return 0;
+    }
+
+    private static double shownHeight(Node n) {
+        return n == null || !n.isVisible() ? 0 : n.prefHeight(-1);
+    }
+}
