@@ -20,7 +20,8 @@ import java.util.function.Supplier;
 
 /**
  * A log in a list or table control that costs the same to follow whatever it holds. While it
- * follows (nothing selected, not paused) the control holds only the newest {@link #TAIL} lines:
+ * follows (nothing selected, not paused) the control holds only the newest {@link #TAIL} lines
+ * (up to {@link #TRIM_SLACK} more before the oldest go, in one cut):
  * JavaFX 21's list and table measure every item again each time they scroll, so following a
  * 5 000-line log took most of the window's FX thread (docs/benchmarks.md, "Thirteenth
  * session"). As soon as the user selects a line or pauses, it holds every line, with the
@@ -36,6 +37,14 @@ final class LogList<E, T> {
 
     /** Lines held while following: more than any screen shows (about 45 on a 1080-px screen). */
     static final int TAIL = 200;
+    /**
+     * ... and up to this many more before the oldest go, all in one frame: cutting the front of
+     * the list moves every line to another row, so each row on screen gets a new text, is styled
+     * and laid out again (most of the debug console's cost when it cut one line a frame;
+     * docs/benchmarks.md, "Sixteenth session"). Appending alone leaves the rows on screen with
+     * their lines, and only the new ones are drawn.
+     */
+    static final int TRIM_SLACK = 200;
 
     private final Control control;
     private final Consumer<ObservableList<T>> setItems;
@@ -115,9 +124,26 @@ final class LogList<E, T> {
             changed = keepTail(follower.added());
         }
         if (changed && !tail.isEmpty()) {
-            scrollTo.accept(tail.size() - 1);
+            showNewest();
         }
         return newest;
+    }
+
+    /**
+     * Scrolls to the newest line so that the rows on screen keep their lines and only the new
+     * ones are drawn. The control's own {@code scrollTo} first puts the line at the top and then
+     * back at the bottom, giving every row on screen another line (styled and laid out again,
+     * each frame), and scrolls by the length the list had before this frame's lines, so the
+     * newest one showed only a frame later. Here the control learns its new length first (a
+     * layout), then its flow goes to the end.
+     */
+    private void showNewest() {
+        if (control.getScene() != null && control.lookup(".virtual-flow") instanceof VirtualFlow<?> flow) {
+            control.layout();
+            flow.setPosition(1);
+        } else {
+            scrollTo.accept(tail.size() - 1); // not laid out yet: its first layout scrolls
+        }
     }
 
     /** Empties the log (the user's Clear). */
@@ -144,7 +170,7 @@ final class LogList<E, T> {
             return false;
         }
         int over = tail.size() + added - TAIL;
-        if (over > 0) {
+        if (over > TRIM_SLACK) {
             tail.remove(0, over);
         }
         tail.addAll(all.subList(before, n));
