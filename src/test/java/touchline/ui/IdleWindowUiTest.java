@@ -81,6 +81,23 @@ class IdleWindowUiTest {
     }
 
     @Test
+    void aRobotThatMovesMovesItsShapeAndLeavesTheFieldAsPainted() throws Exception {
+        try (ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts)) {
+            FieldView field = fieldWith(ui);
+            javafx.scene.Node shape = ui.fx(() -> ((javafx.scene.Parent) ui.robot.lookup("#field-robots").query())
+                    .getChildrenUnmodifiable().get(0));
+            double at100 = ui.fx(shape::getLayoutX);
+            long fieldPaints = ui.fx(field::fieldPaints);
+            long paints = ui.fx(field::paints);
+            ui.console.bus().accept(status(ui, 900)); // 800 mm towards the opponent goal
+            ui.await(10, () -> ui.fx(shape::getLayoutX) > at100 + 1);
+            assertTrue(ui.fx(field::paints) > paints, "the robot drawn where it is now");
+            assertEquals(fieldPaints, (long) ui.fx(field::fieldPaints), "the field itself is not painted again");
+            assertEquals(1, (int) ui.fx(field::drawnRobots));
+        }
+    }
+
+    @Test
     void aMinimisedWindowDoesNoFrameWorkAndCatchesUpWhenShownAgain() throws Exception {
         try (ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts)) {
             FieldView field = fieldWith(ui);
