@@ -1,6 +1,5 @@
 package touchline.ui.views;
 
-import javafx.collections.ListChangeListener;
 import javafx.scene.Node;
 import javafx.scene.control.ScrollBar;
 import javafx.scene.control.TableView;
@@ -22,12 +21,7 @@ final class FittedTable<T> extends TableView<T> {
     FittedTable(double rowHeight, int minRows) {
         this.minRows = minRows;
         setFixedCellSize(rowHeight);
-        setMaxHeight(USE_PREF_SIZE);
-        getItems().addListener((ListChangeListener<T>) c -> requestLayout());
-        itemsProperty().addListener((o, was, now) -> {
-            now.addListener((ListChangeListener<T>) c -> requestLayout());
-            requestLayout();
-        });
+        setMaxHeight(USE_PREF_SIZE); // the table's skin lays it out again when its rows change
     }
 
     @Override

@@ -30,10 +30,10 @@ public final class RobotsView implements View {
     /** The online column's text for a robot online; its colour follows it. */
     private static final String ONLINE = "●";
 
-    private final ViewContext context;
     /** A row's height: the theme's, fixed so the table can be as tall as its rows. */
-    static final double ROW_HEIGHT = 40;
+    private static final double ROW_HEIGHT = 40;
 
+    private final ViewContext context;
     private final TableView<LiveRows.Row<RobotSnapshot>> table = new FittedTable<>(ROW_HEIGHT, 3);
     private final TextColumns<LiveRows.Row<RobotSnapshot>> columns = new TextColumns<>(true);
     private final TextArea problems = new TextArea();
