@@ -69,6 +69,17 @@ if [ "$PLATFORM" != linux ]; then
   exit 0
 fi
 
+# The package's runtime: JDK 17's where one is installed. JDK 25's (what the launcher builds and runs with
+# when installed) is 13 MB larger and takes the package to 129 MB, over its 120 MB budget (docs/benchmarks.md,
+# "Seventeenth session"); otherwise the JDK on the PATH. TOUCHLINE_PACKAGE_JAVA_HOME chooses another.
+PACKAGE_JDK=${TOUCHLINE_PACKAGE_JAVA_HOME:-}
+if [ -z "$PACKAGE_JDK" ]; then
+  for d in /usr/lib/jvm/*; do
+    if [ -x "$d/bin/jlink" ] && grep -q '^JAVA_VERSION="17' "$d/release" 2>/dev/null; then PACKAGE_JDK=$d; break; fi
+  done
+fi
+if [ -n "$PACKAGE_JDK" ]; then PATH="$PACKAGE_JDK/bin:$PATH"; fi
+say "the package's Java runtime: $(java -version 2>&1 | head -1)"
 command -v jpackage >/dev/null || die "jpackage missing: it comes with the JDK (openjdk-17-jdk-headless)"
 for t in fakeroot dpkg-deb; do command -v "$t" >/dev/null || die "$t missing (./touchline package installs it)"; done
 for b in touchline-robot touchline-nao-sim; do
@@ -119,6 +130,12 @@ else
   say "reusing the Java runtime in $RUNTIME"
 fi
 
+# From JDK 24 the runtime warns at start about native libraries and sun.misc.Unsafe: allowed (as ./touchline does)
+QUIET_JDK24=()
+if [ "$("$RUNTIME/bin/java" -version 2>&1 | sed -n '1s/.*version "\([0-9]*\).*/\1/p')" -ge 24 ]; then
+  QUIET_JDK24=(--java-options '--enable-native-access=ALL-UNNAMED' --java-options '--sun-misc-unsafe-memory-access=allow')
+fi
+
 IMAGE="$OUT/image"
 rm -rf "$IMAGE"
 say "building the app image (jpackage)"
@@ -127,7 +144,7 @@ jpackage --type app-image --name touchline --dest "$IMAGE" --input "$STAGE" \
   --main-jar "touchline-$VERSION.jar" --main-class touchline.cli.Main --runtime-image "$RUNTIME" \
   --app-version "$VERSION" --vendor "Touchline" --icon packaging/linux/touchline.png \
   --description "Pitch-side debug console for RoboCup robot teams" \
-  --java-options '-XX:+UseZGC' --java-options '-Dtouchline.robotside.bin=$APPDIR/robot-side'
+  --java-options '-XX:+UseZGC' --java-options '-Dtouchline.robotside.bin=$APPDIR/robot-side' "${QUIET_JDK24[@]}"
 chmod 755 "$IMAGE/touchline/lib/app/robot-side/"*
 cp CHANGELOG.md "$IMAGE/touchline/"
 

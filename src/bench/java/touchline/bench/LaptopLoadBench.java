@@ -31,6 +31,8 @@ final class LaptopLoadBench {
     private final List<Integer> maxFps;
 
     /** The launcher's JVM options for the window ({@code ./touchline}: JVM_OPTS and UI_HEAP). */
+    /** From JDK 24: native libraries and sun.misc.Unsafe allowed, without the JVM's warnings (the launcher's JVM_OPTS). */
+    static final List<String> QUIET_JDK24 = List.of("--enable-native-access=ALL-UNNAMED", "--sun-misc-unsafe-memory-access=allow");
     static final String WINDOW_JVM = "-XX:+UseZGC -Xmx512m -XX:SoftMaxHeapSize=160m -XX:ZUncommitDelay=10";
 
     LaptopLoadBench(int minutes, int baselineMinutes, int warmupSeconds, List<String> windowJvm, int idleMinutes,
@@ -104,6 +106,9 @@ final class LaptopLoadBench {
     private Load measure(String name, List<String> args, boolean window, int phaseMinutes) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java")));
         cmd.addAll(window ? windowJvm : List.of("-XX:+UseZGC"));
+        if (Runtime.version().feature() >= 24) {
+            cmd.addAll(QUIET_JDK24); // as the launcher runs it (./touchline, JVM_OPTS)
+        }
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"),
                 "-Dtouchline.robotside.bin=" + System.getProperty("touchline.robotside.bin", "robot-side/build/bin"),
                 "touchline.cli.Main"));
