@@ -63,6 +63,42 @@ class FollowingViewsUiTest {
         assertTrue(ui.fx(() -> list.getItems().get(0).toString()).endsWith("beta"));
     }
 
+    /**
+     * The debug console's rows paint no background of their own, only the list does (a scroll fills the
+     * list's area once, not again in every row; docs/benchmarks.md "Seventeenth session"); a selected row
+     * still shows its selection.
+     */
+    @Test
+    void theDebugConsolesRowsLeaveTheBackgroundToTheListButShowASelection() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
+            DebugConsoleView view = ui.view(DebugConsoleView.class);
+            @SuppressWarnings("unchecked")
+            ListView<String> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
+            for (String t : List.of("alpha", "beta", "gamma")) {
+                publish(ui, "demo.text", t);
+            }
+            ui.await(10, () -> ui.fx(() -> filledRows(list).size()) == 3);
+            assertTrue(ui.fx(() -> opaque(list.getBackground())), "the list paints the background: " + ui.fx(list::getBackground));
+            assertTrue(ui.fx(() -> filledRows(list).stream().allMatch(c -> c.getBackground() == null && c.getBorder() == null)),
+                    "no row paints one of its own");
+            ui.fxRun(() -> list.getSelectionModel().select(1));
+            ui.await(10, () -> ui.fx(() -> filledRows(list).stream().anyMatch(c -> c.isSelected() && opaque(c.getBackground()))));
+            assertTrue(ui.fx(() -> filledRows(list).stream().filter(c -> !c.isSelected()).allMatch(c -> c.getBackground() == null)),
+                    "only the selected row is filled");
+        }
+    }
+
+    private static List<javafx.scene.control.ListCell<?>> filledRows(ListView<?> list) {
+        return list.lookupAll(".list-cell").stream()
+                .filter(n -> n instanceof javafx.scene.control.ListCell<?> c && !c.isEmpty() && c.isVisible())
+                .<javafx.scene.control.ListCell<?>>map(n -> (javafx.scene.control.ListCell<?>) n).toList();
+    }
+
+    private static boolean opaque(javafx.scene.layout.Background b) {
+        return b != null && b.getFills().stream().anyMatch(f -> f.getFill() instanceof javafx.scene.paint.Color c && c.isOpaque());
+    }
+
     @Test
     void whileFollowingTheListHoldsOnlyTheNewestLinesAndASelectionOrPauseHoldsThemAll() throws Exception {
         try (ConsoleWindowFixture ui = window()) {
