@@ -6,7 +6,7 @@ import java.lang.management.ManagementFactory;
 
 /**
  * More heap before the garbage collector runs, for as long as the console serves viewers. The
- * window runs with a small soft heap limit ({@code -XX:SoftMaxHeapSize=160m} in the launcher) so
+ * window runs with a small soft heap limit ({@code -XX:SoftMaxHeapSize=256m} in the launcher) so
  * that it stays light on a laptop (issue 14); serving eight viewers allocates a frame per message
  * per viewer, and under that limit ZGC collected back to back (108 cycles in 30 s) and took the
  * window's frame rate with it (issue 16, docs/benchmarks.md). The limit is a manageable flag: it is
