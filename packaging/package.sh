@@ -72,12 +72,8 @@ fi
 # The package's runtime: JDK 17's where one is installed. JDK 25's (what the launcher builds and runs with
 # when installed) is 13 MB larger and takes the package to 129 MB, over its 120 MB budget (docs/benchmarks.md,
 # "Seventeenth session"); otherwise the JDK on the PATH. TOUCHLINE_PACKAGE_JAVA_HOME chooses another.
-PACKAGE_JDK=${TOUCHLINE_PACKAGE_JAVA_HOME:-}
-if [ -z "$PACKAGE_JDK" ]; then
-  for d in /usr/lib/jvm/*; do
-    if [ -x "$d/bin/jlink" ] && grep -q '^JAVA_VERSION="17' "$d/release" 2>/dev/null; then PACKAGE_JDK=$d; break; fi
-  done
-fi
+. packaging/jdk.sh
+PACKAGE_JDK=${TOUCHLINE_PACKAGE_JAVA_HOME:-$(newest_jdk 17 17)}
 if [ -n "$PACKAGE_JDK" ]; then PATH="$PACKAGE_JDK/bin:$PATH"; fi
 say "the package's Java runtime: $(java -version 2>&1 | head -1)"
 command -v jpackage >/dev/null || die "jpackage missing: it comes with the JDK (openjdk-17-jdk-headless)"
@@ -132,7 +128,7 @@ fi
 
 # From JDK 24 the runtime warns at start about native libraries and sun.misc.Unsafe: allowed (as ./touchline does)
 QUIET_JDK24=()
-if [ "$("$RUNTIME/bin/java" -version 2>&1 | sed -n '1s/.*version "\([0-9]*\).*/\1/p')" -ge 24 ]; then
+if [ "$(java_major "$RUNTIME/bin/java")" -ge 24 ]; then
   QUIET_JDK24=(--java-options '--enable-native-access=ALL-UNNAMED' --java-options '--sun-misc-unsafe-memory-access=allow')
 fi
 

@@ -15,27 +15,18 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The launcher's choice of JDK ({@code ./touchline}: {@code newest_jdk}, {@code java_major}): the
- * newest full JDK from 17 to 25, read from each JDK's {@code release} file. The functions are taken
- * from the launcher itself and run by bash on a directory of made-up JDKs.
+ * The launcher's choice of JDK ({@code packaging/jdk.sh}, sourced by {@code ./touchline} and
+ * {@code packaging/package.sh}: {@code newest_jdk}, {@code java_major}): the newest full JDK from 17
+ * to 25, read from each JDK's {@code release} file; the package's JDK 17. Run by bash on a directory
+ * of made-up JDKs.
  */
 class LauncherJdkTest {
 
     @TempDir
     Path dir;
 
-    private static String function(String name) throws IOException {
-        List<String> lines = Files.readAllLines(Path.of("touchline"));
-        int start = -1;
-        for (int i = 0; i < lines.size(); i++) {
-            if (lines.get(i).startsWith(name + "() {")) {
-                start = i;
-            } else if (start >= 0 && lines.get(i).equals("}")) {
-                return String.join("\n", lines.subList(start, i + 1)) + "\n";
-            }
-        }
-        throw new AssertionError("no function " + name + " in ./touchline");
-    }
+    /** The launcher's and the package script's own functions. */
+    private static final String FUNCTIONS = ". packaging/jdk.sh\n";
 
     private Path jdk(String name, String version, boolean compiler) throws IOException {
         Path home = dir.resolve("jvm").resolve(name);
@@ -68,14 +59,27 @@ class LauncherJdkTest {
         jdk("jdk-26-ea", "26", true); // not yet tried with this code
         jdk("jre-25-runtime-only", "25.0.3", false); // no compiler: cannot build
         jdk("java-11-openjdk-amd64", "11.0.2", true);
-        assertEquals(newest.toString(), bash(function("newest_jdk") + "newest_jdk " + dir.resolve("jvm"), null));
+        assertEquals(newest.toString(), bash(FUNCTIONS + "newest_jdk 17 25 " + dir.resolve("jvm"), null));
+    }
+
+    @Test
+    void thePackageTakesJdk17AmongNewerOnes() throws Exception {
+        Path seventeen = jdk("java-17-openjdk-amd64", "17.0.15", true);
+        jdk("temurin-25-jdk-amd64", "25.0.3", true);
+        assertEquals(seventeen.toString(), bash(FUNCTIONS + "newest_jdk 17 17 " + dir.resolve("jvm"), null));
+    }
+
+    @Test
+    void aJavaNamedDirectlyHasItsVersionToo() throws Exception {
+        Path home = jdk("temurin-25-jdk-amd64", "25.0.3", true);
+        assertEquals("25", bash(FUNCTIONS + "java_major " + home.resolve("bin/java"), null));
     }
 
     @Test
     void onlyJdk17OrNoJdkAtAll() throws Exception {
         Path only = jdk("java-17-openjdk-amd64", "17.0.15", true);
-        assertEquals(only.toString(), bash(function("newest_jdk") + "newest_jdk " + dir.resolve("jvm"), null));
-        assertEquals("", bash(function("newest_jdk") + "newest_jdk " + dir.resolve("nothing-here"), null));
+        assertEquals(only.toString(), bash(FUNCTIONS + "newest_jdk 17 25 " + dir.resolve("jvm"), null));
+        assertEquals("", bash(FUNCTIONS + "newest_jdk 17 25 " + dir.resolve("nothing-here"), null));
     }
 
     @Test
@@ -83,8 +87,8 @@ class LauncherJdkTest {
         Path home = jdk("temurin-25-jdk-amd64", "25.0.3", true);
         Path link = Files.createDirectories(dir.resolve("bin-link"));
         Files.createSymbolicLink(link.resolve("java"), home.resolve("bin/java")); // as update-alternatives does
-        assertEquals("25", bash(function("java_major") + "java_major", link.toString()));
+        assertEquals("25", bash(FUNCTIONS + "java_major", link.toString()));
         Path broken = jdk("broken", "unknown", true);
-        assertEquals("0", bash(function("java_major") + "java_major", broken.resolve("bin").toString()));
+        assertEquals("0", bash(FUNCTIONS + "java_major", broken.resolve("bin").toString()));
     }
 }

@@ -30,9 +30,9 @@ final class LaptopLoadBench {
     /** The window's {@code --max-fps} caps, one phase each, in this order (the standard: 30). */
     private final List<Integer> maxFps;
 
-    /** The launcher's JVM options for the window ({@code ./touchline}: JVM_OPTS and UI_HEAP). */
     /** From JDK 24: native libraries and sun.misc.Unsafe allowed, without the JVM's warnings (the launcher's JVM_OPTS). */
     static final List<String> QUIET_JDK24 = List.of("--enable-native-access=ALL-UNNAMED", "--sun-misc-unsafe-memory-access=allow");
+    /** The launcher's JVM options for the window ({@code ./touchline}: JVM_OPTS and UI_HEAP). */
     static final String WINDOW_JVM = "-XX:+UseZGC -Xmx512m -XX:SoftMaxHeapSize=256m -XX:ZUncommitDelay=10";
 
     LaptopLoadBench(int minutes, int baselineMinutes, int warmupSeconds, List<String> windowJvm, int idleMinutes,
