@@ -99,6 +99,39 @@ class FollowingViewsUiTest {
         return b != null && b.getFills().stream().anyMatch(f -> f.getFill() instanceof javafx.scene.paint.Color c && c.isOpaque());
     }
 
+    /**
+     * Up or Down in a freshly focused list that follows starts at the newest line, the one in view (the
+     * list's own keys selected the oldest line it held, out of view, or nothing); the next Up moves to
+     * the line above, and the list holds still while a line is selected.
+     */
+    @Test
+    void anArrowKeyInAFollowingListSelectsTheNewestLineAndMovesFromThere() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
+            DebugConsoleView view = ui.view(DebugConsoleView.class);
+            @SuppressWarnings("unchecked")
+            ListView<String> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
+            int lines = 60; // more than the list shows
+            for (int i = 1; i <= lines; i++) {
+                publish(ui, "demo.text", "line " + i + ".");
+            }
+            ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines);
+            ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());
+            ui.fxRun(list::requestFocus);
+            ui.robot.type(javafx.scene.input.KeyCode.DOWN);
+            ui.await(10, () -> ui.fx(() -> list.getSelectionModel().getSelectedItem()) != null);
+            assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line " + lines + "."),
+                    "Down selects the newest line: " + ui.fx(() -> list.getSelectionModel().getSelectedItem()));
+            ui.robot.type(javafx.scene.input.KeyCode.UP);
+            ui.await(10, () -> ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line " + (lines - 1) + "."));
+            publish(ui, "demo.text", "line " + (lines + 1) + ".");
+            ui.await(10, () -> ui.fx(() -> list.getItems().get(list.getItems().size() - 1)).endsWith("line " + (lines + 1) + "."));
+            assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line " + (lines - 1) + "."),
+                    "a new line keeps the selection");
+            assertEquals(1, (int) ui.fx(() -> list.getSelectionModel().getSelectedItems().size()));
+        }
+    }
+
     @Test
     void whileFollowingTheListHoldsOnlyTheNewestLinesAndASelectionOrPauseHoldsThemAll() throws Exception {
         try (ConsoleWindowFixture ui = window()) {

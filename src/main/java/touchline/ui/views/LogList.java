@@ -9,6 +9,8 @@ import javafx.scene.control.ListView;
 import javafx.scene.control.MultipleSelectionModel;
 import javafx.scene.control.TableView;
 import javafx.scene.control.skin.VirtualFlow;
+import javafx.scene.input.KeyCode;
+import javafx.scene.input.KeyEvent;
 
 import touchline.model.store.SequencedRing;
 
@@ -75,6 +77,24 @@ final class LogList<E, T> {
         this.selection = selection;
         this.focus = focus;
         setItems.accept(tail);
+        control.addEventFilter(KeyEvent.KEY_PRESSED, this::arrowIntoTheLog);
+    }
+
+    /**
+     * Up or Down in a list that follows with nothing selected starts at the newest line, the one in
+     * view: the control's own keys would move from its focus, a line out of view or none, and select the
+     * oldest held. From then on the selection holds the log still and the keys move as usual.
+     */
+    private void arrowIntoTheLog(KeyEvent e) {
+        boolean arrow = e.getCode() == KeyCode.UP || e.getCode() == KeyCode.DOWN;
+        if (!arrow || e.isShiftDown() || e.isShortcutDown() || !following || tail.isEmpty()
+                || !selection.get().isEmpty()) {
+            return;
+        }
+        int newest = tail.size() - 1;
+        selection.get().clearAndSelect(newest);
+        focus.get().focus(newest);
+        e.consume();
     }
 
     /** Every line held (up to {@code shown}, a tenth more before the oldest go). */
