@@ -14,10 +14,23 @@ public final class RenderDefaults {
      */
     static final String DIRTY_REGIONS = "12";
 
-    /** Sets what the user has not set. */
+    /**
+     * JavaFX's controls log "index exceeds maxCellCount" at INFO each time a list holding more lines
+     * than its height has pixels is laid out at its end (its VirtualFlow compares a line's index with
+     * the viewport's length in pixels and stops adding empty rows, which is all it should do): about
+     * nine lines a minute in the user's terminal while the debug console follows. Kept to warnings.
+     * Held here: the logging system keeps only a weak reference to a logger, and a collected one
+     * forgets its level.
+     */
+    static final java.util.logging.Logger CONTROLS_LOG = java.util.logging.Logger.getLogger("javafx.scene.control");
+
+    /** Sets what the user has not set (a level of the controls' logger from a logging configuration stays). */
     public void apply() {
         if (System.getProperty("prism.dirtyregioncount") == null) {
             System.setProperty("prism.dirtyregioncount", DIRTY_REGIONS);
+        }
+        if (CONTROLS_LOG.getLevel() == null) {
+            CONTROLS_LOG.setLevel(java.util.logging.Level.WARNING);
         }
     }
 }

@@ -5,6 +5,8 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The JavaFX settings a window start applies: set when the user set nothing, the user's kept. */
 class RenderDefaultsTest {
@@ -38,5 +40,27 @@ class RenderDefaultsTest {
         System.setProperty(KEY, "3");
         new RenderDefaults().apply();
         assertEquals("3", System.getProperty(KEY));
+    }
+
+    /**
+     * The controls' "index exceeds maxCellCount" note (INFO) stays out of the user's terminal, their
+     * warnings do not; a level the user configured stays.
+     */
+    @Test
+    void keepsTheControlsNotesOutOfTheTerminalButNotTheirWarnings() {
+        java.util.logging.Logger controls = java.util.logging.Logger.getLogger("javafx.scene.control");
+        java.util.logging.Level was = controls.getLevel();
+        try {
+            controls.setLevel(null);
+            assertTrue(controls.isLoggable(java.util.logging.Level.INFO), "JUL's default before");
+            new RenderDefaults().apply();
+            assertFalse(controls.isLoggable(java.util.logging.Level.INFO));
+            assertTrue(controls.isLoggable(java.util.logging.Level.WARNING));
+            controls.setLevel(java.util.logging.Level.FINE);
+            new RenderDefaults().apply();
+            assertEquals(java.util.logging.Level.FINE, controls.getLevel(), "the user's own level");
+        } finally {
+            controls.setLevel(was);
+        }
     }
 }
