@@ -24,13 +24,24 @@ public final class RenderDefaults {
      */
     static final java.util.logging.Logger CONTROLS_LOG = java.util.logging.Logger.getLogger("javafx.scene.control");
 
-    /** Sets what the user has not set (a level of the controls' logger from a logging configuration stays). */
+    /**
+     * JavaFX warns at every start that it runs from the class path ("Unsupported JavaFX configuration:
+     * classes were loaded from 'unnamed module …'"): the launcher's choice, known and tested, and a
+     * WARNING the user can do nothing about. That one line is dropped; JavaFX's other warnings show.
+     */
+    static final java.util.logging.Logger JAVAFX_LOG = java.util.logging.Logger.getLogger("javafx");
+    static final String CLASS_PATH_WARNING = "Unsupported JavaFX configuration";
+
+    /** Sets what the user has not set (a level or filter from a logging configuration stays). */
     public void apply() {
         if (System.getProperty("prism.dirtyregioncount") == null) {
             System.setProperty("prism.dirtyregioncount", DIRTY_REGIONS);
         }
         if (CONTROLS_LOG.getLevel() == null) {
             CONTROLS_LOG.setLevel(java.util.logging.Level.WARNING);
+        }
+        if (JAVAFX_LOG.getFilter() == null) {
+            JAVAFX_LOG.setFilter(r -> r.getMessage() == null || !r.getMessage().startsWith(CLASS_PATH_WARNING));
         }
     }
 }

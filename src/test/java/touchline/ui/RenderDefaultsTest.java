@@ -63,4 +63,37 @@ class RenderDefaultsTest {
             controls.setLevel(was);
         }
     }
+
+    /** JavaFX's "runs from the class path" warning at every start is dropped; its other warnings are not. */
+    @Test
+    void dropsJavaFxsClassPathWarningAndNoOther() {
+        java.util.logging.Logger javafx = java.util.logging.Logger.getLogger("javafx");
+        java.util.logging.Filter was = javafx.getFilter();
+        java.util.List<String> seen = new java.util.ArrayList<>();
+        java.util.logging.Handler catcher = new java.util.logging.Handler() {
+            @Override
+            public void publish(java.util.logging.LogRecord r) {
+                seen.add(r.getMessage());
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        javafx.addHandler(catcher);
+        try {
+            javafx.setFilter(null);
+            new RenderDefaults().apply();
+            javafx.warning("Unsupported JavaFX configuration: classes were loaded from 'unnamed module @1dd02175'");
+            javafx.warning("Loading FXML document with JavaFX API of version 22 by JavaFX runtime of version 21");
+            assertEquals(java.util.List.of("Loading FXML document with JavaFX API of version 22 by JavaFX runtime of version 21"), seen);
+        } finally {
+            javafx.removeHandler(catcher);
+            javafx.setFilter(was);
+        }
+    }
 }
