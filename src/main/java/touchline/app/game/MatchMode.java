@@ -203,16 +203,21 @@ public final class MatchMode {
     public void refresh() {
         boolean now;
         boolean changed;
+        String why;
         synchronized (this) {
-            now = override || playingSource() == null && !listening();
+            String source = playingSource();
+            now = override || source == null && !listening();
             changed = now != lastMaySend;
             lastMaySend = now;
             if (changed && now) {
                 held.clear();
             }
+            why = now ? "may send again"
+                    : source != null ? "silent: a game in play (" + source + ")"
+                    : "silent: listening for a GameController before talking to robots";
         }
         if (changed) {
-            LOG.info("match mode: console {}", now ? "may send again" : "silenced during play");
+            LOG.info("match mode: console {}", why);
             for (Consumer<Boolean> l : listeners) {
                 l.accept(now);
             }

@@ -30,6 +30,33 @@ class MatchModeTest {
         assertTrue(mode.notice().contains("1 request(s) held back"), mode.notice());
     }
 
+    /** The terminal's line says why the console is silent: listening first at start, or a game in play and whose. */
+    @Test
+    void theTerminalSaysWhyTheConsoleIsSilent() {
+        ch.qos.logback.classic.Logger log = (ch.qos.logback.classic.Logger) org.slf4j.LoggerFactory.getLogger(MatchMode.class);
+        ch.qos.logback.core.read.ListAppender<ch.qos.logback.classic.spi.ILoggingEvent> lines = new ch.qos.logback.core.read.ListAppender<>();
+        lines.start();
+        ch.qos.logback.classic.Level level = log.getLevel();
+        log.setLevel(ch.qos.logback.classic.Level.INFO);
+        log.addAppender(lines);
+        try {
+            mode.observe(3, "GameController at 10.0.0.2:3838");
+            mode.observe(4, "GameController at 10.0.0.2:3838");
+            clock.advance(MatchMode.PLAY_MEMORY_MS + 1);
+            mode.refresh();
+            mode.listenFirst(1_000);
+            mode.refresh();
+            assertEquals(List.of(
+                    "match mode: console silent: a game in play (GameController at 10.0.0.2:3838)",
+                    "match mode: console may send again",
+                    "match mode: console silent: listening for a GameController before talking to robots"),
+                    lines.list.stream().map(ch.qos.logback.classic.spi.ILoggingEvent::getFormattedMessage).toList());
+        } finally {
+            log.detachAppender(lines);
+            log.setLevel(level);
+        }
+    }
+
     @Test
     void readyAndSetBlockToo_FinishedReleasesAndListenersHearIt() {
         List<Boolean> heard = new ArrayList<>();
