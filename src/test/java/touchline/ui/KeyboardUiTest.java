@@ -31,7 +31,7 @@ import static org.junit.jupiter.api.Assertions.*;
  * accelerators; every menu has a mnemonic; the focused control is ringed; Space works in the
  * options tree after coming back to its tab and a click on a row's box toggles it; the debug
  * console highlights matches, counts what arrives while paused and says what Copy copied; the
- * network console keeps the selected row in view while the oldest rows go and shows ASCII
+ * network console keeps the selected row in view while the oldest rows go, starts Down at its newest row and shows ASCII
  * beside the hex.
  */
 @Tag("ui")
@@ -185,6 +185,31 @@ class KeyboardUiTest {
     private long counted(String prefix) throws Exception {
         String text = ui.fx(() -> ui.robot.lookup("#debug-count").queryLabeled().getText());
         return text.startsWith(prefix) ? Long.parseLong(text.substring(prefix.length()).replace(" new", "")) : -1;
+    }
+
+    /**
+     * Down in the network console's table while it follows selects the newest row, in view; the table's
+     * own key selected the oldest of the 200 or more rows it held, out of view.
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void downInAFollowingNetworkConsoleSelectsTheNewestRow() throws Exception {
+        touchline.testing.Requirement.robotSide("touchline-robot");
+        try (RobotProcess robot = RobotProcess.robot(6, ui.port(), "--rate", "50").start()) {
+            only("network");
+            ui.await(15, () -> ui.console.options().options(6).listReceived());
+            ui.console.setOption(6, "demo.text", true);
+            TableView<Envelope> table = ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
+            ui.await(20, () -> ui.fx(() -> table.getItems().size()) >= 250); // more than a tail of 200
+            ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());
+            ui.fxRun(table::requestFocus);
+            ui.await(10, () -> ui.window.scene().getFocusOwner() == table);
+            ui.robot.type(KeyCode.DOWN);
+            ui.await(10, () -> ui.fx(() -> table.getSelectionModel().getSelectedIndex()) >= 0);
+            int[] at = ui.fx(() -> new int[] {table.getSelectionModel().getSelectedIndex(), table.getItems().size()});
+            // rows keep coming after the key (about 50 a second); the oldest row held was 200 or more back
+            assertTrue(at[1] - at[0] <= 100, "the newest row selected, not the oldest held: row " + at[0] + " of " + at[1]);
+        }
     }
 
     @Test
