@@ -118,6 +118,7 @@ class FollowingViewsUiTest {
             ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines);
             ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());
             ui.fxRun(list::requestFocus);
+            ui.await(10, () -> ui.fx(() -> list.getScene().getFocusOwner() == list));
             ui.robot.type(javafx.scene.input.KeyCode.DOWN);
             ui.await(10, () -> ui.fx(() -> list.getSelectionModel().getSelectedItem()) != null);
             assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line " + lines + "."),
