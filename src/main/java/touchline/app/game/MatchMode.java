@@ -47,6 +47,8 @@ public final class MatchMode {
     public static final int HELD_LOG = 100;
 
     private static final Logger LOG = LoggerFactory.getLogger(MatchMode.class);
+    /** Why the console is silent in its first moments, before any GameController was heard. */
+    private static final String LISTENING = "listening for a GameController before talking to robots";
 
     private record Heard(int state, long atMs) {
     }
@@ -187,7 +189,7 @@ public final class MatchMode {
         synchronized (this) {
             String source = playingSource();
             if (source == null) {
-                return override || !listening() ? "" : "listening for a GameController before talking to robots";
+                return override || !listening() ? "" : LISTENING;
             }
             Heard now = heard.get(source);
             if (GameControlData.isPlay(now.state)) {
@@ -212,9 +214,8 @@ public final class MatchMode {
             if (changed && now) {
                 held.clear();
             }
-            why = now ? "may send again"
-                    : source != null ? "silent: a game in play (" + source + ")"
-                    : "silent: listening for a GameController before talking to robots";
+            why = !changed ? null : now ? "may send again"
+                    : source != null ? "silent: a game in play (" + source + ")" : "silent: " + LISTENING;
         }
         if (changed) {
             LOG.info("match mode: console {}", why);
