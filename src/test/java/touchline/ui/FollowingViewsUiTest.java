@@ -34,6 +34,14 @@ class FollowingViewsUiTest {
         return ui;
     }
 
+    /** Opens the debug console; its list of lines. */
+    @SuppressWarnings("unchecked")
+    private static ListView<String> debugLines(ConsoleWindowFixture ui) throws Exception {
+        ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
+        DebugConsoleView view = ui.view(DebugConsoleView.class);
+        return ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
+    }
+
     private static void publish(ConsoleWindowFixture ui, String option, String text) {
         ui.console.bus().accept(StoreEnvelopes.text(ui.console.clock().nowMicros(), ROBOT, option, text));
     }
@@ -46,9 +54,8 @@ class FollowingViewsUiTest {
     }
 
     private static void followAndSearch(ConsoleWindowFixture ui) throws Exception {
-        ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
+        ListView<String> list = debugLines(ui);
         DebugConsoleView view = ui.view(DebugConsoleView.class);
-        ListView<?> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
         publish(ui, "demo.text", "alpha");
         publish(ui, "demo.text", "beta");
         ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 2);
@@ -71,10 +78,7 @@ class FollowingViewsUiTest {
     @Test
     void theDebugConsolesRowsLeaveTheBackgroundToTheListButShowASelection() throws Exception {
         try (ConsoleWindowFixture ui = window()) {
-            ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
-            DebugConsoleView view = ui.view(DebugConsoleView.class);
-            @SuppressWarnings("unchecked")
-            ListView<String> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
+            ListView<String> list = debugLines(ui);
             for (String t : List.of("alpha", "beta", "gamma")) {
                 publish(ui, "demo.text", t);
             }
@@ -107,10 +111,7 @@ class FollowingViewsUiTest {
     @Test
     void anArrowKeyInAFollowingListSelectsTheNewestLineAndMovesFromThere() throws Exception {
         try (ConsoleWindowFixture ui = window()) {
-            ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
-            DebugConsoleView view = ui.view(DebugConsoleView.class);
-            @SuppressWarnings("unchecked")
-            ListView<String> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
+            ListView<String> list = debugLines(ui);
             int lines = 60; // more than the list shows
             for (int i = 1; i <= lines; i++) {
                 publish(ui, "demo.text", "line " + i + ".");
@@ -141,10 +142,8 @@ class FollowingViewsUiTest {
     }
 
     private static void tailAndEverything(ConsoleWindowFixture ui) throws Exception {
-        ui.fxRun(() -> ui.window.open("debug-console", ViewSource.NONE));
+        ListView<String> list = debugLines(ui);
         DebugConsoleView view = ui.view(DebugConsoleView.class);
-        @SuppressWarnings("unchecked")
-        ListView<String> list = ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
         int lines = 300; // more than the tail (200 to 400 lines), fewer than the console keeps (5 000)
         for (int i = 1; i <= lines; i++) {
             publish(ui, "demo.text", "line " + i + ".");

@@ -187,6 +187,15 @@ class KeyboardUiTest {
         return text.startsWith(prefix) ? Long.parseLong(text.substring(prefix.length()).replace(" new", "")) : -1;
     }
 
+    /** The network console alone, robot {@code robotId} (started) sending its demo text: the console's table. */
+    @SuppressWarnings("unchecked")
+    private TableView<Envelope> networkTableWithText(int robotId) throws Exception {
+        only("network");
+        ui.await(15, () -> ui.console.options().options(robotId).listReceived());
+        ui.console.setOption(robotId, "demo.text", true);
+        return ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
+    }
+
     /**
      * Down in the network console's table while it follows selects the newest row, in view; the table's
      * own key selected the oldest of the 200 or more rows it held, out of view.
@@ -196,10 +205,7 @@ class KeyboardUiTest {
     void downInAFollowingNetworkConsoleSelectsTheNewestRow() throws Exception {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(6, ui.port(), "--rate", "50").start()) {
-            only("network");
-            ui.await(15, () -> ui.console.options().options(6).listReceived());
-            ui.console.setOption(6, "demo.text", true);
-            TableView<Envelope> table = ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
+            TableView<Envelope> table = networkTableWithText(6);
             ui.await(20, () -> ui.fx(() -> table.getItems().size()) >= 250); // more than a tail of 200
             ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());
             ui.fxRun(table::requestFocus);
@@ -228,10 +234,7 @@ class KeyboardUiTest {
     void theNetworkConsoleKeepsTheSelectedRowInViewAndShowsAscii() throws Exception {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(5, ui.port(), "--rate", "1000").start()) {
-            only("network");
-            ui.await(15, () -> ui.console.options().options(5).listReceived());
-            ui.console.setOption(5, "demo.text", true);
-            TableView<Envelope> table = ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
+            TableView<Envelope> table = networkTableWithText(5);
             ui.await(20, () -> shownRows() >= 1_900);
             // following, the table holds only the newest 200 to 400 rows (LogList); a click holds them all
             assertTrue(ui.fx(() -> table.getItems().size()) <= 400, "following: only the newest rows in the table");
