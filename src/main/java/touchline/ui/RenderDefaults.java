@@ -2,7 +2,8 @@ package touchline.ui;
 
 /**
  * JavaFX settings every window start applies before the toolkit starts (the console command's
- * {@code cli.FxThread} and the plain {@link Launcher} alike); a {@code -D} of the user's wins.
+ * {@code cli.FxThread} and the plain {@link Launcher} alike): how it repaints, and which of its log
+ * lines reach the user's terminal; a {@code -D} or logging configuration of the user's wins.
  */
 public final class RenderDefaults {
 
