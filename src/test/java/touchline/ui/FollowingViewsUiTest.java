@@ -42,6 +42,37 @@ class FollowingViewsUiTest {
         return ui.fx(() -> ui.robot.from(view.node()).lookup("#debug-lines").queryAs(ListView.class));
     }
 
+    /** The lines the debug console shows while nobody uses its list, top to bottom, as drawn. */
+    private static List<String> newestShown(ConsoleWindowFixture ui) throws Exception {
+        DebugConsoleView view = ui.view(DebugConsoleView.class);
+        return ui.fx(() -> {
+            javafx.scene.Node pane = ui.robot.from(view.node()).lookup("#debug-newest").query();
+            if (!pane.isVisible()) {
+                return List.<String>of();
+            }
+            javafx.geometry.Bounds seen = pane.localToScene(pane.getLayoutBounds());
+            return ui.robot.from(pane).lookup(".newest-line").queryAllAs(javafx.scene.text.Text.class).stream()
+                    .filter(t -> !t.getText().isEmpty() && seen.contains(t.localToScene(t.getLayoutBounds()).getCenterX(),
+                            t.localToScene(t.getLayoutBounds()).getCenterY()))
+                    .sorted(java.util.Comparator.comparingDouble(t -> t.localToScene(t.getLayoutBounds()).getMinY()))
+                    .map(javafx.scene.text.Text::getText).toList();
+        });
+    }
+
+    /** The bottom one of {@link #newestShown}, or "" when none shows. */
+    private static String bottomLine(ConsoleWindowFixture ui) throws Exception {
+        List<String> shown = newestShown(ui);
+        return shown.isEmpty() ? "" : shown.get(shown.size() - 1);
+    }
+
+    /** Gives the window the keyboard and the list the focus: the user tabbed to the list. */
+    private static void focus(ConsoleWindowFixture ui, ListView<String> list) throws Exception {
+        ui.await(10, () -> ui.fx(() -> list.getScene() != null));
+        ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());
+        ui.fxRun(list::requestFocus);
+        ui.await(10, () -> ui.fx(() -> list.getScene().getFocusOwner() == list && list.isFocused()));
+    }
+
     private static void publish(ConsoleWindowFixture ui, String option, String text) {
         ui.console.bus().accept(StoreEnvelopes.text(ui.console.clock().nowMicros(), ROBOT, option, text));
     }
@@ -58,16 +89,57 @@ class FollowingViewsUiTest {
         DebugConsoleView view = ui.view(DebugConsoleView.class);
         publish(ui, "demo.text", "alpha");
         publish(ui, "demo.text", "beta");
-        ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 2);
+        ui.await(10, () -> newestShown(ui).size() == 2);
         publish(ui, "demo.text", "gamma");
-        ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 3);
+        ui.await(10, () -> newestShown(ui).size() == 3);
         long frame = ui.fx(() -> ui.window.pulse().frames());
         ui.await(10, () -> ui.window.pulse().frames() > frame + 5);
-        assertEquals(3, (int) ui.fx(() -> list.getItems().size()), "each line once");
-        assertTrue(ui.fx(() -> list.getItems().get(2).toString()).endsWith("gamma"), "newest at the bottom");
+        List<String> shown = newestShown(ui);
+        assertEquals(3, shown.size(), "each line once: " + shown);
+        assertTrue(shown.get(0).endsWith("alpha") && shown.get(2).endsWith("gamma"), "newest at the bottom: " + shown);
+        assertEquals(0.0, ui.fx(list::getOpacity), "nobody at the list: the plain lines show in its place");
         ui.fxRun(() -> ui.robot.from(view.node()).lookup("#debug-search").queryAs(TextField.class).setText("beta"));
         ui.await(10, () -> ui.fx(() -> list.getItems().size()) == 1);
         assertTrue(ui.fx(() -> list.getItems().get(0).toString()).endsWith("beta"));
+        assertEquals(1.0, ui.fx(list::getOpacity), "a search shows the list (its hits highlighted)");
+        assertEquals(List.of(), newestShown(ui));
+    }
+
+    /**
+     * While nobody uses it the list stands still, hidden, and the plain newest lines follow the log; the
+     * pointer over it brings the list up at once, holding the same lines, newest at the bottom, and
+     * following; when the pointer leaves, the plain lines come back, new lines included.
+     */
+    @Test
+    void theListComesUpAtTheNewestLineWhenThePointerReachesIt() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            ListView<String> list = debugLines(ui);
+            for (int i = 1; i <= 40; i++) {
+                publish(ui, "demo.text", "line " + i + ".");
+            }
+            ui.await(10, () -> bottomLine(ui).endsWith("line 40."));
+            int before = ui.fx(() -> list.getItems().size());
+            publish(ui, "demo.text", "line 41.");
+            ui.await(10, () -> bottomLine(ui).endsWith("line 41."));
+            assertEquals(before, (int) ui.fx(() -> list.getItems().size()), "the hidden list stands still");
+
+            ui.robot.moveTo(list);
+            ui.await(10, () -> ui.fx(list::isHover));
+            assertEquals(1.0, ui.fx(list::getOpacity));
+            assertTrue(ui.fx(() -> list.getItems().get(list.getItems().size() - 1)).endsWith("line 41."),
+                    "the list comes up with every line");
+            assertEquals(List.of(), newestShown(ui));
+            publish(ui, "demo.text", "line 42.");
+            ui.await(10, () -> ui.fx(() -> list.getItems().get(list.getItems().size() - 1)).endsWith("line 42."));
+
+            javafx.scene.Node searchField = ui.robot.from(ui.view(DebugConsoleView.class).node()).lookup("#debug-search").query();
+            ui.robot.moveTo(searchField);
+            ui.await(10, () -> ui.fx(list::getOpacity) == 0.0);
+            publish(ui, "demo.text", "line 43.");
+            ui.await(10, () -> bottomLine(ui).endsWith("line 43."));
+            List<String> shown = newestShown(ui);
+            assertTrue(shown.get(shown.size() - 2).endsWith("line 42."), "the lines in order: " + shown);
+        }
     }
 
     /**
@@ -79,6 +151,7 @@ class FollowingViewsUiTest {
     void theDebugConsolesRowsLeaveTheBackgroundToTheListButShowASelection() throws Exception {
         try (ConsoleWindowFixture ui = window()) {
             ListView<String> list = debugLines(ui);
+            focus(ui, list);
             for (String t : List.of("alpha", "beta", "gamma")) {
                 publish(ui, "demo.text", t);
             }
@@ -116,10 +189,9 @@ class FollowingViewsUiTest {
             for (int i = 1; i <= lines; i++) {
                 publish(ui, "demo.text", "line " + i + ".");
             }
+            ui.await(10, () -> bottomLine(ui).endsWith("line " + lines + "."));
+            focus(ui, list);
             ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines);
-            ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());
-            ui.fxRun(list::requestFocus);
-            ui.await(10, () -> ui.fx(() -> list.getScene().getFocusOwner() == list));
             ui.robot.type(javafx.scene.input.KeyCode.DOWN);
             ui.await(10, () -> ui.fx(() -> list.getSelectionModel().getSelectedItem()) != null);
             assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).endsWith("line " + lines + "."),
@@ -143,6 +215,7 @@ class FollowingViewsUiTest {
 
     private static void tailAndEverything(ConsoleWindowFixture ui) throws Exception {
         ListView<String> list = debugLines(ui);
+        focus(ui, list); // the list follows while the user is at it
         DebugConsoleView view = ui.view(DebugConsoleView.class);
         int lines = 300; // more than the tail (200 to 400 lines), fewer than the console keeps (5 000)
         for (int i = 1; i <= lines; i++) {

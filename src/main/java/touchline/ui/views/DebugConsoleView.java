@@ -51,6 +51,12 @@ public final class DebugConsoleView implements View {
     private long pausedAtVersion = -1;
     private final BorderPane root = new BorderPane();
     private final LogList<TextLine, String> log = new LogList<>(lines, SHOWN);
+    /** The newest lines while nobody uses the list (it stands still meanwhile, see {@link #useTheList}). */
+    private final NewestLines newest = new NewestLines(ROW_HEIGHT, ROW_INDENT, this::scrollBarThickness);
+    static final double ROW_HEIGHT = 22;
+    /** Where a row's text starts: the list's border and its row's padding (AtlantaFX). */
+    static final double ROW_INDENT = 8;
+    private double scrollBarThickness;
 
     public DebugConsoleView(ViewContext context) {
         this.context = context;
@@ -58,7 +64,12 @@ public final class DebugConsoleView implements View {
         lines.setId("debug-lines");
         lines.getSelectionModel().setSelectionMode(SelectionMode.MULTIPLE);
         lines.setStyle("-fx-font-family: monospace;");
-        lines.setFixedCellSize(22); // no per-cell measuring: appending stays cheap
+        lines.setFixedCellSize(ROW_HEIGHT); // no per-cell measuring: appending stays cheap
+        newest.setId("debug-newest");
+        newest.setStyle("-fx-font-family: monospace;");
+        // the list comes up as soon as the pointer or the keyboard reaches it, before it acts on a click or a key
+        lines.hoverProperty().addListener((o, a, b) -> useTheList(someoneAtTheList()));
+        lines.focusedProperty().addListener((o, a, b) -> useTheList(someoneAtTheList()));
         search.setPromptText("search (Ctrl+F)");
         search.setId("debug-search");
         count.setId("debug-count");
@@ -95,7 +106,40 @@ public final class DebugConsoleView implements View {
         FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, search, pause, copy, clear, count, feedback); // wraps when narrow
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
-        root.setCenter(lines);
+        root.setCenter(new javafx.scene.layout.StackPane(newest, lines));
+        useTheList(false);
+    }
+
+    /**
+     * Whether the list shows and follows the log, or the plain newest lines do in its place ({@link
+     * NewestLines}): following a log in the list costs the window a fifth of its time with the demo team
+     * (docs/benchmarks.md, "Eighteenth session"), and at a tournament the console mostly follows with
+     * nobody at it. The list comes up, at the newest line, as soon as the user points at it, tabs to it,
+     * selects, pauses or searches; it goes again when none of these holds. Both look the same.
+     */
+    private void useTheList(boolean list) {
+        log.glance(list ? null : newest);
+        newest.setVisible(!list);
+        lines.setOpacity(list ? 1 : 0); // not drawn, still there for the pointer and the keyboard
+    }
+
+    /** How thick the list's scroll bars are, once it is styled (0 before). */
+    private double scrollBarThickness() {
+        if (scrollBarThickness == 0) {
+            for (Node n : lines.lookupAll(".scroll-bar")) {
+                if (n instanceof javafx.scene.control.ScrollBar b && b.getOrientation() == javafx.geometry.Orientation.VERTICAL
+                        && b.getSkin() != null) {
+                    scrollBarThickness = b.prefWidth(-1);
+                }
+            }
+        }
+        return scrollBarThickness;
+    }
+
+    /** The user points at the list, has focused it, selected a line, paused or searches. */
+    private boolean someoneAtTheList() {
+        return lines.isHover() || lines.isFocused() || !lines.getSelectionModel().isEmpty() || pause.isSelected()
+                || search.getText() != null && !search.getText().isEmpty();
     }
 
     private void copy() {
@@ -127,6 +171,7 @@ public final class DebugConsoleView implements View {
         if (frameNow > feedbackUntilFrame && !feedback.getText().isEmpty()) {
             feedback.setText("");
         }
+        useTheList(someoneAtTheList());
         if (pause.isSelected()) {
             log.holdEverything(); // every line scrollable while paused
             // every line the log took since the pause, whatever the filters (they apply on resume)

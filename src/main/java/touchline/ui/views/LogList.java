@@ -57,6 +57,22 @@ final class LogList<E, T> {
     private final ObservableList<T> tail = FXCollections.observableArrayList();
     private final RingFollower<E, T> follower;
     private boolean following = true;
+    /** Where the newest lines go instead of the control while it follows, or null: the control. */
+    private Glance<T> glance;
+    /** The last line the glance was given. */
+    private T glanced;
+
+    /**
+     * What shows the newest lines while nobody uses the control ({@link #glance}): cheaper to follow
+     * a log with than the control, which is what the user selects, scrolls and searches in.
+     */
+    interface Glance<T> {
+        /** Shows these lines, the newest last, instead of what it showed. */
+        void restart(List<T> newest);
+
+        /** Shows these lines, the newest last, below what it showed. */
+        void append(List<T> added);
+    }
 
     /** @param shown lines held at most ({@link RingFollower}) */
     LogList(ListView<T> list, int shown) {
@@ -97,6 +113,28 @@ final class LogList<E, T> {
         e.consume();
     }
 
+    /**
+     * While it follows, sends the newest lines to {@code to} instead of the control, which stands
+     * still; {@code null} brings the control up to date at once and sends them there again. The
+     * caller hides one of the two: the glance while the user is at the control (points at it, has
+     * focused it, selected a line, paused, searches), the control otherwise.
+     */
+    void glance(Glance<T> to) {
+        if (to == glance) {
+            return;
+        }
+        glance = to;
+        if (to != null) {
+            glanced = null;
+            sendToGlance(-1);
+        } else if (following) {
+            tail.setAll(newest());
+            if (!tail.isEmpty()) {
+                showNewest();
+            }
+        }
+    }
+
     /** Every line held (up to {@code shown}, a tenth more before the oldest go). */
     ObservableList<T> all() {
         return all;
@@ -135,6 +173,14 @@ final class LogList<E, T> {
             }
             return newest;
         }
+        if (glance != null) {
+            if (!following) {
+                following = true;
+                setItems.accept(tail); // brought up to date when the glance ends
+            }
+            sendToGlance(follower.added());
+            return newest;
+        }
         boolean changed = true;
         if (!following) {
             following = true;
@@ -170,19 +216,37 @@ final class LogList<E, T> {
     void clear() {
         all.clear();
         tail.clear();
+        if (glance != null) {
+            sendToGlance(-1);
+        }
     }
 
     private List<T> newest() {
         return all.subList(Math.max(0, all.size() - TAIL), all.size());
     }
 
+    /** Whether the last {@code added} lines of {@link #all()} follow on {@code last} (null: follow on nothing). */
+    private boolean continues(int added, T last) {
+        int before = all.size() - added; // lines all held before this frame's
+        return added >= 0 && added <= TAIL && before >= 0
+                && (last == null ? before == 0 : before > 0 && all.get(before - 1) == last);
+    }
+
+    /** Gives the glance what {@link #all()} gained, or everything afresh when it changed otherwise ({@code added} -1: afresh). */
+    private void sendToGlance(int added) {
+        if (!continues(added, glanced)) {
+            glance.restart(newest());
+        } else if (added > 0) {
+            glance.append(all.subList(all.size() - added, all.size()));
+        }
+        glanced = all.isEmpty() ? null : all.get(all.size() - 1);
+    }
+
     /** Appends what {@link #all()} gained; starts afresh when it changed otherwise (a reload, a clear). True if the tail changed. */
     private boolean keepTail(int added) {
         int n = all.size();
         int before = n - added; // lines all held before this frame's
-        boolean continues = added >= 0 && added <= TAIL && before >= 0
-                && (tail.isEmpty() ? before == 0 : before > 0 && all.get(before - 1) == tail.get(tail.size() - 1));
-        if (!continues) {
+        if (!continues(added, tail.isEmpty() ? null : tail.get(tail.size() - 1))) {
             tail.setAll(newest());
             return true;
         }
