@@ -57,6 +57,8 @@ public final class DebugConsoleView implements View {
     /** Where a row's text starts: the list's border and its row's padding (AtlantaFX). */
     static final double ROW_INDENT = 8;
     private double scrollBarThickness;
+    private final SkinPart<javafx.scene.control.ScrollBar> upright = new SkinPart<>(lines, ".scroll-bar",
+            javafx.scene.control.ScrollBar.class, b -> b.getOrientation() == javafx.geometry.Orientation.VERTICAL);
 
     public DebugConsoleView(ViewContext context) {
         this.context = context;
@@ -123,15 +125,17 @@ public final class DebugConsoleView implements View {
         lines.setOpacity(list ? 1 : 0); // not drawn, still there for the pointer and the keyboard
     }
 
-    /** How thick the list's scroll bars are, once it is styled (0 before). */
+    /**
+     * How thick the list's scroll bars are (0 until its skin has them). A bar the list does not need
+     * is hidden and so not styled yet: it is styled here, once.
+     */
     private double scrollBarThickness() {
-        if (scrollBarThickness == 0) {
-            for (Node n : lines.lookupAll(".scroll-bar")) {
-                if (n instanceof javafx.scene.control.ScrollBar b && b.getOrientation() == javafx.geometry.Orientation.VERTICAL
-                        && b.getSkin() != null) {
-                    scrollBarThickness = b.prefWidth(-1);
-                }
+        if (scrollBarThickness == 0 && upright.get() != null) {
+            javafx.scene.control.ScrollBar bar = upright.get();
+            if (bar.getSkin() == null) {
+                bar.applyCss();
             }
+            scrollBarThickness = bar.prefWidth(-1);
         }
         return scrollBarThickness;
     }

@@ -17,6 +17,9 @@ final class FittedTable<T> extends TableView<T> {
     private final int minRows;
     /** The sideways bar's height the last preferred height counted: a bar that came or went since asks for a new one. */
     private double barCounted;
+    private final SkinPart<Node> header = new SkinPart<>(this, ".column-header-background", Node.class);
+    private final SkinPart<ScrollBar> sideways = new SkinPart<>(this, ".scroll-bar", ScrollBar.class,
+            b -> b.getOrientation() == Orientation.HORIZONTAL);
 
     FittedTable(double rowHeight, int minRows) {
         this.minRows = minRows;
@@ -28,7 +31,7 @@ final class FittedTable<T> extends TableView<T> {
     protected double computePrefHeight(double width) {
         double rows = Math.max(minRows, getItems().size()) * getFixedCellSize();
         barCounted = sidewaysBarHeight();
-        return snappedTopInset() + shownHeight(lookup(".column-header-background")) + rows
+        return snappedTopInset() + shownHeight(header.get()) + rows
                 + barCounted + snappedBottomInset();
     }
 
@@ -42,12 +45,7 @@ final class FittedTable<T> extends TableView<T> {
 
     /** The sideways scroll bar's height while it shows (columns wider than the table), else 0. */
     private double sidewaysBarHeight() {
-        for (Node n : lookupAll(".scroll-bar")) {
-            if (n instanceof ScrollBar bar && bar.getOrientation() == Orientation.HORIZONTAL) {
-                return shownHeight(bar);
-            }
-        }
-        return 0;
+        return shownHeight(sideways.get());
     }
 
     private static double shownHeight(Node n) {

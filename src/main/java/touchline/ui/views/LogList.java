@@ -49,6 +49,7 @@ final class LogList<E, T> {
     static final int TRIM_SLACK = 200;
 
     private final Control control;
+    private final SkinPart<VirtualFlow> flow;
     private final Consumer<ObservableList<T>> setItems;
     private final IntConsumer scrollTo;
     private final Supplier<MultipleSelectionModel<T>> selection;
@@ -88,6 +89,7 @@ final class LogList<E, T> {
                     Supplier<MultipleSelectionModel<T>> selection, Supplier<FocusModel<T>> focus, int shown) {
         this.follower = new RingFollower<>(all, shown);
         this.control = control;
+        this.flow = new SkinPart<>(control, ".virtual-flow", VirtualFlow.class);
         this.setItems = setItems;
         this.scrollTo = scrollTo;
         this.selection = selection;
@@ -204,9 +206,9 @@ final class LogList<E, T> {
      * layout), then its flow goes to the end.
      */
     private void showNewest() {
-        if (control.getScene() != null && control.lookup(".virtual-flow") instanceof VirtualFlow<?> flow) {
+        if (control.getScene() != null && flow.get() != null) {
             control.layout();
-            flow.setPosition(1);
+            flow.get().setPosition(1);
         } else {
             scrollTo.accept(tail.size() - 1); // not laid out yet: its first layout scrolls
         }
@@ -289,9 +291,9 @@ final class LogList<E, T> {
 
     /** The first and last line on screen, or null before the control is laid out. */
     private int[] onScreen() {
-        if (control.lookup(".virtual-flow") instanceof VirtualFlow<?> flow) {
-            IndexedCell<?> first = flow.getFirstVisibleCell();
-            IndexedCell<?> last = flow.getLastVisibleCell();
+        if (flow.get() != null) {
+            IndexedCell<?> first = flow.get().getFirstVisibleCell();
+            IndexedCell<?> last = flow.get().getLastVisibleCell();
             if (first != null && last != null) {
                 return new int[] {first.getIndex(), last.getIndex()};
             }
