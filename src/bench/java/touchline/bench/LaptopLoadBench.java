@@ -32,6 +32,8 @@ final class LaptopLoadBench {
 
     /** From JDK 24: native libraries and sun.misc.Unsafe allowed, without the JVM's warnings (the launcher's JVM_OPTS). */
     static final List<String> QUIET_JDK24 = List.of("--enable-native-access=ALL-UNNAMED", "--sun-misc-unsafe-memory-access=allow");
+    /** From JDK 25: compact object headers (the launcher's JVM_OPTS). */
+    static final List<String> LEANER_JDK25 = List.of("-XX:+UseCompactObjectHeaders");
     /** The launcher's JVM options for the window ({@code ./touchline}: JVM_OPTS and UI_HEAP). */
     static final String WINDOW_JVM = "-XX:+UseZGC -Xmx512m -XX:SoftMaxHeapSize=256m -XX:ZUncommitDelay=10";
 
@@ -108,6 +110,9 @@ final class LaptopLoadBench {
         cmd.addAll(window ? windowJvm : List.of("-XX:+UseZGC"));
         if (Runtime.version().feature() >= 24) {
             cmd.addAll(QUIET_JDK24); // as the launcher runs it (./touchline, JVM_OPTS)
+        }
+        if (Runtime.version().feature() >= 25) {
+            cmd.addAll(LEANER_JDK25);
         }
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"),
                 "-Dtouchline.robotside.bin=" + System.getProperty("touchline.robotside.bin", "robot-side/build/bin"),

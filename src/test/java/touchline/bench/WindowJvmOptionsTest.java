@@ -26,6 +26,16 @@ class WindowJvmOptionsTest {
                 ".ci/side-by-side");
     }
 
+    /** What the three add on JDK 25 and later (compact object headers) agrees too, and only there. */
+    @Test
+    void theOptionsAddedOnJdk25AreTheSameInAllThree() throws IOException {
+        String launcher = Files.readString(Path.of("touchline"));
+        String launcher25 = group(launcher, "(?m)^if \\[ \"\\$\\(java_major\\)\" -ge 25 \\]; then\\s*\\n\\s*JVM_OPTS\\+=\\(([^)]*)\\)");
+        assertEquals(launcher25, String.join(" ", LaptopLoadBench.LEANER_JDK25), "bench ui --laptop");
+        assertEquals(launcher25, group(Files.readString(Path.of(".ci/side-by-side")), "(?m)^JDK25_JVM=\"([^\"]*)\""),
+                ".ci/side-by-side");
+    }
+
     private static String group(String text, String regex) {
         Matcher m = Pattern.compile(regex).matcher(text);
         if (!m.find()) {
