@@ -206,6 +206,43 @@ class FollowingViewsUiTest {
         }
     }
 
+    /**
+     * The line Down selects in a following list shows whole, above the list's edge and its sideways scroll
+     * bar (lines wider than the list): holding the list still kept its top line in place and could leave the
+     * selected newest line half under the bar.
+     */
+    @Test
+    void theNewestLineDownSelectsShowsWhole() throws Exception {
+        try (ConsoleWindowFixture ui = window()) {
+            ListView<String> list = debugLines(ui);
+            focus(ui, list);
+            String wide = "x".repeat(300);
+            int lines = 60;
+            for (int i = 1; i <= lines; i++) {
+                publish(ui, "demo.text", "line " + i + ". " + wide);
+            }
+            ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines);
+            ui.robot.type(javafx.scene.input.KeyCode.DOWN);
+            ui.await(10, () -> ui.fx(() -> list.getSelectionModel().getSelectedItem()) != null);
+            assertTrue(ui.fx(() -> list.getSelectionModel().getSelectedItem()).contains("line " + lines + "."));
+            ui.await(10, () -> ui.fx(() -> list.getItems().size()) == lines && ui.fx(() -> wholeInView(list)));
+        }
+    }
+
+    /** Whether the selected line's row lies whole inside the list's viewport (not under an edge or a scroll bar). */
+    private static boolean wholeInView(ListView<String> list) {
+        int selected = list.getSelectionModel().getSelectedIndex();
+        javafx.scene.Node viewport = list.lookup(".clipped-container");
+        for (javafx.scene.Node n : list.lookupAll(".list-cell")) {
+            if (n instanceof javafx.scene.control.ListCell<?> c && c.getIndex() == selected && c.isVisible()) {
+                javafx.geometry.Bounds row = c.localToScene(c.getLayoutBounds());
+                javafx.geometry.Bounds view = viewport.localToScene(viewport.getLayoutBounds());
+                return row.getMinY() >= view.getMinY() - 0.5 && row.getMaxY() <= view.getMaxY() + 0.5;
+            }
+        }
+        return false;
+    }
+
     @Test
     void whileFollowingTheListHoldsOnlyTheNewestLinesAndASelectionOrPauseHoldsThemAll() throws Exception {
         try (ConsoleWindowFixture ui = window()) {

@@ -266,7 +266,9 @@ final class LogList<E, T> {
     /**
      * Switches the control to every line, keeping the selection, the focus and the line at the
      * top; if the focused line (where the keyboard or a click left it) is not among the lines on
-     * screen — a scroll asked for in the same frame is not laid out yet — it is centred instead.
+     * screen — a scroll asked for in the same frame is not laid out yet — it is centred instead; and
+     * the focused line shows whole (the newest one the first Down selects sat at the bottom edge,
+     * which the line at the top, now whole, pushed under the edge or the sideways scroll bar).
      */
     private void showEverything() {
         int offset = all.size() - tail.size();
@@ -287,6 +289,10 @@ final class LogList<E, T> {
             focus.get().focus(focused + offset);
         }
         scrollTo.accept(Math.max(0, top + offset));
+        if (anchor >= 0 && control.getScene() != null && flow.get() != null) {
+            control.layout(); // every line and the line at the top in place, then the anchor whole:
+            flow.get().scrollTo(anchor + offset); // the top line's row was cut, the bottom one may be now
+        }
     }
 
     /** The first and last line on screen, or null before the control is laid out. */
