@@ -60,7 +60,7 @@ final class ConsoleWindowFixture implements AutoCloseable {
     }
 
     <T> T fx(Callable<T> step) throws Exception {
-        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
+        return touchline.testing.FxStep.fx(step);
     }
 
     void fxRun(Runnable step) throws Exception {

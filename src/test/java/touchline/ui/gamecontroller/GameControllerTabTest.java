@@ -7,7 +7,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
-import org.testfx.util.WaitForAsyncUtils;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.transport.Channel;
@@ -19,11 +18,10 @@ import touchline.ui.ViewRegistry;
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
-import java.util.concurrent.Callable;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static touchline.testing.FxStep.fx;
 
 /**
  * The GameController tab on a headless stage against a real UDP receiver standing in for a
@@ -35,10 +33,6 @@ class GameControllerTabTest {
     @BeforeAll
     static void toolkit() throws Exception {
         FxToolkit.registerPrimaryStage();
-    }
-
-    private static <T> T fx(Callable<T> step) throws Exception {
-        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
     }
 
     private static byte[] receive(DatagramSocket robot) throws Exception {

@@ -8,18 +8,15 @@ import javafx.scene.input.KeyEvent;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
-import org.testfx.util.WaitForAsyncUtils;
 import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.game.ManualClock;
 import touchline.game.Penalty;
 import touchline.game.PlayState;
 
-import java.util.concurrent.Callable;
-import java.util.concurrent.TimeUnit;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static touchline.testing.FxStep.fx;
 
 /** The GameController tab on a headless stage: buttons and keys drive the game. */
 class GameControllerViewTest {
@@ -27,10 +24,6 @@ class GameControllerViewTest {
     @BeforeAll
     static void toolkit() throws Exception {
         FxToolkit.registerPrimaryStage();
-    }
-
-    private static <T> T fx(Callable<T> step) throws Exception {
-        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
     }
 
     private static void click(GameControllerView view, String id) throws Exception {

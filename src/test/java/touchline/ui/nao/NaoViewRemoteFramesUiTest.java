@@ -8,7 +8,6 @@ import javafx.scene.image.ImageView;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
-import org.testfx.util.WaitForAsyncUtils;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.transport.Origin;
@@ -17,10 +16,9 @@ import touchline.ui.FrameContext;
 import touchline.ui.LatencyProbe;
 
 import java.net.URI;
-import java.util.concurrent.Callable;
-import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static touchline.testing.FxStep.fx;
 
 /**
  * The NAO tab on a console that views a remote Touchline (headless, Monocle): a camera frame
@@ -29,10 +27,6 @@ import static org.junit.jupiter.api.Assertions.*;
  */
 @Tag("ui")
 class NaoViewRemoteFramesUiTest {
-
-    private static <T> T fx(Callable<T> step) throws Exception {
-        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
-    }
 
     @Test
     void drawsAFrameThatArrivedAsAnEnvelopeAndRefusesCommands() throws Exception {

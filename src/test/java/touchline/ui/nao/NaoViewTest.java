@@ -26,6 +26,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static touchline.testing.FxStep.fx;
 
 /**
  * The NAO tab headless (Monocle) against the in-test robot and camera stand-ins, connected
@@ -33,10 +34,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 @org.junit.jupiter.api.Tag("ui")
 class NaoViewTest {
-
-    private static <T> T fx(Callable<T> step) throws Exception {
-        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
-    }
 
     @SuppressWarnings("unchecked")
     @Test

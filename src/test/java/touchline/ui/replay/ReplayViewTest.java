@@ -37,6 +37,7 @@ import java.util.concurrent.TimeUnit;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static touchline.testing.FxStep.fx;
 
 /**
  * The Record &amp; replay view in the real console window (headless Monocle): the sample
@@ -357,10 +358,6 @@ class ReplayViewTest {
 
     private PlayerState state() throws Exception {
         return console.replay().orElseThrow().state();
-    }
-
-    private <T> T fx(Callable<T> step) throws Exception {
-        return WaitForAsyncUtils.asyncFx(step).get(30, TimeUnit.SECONDS);
     }
 
     /** Never shorter than {@link touchline.testing.Await#FLOOR_MILLIS}: a loaded machine must not fail a wait. */
