@@ -202,7 +202,6 @@ class KeyboardUiTest {
      * own key selected the oldest of the 200 or more rows it held, out of view.
      */
     @Test
-    @SuppressWarnings("unchecked")
     void downInAFollowingNetworkConsoleSelectsTheNewestRow() throws Exception {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(6, ui.port(), "--rate", "50").start()) {
