@@ -1,11 +1,8 @@
 package touchline.ui.views;
 
-import javafx.geometry.VPos;
-import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
-import javafx.scene.text.TextAlignment;
 import touchline.model.store.PlotStore;
-import touchline.ui.ResizableCanvas;
+import touchline.ui.RasterPane;
 
 import java.util.List;
 import java.util.Locale;
@@ -16,8 +13,11 @@ import java.util.Locale;
  * series is reduced to at most four points per pixel column before drawing
  * ({@link ColumnDecimation}) and drawn as one filled span per column ({@link ColumnSpans}), so a
  * burst of 10 000 points costs what the plot's width costs; a non-finite value breaks the line.
- * A canvas of our own rather than a chart library: under the software renderer a chart's axis
- * nodes, relayout and layers cost several times the whole frame budget.
+ * Pixels of our own ({@link PlotRaster}, labels as {@link LabelSprites}) shown as one image, rather
+ * than a chart library (under the software renderer a chart's axis nodes, relayout and layers
+ * cost several times the whole frame budget) or a canvas (which replays each of the frame's
+ * rectangles through JavaFX's rasteriser and blends itself onto the window: docs/benchmarks.md,
+ * "Twentieth session").
  */
 final class PlotCanvas {
 
@@ -35,8 +35,15 @@ final class PlotCanvas {
     private static final Color BACKGROUND = Color.gray(0.12);
     private static final Color GRID = Color.gray(0.26);
     private static final Color LABEL = Color.gray(0.75);
+    private static final Color AXIS = Color.gray(0.5);
+    private static final int BACKGROUND_ARGB = PlotRaster.opaque(BACKGROUND);
+    private static final int GRID_ARGB = PlotRaster.opaque(GRID);
+    private static final int AXIS_ARGB = PlotRaster.opaque(AXIS);
+    private static final int[] PALETTE_ARGB = java.util.Arrays.stream(PALETTE).mapToInt(PlotRaster::opaque).toArray();
 
-    private final ResizableCanvas canvas;
+    private final RasterPane canvas;
+    private final PlotRaster raster = new PlotRaster();
+    private final LabelSprites labels = new LabelSprites(javafx.scene.text.Font.font(11));
     private final ColumnDecimation decimation = new ColumnDecimation();
     private final ColumnSpans spans = new ColumnSpans();
     private double[] sx = new double[256];
@@ -46,10 +53,10 @@ final class PlotCanvas {
 
     /** @param resized called when the canvas changed size (the owner redraws) */
     PlotCanvas(Runnable resized) {
-        canvas = new ResizableCanvas(resized);
+        canvas = new RasterPane(resized);
     }
 
-    ResizableCanvas node() {
+    RasterPane node() {
         return canvas;
     }
 
@@ -63,10 +70,20 @@ final class PlotCanvas {
         return drawnPoints;
     }
 
+    /** The raster drawn last (for tests). */
+    PlotRaster raster() {
+        return raster;
+    }
+
+    /** The labels rendered so far (for tests: a label seen before is not rendered again). */
+    long labelsRendered() {
+        return labels.rendered();
+    }
+
     void empty() {
-        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
-        g.setFill(BACKGROUND);
-        g.fillRect(0, 0, canvas.getWidth(), canvas.getHeight());
+        raster.resize(canvas.getWidth(), canvas.getHeight(), canvas.scale());
+        raster.fill(BACKGROUND_ARGB);
+        show();
         points = 0;
         drawnPoints = 0;
     }
@@ -98,11 +115,10 @@ final class PlotCanvas {
             }
             total += d.count() - start;
         }
-        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
         double w = canvas.getWidth();
         double h = canvas.getHeight();
-        g.setFill(BACKGROUND);
-        g.fillRect(0, 0, w, h);
+        raster.resize(w, h, canvas.scale());
+        raster.fill(BACKGROUND_ARGB);
         double pw = Math.max(1, w - LEFT - RIGHT);
         double ph = Math.max(1, h - TOP - BOTTOM);
         if (!Double.isFinite(newest)) {
@@ -116,16 +132,16 @@ final class PlotCanvas {
         double pad = Math.max(1e-3, (maxY - minY) * 0.05);
         double y0 = minY - pad;
         double y1 = maxY + pad;
-        drawAxes(g, from, newest, y0, y1, pw, ph);
+        drawAxes(from, newest, y0, y1, pw, ph);
         int drawn = 0;
         for (int k = 0; k < starts.length; k++) {
             PlotStore.SeriesData d = series.get(k);
             decimation.run(d.x(), d.y(), starts[k], d.count(), from, newest, (int) Math.ceil(pw));
             drawn += decimation.size();
-            g.setFill(PALETTE[k % PALETTE.length]);
-            drawSeries(g, from, newest, y0, y1, pw, ph);
+            drawSeries(PALETTE_ARGB[k % PALETTE.length], from, newest, y0, y1, pw, ph);
         }
-        drawLegend(g, series, w);
+        drawLegend(series, w);
+        show();
         points = total;
         drawnPoints = drawn;
         return total;
@@ -150,7 +166,11 @@ final class PlotCanvas {
      * Draws the decimated series as one filled span per pixel column ({@link ColumnSpans}),
      * the line broken at each gap.
      */
-    private void drawSeries(GraphicsContext g, double x0, double x1, double y0, double y1, double pw, double ph) {
+    private void show() {
+        canvas.show(raster.pixels(), raster.width(), raster.height(), raster.scale());
+    }
+
+    private void drawSeries(int argb, double x0, double x1, double y0, double y1, double pw, double ph) {
         double[] xs = decimation.xs();
         double[] ys = decimation.ys();
         int n = decimation.size();
@@ -175,54 +195,45 @@ final class PlotCanvas {
         for (int c = 0; c < spans.columns(); c++) {
             if (spans.covered(c)) {
                 // half a pixel either side: a flat line is as thick as a sloped one
-                g.fillRect(LEFT + c, spans.lo(c) - LINE / 2, 1, spans.hi(c) - spans.lo(c) + LINE);
+                raster.fillColumn((int) LEFT + c, spans.lo(c) - LINE / 2, spans.hi(c) + LINE / 2, argb);
             }
         }
     }
 
-    private static void drawAxes(GraphicsContext g, double x0, double x1, double y0, double y1, double pw, double ph) {
-        g.setFont(javafx.scene.text.Font.font(11));
-        g.setTextBaseline(VPos.CENTER);
-        g.setTextAlign(TextAlignment.RIGHT);
+    private void drawAxes(double x0, double x1, double y0, double y1, double pw, double ph) {
+        double scale = raster.scale();
         double yStep = niceStep((y1 - y0) / Math.max(2, ph / 40));
         for (double v = Math.ceil(y0 / yStep) * yStep; v <= y1; v += yStep) {
             double y = Math.round(TOP + (y1 - v) / (y1 - y0) * ph);
-            g.setFill(GRID);
-            g.fillRect(LEFT, y, pw, 1); // a 1-pixel rectangle, not a stroke: no anti-aliased rasterising
-            g.setFill(LABEL);
-            g.fillText(label(v, yStep), LEFT - 6, y);
+            raster.fillRect(LEFT, y, pw, 1, GRID_ARGB); // right of the labels, left of the series
+            PlotRaster.Sprite s = labels.of(label(v, yStep), LABEL, scale);
+            raster.draw(s, LEFT - 6 - s.width() / scale, y - s.height() / scale / 2); // right-aligned, centred
         }
-        g.setTextBaseline(VPos.TOP);
-        g.setTextAlign(TextAlignment.CENTER);
         double xStep = niceStep((x1 - x0) / Math.max(2, pw / 70));
         for (double v = Math.ceil(x0 / xStep) * xStep; v <= x1; v += xStep) {
             double x = Math.round(LEFT + (v - x0) / (x1 - x0) * pw);
-            g.setFill(GRID);
-            g.fillRect(x, TOP, 1, ph);
-            g.setFill(LABEL);
-            g.fillText(label(v, xStep) + " s", x, TOP + ph + 4);
+            raster.fillRect(x, TOP, 1, ph, GRID_ARGB);
+            PlotRaster.Sprite s = labels.of(label(v, xStep) + " s", LABEL, scale);
+            raster.draw(s, x - s.width() / scale / 2, TOP + ph + 4); // centred under its line
         }
-        g.setFill(Color.gray(0.5));
-        g.fillRect(LEFT, TOP, 1, ph);
-        g.fillRect(LEFT, TOP + ph, pw, 1);
+        raster.fillRect(LEFT, TOP, 1, ph, AXIS_ARGB);
+        raster.fillRect(LEFT, TOP + ph, pw, 1, AXIS_ARGB);
     }
 
-    private static void drawLegend(GraphicsContext g, List<PlotStore.SeriesData> series, double w) {
-        g.setTextAlign(TextAlignment.LEFT);
-        g.setTextBaseline(VPos.CENTER);
+    private void drawLegend(List<PlotStore.SeriesData> series, double w) {
+        double scale = raster.scale();
         double x = LEFT;
         for (int k = 0; k < series.size(); k++) {
             String name = series.get(k).name();
             double width = 22 + name.length() * 6.5;
             if (x + width > w && x > LEFT) {
-                g.setFill(LABEL);
-                g.fillText("+" + (series.size() - k) + " more", x, TOP / 2);
+                PlotRaster.Sprite s = labels.of("+" + (series.size() - k) + " more", LABEL, scale);
+                raster.draw(s, x, TOP / 2 - s.height() / scale / 2);
                 break;
             }
-            g.setFill(PALETTE[k % PALETTE.length]);
-            g.fillRect(x, TOP / 2 - 1.5, 14, 3);
-            g.setFill(LABEL);
-            g.fillText(name, x + 18, TOP / 2);
+            raster.fillRect(x, TOP / 2 - 1.5, 14, 3, PALETTE_ARGB[k % PALETTE.length]);
+            PlotRaster.Sprite s = labels.of(name, LABEL, scale);
+            raster.draw(s, x + 18, TOP / 2 - s.height() / scale / 2);
             x += width + 10;
         }
     }

@@ -1,0 +1,66 @@
+package touchline.ui.views;
+
+import javafx.scene.SnapshotParameters;
+import javafx.scene.image.PixelFormat;
+import javafx.scene.image.WritableImage;
+import javafx.scene.paint.Color;
+import javafx.scene.text.Font;
+import javafx.scene.text.Text;
+import javafx.scene.transform.Transform;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * The plot's labels as small pictures ({@link PlotRaster.Sprite}), each rendered once by JavaFX
+ * (a {@link Text} snapshot: the same font and anti-aliasing as any label of the window) and kept
+ * for the next frames: a plot's labels are a few dozen strings ("−1", "0", "15 s", the series'
+ * names) that come back frame after frame, so rendering text costs nothing once they are known.
+ * The newest {@link #KEPT} are kept. FX thread.
+ */
+final class LabelSprites {
+
+    static final int KEPT = 128;
+
+    private record Key(String text, int argb, double scale) { }
+
+    private final Text text = new Text();
+    private final Map<Key, PlotRaster.Sprite> kept = new LinkedHashMap<>(64, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Key, PlotRaster.Sprite> eldest) {
+            return size() > KEPT;
+        }
+    };
+    private long rendered;
+
+    LabelSprites(Font font) {
+        text.setFont(font);
+    }
+
+    /** The label {@code s} in {@code colour} at {@code scale} device pixels per logical pixel. */
+    PlotRaster.Sprite of(String s, Color colour, double scale) {
+        return kept.computeIfAbsent(new Key(s, PlotRaster.opaque(colour), scale), k -> render(s, colour, scale));
+    }
+
+    /** How many labels were rendered (not found among the kept ones) so far. */
+    long rendered() {
+        return rendered;
+    }
+
+    private PlotRaster.Sprite render(String s, Color colour, double scale) {
+        rendered++;
+        text.setText(s);
+        text.setFill(colour);
+        SnapshotParameters p = new SnapshotParameters();
+        p.setFill(Color.TRANSPARENT);
+        if (scale != 1) {
+            p.setTransform(Transform.scale(scale, scale));
+        }
+        WritableImage image = text.snapshot(p, null);
+        int w = (int) image.getWidth();
+        int h = (int) image.getHeight();
+        int[] pixels = new int[w * h];
+        image.getPixelReader().getPixels(0, 0, w, h, PixelFormat.getIntArgbPreInstance(), pixels, 0, w);
+        return new PlotRaster.Sprite(w, h, pixels);
+    }
+}

@@ -1,0 +1,93 @@
+package touchline.ui.views;
+
+import javafx.scene.Scene;
+import javafx.scene.layout.StackPane;
+import javafx.scene.paint.Color;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.testfx.api.FxToolkit;
+import touchline.model.store.PlotStore;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static touchline.testing.FxStep.fx;
+
+/** The plot drawn into its own pixels and shown as one image, its labels rendered once. */
+class PlotCanvasTest {
+
+    @BeforeAll
+    static void toolkit() throws Exception {
+        FxToolkit.registerPrimaryStage();
+    }
+
+    private static PlotCanvas plot() {
+        PlotCanvas plot = new PlotCanvas(() -> { });
+        StackPane root = new StackPane(plot.node());
+        new Scene(root, 400, 300);
+        root.applyCss();
+        root.layout();
+        return plot;
+    }
+
+    /** A flat series at y = 1 and a ramp from -1 to 1 over ten seconds. */
+    private static List<PlotStore.SeriesData> series() {
+        int n = 101;
+        double[] x = new double[n];
+        double[] flat = new double[n];
+        double[] ramp = new double[n];
+        for (int i = 0; i < n; i++) {
+            x[i] = i * 0.1;
+            flat[i] = 1;
+            ramp[i] = -1 + 2 * i / (double) (n - 1);
+        }
+        return List.of(new PlotStore.SeriesData("flat", x, flat, n), new PlotStore.SeriesData("ramp", x, ramp, n));
+    }
+
+    @Test
+    void theSeriesAreDrawnInTheirColoursAndShownOnThePane() throws Exception {
+        fx(() -> {
+            PlotCanvas plot = plot();
+            assertEquals(202, plot.draw(series()));
+            PlotRaster r = plot.raster();
+            int flat = PlotRaster.opaque(PlotCanvas.PALETTE[0]);
+            // the flat series is the top of the data: y = 1 sits 5 % of the range below the plot's top edge
+            int column = r.width() / 2;
+            boolean found = false;
+            for (int y = 0; y < r.height() && !found; y++) {
+                found = r.pixel(column, y) == flat;
+            }
+            assertTrue(found, "the first series' colour in the middle column");
+            assertEquals(1, plot.node().shown());
+            var image = plot.node().image();
+            assertEquals(r.width(), (int) image.getWidth());
+            for (int y = 0; y < r.height(); y += 7) {
+                assertEquals(r.pixel(column, y), image.getPixelReader().getArgb(column, y), "the pane shows the raster, row " + y);
+            }
+            return null;
+        });
+    }
+
+    @Test
+    void labelsAreRenderedOnceAndDrawnLeftOfTheAxis() throws Exception {
+        fx(() -> {
+            PlotCanvas plot = plot();
+            plot.draw(series());
+            long first = plot.labelsRendered();
+            assertTrue(first >= 5, "axis labels and legend names: " + first);
+            plot.draw(series());
+            assertEquals(first, plot.labelsRendered(), "the same labels again: none rendered anew");
+            PlotRaster r = plot.raster();
+            int background = PlotRaster.opaque(Color.gray(0.12));
+            int lit = 0;
+            for (int y = 0; y < r.height(); y++) {
+                for (int x = 0; x < 50; x++) { // left of the axis at x = 58: only the y labels are there
+                    lit += r.pixel(x, y) != background ? 1 : 0;
+                }
+            }
+            assertTrue(lit > 20, "the y labels' glyphs left of the axis: " + lit + " pixels");
+            return null;
+        });
+    }
+}
