@@ -6,7 +6,7 @@ import javafx.scene.image.WritableImage;
 
 /**
  * A pane that shows pixels its owner draws itself (premultiplied ARGB), as one image the size of
- * the pane in device pixels: the plot's way around the canvas ({@code views.PlotRaster}).
+ * the pane in device pixels: the plot's way around the canvas ({@code views.Raster}).
  */
 public final class RasterPane extends DrawnPane {
 

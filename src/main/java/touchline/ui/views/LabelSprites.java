@@ -12,11 +12,12 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
- * The plot's labels as small pictures ({@link PlotRaster.Sprite}), each rendered once by JavaFX
- * (a {@link Text} snapshot: the same font and anti-aliasing as any label of the window) and kept
- * for the next frames: a plot's labels are a few dozen strings ("−1", "0", "15 s", the series'
- * names) that come back frame after frame, so rendering text costs nothing once they are known.
- * The newest {@link #KEPT} are kept. FX thread.
+ * The labels of a view drawn into a {@link Raster} (the plot's axes and legend, the region
+ * overlay's legend) as small pictures ({@link Raster.Sprite}), each rendered once by JavaFX (a
+ * {@link Text} snapshot: the same font and anti-aliasing as any label of the window) and kept for
+ * the next frames: they are a few dozen strings ("-1", "0", "15 s", the series' names) that come
+ * back frame after frame, so text costs nothing once they are known. The {@link #KEPT} used most
+ * recently are kept. FX thread.
  */
 final class LabelSprites {
 
@@ -25,9 +26,9 @@ final class LabelSprites {
     private record Key(String text, int argb, double scale) { }
 
     private final Text text = new Text();
-    private final Map<Key, PlotRaster.Sprite> kept = new LinkedHashMap<>(64, 0.75f, true) {
+    private final Map<Key, Raster.Sprite> kept = new LinkedHashMap<>(64, 0.75f, true) {
         @Override
-        protected boolean removeEldestEntry(Map.Entry<Key, PlotRaster.Sprite> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<Key, Raster.Sprite> eldest) {
             return size() > KEPT;
         }
     };
@@ -38,8 +39,8 @@ final class LabelSprites {
     }
 
     /** The label {@code s} in {@code colour} at {@code scale} device pixels per logical pixel. */
-    PlotRaster.Sprite of(String s, Color colour, double scale) {
-        return kept.computeIfAbsent(new Key(s, PlotRaster.opaque(colour), scale), k -> render(s, colour, scale));
+    Raster.Sprite of(String s, Color colour, double scale) {
+        return kept.computeIfAbsent(new Key(s, Raster.opaque(colour), scale), k -> render(s, colour, scale));
     }
 
     /** How many labels were rendered (not found among the kept ones) so far. */
@@ -47,7 +48,7 @@ final class LabelSprites {
         return rendered;
     }
 
-    private PlotRaster.Sprite render(String s, Color colour, double scale) {
+    private Raster.Sprite render(String s, Color colour, double scale) {
         rendered++;
         text.setText(s);
         text.setFill(colour);
@@ -61,6 +62,6 @@ final class LabelSprites {
         int h = (int) image.getHeight();
         int[] pixels = new int[w * h];
         image.getPixelReader().getPixels(0, 0, w, h, PixelFormat.getIntArgbPreInstance(), pixels, 0, w);
-        return new PlotRaster.Sprite(w, h, pixels);
+        return new Raster.Sprite(w, h, pixels);
     }
 }

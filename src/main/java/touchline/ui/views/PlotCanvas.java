@@ -13,7 +13,7 @@ import java.util.Locale;
  * series is reduced to at most four points per pixel column before drawing
  * ({@link ColumnDecimation}) and drawn as one filled span per column ({@link ColumnSpans}), so a
  * burst of 10 000 points costs what the plot's width costs; a non-finite value breaks the line.
- * Pixels of our own ({@link PlotRaster}, labels as {@link LabelSprites}) shown as one image, rather
+ * Pixels of our own ({@link Raster}, labels as {@link LabelSprites}) shown as one image, rather
  * than a chart library (under the software renderer a chart's axis nodes, relayout and layers
  * cost several times the whole frame budget) or a canvas (which replays each of the frame's
  * rectangles through JavaFX's rasteriser and blends itself onto the window: docs/benchmarks.md,
@@ -36,13 +36,13 @@ final class PlotCanvas {
     private static final Color GRID = Color.gray(0.26);
     private static final Color LABEL = Color.gray(0.75);
     private static final Color AXIS = Color.gray(0.5);
-    private static final int BACKGROUND_ARGB = PlotRaster.opaque(BACKGROUND);
-    private static final int GRID_ARGB = PlotRaster.opaque(GRID);
-    private static final int AXIS_ARGB = PlotRaster.opaque(AXIS);
-    private static final int[] PALETTE_ARGB = java.util.Arrays.stream(PALETTE).mapToInt(PlotRaster::opaque).toArray();
+    private static final int BACKGROUND_ARGB = Raster.opaque(BACKGROUND);
+    private static final int GRID_ARGB = Raster.opaque(GRID);
+    private static final int AXIS_ARGB = Raster.opaque(AXIS);
+    private static final int[] PALETTE_ARGB = java.util.Arrays.stream(PALETTE).mapToInt(Raster::opaque).toArray();
 
     private final RasterPane canvas;
-    private final PlotRaster raster = new PlotRaster();
+    private final Raster raster = new Raster();
     private final LabelSprites labels = new LabelSprites(javafx.scene.text.Font.font(11));
     private final ColumnDecimation decimation = new ColumnDecimation();
     private final ColumnSpans spans = new ColumnSpans();
@@ -71,7 +71,7 @@ final class PlotCanvas {
     }
 
     /** The raster drawn last (for tests). */
-    PlotRaster raster() {
+    Raster raster() {
         return raster;
     }
 
@@ -206,14 +206,14 @@ final class PlotCanvas {
         for (double v = Math.ceil(y0 / yStep) * yStep; v <= y1; v += yStep) {
             double y = Math.round(TOP + (y1 - v) / (y1 - y0) * ph);
             raster.fillRect(LEFT, y, pw, 1, GRID_ARGB); // right of the labels, left of the series
-            PlotRaster.Sprite s = labels.of(label(v, yStep), LABEL, scale);
+            Raster.Sprite s = labels.of(label(v, yStep), LABEL, scale);
             raster.draw(s, LEFT - 6 - s.width() / scale, y - s.height() / scale / 2); // right-aligned, centred
         }
         double xStep = niceStep((x1 - x0) / Math.max(2, pw / 70));
         for (double v = Math.ceil(x0 / xStep) * xStep; v <= x1; v += xStep) {
             double x = Math.round(LEFT + (v - x0) / (x1 - x0) * pw);
             raster.fillRect(x, TOP, 1, ph, GRID_ARGB);
-            PlotRaster.Sprite s = labels.of(label(v, xStep) + " s", LABEL, scale);
+            Raster.Sprite s = labels.of(label(v, xStep) + " s", LABEL, scale);
             raster.draw(s, x - s.width() / scale / 2, TOP + ph + 4); // centred under its line
         }
         raster.fillRect(LEFT, TOP, 1, ph, AXIS_ARGB);
@@ -227,12 +227,12 @@ final class PlotCanvas {
             String name = series.get(k).name();
             double width = 22 + name.length() * 6.5;
             if (x + width > w && x > LEFT) {
-                PlotRaster.Sprite s = labels.of("+" + (series.size() - k) + " more", LABEL, scale);
+                Raster.Sprite s = labels.of("+" + (series.size() - k) + " more", LABEL, scale);
                 raster.draw(s, x, TOP / 2 - s.height() / scale / 2);
                 break;
             }
             raster.fillRect(x, TOP / 2 - 1.5, 14, 3, PALETTE_ARGB[k % PALETTE.length]);
-            PlotRaster.Sprite s = labels.of(name, LABEL, scale);
+            Raster.Sprite s = labels.of(name, LABEL, scale);
             raster.draw(s, x + 18, TOP / 2 - s.height() / scale / 2);
             x += width + 10;
         }

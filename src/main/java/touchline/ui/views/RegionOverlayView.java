@@ -1,10 +1,9 @@
 package touchline.ui.views;
 
-import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
 import touchline.model.store.Latest;
 import touchline.proto.Fumanoid;
-import touchline.ui.ResizableCanvas;
+import touchline.ui.RasterPane;
 import touchline.ui.SourcedView;
 import touchline.ui.ViewContext;
 import touchline.ui.ViewSource;
@@ -16,7 +15,8 @@ import java.util.TreeSet;
  * The HaViMo2 camera's view: the whole frame as a blue rectangle, each region-growing blob as
  * a red rectangle filled in its colour class, the gridding result as translucent cells, and a
  * legend. Regions reaching outside the frame are clipped to it and drawn dashed; the status
- * line counts them.
+ * line counts them. Drawn into pixels of its own ({@link Raster}), ten times a second with the
+ * demo robots.
  */
 public final class RegionOverlayView extends SourcedView {
 
@@ -34,7 +34,16 @@ public final class RegionOverlayView extends SourcedView {
             GRID_CELLS[c] = BACKGROUND.interpolate(ColorClasses.color(c), GRID_OPACITY);
         }
     }
-    private final ResizableCanvas canvas = new ResizableCanvas(() -> dirty = true);
+    private static final int BACKGROUND_ARGB = Raster.opaque(BACKGROUND);
+    private static final int GRID_LINE_ARGB = Raster.opaque(Color.gray(0.6));
+    private static final double GRID_LINE_OPACITY = 0.25;
+    private static final double REGION_OPACITY = 0.35;
+    private static final int REGION_LINE_ARGB = Raster.opaque(Color.RED);
+    private static final int FRAME_LINE_ARGB = Raster.opaque(Color.DODGERBLUE);
+    private static final Color LEGEND_TEXT = Color.LIGHTGRAY;
+    private final RasterPane canvas = new RasterPane(() -> dirty = true);
+    private final Raster raster = new Raster();
+    private final LabelSprites labels = new LabelSprites(javafx.scene.text.Font.getDefault());
 
     public RegionOverlayView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.REGION_GROWING_VALUE, Fumanoid.DebugKind.GRID_VALUE), source);
@@ -44,8 +53,18 @@ public final class RegionOverlayView extends SourcedView {
 
     @Override
     protected void empty() {
-        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
-        g.clearRect(0, 0, canvas.getWidth(), canvas.getHeight());
+        raster.resize(canvas.getWidth(), canvas.getHeight(), canvas.scale());
+        raster.fill(BACKGROUND_ARGB);
+        show();
+    }
+
+    private void show() {
+        canvas.show(raster.pixels(), raster.width(), raster.height(), raster.scale());
+    }
+
+    /** The pixels drawn last (for tests). */
+    Raster raster() {
+        return raster;
     }
 
     @Override
@@ -68,11 +87,10 @@ public final class RegionOverlayView extends SourcedView {
             fw = grid.getFrameWidth();
             fh = grid.getFrameHeight();
         }
-        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
         double w = canvas.getWidth();
         double h = canvas.getHeight();
-        g.setFill(BACKGROUND);
-        g.fillRect(0, 0, w, h);
+        raster.resize(w, h, canvas.scale());
+        raster.fill(BACKGROUND_ARGB);
         double legend = 24;
         double margin = 24;
         double scale = Math.max(0.01, Math.min((w - 2 * margin) / fw, (h - 2 * margin - legend) / fh));
@@ -81,7 +99,7 @@ public final class RegionOverlayView extends SourcedView {
         Set<Integer> classes = new TreeSet<>();
         String gridNote = "";
         if (grid != null) {
-            gridNote = drawGrid(g, grid, fw, fh, ox, oy, scale, classes);
+            gridNote = drawGrid(grid, fw, fh, ox, oy, scale, classes);
         }
         int shown = 0;
         int clipped = 0;
@@ -102,18 +120,15 @@ public final class RegionOverlayView extends SourcedView {
                 }
                 boolean wasClipped = cx1 != x1 || cy1 != y1 || cx2 != x2 || cy2 != y2;
                 classes.add(r.getColorClass());
-                Color c = ColorClasses.color(r.getColorClass());
-                g.setFill(c.deriveColor(0, 1, 1, 0.35));
-                g.fillRect(ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale);
+                double rx = ox + cx1 * scale;
+                double ry = oy + cy1 * scale;
+                double rw = (cx2 - cx1) * scale;
+                double rh = (cy2 - cy1) * scale;
+                raster.blendRect(rx, ry, rw, rh, Raster.opaque(ColorClasses.color(r.getColorClass())), REGION_OPACITY);
                 if (wasClipped) {
-                    g.setStroke(Color.RED);
-                    g.setLineWidth(2);
-                    g.setLineDashes(6, 4);
-                    g.strokeRect(ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale);
-                    g.setLineDashes(null);
+                    raster.dashedOutline(rx, ry, rw, rh, 2, 6, 4, REGION_LINE_ARGB);
                 } else {
-                    g.setFill(Color.RED);
-                    CrispLines.outline(g, ox + cx1 * scale, oy + cy1 * scale, (cx2 - cx1) * scale, (cy2 - cy1) * scale, 2);
+                    raster.outline(rx, ry, rw, rh, 2, REGION_LINE_ARGB);
                 }
                 if (wasClipped) {
                     clipped++;
@@ -121,9 +136,9 @@ public final class RegionOverlayView extends SourcedView {
                 shown++;
             }
         }
-        g.setFill(Color.DODGERBLUE);
-        CrispLines.outline(g, ox - 1, oy - 1, fw * scale + 2, fh * scale + 2, 2);
-        drawLegend(g, classes, h - legend + 4, w);
+        raster.outline(ox - 1, oy - 1, fw * scale + 2, fh * scale + 2, 2, FRAME_LINE_ARGB);
+        drawLegend(classes, h - legend + 4, w);
+        show();
         StringBuilder s = new StringBuilder("frame " + fw + "×" + fh + " · " + shown + " regions");
         if (clipped > 0) {
             s.append(" · ").append(clipped).append(" clipped to the frame (dashed)");
@@ -157,7 +172,7 @@ public final class RegionOverlayView extends SourcedView {
         return best != null && type.isInstance(best.data()) ? type.cast(best.data()) : null;
     }
 
-    private static String drawGrid(GraphicsContext g, Fumanoid.Grid grid, int fw, int fh, double ox, double oy,
+    private String drawGrid(Fumanoid.Grid grid, int fw, int fh, double ox, double oy,
                                    double scale, Set<Integer> classes) {
         int cols = grid.getColumns();
         int rows = grid.getRows();
@@ -174,41 +189,39 @@ public final class RegionOverlayView extends SourcedView {
                 continue;
             }
             classes.add(c);
-            g.setFill(gridCell(c));
-            g.fillRect(ox + (i % cols) * cw, oy + (i / cols) * ch, cw, ch);
+            raster.fillRect(ox + (i % cols) * cw, oy + (i / cols) * ch, cw, ch, Raster.opaque(gridCell(c)));
         }
-        g.setFill(Color.gray(0.6, 0.25));
         for (int c = 1; c < cols; c++) {
-            CrispLines.vertical(g, ox + c * cw, oy, oy + fh * scale);
+            raster.blendRect(Math.floor(ox + c * cw), Math.round(oy), 1, Math.round(fh * scale), GRID_LINE_ARGB, GRID_LINE_OPACITY);
         }
         for (int r = 1; r < rows; r++) {
-            CrispLines.horizontal(g, ox, ox + fw * scale, oy + r * ch);
+            raster.blendRect(Math.round(ox), Math.floor(oy + r * ch), Math.round(fw * scale), 1, GRID_LINE_ARGB, GRID_LINE_OPACITY);
         }
         return n < cols * rows ? " (" + (cols * rows - n) + " cells missing)" : "";
     }
 
-    private static void drawLegend(GraphicsContext g, Set<Integer> classes, double y, double w) {
+    private void drawLegend(Set<Integer> classes, double y, double w) {
         double x = 8;
-        g.setLineWidth(2);
-        g.setStroke(Color.DODGERBLUE);
-        g.strokeRect(x, y, 12, 12);
-        g.setFill(Color.LIGHTGRAY);
-        g.fillText("frame", x + 16, y + 11);
+        raster.outline(x - 1, y - 1, 14, 14, 2, FRAME_LINE_ARGB);
+        legendText("frame", x + 16, y);
         x += 60;
-        g.setStroke(Color.RED);
-        g.strokeRect(x, y, 12, 12);
-        g.fillText("region", x + 16, y + 11);
+        raster.outline(x - 1, y - 1, 14, 14, 2, REGION_LINE_ARGB);
+        legendText("region", x + 16, y);
         x += 64;
         for (int c : classes) {
             if (x > w - 60) {
                 break;
             }
-            g.setFill(ColorClasses.color(c));
-            g.fillRect(x, y, 12, 12);
-            g.setFill(Color.LIGHTGRAY);
+            raster.fillRect(x, y, 12, 12, Raster.opaque(ColorClasses.color(c)));
             String name = ColorClasses.name(c);
-            g.fillText(name, x + 16, y + 11);
+            legendText(name, x + 16, y);
             x += 24 + name.length() * 6.5;
         }
+    }
+
+    /** A legend entry's name right of its 12-pixel square at ({@code x}, {@code y}), centred on it. */
+    private void legendText(String name, double x, double y) {
+        Raster.Sprite s = labels.of(name, LEGEND_TEXT, raster.scale());
+        raster.draw(s, x, y + 6 - s.height() / raster.scale() / 2);
     }
 }

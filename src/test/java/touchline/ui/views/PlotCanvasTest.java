@@ -50,8 +50,8 @@ class PlotCanvasTest {
         fx(() -> {
             PlotCanvas plot = plot();
             assertEquals(202, plot.draw(series()));
-            PlotRaster r = plot.raster();
-            int flat = PlotRaster.opaque(PlotCanvas.PALETTE[0]);
+            Raster r = plot.raster();
+            int flat = Raster.opaque(PlotCanvas.PALETTE[0]);
             // the flat series is the top of the data: y = 1 sits 5 % of the range below the plot's top edge
             int column = r.width() / 2;
             boolean found = false;
@@ -78,8 +78,8 @@ class PlotCanvasTest {
             assertTrue(first >= 5, "axis labels and legend names: " + first);
             plot.draw(series());
             assertEquals(first, plot.labelsRendered(), "the same labels again: none rendered anew");
-            PlotRaster r = plot.raster();
-            int background = PlotRaster.opaque(Color.gray(0.12));
+            Raster r = plot.raster();
+            int background = Raster.opaque(Color.gray(0.12));
             int lit = 0;
             for (int y = 0; y < r.height(); y++) {
                 for (int x = 0; x < 50; x++) { // left of the axis at x = 58: only the y labels are there

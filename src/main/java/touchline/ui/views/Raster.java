@@ -3,15 +3,16 @@ package touchline.ui.views;
 import java.util.Arrays;
 
 /**
- * The plot's own pixels (premultiplied ARGB, one int each, row by row), drawn in Java and shown
- * as one image: under JavaFX's software renderer a canvas replays every one of a frame's
- * ~1 700 rectangles (a span per pixel column and series) through its rasteriser, fills its
- * background and blends itself onto the window, 30 times a second (docs/benchmarks.md,
- * "Twentieth session"). Coordinates are the view's (logical) pixels; {@link #scale()} device
- * pixels each on a high-density screen. Every colour drawn is opaque except a label's
- * anti-aliased edge. No scene graph: testable without a window.
+ * A view's own pixels (premultiplied ARGB, one int each, row by row), drawn in Java and shown as
+ * one image ({@link touchline.ui.RasterPane}) by the plot and the region overlay: under JavaFX's
+ * software renderer a canvas replays every one of a frame's rectangles through its rasteriser
+ * (the plot: ~1 700, a span per pixel column and series), fills its background and blends itself
+ * onto the window, up to 30 times a second (docs/benchmarks.md, "Twentieth session").
+ * Coordinates are the view's (logical) pixels; {@link #scale()} device pixels each on a
+ * high-density screen. What lies under a drawing is opaque; a label's edge or a translucent fill
+ * is blended over it. No scene graph: testable without a window.
  */
-final class PlotRaster {
+final class Raster {
 
     /** A small picture drawn over the pixels, e.g. a label: premultiplied ARGB, row by row. */
     record Sprite(int width, int height, int[] pixels) { }
@@ -67,6 +68,56 @@ final class PlotRaster {
         int y1 = clamp(Math.round((y + h) * scale), height);
         for (int row = y0; row < y1; row++) {
             Arrays.fill(pixels, row * width + x0, row * width + x1, argb);
+        }
+    }
+
+    /** Blends {@code argb} at {@code opacity} (0..1) over the device pixels whose centres lie inside the rectangle. */
+    void blendRect(double x, double y, double w, double h, int argb, double opacity) {
+        int alpha = (int) Math.round(Math.max(0, Math.min(1, opacity)) * 255);
+        if (alpha >= 255) {
+            fillRect(x, y, w, h, argb);
+            return;
+        }
+        int x0 = clamp(Math.round(x * scale), width);
+        int x1 = clamp(Math.round((x + w) * scale), width);
+        int y0 = clamp(Math.round(y * scale), height);
+        int y1 = clamp(Math.round((y + h) * scale), height);
+        for (int row = y0; row < y1; row++) {
+            for (int i = row * width + x0; i < row * width + x1; i++) {
+                pixels[i] = mix(argb, pixels[i], alpha);
+            }
+        }
+    }
+
+    /** The outline of a rectangle, {@code thickness} logical pixels thick, inside x, y, w, h (edges rounded to pixels). */
+    void outline(double x, double y, double w, double h, double thickness, int argb) {
+        double x0 = Math.round(x);
+        double y0 = Math.round(y);
+        double x1 = Math.round(x + w);
+        double y1 = Math.round(y + h);
+        double t = Math.max(1, Math.round(thickness));
+        fillRect(x0, y0, x1 - x0, t, argb);
+        fillRect(x0, y1 - t, x1 - x0, t, argb);
+        fillRect(x0, y0 + t, t, Math.max(0, y1 - y0 - 2 * t), argb);
+        fillRect(x1 - t, y0 + t, t, Math.max(0, y1 - y0 - 2 * t), argb);
+    }
+
+    /** The same outline dashed: {@code dash} logical pixels drawn, {@code gap} left, along each edge. */
+    void dashedOutline(double x, double y, double w, double h, double thickness, double dash, double gap, int argb) {
+        double x0 = Math.round(x);
+        double y0 = Math.round(y);
+        double x1 = Math.round(x + w);
+        double y1 = Math.round(y + h);
+        double t = Math.max(1, Math.round(thickness));
+        for (double at = x0; at < x1; at += dash + gap) {
+            double len = Math.min(dash, x1 - at);
+            fillRect(at, y0, len, t, argb);
+            fillRect(at, y1 - t, len, t, argb);
+        }
+        for (double at = y0; at < y1; at += dash + gap) {
+            double len = Math.min(dash, y1 - at);
+            fillRect(x0, at, t, len, argb);
+            fillRect(x1 - t, at, t, len, argb);
         }
     }
 
