@@ -1,17 +1,30 @@
 package touchline.ui;
 
 import javafx.scene.image.ImageView;
+import javafx.scene.image.PixelBuffer;
 import javafx.scene.image.PixelFormat;
 import javafx.scene.image.WritableImage;
 
+import java.nio.IntBuffer;
+
 /**
  * A pane that shows pixels its owner draws itself (premultiplied ARGB), as one image the size of
- * the pane in device pixels: the plot's way around the canvas ({@code views.Raster}).
+ * the pane in device pixels: the way around the canvas for the plot and the region overlay
+ * ({@code views.Raster}). Two buffers: the owner draws into the one not on screen
+ * ({@link #back}) and {@link #showBack} puts it on screen, so JavaFX reads the pixels where they
+ * were drawn (no copy on the FX thread) and never while they are drawn (the render thread may
+ * still be drawing the last frame while the next one is made).
  */
 public final class RasterPane extends DrawnPane {
 
     private final ImageView view = new ImageView();
-    private WritableImage image;
+    private final int[][] buffers = new int[2][];
+    @SuppressWarnings("unchecked")
+    private final PixelBuffer<IntBuffer>[] pixelBuffers = new PixelBuffer[2];
+    private final WritableImage[] images = new WritableImage[2];
+    private int back;
+    private int width;
+    private int height;
     private long shown;
 
     public RasterPane(Runnable onResize) {
@@ -25,17 +38,29 @@ public final class RasterPane extends DrawnPane {
     }
 
     /**
-     * Shows {@code width} × {@code height} device pixels (row by row, {@code width} a row), drawn at
-     * {@code scale} device pixels per logical pixel. FX thread.
+     * The pixels not on screen, {@code width} × {@code height} device pixels row by row, to draw the
+     * next picture into (new ones, blank, when the size changed). FX thread.
      */
-    public void show(int[] pixels, int width, int height, double scale) {
-        if (image == null || (int) image.getWidth() != width || (int) image.getHeight() != height) {
-            image = new WritableImage(width, height);
-            view.setImage(image);
+    public int[] back(int width, int height) {
+        if (width != this.width || height != this.height) {
+            this.width = width;
+            this.height = height;
+            for (int i = 0; i < 2; i++) {
+                buffers[i] = new int[width * height];
+                pixelBuffers[i] = new PixelBuffer<>(width, height, IntBuffer.wrap(buffers[i]), PixelFormat.getIntArgbPreInstance());
+                images[i] = new WritableImage(pixelBuffers[i]);
+            }
         }
-        image.getPixelWriter().setPixels(0, 0, width, height, PixelFormat.getIntArgbPreInstance(), pixels, 0, width);
+        return buffers[back];
+    }
+
+    /** Puts the pixels drawn into {@link #back} on screen, drawn at {@code scale} device pixels per logical pixel. FX thread. */
+    public void showBack(double scale) {
+        pixelBuffers[back].updateBuffer(b -> null); // all of it changed
+        view.setImage(images[back]);
         view.setFitWidth(scale == 1 ? 0 : width / scale);
         view.setFitHeight(scale == 1 ? 0 : height / scale);
+        back ^= 1;
         shown++;
     }
 
@@ -44,8 +69,8 @@ public final class RasterPane extends DrawnPane {
         return shown;
     }
 
-    /** The image on screen (for tests), null before the first {@link #show}. */
+    /** The image on screen (for tests), null before the first {@link #showBack}. */
     public WritableImage image() {
-        return image;
+        return shown == 0 ? null : images[back ^ 1];
     }
 }

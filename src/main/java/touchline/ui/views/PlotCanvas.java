@@ -82,6 +82,7 @@ final class PlotCanvas {
 
     void empty() {
         raster.resize(canvas.getWidth(), canvas.getHeight(), canvas.scale());
+        raster.drawInto(canvas.back(raster.width(), raster.height()));
         raster.fill(BACKGROUND_ARGB);
         show();
         points = 0;
@@ -118,6 +119,7 @@ final class PlotCanvas {
         double w = canvas.getWidth();
         double h = canvas.getHeight();
         raster.resize(w, h, canvas.scale());
+        raster.drawInto(canvas.back(raster.width(), raster.height()));
         raster.fill(BACKGROUND_ARGB);
         double pw = Math.max(1, w - LEFT - RIGHT);
         double ph = Math.max(1, h - TOP - BOTTOM);
@@ -167,7 +169,7 @@ final class PlotCanvas {
      * the line broken at each gap.
      */
     private void show() {
-        canvas.show(raster.pixels(), raster.width(), raster.height(), raster.scale());
+        canvas.showBack(raster.scale());
     }
 
     private void drawSeries(int argb, double x0, double x1, double y0, double y1, double pw, double ph) {

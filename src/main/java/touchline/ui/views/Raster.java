@@ -32,6 +32,17 @@ final class Raster {
         }
     }
 
+    /**
+     * Draws from now on into {@code target} (at least {@link #width()} × {@link #height()} long),
+     * e.g. the pixels of a {@link touchline.ui.RasterPane} not on screen.
+     */
+    void drawInto(int[] target) {
+        if (target.length < width * height) {
+            throw new IllegalArgumentException(target.length + " pixels for " + width + " x " + height);
+        }
+        pixels = target;
+    }
+
     /** Width in device pixels. */
     int width() {
         return width;

@@ -54,12 +54,13 @@ public final class RegionOverlayView extends SourcedView {
     @Override
     protected void empty() {
         raster.resize(canvas.getWidth(), canvas.getHeight(), canvas.scale());
+        raster.drawInto(canvas.back(raster.width(), raster.height()));
         raster.fill(BACKGROUND_ARGB);
         show();
     }
 
     private void show() {
-        canvas.show(raster.pixels(), raster.width(), raster.height(), raster.scale());
+        canvas.showBack(raster.scale());
     }
 
     /** The pixels drawn last (for tests). */
@@ -90,6 +91,7 @@ public final class RegionOverlayView extends SourcedView {
         double w = canvas.getWidth();
         double h = canvas.getHeight();
         raster.resize(w, h, canvas.scale());
+        raster.drawInto(canvas.back(raster.width(), raster.height()));
         raster.fill(BACKGROUND_ARGB);
         double legend = 24;
         double margin = 24;
