@@ -40,10 +40,12 @@ final class ConsoleStartBench {
         Path robot = new touchline.cli.RobotSideBinaries().of("touchline-robot");
         List<Process> team = new ArrayList<>();
         try {
+            java.nio.file.Path logs = java.nio.file.Files.createTempDirectory("touchline-start-bench");
+            System.out.println("the robots' output: " + logs);
             for (int id = 1; id <= 3; id++) {
                 team.add(new ProcessBuilder(robot.toString(), "--id", String.valueOf(id),
                         "--team", "13", "--console", "127.0.0.1:" + port, "--port", String.valueOf(24000 + id * 10))
-                        .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start());
+                        .redirectErrorStream(true).redirectOutput(logs.resolve("robot-" + id + ".log").toFile()).start());
             }
             List<String> command = List.of("./touchline", "console", "--port", String.valueOf(port));
             // one start of each first, unmeasured: it trains the archive when the build is new
@@ -117,7 +119,11 @@ final class ConsoleStartBench {
         reader.start();
         try {
             double window = StartBenchCommand.windowAfter(p, t0, String.join(" ", command));
-            return new double[] {window, data.get(60, TimeUnit.SECONDS)};
+            try {
+                return new double[] {window, data.get(60, TimeUnit.SECONDS)};
+            } catch (java.util.concurrent.TimeoutException e) {
+                throw new IOException("no robot's data within 60 s of the start, the window shown after " + window + " s", e);
+            }
         } catch (IOException e) {
             throw new IOException(e.getMessage() + (cds ? "" : " (TOUCHLINE_CDS=0)") + "; its output:\n"
                     + String.join("\n", output), e);
