@@ -81,10 +81,8 @@ final class PlotCanvas {
     }
 
     void empty() {
-        raster.resize(canvas.getWidth(), canvas.getHeight(), canvas.scale());
-        raster.drawInto(canvas.back(raster.width(), raster.height()));
-        raster.fill(BACKGROUND_ARGB);
-        show();
+        raster.begin(canvas, BACKGROUND_ARGB);
+        raster.show(canvas);
         points = 0;
         drawnPoints = 0;
     }
@@ -118,9 +116,7 @@ final class PlotCanvas {
         }
         double w = canvas.getWidth();
         double h = canvas.getHeight();
-        raster.resize(w, h, canvas.scale());
-        raster.drawInto(canvas.back(raster.width(), raster.height()));
-        raster.fill(BACKGROUND_ARGB);
+        raster.begin(canvas, BACKGROUND_ARGB);
         double pw = Math.max(1, w - LEFT - RIGHT);
         double ph = Math.max(1, h - TOP - BOTTOM);
         if (!Double.isFinite(newest)) {
@@ -143,7 +139,7 @@ final class PlotCanvas {
             drawSeries(PALETTE_ARGB[k % PALETTE.length], from, newest, y0, y1, pw, ph);
         }
         drawLegend(series, w);
-        show();
+        raster.show(canvas);
         points = total;
         drawnPoints = drawn;
         return total;
@@ -168,10 +164,6 @@ final class PlotCanvas {
      * Draws the decimated series as one filled span per pixel column ({@link ColumnSpans}),
      * the line broken at each gap.
      */
-    private void show() {
-        canvas.showBack(raster.scale());
-    }
-
     private void drawSeries(int argb, double x0, double x1, double y0, double y1, double pw, double ph) {
         double[] xs = decimation.xs();
         double[] ys = decimation.ys();

@@ -10,7 +10,7 @@ import java.util.Arrays;
  * onto the window, up to 30 times a second (docs/benchmarks.md, "Twentieth session").
  * Coordinates are the view's (logical) pixels; {@link #scale()} device pixels each on a
  * high-density screen. What lies under a drawing is opaque; a label's edge or a translucent fill
- * is blended over it. No scene graph: testable without a window.
+ * is blended over it. Drawing needs no window: testable without one.
  */
 final class Raster {
 
@@ -30,6 +30,21 @@ final class Raster {
         if (pixels.length < width * height) {
             pixels = new int[width * height];
         }
+    }
+
+    /**
+     * Starts a picture for {@code pane}: its size and scale, drawn into its pixels not on screen,
+     * filled with {@code background}. {@link #show} puts it on screen.
+     */
+    void begin(touchline.ui.RasterPane pane, int background) {
+        resize(pane.getWidth(), pane.getHeight(), pane.scale());
+        drawInto(pane.back(width, height));
+        fill(background);
+    }
+
+    /** Puts the picture drawn since {@link #begin} on {@code pane}'s screen. */
+    void show(touchline.ui.RasterPane pane) {
+        pane.showBack(scale);
     }
 
     /**

@@ -15,8 +15,8 @@ import java.util.TreeSet;
  * The HaViMo2 camera's view: the whole frame as a blue rectangle, each region-growing blob as
  * a red rectangle filled in its colour class, the gridding result as translucent cells, and a
  * legend. Regions reaching outside the frame are clipped to it and drawn dashed; the status
- * line counts them. Drawn into pixels of its own ({@link Raster}), ten times a second with the
- * demo robots.
+ * line counts them. Drawn into pixels of its own ({@link Raster}) each time the regions or the
+ * grid change: ten to twenty times a second with the demo robots.
  */
 public final class RegionOverlayView extends SourcedView {
 
@@ -53,19 +53,8 @@ public final class RegionOverlayView extends SourcedView {
 
     @Override
     protected void empty() {
-        raster.resize(canvas.getWidth(), canvas.getHeight(), canvas.scale());
-        raster.drawInto(canvas.back(raster.width(), raster.height()));
-        raster.fill(BACKGROUND_ARGB);
-        show();
-    }
-
-    private void show() {
-        canvas.showBack(raster.scale());
-    }
-
-    /** The pixels drawn last (for tests). */
-    Raster raster() {
-        return raster;
+        raster.begin(canvas, BACKGROUND_ARGB);
+        raster.show(canvas);
     }
 
     @Override
@@ -90,9 +79,7 @@ public final class RegionOverlayView extends SourcedView {
         }
         double w = canvas.getWidth();
         double h = canvas.getHeight();
-        raster.resize(w, h, canvas.scale());
-        raster.drawInto(canvas.back(raster.width(), raster.height()));
-        raster.fill(BACKGROUND_ARGB);
+        raster.begin(canvas, BACKGROUND_ARGB);
         double legend = 24;
         double margin = 24;
         double scale = Math.max(0.01, Math.min((w - 2 * margin) / fw, (h - 2 * margin - legend) / fh));
@@ -140,7 +127,7 @@ public final class RegionOverlayView extends SourcedView {
         }
         raster.outline(ox - 1, oy - 1, fw * scale + 2, fh * scale + 2, 2, FRAME_LINE_ARGB);
         drawLegend(classes, h - legend + 4, w);
-        show();
+        raster.show(canvas);
         StringBuilder s = new StringBuilder("frame " + fw + "×" + fh + " · " + shown + " regions");
         if (clipped > 0) {
             s.append(" · ").append(clipped).append(" clipped to the frame (dashed)");
