@@ -122,7 +122,8 @@ final class ConsoleStartBench {
             try {
                 return new double[] {window, data.get(60, TimeUnit.SECONDS)};
             } catch (java.util.concurrent.TimeoutException e) {
-                throw new IOException("no robot's data within 60 s of the start, the window shown after " + window + " s", e);
+                throw new IOException(String.format(java.util.Locale.ROOT,
+                        "no robot's data within 60 s of the start (the window shown after %.2f s)", window), e);
             }
         } catch (IOException e) {
             throw new IOException(e.getMessage() + (cds ? "" : " (TOUCHLINE_CDS=0)") + "; its output:\n"
