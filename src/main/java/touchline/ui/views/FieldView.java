@@ -153,7 +153,7 @@ public final class FieldView extends SourcedView {
         cy = h / 2;
         // straight lines as filled rectangles: a stroke costs its whole bounding box in software
         g.setFill(Color.WHITE);
-        CrispLines.outline(g, cx - FIELD_LENGTH / 2 * scale - 1, cy - FIELD_WIDTH / 2 * scale - 1,
+        CrispLines.outline(g::fillRect, cx - FIELD_LENGTH / 2 * scale - 1, cy - FIELD_WIDTH / 2 * scale - 1,
                 FIELD_LENGTH * scale + 2, FIELD_WIDTH * scale + 2, 2);
         g.fillRect(Math.round(cx) - 1, Math.round(cy - FIELD_WIDTH / 2 * scale), 2, Math.round(FIELD_WIDTH * scale));
         g.setStroke(Color.WHITE);
@@ -161,9 +161,9 @@ public final class FieldView extends SourcedView {
         g.strokeOval(cx - 750 * scale, cy - 750 * scale, 1500 * scale, 1500 * scale);
         double goal = 2600 * scale;
         g.setFill(Color.GOLD);
-        CrispLines.outline(g, cx + FIELD_LENGTH / 2 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
+        CrispLines.outline(g::fillRect, cx + FIELD_LENGTH / 2 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
         g.setFill(Color.DODGERBLUE);
-        CrispLines.outline(g, cx - FIELD_LENGTH / 2 * scale - 600 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
+        CrispLines.outline(g::fillRect, cx - FIELD_LENGTH / 2 * scale - 600 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
         int objectCount = 0;
         if (objects != null && objects.data() instanceof Fumanoid.FieldObjects fo) {
             for (Fumanoid.RelativeObject o : fo.getObjectsList()) {

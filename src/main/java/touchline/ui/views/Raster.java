@@ -22,14 +22,18 @@ final class Raster {
     private double scale = 1;
     private int[] pixels = new int[0];
 
-    /** Sizes the raster for a view of {@code w} × {@code h} logical pixels at {@code scale} device pixels each. */
+    /** Sizes the raster for a view of {@code w} × {@code h} logical pixels at {@code scale} device pixels each, in pixels of its own. */
     void resize(double w, double h, double scale) {
-        this.scale = scale > 0 ? scale : 1;
-        width = Math.max(1, (int) Math.ceil(w * this.scale));
-        height = Math.max(1, (int) Math.ceil(h * this.scale));
+        size(w, h, scale);
         if (pixels.length < width * height) {
             pixels = new int[width * height];
         }
+    }
+
+    private void size(double w, double h, double scale) {
+        this.scale = scale > 0 ? scale : 1;
+        width = Math.max(1, (int) Math.ceil(w * this.scale));
+        height = Math.max(1, (int) Math.ceil(h * this.scale));
     }
 
     /**
@@ -37,7 +41,7 @@ final class Raster {
      * filled with {@code background}. {@link #show} puts it on screen.
      */
     void begin(touchline.ui.RasterPane pane, int background) {
-        resize(pane.getWidth(), pane.getHeight(), pane.scale());
+        size(pane.getWidth(), pane.getHeight(), pane.scale());
         drawInto(pane.back(width, height));
         fill(background);
     }
@@ -117,15 +121,7 @@ final class Raster {
 
     /** The outline of a rectangle, {@code thickness} logical pixels thick, inside x, y, w, h (edges rounded to pixels). */
     void outline(double x, double y, double w, double h, double thickness, int argb) {
-        double x0 = Math.round(x);
-        double y0 = Math.round(y);
-        double x1 = Math.round(x + w);
-        double y1 = Math.round(y + h);
-        double t = Math.max(1, Math.round(thickness));
-        fillRect(x0, y0, x1 - x0, t, argb);
-        fillRect(x0, y1 - t, x1 - x0, t, argb);
-        fillRect(x0, y0 + t, t, Math.max(0, y1 - y0 - 2 * t), argb);
-        fillRect(x1 - t, y0 + t, t, Math.max(0, y1 - y0 - 2 * t), argb);
+        CrispLines.outline((rx, ry, rw, rh) -> fillRect(rx, ry, rw, rh, argb), x, y, w, h, thickness);
     }
 
     /** The same outline dashed: {@code dash} logical pixels drawn, {@code gap} left, along each edge. */

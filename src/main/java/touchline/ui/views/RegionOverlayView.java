@@ -169,6 +169,7 @@ public final class RegionOverlayView extends SourcedView {
         if (cols <= 0 || rows <= 0) {
             return " (no size)";
         }
+        CrispLines.Fill gridLine = (x, y, w, h) -> raster.blendRect(x, y, w, h, GRID_LINE_ARGB, GRID_LINE_OPACITY);
         double cw = fw * scale / cols;
         double ch = fh * scale / rows;
         int n = Math.min(cells.length, cols * rows);
@@ -181,10 +182,10 @@ public final class RegionOverlayView extends SourcedView {
             raster.fillRect(ox + (i % cols) * cw, oy + (i / cols) * ch, cw, ch, Raster.opaque(gridCell(c)));
         }
         for (int c = 1; c < cols; c++) {
-            raster.blendRect(Math.floor(ox + c * cw), Math.round(oy), 1, Math.round(fh * scale), GRID_LINE_ARGB, GRID_LINE_OPACITY);
+            CrispLines.vertical(gridLine, ox + c * cw, oy, oy + fh * scale);
         }
         for (int r = 1; r < rows; r++) {
-            raster.blendRect(Math.round(ox), Math.floor(oy + r * ch), Math.round(fw * scale), 1, GRID_LINE_ARGB, GRID_LINE_OPACITY);
+            CrispLines.horizontal(gridLine, ox, ox + fw * scale, oy + r * ch);
         }
         return n < cols * rows ? " (" + (cols * rows - n) + " cells missing)" : "";
     }

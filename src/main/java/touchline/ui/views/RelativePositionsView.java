@@ -55,8 +55,8 @@ public final class RelativePositionsView extends SourcedView {
             g.fillText(m + " m", cx + r + 2, cy - 2);
         }
         g.setFill(Color.gray(0.45));
-        CrispLines.vertical(g, cx, 0, h);
-        CrispLines.horizontal(g, 0, w, cy);
+        CrispLines.vertical(g::fillRect, cx, 0, h);
+        CrispLines.horizontal(g::fillRect, 0, w, cy);
         g.setFill(Color.LIGHTSKYBLUE);
         g.fillPolygon(new double[] {cx, cx - 8, cx + 8}, new double[] {cy - 14, cy + 8, cy + 8}, 3);
         for (Fumanoid.RelativeObject o : p.getObjectsList()) {
