@@ -42,7 +42,7 @@ public final class FieldPlotView implements View {
     /** What the last action did (added, exported, why not). */
     private final Label note = new Label();
     private final BorderPane root = new BorderPane();
-    private final PlotCanvas plot = new PlotCanvas(() -> dirty = true);
+    private final PlotDrawing plot = new PlotDrawing(() -> dirty = true);
     private long drawnVersion = -1;
     private long listedKinds = -1;
     private boolean dirty;

@@ -10,14 +10,14 @@ import touchline.ui.ViewSource;
 import java.util.Set;
 
 /**
- * Line plot of one option's series on one canvas ({@link PlotCanvas}): the last
- * {@link PlotCanvas#WINDOW_SECONDS} s, x in seconds since the console started. The plot store
+ * Line plot of one option's series in one picture ({@link PlotDrawing}): the last
+ * {@link PlotDrawing#WINDOW_SECONDS} s, x in seconds since the console started. The plot store
  * already skipped non-finite points and decimated bursts; the status line says how many.
  * Any other numeric field of any message is plotted by {@link FieldPlotView}.
  */
 public final class PlotView extends SourcedView {
 
-    private final PlotCanvas plot = new PlotCanvas(() -> dirty = true);
+    private final PlotDrawing plot = new PlotDrawing(() -> dirty = true);
     private long draws;
     /** The last snapshot drawn, whose arrays the next one reuses. */
     private PlotStore.Snapshot last;
@@ -38,12 +38,12 @@ public final class PlotView extends SourcedView {
         return plot.drawnPoints();
     }
 
-    /** How often the canvas was redrawn (for tests: no new data, no redraw). */
+    /** How often the plot was redrawn (for tests: no new data, no redraw). */
     public long draws() {
         return draws;
     }
 
-    /** How often the canvas changed size (each change may cause one redraw without new data). */
+    /** How often the plot's pane changed size (each change may cause one redraw without new data). */
     public long resizes() {
         return plot.node().resizes();
     }
@@ -74,11 +74,11 @@ public final class PlotView extends SourcedView {
 
     /** Index of the first x at or after {@code from} (x is oldest first). */
     static int firstAtOrAfter(double[] x, int count, double from) {
-        return PlotCanvas.firstAtOrAfter(x, count, from);
+        return PlotDrawing.firstAtOrAfter(x, count, from);
     }
 
     /** 1, 2 or 5 times a power of ten, at least {@code raw}. */
     static double niceStep(double raw) {
-        return PlotCanvas.niceStep(raw);
+        return PlotDrawing.niceStep(raw);
     }
 }

@@ -41,20 +41,20 @@ public final class RegionOverlayView extends SourcedView {
     private static final int REGION_LINE_ARGB = Raster.opaque(Color.RED);
     private static final int FRAME_LINE_ARGB = Raster.opaque(Color.DODGERBLUE);
     private static final Color LEGEND_TEXT = Color.LIGHTGRAY;
-    private final RasterPane canvas = new RasterPane(() -> dirty = true);
+    private final RasterPane pane = new RasterPane(() -> dirty = true);
     private final Raster raster = new Raster();
     private final LabelSprites labels = new LabelSprites(javafx.scene.text.Font.getDefault());
 
     public RegionOverlayView(ViewContext context, ViewSource source) {
         super(context, Set.of(Fumanoid.DebugKind.REGION_GROWING_VALUE, Fumanoid.DebugKind.GRID_VALUE), source);
-        canvas.setId("region-canvas");
-        root.setCenter(canvas);
+        pane.setId("region-canvas");
+        root.setCenter(pane);
     }
 
     @Override
     protected void empty() {
-        raster.begin(canvas, BACKGROUND_ARGB);
-        raster.show(canvas);
+        raster.begin(pane, BACKGROUND_ARGB);
+        raster.show(pane);
     }
 
     @Override
@@ -77,9 +77,9 @@ public final class RegionOverlayView extends SourcedView {
             fw = grid.getFrameWidth();
             fh = grid.getFrameHeight();
         }
-        double w = canvas.getWidth();
-        double h = canvas.getHeight();
-        raster.begin(canvas, BACKGROUND_ARGB);
+        double w = pane.getWidth();
+        double h = pane.getHeight();
+        raster.begin(pane, BACKGROUND_ARGB);
         double legend = 24;
         double margin = 24;
         double scale = Math.max(0.01, Math.min((w - 2 * margin) / fw, (h - 2 * margin - legend) / fh));
@@ -127,7 +127,7 @@ public final class RegionOverlayView extends SourcedView {
         }
         raster.outline(ox - 1, oy - 1, fw * scale + 2, fh * scale + 2, 2, FRAME_LINE_ARGB);
         drawLegend(classes, h - legend + 4, w);
-        raster.show(canvas);
+        raster.show(pane);
         StringBuilder s = new StringBuilder("frame " + fw + "×" + fh + " · " + shown + " regions");
         if (clipped > 0) {
             s.append(" · ").append(clipped).append(" clipped to the frame (dashed)");

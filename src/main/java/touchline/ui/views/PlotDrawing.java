@@ -19,7 +19,7 @@ import java.util.Locale;
  * rectangles through JavaFX's rasteriser and blends itself onto the window: docs/benchmarks.md,
  * "Twentieth session").
  */
-final class PlotCanvas {
+final class PlotDrawing {
 
     /** Seconds of history drawn. */
     static final double WINDOW_SECONDS = 10;
@@ -41,7 +41,7 @@ final class PlotCanvas {
     private static final int AXIS_ARGB = Raster.opaque(AXIS);
     private static final int[] PALETTE_ARGB = java.util.Arrays.stream(PALETTE).mapToInt(Raster::opaque).toArray();
 
-    private final RasterPane canvas;
+    private final RasterPane pane;
     private final Raster raster = new Raster();
     private final LabelSprites labels = new LabelSprites(javafx.scene.text.Font.font(11));
     private final ColumnDecimation decimation = new ColumnDecimation();
@@ -51,13 +51,13 @@ final class PlotCanvas {
     private int points;
     private int drawnPoints;
 
-    /** @param resized called when the canvas changed size (the owner redraws) */
-    PlotCanvas(Runnable resized) {
-        canvas = new RasterPane(resized);
+    /** @param resized called when the pane changed size (the owner redraws) */
+    PlotDrawing(Runnable resized) {
+        pane = new RasterPane(resized);
     }
 
     RasterPane node() {
-        return canvas;
+        return pane;
     }
 
     /** Points in the window over all series at the last draw. */
@@ -81,8 +81,8 @@ final class PlotCanvas {
     }
 
     void empty() {
-        raster.begin(canvas, BACKGROUND_ARGB);
-        raster.show(canvas);
+        raster.begin(pane, BACKGROUND_ARGB);
+        raster.show(pane);
         points = 0;
         drawnPoints = 0;
     }
@@ -114,9 +114,9 @@ final class PlotCanvas {
             }
             total += d.count() - start;
         }
-        double w = canvas.getWidth();
-        double h = canvas.getHeight();
-        raster.begin(canvas, BACKGROUND_ARGB);
+        double w = pane.getWidth();
+        double h = pane.getHeight();
+        raster.begin(pane, BACKGROUND_ARGB);
         double pw = Math.max(1, w - LEFT - RIGHT);
         double ph = Math.max(1, h - TOP - BOTTOM);
         if (!Double.isFinite(newest)) {
@@ -139,7 +139,7 @@ final class PlotCanvas {
             drawSeries(PALETTE_ARGB[k % PALETTE.length], from, newest, y0, y1, pw, ph);
         }
         drawLegend(series, w);
-        raster.show(canvas);
+        raster.show(pane);
         points = total;
         drawnPoints = drawn;
         return total;

@@ -15,15 +15,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static touchline.testing.FxStep.fx;
 
 /** The plot drawn into its own pixels and shown as one image, its labels rendered once. */
-class PlotCanvasTest {
+class PlotDrawingTest {
 
     @BeforeAll
     static void toolkit() throws Exception {
         FxToolkit.registerPrimaryStage();
     }
 
-    private static PlotCanvas plot() {
-        PlotCanvas plot = new PlotCanvas(() -> { });
+    private static PlotDrawing plot() {
+        PlotDrawing plot = new PlotDrawing(() -> { });
         StackPane root = new StackPane(plot.node());
         new Scene(root, 400, 300);
         root.applyCss();
@@ -48,10 +48,10 @@ class PlotCanvasTest {
     @Test
     void theSeriesAreDrawnInTheirColoursAndShownOnThePane() throws Exception {
         fx(() -> {
-            PlotCanvas plot = plot();
+            PlotDrawing plot = plot();
             assertEquals(202, plot.draw(series()));
             Raster r = plot.raster();
-            int flat = Raster.opaque(PlotCanvas.PALETTE[0]);
+            int flat = Raster.opaque(PlotDrawing.PALETTE[0]);
             // the flat series is the top of the data: y = 1 sits 5 % of the range below the plot's top edge
             int column = r.width() / 2;
             boolean found = false;
@@ -72,7 +72,7 @@ class PlotCanvasTest {
     @Test
     void labelsAreRenderedOnceAndDrawnLeftOfTheAxis() throws Exception {
         fx(() -> {
-            PlotCanvas plot = plot();
+            PlotDrawing plot = plot();
             plot.draw(series());
             long first = plot.labelsRendered();
             assertTrue(first >= 5, "axis labels and legend names: " + first);
