@@ -8,6 +8,7 @@ import touchline.app.ConsoleConfig;
 import touchline.record.RecordingException;
 import touchline.record.SchemaSet;
 import touchline.serve.AccessToken;
+import touchline.serve.AllowedOrigins;
 import touchline.serve.FoxgloveServer;
 import touchline.serve.ServeConfig;
 import touchline.serve.ServeStats;
@@ -38,8 +39,18 @@ final class ServeCommand implements Callable<Integer> {
             description = "address to serve on (default ${DEFAULT-VALUE}: this machine only; any other needs a token)")
     String bind;
 
-    @Option(names = "--token", description = "the token viewers must present (generated when serving beyond loopback without one)")
+    @Option(names = "--token", description = "the token viewers must present (generated when serving beyond loopback"
+            + " without one); visible to others in the process list: prefer --token-file or $" + TokenChoice.ENV)
     String token;
+
+    @Option(names = "--token-file", paramLabel = "FILE",
+            description = "read the token from the first line of FILE (mode 0600: only you may read it)")
+    Path tokenFile;
+
+    @Option(names = "--allow-origin", paramLabel = "ORIGIN",
+            description = "a web page origin that may watch too, e.g. https://viewer.example.org (repeatable);"
+                    + " allowed without it: tools (no origin), https://app.foxglove.dev, Lichtblick's web build")
+    java.util.List<String> allowOrigins = new java.util.ArrayList<>();
 
     @Option(names = "--robots-port", defaultValue = "11011", description = "UDP port robots send to (default ${DEFAULT-VALUE})")
     int robotsPort;
@@ -93,8 +104,16 @@ final class ServeCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        ServeConfig config = ServeConfig.defaults().withBind(bind).withPort(port).withToken(token);
-        if (token == null && !config.loopbackOnly()) {
+        String given;
+        try {
+            given = new TokenChoice(token, tokenFile, System.getenv()).token();
+        } catch (StartFailure e) {
+            err.println("touchline serve: " + e.getMessage());
+            return e.exitCode();
+        }
+        ServeConfig config = ServeConfig.defaults().withBind(bind).withPort(port).withToken(given)
+                .withOrigins(new AllowedOrigins(allowOrigins));
+        if (given == null && !config.loopbackOnly()) {
             config = config.withToken(AccessToken.generate(new SecureRandom()));
         }
         if ((tlsCert == null) != (tlsKey == null)) {
@@ -179,6 +198,16 @@ final class ServeCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** " (upgrade slots full 33, upgrade deadline 7)", "" before any refusal; and the upgrades waiting now. */
+    private static String refusedBy(ServeStats s) {
+        StringBuilder b = new StringBuilder();
+        s.refusedBy().forEach((why, n) -> b.append(b.isEmpty() ? " (" : ", ").append(why).append(' ').append(n));
+        if (!b.isEmpty()) {
+            b.append(')');
+        }
+        return b + (s.upgrading() == 0 ? "" : ", upgrading " + s.upgrading());
+    }
+
     private void watch(FoxgloveServer server, CountDownLatch stop, PrintWriter out) throws InterruptedException {
         long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
         ServeStats last = server.stats();
@@ -190,9 +219,9 @@ final class ServeCommand implements Callable<Integer> {
             long at = System.nanoTime();
             double secs = Math.max(1e-3, (at - lastAt) / 1e9);
             out.printf("viewers %d, subscriptions %d, channels %d, sent %d (%.0f/s), dropped %d (%.0f/s), "
-                            + "refused %d, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
+                            + "refused %d%s, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
                     now.sent(), (now.sent() - last.sent()) / secs, now.dropped(), (now.dropped() - last.dropped()) / secs,
-                    now.refused(), now.badRequests(),
+                    now.refused(), refusedBy(now), now.badRequests(),
                     (now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused())
                             + (now.notConverted() == 0 ? "" : ", not converted to standard channels (behind) "
                             + now.notConverted()));

@@ -157,8 +157,14 @@ public final class KeyDir {
     public static void writeFile(Path f, byte[] content, boolean secret) throws IOException {
         Path tmp = f.resolveSibling(f.getFileName() + ".tmp");
         Files.deleteIfExists(tmp);
-        Files.createFile(tmp);
-        setPermissions(tmp, secret ? OWNER_ONLY : READABLE);
+        Set<PosixFilePermission> mode = secret ? OWNER_ONLY : READABLE;
+        try {
+            // created with its mode (open with O_EXCL and 0600): never readable by others, not even empty for a moment
+            Files.createFile(tmp, PosixFilePermissions.asFileAttribute(mode));
+        } catch (UnsupportedOperationException e) {
+            Files.createFile(tmp); // not POSIX: the platform's defaults
+        }
+        setPermissions(tmp, mode); // the umask may have taken bits of a readable file away
         Files.write(tmp, content);
         Files.move(tmp, f, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
     }

@@ -17,11 +17,18 @@ import java.util.concurrent.atomic.AtomicLong;
  * What a viewer may ask: subscribe and unsubscribe. The server is read-only, so every other op
  * (publishing, parameters, services) and every binary client message is answered with an
  * error status and goes nowhere near a robot; so are garbage, unknown channels and reused ids.
- * Each refusal is counted; the connection stays open.
+ * One client message gets at most one status, however many of its entries were refused, and
+ * at most {@link #MAX_ENTRIES} of its entries are looked at. Each refused message is counted;
+ * the connection stays open.
  */
 final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
 
     static final String READ_ONLY = "read-only server";
+    /**
+     * Entries of one subscribe or unsubscribe looked at; the rest of the frame is ignored and
+     * said so. As many as there can be channels: a viewer never needs more in one message.
+     */
+    static final int MAX_ENTRIES = FoxgloveServer.MAX_CHANNELS;
 
     private final ChannelTable channels;
     private final AtomicLong badRequests;
@@ -68,22 +75,24 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
             refuse(viewer, "subscribe without a \"subscriptions\" array");
             return;
         }
-        for (int i = 0; i < list.length(); i++) {
+        Refused refused = new Refused("subscription", list.length());
+        for (int i = 0; i < Math.min(list.length(), MAX_ENTRIES); i++) {
             JSONObject s = list.optJSONObject(i);
             Long id = s == null ? null : uint32(s.opt("id"));
             Long channelId = s == null ? null : uint32(s.opt("channelId"));
             if (id == null || channelId == null) {
-                refuse(viewer, "subscription " + i + " needs a numeric \"id\" and \"channelId\" (unsigned 32-bit)");
+                refused.add(i, "needs a numeric \"id\" and \"channelId\" (unsigned 32-bit)");
                 continue;
             }
             Optional<ServedChannel> channel = channels.byId(channelId);
             if (channel.isEmpty()) {
-                refuse(viewer, "unknown channel " + channelId);
+                refused.add(i, "unknown channel " + channelId);
                 continue;
             }
             viewer.subscribe(id.intValue(), channel.get(), clock.nowMicros() * 1000)
-                    .ifPresent(reason -> refuse(viewer, reason));
+                    .ifPresent(reason -> refused.add(-1, reason));
         }
+        refused.said().ifPresent(reason -> refuse(viewer, reason));
     }
 
     private void unsubscribe(Viewer viewer, JSONObject op) {
@@ -92,13 +101,50 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
             refuse(viewer, "unsubscribe without a \"subscriptionIds\" array");
             return;
         }
-        for (int i = 0; i < ids.length(); i++) {
+        Refused refused = new Refused("subscription id", ids.length());
+        for (int i = 0; i < Math.min(ids.length(), MAX_ENTRIES); i++) {
             Long id = uint32(ids.opt(i));
             if (id == null) {
-                refuse(viewer, "subscription id " + i + " is not an unsigned 32-bit number");
+                refused.add(i, "is not an unsigned 32-bit number");
                 continue;
             }
-            viewer.unsubscribe(id.intValue()).ifPresent(reason -> refuse(viewer, reason));
+            viewer.unsubscribe(id.intValue()).ifPresent(reason -> refused.add(-1, reason));
+        }
+        refused.said().ifPresent(reason -> refuse(viewer, reason));
+    }
+
+    /**
+     * The entries of one subscribe or unsubscribe refused, told in one status: a frame of many
+     * bad entries costs one reply, not one each (issue 37).
+     */
+    private static final class Refused {
+        private final String what;
+        private final int entries;
+        private final StringBuilder first = new StringBuilder();
+        private int count;
+
+        Refused(String what, int entries) {
+            this.what = what;
+            this.entries = entries;
+        }
+
+        /** Entry {@code index} (-1: the reason names it) refused for {@code reason}. */
+        void add(int index, String reason) {
+            if (count++ == 0) {
+                first.append(index < 0 ? "" : what + " " + index + " ").append(reason);
+            }
+        }
+
+        Optional<String> said() {
+            String beyond = entries <= MAX_ENTRIES ? ""
+                    : (count == 0 ? "" : "; ") + "the " + (entries - MAX_ENTRIES) + " entries beyond the first "
+                    + MAX_ENTRIES + " ignored";
+            if (count == 0 && beyond.isEmpty()) {
+                return Optional.empty();
+            }
+            String refused = count == 0 ? "" : count == 1 ? first.toString()
+                    : count + " of " + Math.min(entries, MAX_ENTRIES) + " entries refused, the first: " + first;
+            return Optional.of(refused + beyond);
         }
     }
 

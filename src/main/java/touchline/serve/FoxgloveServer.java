@@ -41,7 +41,6 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     /** The subprotocols accepted, the spec's name first (the handshake picks the client's first match). */
     public static final String SUBPROTOCOLS = "foxglove.websocket.v1,foxglove.sdk.v1";
     static final int MAX_CHANNELS = 4096;
-    static final int UPGRADE_SECONDS = 10;
     /**
      * Threads writing to the viewers (each viewer stays on one): two, so eight viewers
      * subscribed to everything do not queue behind one thread's writes (docs/benchmarks.md).
@@ -61,7 +60,8 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final StandardConversion standard;
     private final GameControllerState gameController;
     private final FoxgloveFrames frames;
-    private final AtomicLong refused = new AtomicLong();
+    private final Refusals refusals = new Refusals();
+    private final Admission admission;
     private final AtomicLong badRequests = new AtomicLong();
     private final AtomicLong stateFailures = new AtomicLong();
     private final AccessToken token;
@@ -88,6 +88,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.standard = new StandardConversion(new StandardChannels(channels));
         this.gameController = new GameControllerState(channels);
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
+        this.admission = new Admission(config.limits(), refusals);
         this.tls = config.tls() ? tlsContext(config) : null;
         this.group = new MultiThreadIoEventLoopGroup(EVENT_LOOPS, NioIoHandler.newFactory());
         try {
@@ -97,7 +98,9 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                     .childHandler(new ChannelInitializer<SocketChannel>() {
                         @Override
                         protected void initChannel(SocketChannel ch) {
-                            pipeline(ch.pipeline());
+                            if (admission.admit(ch)) {
+                                pipeline(ch.pipeline());
+                            }
                         }
                     })
                     .bind(new InetSocketAddress(config.bindAddress(), config.port())).sync().channel();
@@ -121,24 +124,23 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     }
 
     private void pipeline(ChannelPipeline p) {
-        // a connection that never completes its upgrade is closed (ViewerSession removes this once it has)
-        p.addLast(ViewerSession.UPGRADE_TIMEOUT, new io.netty.handler.timeout.ReadTimeoutHandler(UPGRADE_SECONDS));
         if (tls != null) {
             p.addLast(tls.newHandler(p.channel().alloc()));
         }
         p.addLast(new HttpServerCodec());
         p.addLast(new HttpObjectAggregator(8192));
+        p.addLast(new OriginGate(config.origins(), refusals));
         if (token != null) {
-            p.addLast(new TokenGate(token, refused));
+            p.addLast(new TokenGate(token, refusals));
         }
         p.addLast(new WebSocketServerProtocolHandler(WebSocketServerProtocolConfig.newBuilder()
                 .websocketPath("/").checkStartsWith(true).subprotocols(SUBPROTOCOLS)
-                .handshakeTimeoutMillis(10_000)
+                .handshakeTimeoutMillis(config.limits().upgradeMillis())
                 .decoderConfig(WebSocketDecoderConfig.newBuilder().maxFramePayloadLength(config.maxFrameBytes())
                         .allowExtensions(false).build())
                 .build()));
         p.addLast(new WebSocketFrameAggregator(config.maxFrameBytes()));
-        p.addLast(new ViewerSession(channels, viewers, frames, config, refused));
+        p.addLast(new ViewerSession(channels, viewers, frames, config, refusals, admission));
         p.addLast(new ClientOps(channels, badRequests, clock));
     }
 
@@ -224,7 +226,8 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     public ServeStats stats() {
         return new ServeStats(viewers.size(), viewers.subscriptions(), channels.size(), viewers.sent(),
-                viewers.dropped(), refused.get(), badRequests.get(), channels.refused(), standard.dropped());
+                viewers.dropped(), refusals.total(), refusals.byReason(), admission.upgrading(), badRequests.get(),
+                channels.refused(), standard.dropped());
     }
 
     /** The viewers connected now, with their subscriptions, sent and dropped counts. */

@@ -8,11 +8,13 @@ package touchline.serve;
  * @param channels       channels advertised
  * @param sent           messages sent to viewers since the start
  * @param dropped        messages given up for viewers that fell behind (newer ones of the same channel went out)
- * @param refused        connections refused (no or wrong token, or too many viewers)
+ * @param refused        connections refused or cut, all reasons together
+ * @param refusedBy      the same by reason, in words (only those that happened), e.g. "upgrade deadline" → 7
+ * @param upgrading      connections open now that have not finished their WebSocket upgrade
  * @param badRequests    client messages answered with an error status (garbage, unknown or write ops)
  * @param channelsRefused new channels not served because the table was full
  * @param notConverted   envelopes not converted to the standard channels because the converter was behind
  */
 public record ServeStats(int viewers, int subscriptions, int channels, long sent, long dropped, long refused,
-                         long badRequests, long channelsRefused, long notConverted) {
+                         java.util.Map<String, Long> refusedBy, int upgrading, long badRequests, long channelsRefused, long notConverted) {
 }

@@ -14,7 +14,6 @@ import io.netty.handler.codec.http.QueryStringDecoder;
 
 import java.nio.charset.StandardCharsets;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Admits an HTTP request (the WebSocket upgrade) only with the server's token in its query,
@@ -24,11 +23,11 @@ import java.util.concurrent.atomic.AtomicLong;
 final class TokenGate extends ChannelInboundHandlerAdapter {
 
     private final AccessToken token;
-    private final AtomicLong refused;
+    private final Refusals refusals;
 
-    TokenGate(AccessToken token, AtomicLong refused) {
+    TokenGate(AccessToken token, Refusals refusals) {
         this.token = token;
-        this.refused = refused;
+        this.refusals = refusals;
     }
 
     @Override
@@ -44,7 +43,7 @@ final class TokenGate extends ChannelInboundHandlerAdapter {
             return;
         }
         request.release();
-        refused.incrementAndGet();
+        refusals.count(Refusals.Reason.TOKEN);
         FullHttpResponse response = new DefaultFullHttpResponse(HttpVersion.HTTP_1_1, HttpResponseStatus.UNAUTHORIZED,
                 Unpooled.copiedBuffer("this Touchline needs its token: ws://HOST:PORT/?token=...\n", StandardCharsets.UTF_8));
         response.headers().set(HttpHeaderNames.CONTENT_TYPE, "text/plain; charset=utf-8");

@@ -24,6 +24,8 @@ final class Viewer {
     private final PendingMessages pending;
     private final AtomicBoolean drainScheduled = new AtomicBoolean();
     private final Map<Integer, Subscription> subscriptions = new ConcurrentHashMap<>();
+    /** The same subscriptions by channel: one per channel, found without a search through all of them. */
+    private final Map<ServedChannel, Subscription> byChannel = new ConcurrentHashMap<>();
     private final LongAdder sent = new LongAdder();
     private final LongAdder statusesDropped = new LongAdder();
 
@@ -139,13 +141,13 @@ final class Viewer {
         if (subscriptions.containsKey(id)) {
             return Optional.of("subscription id " + id + " is in use");
         }
-        for (Subscription s : subscriptions.values()) {
-            if (s.channel() == c) {
-                return Optional.of("already subscribed to channel " + c.id() + " (subscription " + s.id() + ")");
-            }
+        Subscription already = byChannel.get(c);
+        if (already != null) {
+            return Optional.of("already subscribed to channel " + c.id() + " (subscription " + already.id() + ")");
         }
         Subscription s = new Subscription(this, id, c);
         subscriptions.put(id, s);
+        byChannel.put(c, s);
         ServedChannel.Latched then = c.add(s);
         if (then.value() != null) {
             offer(s, then.timeNanos() > 0 ? then.timeNanos() : nowNanos, then.value());
@@ -159,6 +161,7 @@ final class Viewer {
         if (s == null) {
             return Optional.of("no subscription " + id);
         }
+        byChannel.remove(s.channel());
         s.end();
         return Optional.empty();
     }
@@ -167,6 +170,7 @@ final class Viewer {
     void leave() {
         List.copyOf(subscriptions.values()).forEach(s -> {
             subscriptions.remove(s.id());
+            byChannel.remove(s.channel());
             s.end();
         });
     }

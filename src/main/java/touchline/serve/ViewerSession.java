@@ -15,32 +15,30 @@ import java.util.List;
 final class ViewerSession extends ChannelInboundHandlerAdapter {
 
     static final AttributeKey<Viewer> VIEWER = AttributeKey.valueOf("touchline.viewer");
-    static final String UPGRADE_TIMEOUT = "upgrade-timeout";
 
     private final ChannelTable channels;
     private final ViewerTable viewers;
     private final FoxgloveFrames frames;
     private final ServeConfig config;
-    private final java.util.concurrent.atomic.AtomicLong refused;
+    private final Refusals refusals;
+    private final Admission admission;
 
     ViewerSession(ChannelTable channels, ViewerTable viewers, FoxgloveFrames frames, ServeConfig config,
-                  java.util.concurrent.atomic.AtomicLong refused) {
+                  Refusals refusals, Admission admission) {
         this.channels = channels;
         this.viewers = viewers;
         this.frames = frames;
         this.config = config;
-        this.refused = refused;
+        this.refusals = refusals;
+        this.admission = admission;
     }
 
     @Override
     public void userEventTriggered(ChannelHandlerContext ctx, Object evt) throws Exception {
         if (evt instanceof WebSocketServerProtocolHandler.HandshakeComplete) {
-            // a viewer may read without ever sending anything
-            if (ctx.pipeline().get(UPGRADE_TIMEOUT) != null) {
-                ctx.pipeline().remove(UPGRADE_TIMEOUT);
-            }
+            admission.upgraded(ctx.channel()); // a viewer may read without ever sending anything
             if (viewers.size() >= config.maxViewers()) {
-                refused.incrementAndGet();
+                refusals.count(Refusals.Reason.VIEWERS);
                 ctx.writeAndFlush(frames.status(FoxgloveFrames.STATUS_ERROR, "too many viewers (" + config.maxViewers()
                         + " at once); try again later")).addListener(io.netty.channel.ChannelFutureListener.CLOSE);
                 return;

@@ -8,8 +8,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
-import java.util.Map;
-import java.util.TreeMap;
+import java.util.Comparator;
 
 /**
  * Which GameController the console believes. The GameController protocol has no
@@ -88,7 +87,7 @@ public final class GameControllerSources {
     private long repeats;
     private long restarts;
     private long suspicious;
-    private final Map<String, Intruder> intruders = new TreeMap<>();
+    private final RecentSources<Intruder> intruders = new RecentSources<>();
     private final Deque<Flag> flags = new ArrayDeque<>();
     private Flag lastSuspicious;
 
@@ -199,12 +198,23 @@ public final class GameControllerSources {
                 out.add(i);
             }
         }
+        out.sort(Comparator.comparing(Intruder::source));
         return out;
     }
 
-    /** Every intruder ever heard (bounded by the number of distinct sources seen). */
+    /**
+     * Every intruder heard, by source; the {@link RecentSources#CAPACITY} heard last when more
+     * sent (the others are counted in {@link #forgottenIntruders}).
+     */
     public synchronized List<Intruder> allIntruders() {
-        return List.copyOf(intruders.values());
+        List<Intruder> out = new ArrayList<>(intruders.values());
+        out.sort(Comparator.comparing(Intruder::source));
+        return out;
+    }
+
+    /** Intruder sources forgotten because more than {@link RecentSources#CAPACITY} sent game states. */
+    public synchronized long forgottenIntruders() {
+        return intruders.forgotten();
     }
 
     /** Flagged observations, oldest first (the last {@link #LOG_SIZE}). */
@@ -267,6 +277,8 @@ public final class GameControllerSources {
             return "GameController: none heard yet";
         }
         return "GameController " + pinnedHost + " (" + pinnedHow + "): " + packets + " packets, " + lost + " lost, "
-                + repeats + " repeated, " + restarts + " restarts, " + suspicious + " suspicious";
+                + repeats + " repeated, " + restarts + " restarts, " + suspicious + " suspicious"
+                + (intruders.forgotten() == 0 ? "" : ", " + intruders.forgotten() + " other sources forgotten (more than "
+                + intruders.capacity() + " sent game states)");
     }
 }

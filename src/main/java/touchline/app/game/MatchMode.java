@@ -9,7 +9,6 @@ import touchline.protocol.gamecontroller.GameControlData;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -64,8 +63,11 @@ public final class MatchMode {
     }
 
     private final GameClock clock;
-    private final Map<String, Heard> heard = new HashMap<>();
-    private final Map<String, Heard> lastPlayClaim = new HashMap<>();
+    // bounded: a new source beyond the capacity forgets the one heard longest ago. A flood of
+    // made-up sources can push the GameController's PLAYING out of `heard`, never out of
+    // `lastPlayClaim` unless it claims play itself, so forgetting never lifts the silence.
+    private final RecentSources<Heard> heard = new RecentSources<>();
+    private final RecentSources<Heard> lastPlayClaim = new RecentSources<>();
     private final Deque<String> held = new ArrayDeque<>();
     private final List<OverrideEntry> overrideLog = new ArrayList<>();
     private final List<Consumer<Boolean>> listeners = new CopyOnWriteArrayList<>();
@@ -192,6 +194,10 @@ public final class MatchMode {
                 return override || !listening() ? "" : LISTENING;
             }
             Heard now = heard.get(source);
+            if (now == null) { // forgotten in a flood of other sources; its claim of play is kept
+                return "game was " + GameControlData.stateName(lastPlayClaim.get(source).state) + " (" + source
+                        + "); silent until " + PLAY_MEMORY_MS + " ms after play";
+            }
             if (GameControlData.isPlay(now.state)) {
                 return "game is " + GameControlData.stateName(now.state) + " (" + source + ")";
             }
@@ -241,13 +247,13 @@ public final class MatchMode {
     /** The source whose claim of play keeps match mode on (as "source", or "source, earlier"), or null. */
     private String playingSource() {
         long now = clock.millis();
-        for (Map.Entry<String, Heard> e : heard.entrySet()) {
+        for (Map.Entry<String, Heard> e : heard.entries()) {
             Heard h = e.getValue();
             if (now - h.atMs <= STALE_MS && GameControlData.isPlay(h.state)) {
                 return e.getKey();
             }
         }
-        for (Map.Entry<String, Heard> e : lastPlayClaim.entrySet()) {
+        for (Map.Entry<String, Heard> e : lastPlayClaim.entries()) {
             if (now - e.getValue().atMs <= PLAY_MEMORY_MS) {
                 return e.getKey();
             }

@@ -5,12 +5,11 @@ import touchline.protocol.gamecontroller.GameControlData;
 import java.net.InetSocketAddress;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * Other GameControllers heard on the game-state port. Two GameControllers on one field confuse
  * every robot, so while any was heard in the last {@link #ACTIVE_MS} ms {@link #warning} is a
- * loud, non-empty text. Thread-safe.
+ * loud, non-empty text. Kept for the last {@link RecentSources#CAPACITY} sources heard. Thread-safe.
  */
 public final class RivalGameControllers {
 
@@ -28,26 +27,31 @@ public final class RivalGameControllers {
     public record Rival(long atMs, String kind, int state, String teams, long count) {
     }
 
-    private final Map<String, Rival> rivals = new ConcurrentHashMap<>();
+    private final RecentSources<Rival> rivals = new RecentSources<>();
 
-    public void heard(InetSocketAddress from, String kind, GameControlData data, long nowMs) {
+    public synchronized void heard(InetSocketAddress from, String kind, GameControlData data, long nowMs) {
         String key = from.getAddress().getHostAddress() + ":" + from.getPort();
         int state = data == null ? -1 : data.state();
         String teams = data == null ? ""
                 : data.teams().get(0).teamNumber() + " vs " + data.teams().get(1).teamNumber();
-        rivals.merge(key, new Rival(nowMs, kind, state, teams, 1),
-                (a, b) -> new Rival(nowMs, kind, state, teams, a.count + 1));
+        Rival before = rivals.get(key);
+        rivals.put(key, new Rival(nowMs, kind, state, teams, before == null ? 1 : before.count + 1));
     }
 
-    /** Rivals heard within {@link #ACTIVE_MS}. */
-    public Map<String, Rival> active(long nowMs) {
+    /** Rivals heard within {@link #ACTIVE_MS}: the {@link RecentSources#CAPACITY} heard last at most. */
+    public synchronized Map<String, Rival> active(long nowMs) {
         Map<String, Rival> out = new TreeMap<>();
-        rivals.forEach((k, r) -> {
-            if (nowMs - r.atMs <= ACTIVE_MS) {
-                out.put(k, r);
+        for (Map.Entry<String, Rival> e : rivals.entries()) {
+            if (nowMs - e.getValue().atMs <= ACTIVE_MS) {
+                out.put(e.getKey(), e.getValue());
             }
-        });
+        }
         return out;
+    }
+
+    /** Rival sources forgotten because more than {@link RecentSources#CAPACITY} sent. */
+    public synchronized long forgotten() {
+        return rivals.forgotten();
     }
 
     /** "" when no other GameController is active, else the warning to show. */
