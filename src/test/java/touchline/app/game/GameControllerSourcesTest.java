@@ -102,6 +102,27 @@ class GameControllerSourcesTest {
         assertEquals(0, sources.suspicious());
     }
 
+    /** One host sending from 10 000 ports (or 10 000 made-up addresses) costs a table of the last 64, not 10 000. */
+    @Test
+    void aFloodOfSourcesKeepsTheLastOnesAndCountsTheForgotten() throws Exception {
+        Datagrams d = new Datagrams("hsl20");
+        GameControllerSources sources = new GameControllerSources(clock, null);
+        sources.heard(GC, 3838, d.packet(1, 3, 0, 600));
+        GameControlData finished = d.packet(0, 4, 0, 600);
+        for (int port = 1; port <= 10_000; port++) {
+            sources.heard(FORGER, port, finished);
+            clock.advance(1);
+        }
+        assertEquals(RecentSources.CAPACITY, sources.allIntruders().size());
+        assertEquals(10_000 - RecentSources.CAPACITY, sources.forgottenIntruders());
+        assertTrue(sources.allIntruders().stream().anyMatch(i -> i.source().equals(FORGER + ":10000")),
+                "the one heard last is kept");
+        assertEquals(GC, sources.pinnedHost());
+        assertTrue(sources.describe().contains((10_000 - RecentSources.CAPACITY) + " other sources forgotten"),
+                sources.describe());
+        assertTrue(sources.warning().contains("another source is sending game states"), sources.warning());
+    }
+
     @Test
     void aGivenAddressIsPinnedEvenWhenAnotherSpeaksFirst() throws Exception {
         Datagrams d = new Datagrams("hsl20");

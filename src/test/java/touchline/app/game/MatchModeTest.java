@@ -30,6 +30,36 @@ class MatchModeTest {
         assertTrue(mode.notice().contains("1 request(s) held back"), mode.notice());
     }
 
+    /**
+     * Sources are kept for the last {@link RecentSources#CAPACITY} heard: a flood of FINISHED from
+     * thousands of made-up sources pushes the GameController's PLAYING out of what was heard last,
+     * yet its claim of play holds the console silent all the same.
+     */
+    @Test
+    void aFloodOfSourcesNeverLiftsTheSilence() {
+        mode.observe(3, "GameController at 10.0.0.2:3838");
+        for (int port = 1; port <= 10_000; port++) {
+            mode.observe(4, "10.0.0.66:" + port);
+        }
+        assertFalse(mode.mayConsoleSend());
+        assertTrue(mode.play().contains("10.0.0.2:3838"), mode.play());
+        clock.advance(MatchMode.PLAY_MEMORY_MS + 1);
+        assertTrue(mode.mayConsoleSend(), "play is over once the claim is old");
+    }
+
+    @Test
+    void aSourceTableKeepsTheLastHeardAndCountsTheForgotten() {
+        RecentSources<Integer> table = new RecentSources<>(3);
+        for (int i = 1; i <= 5; i++) {
+            table.put("s" + i, i);
+        }
+        table.put("s3", 33); // heard again: now the newest
+        table.put("s6", 6);
+        assertEquals(List.of(5, 33, 6), table.values());
+        assertEquals(3, table.forgotten());
+        assertEquals(null, table.get("s4"));
+    }
+
     /** The terminal's line says why the console is silent: listening first at start, or a game in play and whose. */
     @Test
     void theTerminalSaysWhyTheConsoleIsSilent() {
