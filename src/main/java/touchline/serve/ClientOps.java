@@ -105,7 +105,7 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
         for (int i = 0; i < Math.min(ids.length(), MAX_ENTRIES); i++) {
             Long id = uint32(ids.opt(i));
             if (id == null) {
-                refused.add(i, "is not an unsigned 32-bit number");
+                refused.add(i, "not an unsigned 32-bit number");
                 continue;
             }
             viewer.unsubscribe(id.intValue()).ifPresent(reason -> refused.add(-1, reason));
@@ -131,7 +131,7 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
         /** Entry {@code index} (-1: the reason names it) refused for {@code reason}. */
         void add(int index, String reason) {
             if (count++ == 0) {
-                first.append(index < 0 ? "" : what + " " + index + " ").append(reason);
+                first.append(index < 0 ? "" : what + " " + index + ": ").append(reason);
             }
         }
 

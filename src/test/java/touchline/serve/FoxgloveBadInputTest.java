@@ -93,6 +93,39 @@ class FoxgloveBadInputTest {
         }
     }
 
+    /**
+     * Thousands of bad entries in one subscribe or unsubscribe (issue 37: five such frames were
+     * 100 000 replies) get one status each frame, which says how many were refused and the first
+     * reason; entries beyond {@link ClientOps#MAX_ENTRIES} are not looked at, and said so.
+     */
+    @Test
+    void aFrameOfThousandsOfBadEntriesGetsOneStatus() throws Exception {
+        try (ServedField field = new ServedField();
+             FoxgloveTestClient bystander = new FoxgloveTestClient(field.server().port());
+             FoxgloveTestClient hostile = new FoxgloveTestClient(field.server().port())) {
+            int before = bystander(field, bystander);
+            int status = hostile.awaitChannel("/robot/3/status").getInt("id");
+
+            hostile.send("{\"op\":\"subscribe\",\"subscriptions\":[" + "{\"id\":1,\"channelId\":999999},".repeat(1999)
+                    + "{\"id\":2,\"channelId\":" + status + "}]}");
+            String first = lastStatus(hostile, 1);
+            assertTrue(first.contains("1999 of 2000 entries refused, the first: subscription 0: unknown channel 999999"), first);
+            hostile.send("{\"op\":\"subscribe\",\"subscriptions\":[" + "{},".repeat(9999) + "{}]}");
+            String second = lastStatus(hostile, 2);
+            assertTrue(second.contains(ClientOps.MAX_ENTRIES + " of " + ClientOps.MAX_ENTRIES + " entries refused"), second);
+            assertTrue(second.contains("the " + (10_000 - ClientOps.MAX_ENTRIES) + " entries beyond the first "
+                    + ClientOps.MAX_ENTRIES + " ignored"), second);
+            hostile.send("{\"op\":\"unsubscribe\",\"subscriptionIds\":[2," + "-1,".repeat(9998) + "-1]}");
+            assertTrue(lastStatus(hostile, 3).contains("entries refused, the first: subscription id 1: not an unsigned"));
+            hostile.unsubscribe(77); // one more frame: its status arrives after every status of the frames before
+            assertTrue(lastStatus(hostile, 4).contains("no subscription 77"));
+            assertEquals(4, hostile.statuses().size(), "one status per frame: " + hostile.statuses().size());
+            assertEquals(4, field.server().stats().badRequests());
+            Await.until("the one good entry subscribed, then ended", 5000, () -> field.server().stats().subscriptions() == 1);
+            stillReceives(field, bystander, before);
+        }
+    }
+
     @Test
     void aHugeFrameClosesThatConnectionAndAFragmentedOneIsPutTogether() throws Exception {
         try (ServedField field = new ServedField();
