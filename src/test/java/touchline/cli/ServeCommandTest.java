@@ -39,6 +39,24 @@ class ServeCommandTest {
     }
 
     @Test
+    void aTokenFileOthersMayReadStopsItBeforeServingAnOwnerOnlyOneIsUsed(@org.junit.jupiter.api.io.TempDir
+                                                                          java.nio.file.Path tmp) throws Exception {
+        java.nio.file.Path f = tmp.resolve("token");
+        java.nio.file.Files.writeString(f, "fromfile\n");
+        java.nio.file.Files.setPosixFilePermissions(f, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
+        Run run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--token-file", f.toString(),
+                "--seconds", "1");
+        assertEquals(2, run.exit(), run.err());
+        assertTrue(run.err().contains("chmod 600"), run.err());
+        assertFalse(run.out().contains("ws://"), run.out());
+        java.nio.file.Files.setPosixFilePermissions(f, java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"));
+        run = serve("--port", "0", "--robots-port", "0", "--robots-bind", "127.0.0.1", "--token-file", f.toString(),
+                "--seconds", "1", "--stats-every", "1");
+        assertEquals(0, run.exit(), run.err());
+        assertTrue(run.out().matches("(?s).*ws://127\\.0\\.0\\.1:\\d+/\\?token=fromfile\\n.*"), run.out());
+    }
+
+    @Test
     void withATeamTheBudgetMeterIsAThirdConsoleState() throws Exception {
         int teamPort;
         try (java.net.DatagramSocket free = new java.net.DatagramSocket(0, java.net.InetAddress.getLoopbackAddress())) {
