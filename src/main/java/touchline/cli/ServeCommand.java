@@ -198,16 +198,6 @@ final class ServeCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** " (upgrade slots full 33, upgrade deadline 7)", "" before any refusal; and the upgrades waiting now. */
-    private static String refusedBy(ServeStats s) {
-        StringBuilder b = new StringBuilder();
-        s.refusedBy().forEach((why, n) -> b.append(b.isEmpty() ? " (" : ", ").append(why).append(' ').append(n));
-        if (!b.isEmpty()) {
-            b.append(')');
-        }
-        return b + (s.upgrading() == 0 ? "" : ", upgrading " + s.upgrading());
-    }
-
     private void watch(FoxgloveServer server, CountDownLatch stop, PrintWriter out) throws InterruptedException {
         long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
         ServeStats last = server.stats();
@@ -219,9 +209,9 @@ final class ServeCommand implements Callable<Integer> {
             long at = System.nanoTime();
             double secs = Math.max(1e-3, (at - lastAt) / 1e9);
             out.printf("viewers %d, subscriptions %d, channels %d, sent %d (%.0f/s), dropped %d (%.0f/s), "
-                            + "refused %d%s, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
+                            + "%s%s, bad requests %d%s%n", now.viewers(), now.subscriptions(), now.channels(),
                     now.sent(), (now.sent() - last.sent()) / secs, now.dropped(), (now.dropped() - last.dropped()) / secs,
-                    now.refused(), refusedBy(now), now.badRequests(),
+                    now.refusedInWords(), now.upgrading() == 0 ? "" : ", upgrading " + now.upgrading(), now.badRequests(),
                     (now.channelsRefused() == 0 ? "" : ", channels not served (table full) " + now.channelsRefused())
                             + (now.notConverted() == 0 ? "" : ", not converted to standard channels (behind) "
                             + now.notConverted()));

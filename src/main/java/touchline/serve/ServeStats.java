@@ -17,4 +17,11 @@ package touchline.serve;
  */
 public record ServeStats(int viewers, int subscriptions, int channels, long sent, long dropped, long refused,
                          java.util.Map<String, Long> refusedBy, int upgrading, long badRequests, long channelsRefused, long notConverted) {
+
+    /** "refused 40 (upgrade slots full 33, upgrade deadline 7)", "refused 0": the status line's words. */
+    public String refusedInWords() {
+        StringBuilder b = new StringBuilder("refused ").append(refused);
+        refusedBy.forEach((why, n) -> b.append(b.indexOf("(") < 0 ? " (" : ", ").append(why).append(' ').append(n));
+        return refusedBy.isEmpty() ? b.toString() : b.append(')').toString();
+    }
 }

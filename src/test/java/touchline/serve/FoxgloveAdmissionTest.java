@@ -63,6 +63,7 @@ class FoxgloveAdmissionTest {
             assertEquals(101, upgrade(port, "https://Viewer.Example.org"), "added with --allow-origin");
             assertEquals(3, field.server().stats().refused());
             assertEquals(Map.of("web page not allowed", 3L), field.server().stats().refusedBy());
+            assertEquals("refused 3 (web page not allowed 3)", field.server().stats().refusedInWords(), "the status line");
         }
     }
 

@@ -68,6 +68,15 @@ class ViewersUiTest {
         ui.await(30, () -> ((javafx.scene.control.Labeled) view.node().lookup("#viewers-status")).getText()
                 .startsWith("Serving to viewers: ws://127.0.0.1:"));
 
+        // a web page of another site open in this laptop's browser is turned away, and the view says so
+        java.util.concurrent.ExecutionException refused = assertThrows(java.util.concurrent.ExecutionException.class,
+                () -> HttpClient.newHttpClient().newWebSocketBuilder().header("Origin", "https://evil.example.com")
+                        .subprotocols("foxglove.websocket.v1").buildAsync(URI.create(url), new WebSocket.Listener() { })
+                        .get(10, TimeUnit.SECONDS));
+        assertEquals(403, ((java.net.http.WebSocketHandshakeException) refused.getCause()).getResponse().statusCode());
+        ui.await(30, () -> ((javafx.scene.control.Labeled) view.node().lookup("#viewers-status")).getText()
+                .endsWith("refused 1 (web page not allowed 1)"));
+
         List<JSONObject> heard = new CopyOnWriteArrayList<>();
         boolean[] closed = {false}; // written by the client's thread, read by the test's: only ever set
         WebSocket ws = HttpClient.newHttpClient().newWebSocketBuilder().subprotocols("foxglove.websocket.v1")

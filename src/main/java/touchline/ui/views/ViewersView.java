@@ -140,7 +140,9 @@ public final class ViewersView implements View {
         if (!url.getText().equals(shown)) {
             url.setText(shown);
         }
-        String said = toggle.said(); // what the toggle said last, however it was switched (button, menu, Ctrl+Shift+V)
+        // what the toggle said last, however it was switched (button, menu, Ctrl+Shift+V), and who was turned away
+        String said = toggle.said() + server.map(FoxgloveServer::stats).filter(st -> st.refused() > 0)
+                .map(st -> "  ·  " + st.refusedInWords()).orElse("");
         if (!said.equals(saidShown)) {
             status.setText(said);
             saidShown = said;
