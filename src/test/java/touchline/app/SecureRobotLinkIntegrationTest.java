@@ -113,7 +113,7 @@ class SecureRobotLinkIntegrationTest {
             InetSocketAddress robotAddress = new InetSocketAddress("127.0.0.1", robot.port());
             attacker.send(ByteBuffer.wrap(optionRequest("demo.text", true)), robotAddress);
             MessageTag rivalTag = new MessageTag(rival.teamKey());
-            attacker.send(ByteBuffer.wrap(rivalTag.append(MessageTag.TO_ROBOT, 3, Long.MAX_VALUE,
+            attacker.send(ByteBuffer.wrap(rivalTag.append(MessageTag.toRobot(0), 3, Long.MAX_VALUE,
                     optionRequest("demo.text", true))), robotAddress);
             attacker.send(ByteBuffer.wrap(capture), robotAddress);
             Await.until("the robot counted all three", 5000, () -> {

@@ -255,8 +255,11 @@ class UdpTransportTest {
             assertArrayEquals(wire, out.raw(), "the envelope shows what went out, tag included");
             Trailer t = Trailer.of(wire);
             assertInstanceOf(Trailer.Present.class, t);
-            assertEquals(MessageTag.Check.OK, robotSide.check(MessageTag.TO_ROBOT, 3, wire, t));
-            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.TO_ROBOT, 4, wire, t));
+            assertEquals(MessageTag.Check.OK, robotSide.check(MessageTag.toRobot(0), 3, wire, t),
+                    "tagged for the boot of the robot's counter (boot 0)");
+            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.toRobot(0), 4, wire, t));
+            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.toRobot(1), 3, wire, t),
+                    "not valid in another boot of the robot");
             counters[i] = ((Trailer.Present) t).counter();
         }
         assertTrue(counters[1] > counters[0]);
