@@ -232,9 +232,14 @@ class UdpTransportTest {
         send(status(3, Framing.LEGACY)); // untagged in the name of a robot that tags
         assertTrue(next().error().contains("untagged"));
         send(status(5, Framing.LEGACY)); // a robot without a key
-        assertEquals(Authenticity.UNVERIFIED, next().authenticity());
+        assertEquals(Authenticity.UNTAGGED, next().authenticity());
         assertEquals(3, transport.counters().forgedIn());
         assertEquals(1, transport.counters().unverifiedIn());
+        assertTrue(transport.peers().peer(5).isEmpty(), "an untagged robot is no command destination");
+        SendResult refused = transport.send(5, Fumanoid.Message.newBuilder().setRobotID(0).setExtension(
+                Fumanoid.debugOptionListRequest, Fumanoid.DebugOptionListRequest.getDefaultInstance()).build());
+        assertFalse(refused.isSent());
+        assertTrue(refused.reason().contains("untagged"), refused.reason());
     }
 
     @Test
