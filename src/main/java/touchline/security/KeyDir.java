@@ -40,6 +40,9 @@ public final class KeyDir {
     private static final Set<PosixFilePermission> OWNER_ONLY = PosixFilePermissions.fromString("rw-------");
     private static final Set<PosixFilePermission> READABLE = PosixFilePermissions.fromString("rw-r--r--");
 
+    /** Serialises the file locks of this process: two channels of one JVM may not lock one file at once. */
+    private static final Object LOCKS = new Object();
+
     private final Path dir;
 
     public KeyDir(Path dir) {
@@ -253,9 +256,6 @@ public final class KeyDir {
             return damaged;
         }
     }
-
-    /** Serialises the file locks of this process: two channels of one JVM may not lock one file at once. */
-    private static final Object LOCKS = new Object();
 
     /**
      * Rewrites a small file in place under an exclusive lock on it, for the console processes of
