@@ -89,12 +89,13 @@ class BootReplayIntegrationTest {
         KeyDir keys = keys();
         // the earlier boot, heard by a stranger's socket (the console is not running yet)
         List<byte[]> capture = new ArrayList<>();
-        try (DatagramChannel sniffer = DatagramChannel.open().bind(new InetSocketAddress("127.0.0.1", 0));
-             RobotProcess earlier = robot3(keys, ((InetSocketAddress) sniffer.getLocalAddress()).getPort()).start()) {
+        try (java.net.DatagramSocket sniffer = new java.net.DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+             RobotProcess earlier = robot3(keys, sniffer.getLocalPort()).start()) {
+            sniffer.setSoTimeout(10_000); // a bound, not a pause: the robot sends a Status every 200 ms
             while (capture.size() < 6) {
-                ByteBuffer b = ByteBuffer.allocate(2048);
-                sniffer.receive(b);
-                capture.add(java.util.Arrays.copyOf(b.array(), b.position()));
+                java.net.DatagramPacket p = new java.net.DatagramPacket(new byte[2048], 2048);
+                sniffer.receive(p);
+                capture.add(java.util.Arrays.copyOf(p.getData(), p.getLength()));
             }
         }
         try (Console console = console(keys);
