@@ -6,7 +6,8 @@ package touchline.security;
  * counter of the boot believed ({@link RobotBoots}) must be higher than the last one taken; a
  * higher boot is the robot's restart (accepted, noted); a lower boot is a capture of an earlier
  * boot and is refused, so no old datagram can displace the robot's current boot or make the
- * console refuse its current datagrams. Pure; bounded by the 256 robot ids. Not thread-safe: its
+ * console refuse its current datagrams. Bounded by the 256 robot ids; a new boot believed goes to
+ * {@link RobotBoots} (kept in the key directory), everything else is memory. Not thread-safe: its
  * owner ({@link InboundVerifier}) checks one datagram at a time. Nothing is allocated per
  * datagram (it runs for every tagged datagram the console takes).
  */
