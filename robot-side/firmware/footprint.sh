@@ -43,7 +43,8 @@ CFLAGS=(-std=c99 -Os -mcpu=cortex-m3 -mthumb -DFW_LOG_NONE -ffunction-sections -
         -I"$HERE/third_party/libsodium/include" -I"$OUT/gen")
 CORE=("$HERE"/src/fw_{framing,registry,gamecontroller,reliable,wlan,robot,gs1500,auth}.c
       "$HERE"/third_party/libsodium/{auth_hmacsha256,hash_sha256_cp,verify,sodium_glue}.c
-      "$HERE"/third_party/nanopb/pb_{common,encode,decode}.c "$OUT/gen/fumanoid.pb.c" "$HERE/board/board_main.c")
+      "$HERE"/third_party/nanopb/pb_{common,encode,decode}.c "$OUT/gen/fumanoid.pb.c" "$HERE/board/board_main.c"
+      "$HERE/board/board_boot.c")
 echo "footprint: $(arm-none-eabi-gcc --version | head -1)" >&2
 for f in "${CORE[@]}"; do
   extra=()

@@ -4,6 +4,7 @@
  * is a text line, which exercises the same encode-and-send path as every other option. */
 #include <stdbool.h>
 #include <stdint.h>
+#include "board_boot.h"
 #include "fw_gs1500.h"
 #include "fw_robot.h"
 /* The team key (docs/security.md): `touchline keys show --c-header team_key.h`, built with
@@ -74,24 +75,12 @@ static robot_config g_robot = {
     FW_GC_RETURN_PERIOD_MS, /* return packets to the GameController's own address (2026 field) */
 };
 
-/* Survives a reset (not a power cycle): counts boots so two boots never share an id. */
-static uint32_t g_boots __attribute__((section(".noinit")));
-
-/* The high word of the robot's own tag counter, different on every boot: the STM32F103 has no
- * random number generator, so this mixes its 96-bit unique id, the reset counter above and the
- * power-on garbage of that RAM word (docs/security.md says what this does and does not give). */
-static uint32_t board_boot_id(void)
-{
-    const volatile uint32_t *uid = (const volatile uint32_t *)0x1FFFF7E8u;
-    return (uid[0] ^ uid[1] ^ uid[2]) + ++g_boots * 2654435761u;
-}
-
 int main(void)
 {
     gs_module_init(&g_module, &k_serial, &k_gs);
     wlan_use(&g_module.driver);
     g_robot.team_key = BOARD_TEAM_KEY;
-    g_robot.boot_id = board_boot_id();
+    g_robot.boot_id = board_next_boot(); /* before the robot talks: requests are bound to it */
     robot_init(&g_robot, g_ms);
     for (;;) robot_poll(g_ms);
 }

@@ -70,14 +70,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     robot_dispatch(copy, (uint16_t)size, NULL, now);
     if (!(size >= 2 && copy[0] == 'R' && copy[1] == 'G') && robot_auth_stats()->accepted != accepted_before) abort();
     /* the bare verifier with a fresh state (counter check passes; the tag must still fail) */
-    fw_auth_init(&probe, &key);
+    fw_auth_init(&probe, &key, 0);
     if (fw_auth_check(&probe, FW_AUTH_DIR_CONSOLE, 3, copy, (uint16_t)size, &payload_len) == FW_AUTH_OK) abort();
     free(copy);
     /* 2. the same bytes tagged right: they reach the whole receive path */
     if (size <= FW_MAX_DATAGRAM) {
         uint16_t n;
         memcpy(tagged, data, size);
-        n = fw_auth_append(&key, FW_AUTH_DIR_CONSOLE, 3, ++counter, tagged, (uint16_t)size, sizeof tagged);
+        n = fw_auth_append(&key, FW_AUTH_DIR_CONSOLE, 3, 0x12345678u, ++counter, tagged, (uint16_t)size, sizeof tagged);
         copy = malloc(n);
         memcpy(copy, tagged, n);
         robot_dispatch(copy, n, NULL, now);

@@ -42,9 +42,9 @@ int main(int argc, char **argv)
     for (i = 0; i < n; i++) {
         uint8_t *d = g_data + (size_t)i * g_len;
         memset(d, (int)(i & 0x7f), payload_bytes);
-        fw_auth_append(&g_key, FW_AUTH_DIR_CONSOLE, 3, 1000u + i, d, payload_bytes, g_len);
+        fw_auth_append(&g_key, FW_AUTH_DIR_CONSOLE, 3, 0, 1000u + i, d, payload_bytes, g_len);
     }
-    fw_auth_init(&s, &g_key);
+    fw_auth_init(&s, &g_key, 0);
     bench_loop(&s, n);
     printf("%u of %u datagrams of %u bytes accepted\n", g_accepted, n, (unsigned)g_len);
     free(g_data);

@@ -7,10 +7,13 @@
  *                   [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]
  *                   [--reliable-peer HOST:PORT] [--seed S] [--rto MS]
  *                   [--gc-return HOST[:PORT]] [--gc-return-rate HZ]
- *                   [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE]
+ *                   [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE [--boot-file FILE]]
  *
  * --team-key FILE: the team key (`team.key` of `touchline keys new`); without it the robot
  * runs in lab mode (no tags checked or sent), as before keys existed (docs/security.md).
+ * --boot-file FILE: the simulated flash word of the board's boot number (board/board_boot.c):
+ * each start takes one above it (never below the clock's seconds) and writes it back; without
+ * it the boot number is the clock's seconds.
  *
  * First line on stdout: "listening on port <port>". */
 #define _POSIX_C_SOURCE 200809L
@@ -61,7 +64,8 @@ static void usage(const char *why)
             "                       [--reliable] [--reliable-print] [--reliable-send FILE] [--mathe N]\n"
             "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n"
             "                       [--gc-return HOST[:PORT]] [--gc-return-rate HZ]\n"
-            "                       [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE]\n",
+            "                       [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE]\n"
+            "                       [--boot-file FILE]\n",
             why);
     exit(2);
 }
@@ -206,14 +210,26 @@ static void read_team_key(const char *path, fw_team_key *out)
     }
 }
 
-/* A random boot id (the high word of the robot's own counter): a restart is visible as a new one. */
-static uint32_t random_boot_id(void)
+/* The boot number (the high word of the robot's own counter), counted up like the board's flash
+ * counter: one above the number kept in path (the simulated flash; NULL = none) and never below
+ * the clock's seconds, so a lost file does not go back either. Written back before the robot talks. */
+static uint32_t next_boot(const char *path)
 {
-    uint32_t v = 0;
-    FILE *f = fopen("/dev/urandom", "rb");
-    if (f == NULL || fread(&v, sizeof v, 1, f) != 1) v = (uint32_t)time(NULL) ^ (uint32_t)getpid() << 16;
-    if (f != NULL) fclose(f);
-    return v;
+    uint32_t boot = (uint32_t)time(NULL);
+    unsigned long kept;
+    FILE *f;
+    if (path == NULL) return boot;
+    f = fopen(path, "r");
+    if (f != NULL) {
+        if (fscanf(f, "%lu", &kept) == 1 && (uint32_t)kept + 1u > boot) boot = (uint32_t)kept + 1u;
+        fclose(f);
+    }
+    f = fopen(path, "w");
+    if (f == NULL || fprintf(f, "%lu\n", (unsigned long)boot) < 0 || fclose(f) != 0) {
+        fprintf(stderr, "touchline-robot: cannot keep the boot number in %s: %s\n", path, strerror(errno));
+        exit(2);
+    }
+    return boot;
 }
 
 int main(int argc, char **argv)
@@ -227,6 +243,7 @@ int main(int argc, char **argv)
     static wlan_peer peer, gc_return, team_msg;
     struct sockaddr_in console, peer_addr;
     const char *console_arg = NULL, *peer_arg = NULL, *send_path = NULL, *gc_return_arg = NULL, *team_msg_arg = NULL;
+    const char *boot_path = NULL;
     char name[32];
     long port = 3838;
     bool wifi_sim = false, have_id = false;
@@ -292,13 +309,14 @@ int main(int argc, char **argv)
             NEED_VALUE();
             read_team_key(v, &team_key);
             cfg.team_key = &team_key;
-            cfg.boot_id = random_boot_id();
         }
+        else if (strcmp(a, "--boot-file") == 0) { NEED_VALUE(); boot_path = v; }
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) usage("help");
         else usage("unknown argument");
 #undef NEED_VALUE
     }
     if (!have_id) usage("--id is required");
+    if (cfg.team_key != NULL) cfg.boot_id = next_boot(boot_path);
     if (console_arg == NULL) usage("--console HOST:PORT is required");
     if (port < 0 || port > 65535) usage("--port must be 0..65535");
     if (host_parse_address(console_arg, &console) != 0) usage("cannot resolve --console address");
@@ -389,7 +407,7 @@ int main(int argc, char **argv)
 
     if (cfg.team_key != NULL) {
         fprintf(stderr, "robot %ld: team key %02x%02x%02x%02x: console datagrams checked, own datagrams tagged "
-                "(boot id %08lx)\n", (long)cfg.robot_id, team_key.key_id[0], team_key.key_id[1], team_key.key_id[2],
+                "(boot %lu)\n", (long)cfg.robot_id, team_key.key_id[0], team_key.key_id[1], team_key.key_id[2],
                 team_key.key_id[3], (unsigned long)cfg.boot_id);
     } else {
         fprintf(stderr, "robot %ld: no team key: lab mode (nothing checked or tagged)\n", (long)cfg.robot_id);

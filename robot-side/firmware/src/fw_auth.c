@@ -7,9 +7,10 @@ static const uint8_t k_magic[4] = {'T', 'L', 'A', '2'};
 /* static: the HMAC state is 208 bytes, which the receive path's stack need not carry */
 static crypto_auth_hmacsha256_state g_hmac;
 
-void fw_auth_init(fw_auth_state *s, const fw_team_key *key)
+void fw_auth_init(fw_auth_state *s, const fw_team_key *key, uint32_t boot)
 {
     s->key = key;
+    s->boot = boot;
     s->highest = 0;
     s->seen = false;
     s->count = (fw_auth_counters){0};
@@ -32,18 +33,23 @@ static uint64_t get_u64(const uint8_t *p)
     return v;
 }
 
-/* The tag over dir ‖ robot ‖ id_counter (key-id and big-endian counter, 12 bytes, as in the
- * trailer) ‖ payload: the trailer's own bytes are hashed, nothing is rebuilt. */
-static void mac(const fw_team_key *k, uint8_t dir, uint8_t robot, const uint8_t *id_counter, const uint8_t *payload,
-                uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
+/* The tag over dir ‖ robot ‖ boot (console → robot only) ‖ id_counter (key-id and big-endian
+ * counter, 12 bytes, as in the trailer) ‖ payload: the trailer's own bytes are hashed, nothing is
+ * rebuilt. */
+static void mac(const fw_team_key *k, uint8_t dir, uint8_t robot, uint32_t boot, const uint8_t *id_counter,
+                const uint8_t *payload, uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
 {
-    uint8_t head[2];
+    uint8_t head[6];
     uint8_t full[crypto_auth_hmacsha256_BYTES];
     uint8_t i;
     head[0] = dir;
     head[1] = robot;
+    head[2] = (uint8_t)(boot >> 24);
+    head[3] = (uint8_t)(boot >> 16);
+    head[4] = (uint8_t)(boot >> 8);
+    head[5] = (uint8_t)boot;
     crypto_auth_hmacsha256_init(&g_hmac, k->key, FW_AUTH_KEY_SIZE);
-    crypto_auth_hmacsha256_update(&g_hmac, head, sizeof head);
+    crypto_auth_hmacsha256_update(&g_hmac, head, dir == FW_AUTH_DIR_CONSOLE ? 6u : 2u);
     crypto_auth_hmacsha256_update(&g_hmac, id_counter, FW_AUTH_KEY_ID_SIZE + 8u);
     crypto_auth_hmacsha256_update(&g_hmac, payload, n);
     crypto_auth_hmacsha256_final(&g_hmac, full);
@@ -58,22 +64,22 @@ static void put_id_counter(const fw_team_key *k, uint64_t counter, uint8_t *p)
     put_u64(p + FW_AUTH_KEY_ID_SIZE, counter);
 }
 
-void fw_auth_tag(const fw_team_key *k, uint8_t dir, uint8_t robot, uint64_t counter, const uint8_t *payload,
-                 uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
+void fw_auth_tag(const fw_team_key *k, uint8_t dir, uint8_t robot, uint32_t boot, uint64_t counter,
+                 const uint8_t *payload, uint16_t n, uint8_t tag[FW_AUTH_TAG_SIZE])
 {
     uint8_t id_counter[FW_AUTH_KEY_ID_SIZE + 8];
     put_id_counter(k, counter, id_counter);
-    mac(k, dir, robot, id_counter, payload, n, tag);
+    mac(k, dir, robot, boot, id_counter, payload, n, tag);
 }
 
-uint16_t fw_auth_append(const fw_team_key *k, uint8_t dir, uint8_t robot, uint64_t counter, uint8_t *d, uint16_t n,
-                        uint16_t cap)
+uint16_t fw_auth_append(const fw_team_key *k, uint8_t dir, uint8_t robot, uint32_t boot, uint64_t counter, uint8_t *d,
+                        uint16_t n, uint16_t cap)
 {
     uint8_t i;
     if ((uint32_t)n + FW_AUTH_TRAILER > cap) return 0;
     for (i = 0; i < 4; i++) d[n + i] = k_magic[i];
     put_id_counter(k, counter, d + n + 4);
-    mac(k, dir, robot, d + n + 4, d, n, d + n + 16);
+    mac(k, dir, robot, boot, d + n + 4, d, n, d + n + 16);
     return (uint16_t)(n + FW_AUTH_TRAILER);
 }
 
@@ -128,7 +134,7 @@ fw_auth_result fw_auth_check(fw_auth_state *s, uint8_t dir, uint8_t robot, const
         }
     }
     counter = get_u64(t + 8);
-    mac(s->key, dir, robot, t + 4, d, n, tag);
+    mac(s->key, dir, robot, s->boot, t + 4, d, n, tag);
     if (crypto_verify_16(tag, t + 16) != 0) {
         s->count.bad_tag++;
         return FW_AUTH_BAD_TAG;

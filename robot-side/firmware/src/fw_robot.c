@@ -68,7 +68,7 @@ static uint64_t next_counter(void)
 static uint16_t tag_outgoing(uint16_t n)
 {
     if (g_cfg->team_key == 0 || n == 0) return n;
-    return fw_auth_append(g_cfg->team_key, FW_AUTH_DIR_ROBOT, (uint8_t)g_cfg->robot_id, next_counter(), g_tx, n,
+    return fw_auth_append(g_cfg->team_key, FW_AUTH_DIR_ROBOT, (uint8_t)g_cfg->robot_id, 0, next_counter(), g_tx, n,
                           FW_MAX_DATAGRAM);
 }
 
@@ -232,7 +232,7 @@ void robot_init(const robot_config *cfg, uint32_t now)
         g_next_due[i] = 0;
     }
     fw_registry_use(k_registry, sizeof k_registry / sizeof k_registry[0]);
-    fw_auth_init(&g_auth, cfg->team_key);
+    fw_auth_init(&g_auth, cfg->team_key, cfg->boot_id); /* the console's requests are bound to this boot */
     g_out_seq = 0;
     g_have_stream_peer = cfg->reliable_peer != 0;
     if (g_have_stream_peer) g_stream_peer = *cfg->reliable_peer;

@@ -95,7 +95,8 @@ typedef struct {
      * from the console must carry a right tag and a newer counter (GameController packets are
      * not tagged: league rules), and the robot tags everything it sends to the console. */
     const fw_team_key *team_key;
-    uint32_t boot_id;                /* random per boot: the high word of the robot's own counter */
+    uint32_t boot_id;                /* counted up every boot (kept in flash): the high word of the robot's own
+                                      * counter; the console's requests are bound to it */
 } robot_config;
 
 typedef struct {

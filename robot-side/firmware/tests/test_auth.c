@@ -19,16 +19,21 @@ static fw_team_key golden_key(void)
 
 static void test_golden_vector(void)
 {
-    /* the first 16 bytes of HMAC-SHA-256 (trailer version 2) */
-    static const uint8_t to_robot[16] = {0x23, 0x05, 0x8b, 0xc4, 0x41, 0x1f, 0xbf, 0x26,
-                                         0x98, 0x86, 0x13, 0x23, 0x3d, 0x4d, 0x9f, 0x5b};
+    /* the first 16 bytes of HMAC-SHA-256 (trailer version 2); console → robot for the robot's boot 7 */
+    static const uint8_t to_robot[16] = {0xf8, 0x9a, 0xe0, 0xad, 0xf6, 0x49, 0xe6, 0xd7,
+                                         0xc5, 0x78, 0x14, 0x0c, 0xb7, 0x9a, 0x8a, 0x5f};
     static const uint8_t from_robot[16] = {0x5c, 0x6b, 0x40, 0x99, 0xc5, 0x65, 0x82, 0x88,
                                            0xdf, 0xe0, 0x2f, 0x50, 0x62, 0x8d, 0xca, 0x73};
     fw_team_key k = golden_key();
     uint8_t tag[16];
-    fw_auth_tag(&k, FW_AUTH_DIR_CONSOLE, 3, 0x0123456789abcdefull, (const uint8_t *)"hello", 5, tag);
+    fw_auth_tag(&k, FW_AUTH_DIR_CONSOLE, 3, 7, 0x0123456789abcdefull, (const uint8_t *)"hello", 5, tag);
     CHECK(memcmp(tag, to_robot, 16) == 0);
-    fw_auth_tag(&k, FW_AUTH_DIR_ROBOT, 3, 0x0123456789abcdefull, (const uint8_t *)"hello", 5, tag);
+    fw_auth_tag(&k, FW_AUTH_DIR_CONSOLE, 3, 8, 0x0123456789abcdefull, (const uint8_t *)"hello", 5, tag);
+    CHECK(memcmp(tag, to_robot, 16) != 0); /* the robot's next boot: another tag */
+    /* robot → console: the boot is in the counter, no boot field is hashed */
+    fw_auth_tag(&k, FW_AUTH_DIR_ROBOT, 3, 0, 0x0123456789abcdefull, (const uint8_t *)"hello", 5, tag);
+    CHECK(memcmp(tag, from_robot, 16) == 0);
+    fw_auth_tag(&k, FW_AUTH_DIR_ROBOT, 3, 8, 0x0123456789abcdefull, (const uint8_t *)"hello", 5, tag);
     CHECK(memcmp(tag, from_robot, 16) == 0);
 }
 
@@ -36,7 +41,7 @@ static uint16_t tagged(const fw_team_key *k, uint8_t robot, uint64_t counter, ui
 {
     uint16_t n = (uint16_t)strlen(payload);
     memcpy(d, payload, n);
-    return fw_auth_append(k, FW_AUTH_DIR_CONSOLE, robot, counter, d, n, 200);
+    return fw_auth_append(k, FW_AUTH_DIR_CONSOLE, robot, 7, counter, d, n, 200); /* for the robot's boot 7 */
 }
 
 static void test_check(void)
@@ -46,7 +51,7 @@ static void test_check(void)
     uint8_t d[200], replay[200];
     uint16_t n, rn, payload = 0;
     other.key[0] ^= 1;
-    fw_auth_init(&s, &k);
+    fw_auth_init(&s, &k, 7);
 
     n = tagged(&k, 3, 100, d, "option on");
     CHECK_EQ(n, 9 + FW_AUTH_TRAILER);
@@ -76,7 +81,7 @@ static void test_check(void)
     n = tagged(&k, 3, 104, d, "option on");
     d[n - 1] ^= 1;
     CHECK_EQ(fw_auth_check(&s, FW_AUTH_DIR_CONSOLE, 3, d, n, &payload), FW_AUTH_BAD_TAG);
-    n = (uint16_t)fw_auth_append(&k, FW_AUTH_DIR_ROBOT, 3, 105, (uint8_t *)memcpy(d, "status", 6), 6, 200);
+    n = (uint16_t)fw_auth_append(&k, FW_AUTH_DIR_ROBOT, 3, 7, 105, (uint8_t *)memcpy(d, "status", 6), 6, 200);
     CHECK_EQ(fw_auth_check(&s, FW_AUTH_DIR_CONSOLE, 3, d, n, &payload), FW_AUTH_BAD_TAG);
     /* the wrong key: same key-id forged → bad tag; another key-id → wrong key */
     n = tagged(&other, 3, 106, d, "option on");
@@ -94,7 +99,24 @@ static void test_check(void)
     CHECK_EQ(s.count.bad_tag, 5u);
     CHECK_EQ(s.count.wrong_key, 1u);
     /* no room for the trailer */
-    CHECK_EQ(fw_auth_append(&k, FW_AUTH_DIR_CONSOLE, 3, 1, d, 180, 200), 0);
+    CHECK_EQ(fw_auth_append(&k, FW_AUTH_DIR_CONSOLE, 3, 7, 1, d, 180, 200), 0);
+}
+
+/* A reboot: the requests of the earlier boot, captured and played in counter order, are refused. */
+static void test_captures_of_an_earlier_boot(void)
+{
+    fw_team_key k = golden_key();
+    fw_auth_state before, after;
+    uint8_t d[200];
+    uint16_t n, payload = 0;
+    fw_auth_init(&before, &k, 7);
+    n = tagged(&k, 3, 500, d, "option on");
+    CHECK_EQ(fw_auth_check(&before, FW_AUTH_DIR_CONSOLE, 3, d, n, &payload), FW_AUTH_OK);
+    fw_auth_init(&after, &k, 8); /* the robot restarted: boot 8, no counter remembered */
+    CHECK_EQ(fw_auth_check(&after, FW_AUTH_DIR_CONSOLE, 3, d, n, &payload), FW_AUTH_BAD_TAG);
+    CHECK_EQ(after.count.bad_tag, 1u);
+    n = fw_auth_append(&k, FW_AUTH_DIR_CONSOLE, 3, 8, 400, (uint8_t *)memcpy(d, "option on", 9), 9, 200);
+    CHECK_EQ(fw_auth_check(&after, FW_AUTH_DIR_CONSOLE, 3, d, n, &payload), FW_AUTH_OK);
 }
 
 static void test_lab_mode(void)
@@ -103,7 +125,7 @@ static void test_lab_mode(void)
     fw_auth_state s;
     uint8_t d[200];
     uint16_t n, payload = 0;
-    fw_auth_init(&s, 0);
+    fw_auth_init(&s, 0, 7);
     CHECK_EQ(fw_auth_check(&s, FW_AUTH_DIR_CONSOLE, 3, (const uint8_t *)"plain", 5, &payload), FW_AUTH_LAB);
     CHECK_EQ(payload, 5);
     n = tagged(&k, 3, 1, d, "tagged");
@@ -125,6 +147,7 @@ static void test_parse_hex(void)
 int main(void)
 {
     test_golden_vector();
+    test_captures_of_an_earlier_boot();
     test_check();
     test_lab_mode();
     test_parse_hex();

@@ -68,7 +68,7 @@ final class TagBenchCommand implements Callable<Integer> {
 
     private void jdkTag(Mac mac, byte[] head) {
         byte[] d = datagrams.get((int) (counter % datagrams.size()));
-        head[0] = MessageTag.FROM_ROBOT;
+        head[0] = MessageTag.FROM_ROBOT.direction();
         head[1] = 3;
         head[13] = (byte) ++counter;
         mac.update(head);

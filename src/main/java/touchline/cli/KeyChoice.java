@@ -4,6 +4,7 @@ import touchline.security.CounterSource;
 import touchline.security.KeyDir;
 import touchline.security.KeyException;
 import touchline.security.LinkSecurity;
+import touchline.security.RobotBoots;
 
 import java.nio.file.Path;
 import java.util.Map;
@@ -43,7 +44,8 @@ final class KeyChoice {
         try {
             // The real clock, made here once: the keys are chosen before any console exists.
             LinkSecurity s = LinkSecurity.with(dir.teamKey(),
-                    new CounterSource(new touchline.app.SystemClock()::nowMicros, dir.counterStore()));
+                    new CounterSource(new touchline.app.SystemClock()::nowMicros, dir.counterStore()),
+                    new RobotBoots(dir.bootStore()));
             System.err.println("keys: " + s.describe() + " (" + dir.path() + ")");
             return s;
         } catch (KeyException e) {

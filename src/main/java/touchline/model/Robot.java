@@ -51,9 +51,9 @@ final class Robot {
         if (e.authenticity() == Authenticity.VERIFIED) {
             verified++;
             auth = Authenticity.VERIFIED;
-        } else if (e.authenticity() == Authenticity.UNVERIFIED) {
+        } else if (e.authenticity() == Authenticity.UNVERIFIED || e.authenticity() == Authenticity.UNTAGGED) {
             unverified++;
-            auth = Authenticity.UNVERIFIED;
+            auth = e.authenticity();
         }
         Fumanoid.Status reported = e.extension(Fumanoid.status);
         if (reported != null) {

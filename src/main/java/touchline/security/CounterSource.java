@@ -5,39 +5,33 @@ import java.util.function.LongSupplier;
 /**
  * The console's strictly increasing counter for the tags it sends: max(last + 1, microseconds
  * since the epoch), so a clock that jumps back still moves forward. Runs of the console never
- * go back either: every counter handed out stays below a reservation kept in the key directory
- * ({@link Store}), renewed 10 s ahead whenever the counter reaches it, and a new run starts
- * above the last reservation.
+ * go back either, nor do two consoles of one laptop (the window and {@code touchline options})
+ * go back against each other: every counter is taken from a {@link Store} shared by them (a
+ * file in the key directory, under a file lock), which hands out one above the last any of them
+ * took.
  */
 public final class CounterSource {
 
-    /** Where the reservation lives (a file in the key directory; memory in tests). */
+    /** Where the last counter lives (a file in the key directory; memory in tests). */
     public interface Store {
-        long load();
-
-        void save(long reservedUpTo);
+        /**
+         * Atomically, for every process using the store: the greater of {@code atLeast} and one
+         * above the last counter taken; kept as the last counter taken.
+         */
+        long take(long atLeast);
     }
-
-    static final long RESERVE_MICROS = 10_000_000;
 
     private final LongSupplier micros;
     private final Store store;
     private long last;
-    private long reserved;
 
     public CounterSource(LongSupplier micros, Store store) {
         this.micros = micros;
         this.store = store;
-        this.last = store.load();
-        this.reserved = last;
     }
 
     public synchronized long next() {
-        long c = Math.max(last + 1, micros.getAsLong());
-        if (c > reserved) {
-            reserved = c + RESERVE_MICROS;
-            store.save(reserved);
-        }
+        long c = store.take(Math.max(last + 1, micros.getAsLong()));
         last = c;
         return c;
     }
@@ -48,13 +42,9 @@ public final class CounterSource {
             private long value;
 
             @Override
-            public long load() {
+            public synchronized long take(long atLeast) {
+                value = Math.max(atLeast, value + 1);
                 return value;
-            }
-
-            @Override
-            public void save(long reservedUpTo) {
-                value = reservedUpTo;
             }
         };
     }

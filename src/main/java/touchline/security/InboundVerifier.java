@@ -3,9 +3,10 @@ package touchline.security;
 /**
  * The console's check of the small robots' datagrams: strips the trailer, checks the tag with
  * the team key and the counter with a {@link ReplayGuard}. Without a key every datagram is
- * {@link Authenticity#UNVERIFIED} (a tagged one has its trailer taken off). A robot that has sent
- * verified data is expected to go on tagging: untagged data claiming its id is then forged.
- * Pure; called on the network thread.
+ * {@link Authenticity#UNVERIFIED} (a tagged one has its trailer taken off). With a key an untagged
+ * robot is {@link Authenticity#UNTAGGED} (shown, never commanded); a robot that has sent verified
+ * data is expected to go on tagging: untagged data claiming its id is then forged. Pure; called
+ * on the network thread.
  */
 public final class InboundVerifier {
 
@@ -19,13 +20,24 @@ public final class InboundVerifier {
     private final MessageTag tag;
     /** The {@link #precheck}'s own Mac: it runs on another thread than {@link #check} (a Mac is not thread-safe). */
     private final MessageTag pretag;
-    private final ReplayGuard guard = new ReplayGuard();
+    private final ReplayGuard guard;
+    private final RobotBoots boots;
     private final boolean[] tagged = new boolean[256];
 
-    /** @param key the team key, or null for a console without one (everything unverified) */
-    public InboundVerifier(TeamKey key) {
+    /**
+     * @param key   the team key, or null for a console without one (everything unverified)
+     * @param boots the boots believed, shared with the console's tagger
+     */
+    public InboundVerifier(TeamKey key, RobotBoots boots) {
         this.tag = key == null ? null : new MessageTag(key);
         this.pretag = key == null ? null : new MessageTag(key);
+        this.boots = boots;
+        this.guard = new ReplayGuard(boots);
+    }
+
+    /** A verifier whose boots live in memory only (tests, benchmarks). */
+    public InboundVerifier(TeamKey key) {
+        this(key, new RobotBoots(RobotBoots.inMemory()));
     }
 
     public boolean hasKey() {
@@ -67,7 +79,7 @@ public final class InboundVerifier {
             case NO_TAG -> {
                 return tagged[id]
                         ? forged(payload, "untagged data claiming robot " + robotId + ", which tags its datagrams")
-                        : new Result(Authenticity.UNVERIFIED, payload, null, null);
+                        : new Result(Authenticity.UNTAGGED, payload, null, null);
             }
             case TRUNCATED -> {
                 return forged(payload, "tag cut short (" + ((Trailer.Truncated) trailer).bytes() + " of 32 trailer bytes)");
@@ -87,13 +99,20 @@ public final class InboundVerifier {
             default -> { }
         }
         long counter = ((Trailer.Present) trailer).counter();
+        int believed = boots.believed(id).orElse(0);
         ReplayGuard.Verdict v = guard.check(robotId, counter);
+        if (v == ReplayGuard.Verdict.EARLIER_BOOT) {
+            return forged(payload, "from an earlier boot of the robot (boot " + Integer.toUnsignedString((int) (counter >>> 32))
+                    + ", the robot runs boot " + Integer.toUnsignedString(believed) + "): an old capture; a robot whose"
+                    + " boot number was erased (flash wiped) is taken again after deleting " + KeyDir.BOOTS
+                    + " in the key directory");
+        }
         if (!v.accepted()) {
             return forged(payload, "replayed or old counter " + Long.toUnsignedString(counter, 16));
         }
         tagged[id] = true;
-        return new Result(Authenticity.VERIFIED, payload, null,
-                v.restarted() ? "robot " + robotId + " restarted: counter reset, accepted" : null);
+        return new Result(Authenticity.VERIFIED, payload, null, v.restarted() ? "robot " + robotId
+                + " restarted (boot " + Integer.toUnsignedString((int) (counter >>> 32)) + "): counter reset, accepted" : null);
     }
 
     private static Result forged(int payload, String reason) {

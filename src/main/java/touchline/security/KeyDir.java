@@ -18,7 +18,8 @@ import java.util.Set;
  * The key directory (docs/security.md): {@code team.key} for the small robots' tags and the
  * CURVE key pairs of the NAO link ({@code nao-server.secret/.public}, {@code console.secret/.public}),
  * made with owner-only permissions (directory 0700, files 0600, the {@code .public} files 0644),
- * plus {@code console.counter}, the reservation of the console's tag counter. The one place that
+ * plus {@code console.counter}, the console's last tag counter, and {@code robots.boot}, the robots'
+ * boots believed. The one place that
  * finds the directory, reads key files (checking that secret ones are the owner's only) and makes
  * keys, the CURVE pairs included (JeroMQ's Curve25519, valid libzmq keys); the NAO link takes its
  * part with {@code touchline.transport.nao.NaoClientKeys}.
@@ -31,11 +32,16 @@ public final class KeyDir {
     public static final String CONSOLE_SECRET = "console.secret";
     public static final String CONSOLE_PUBLIC = "console.public";
     public static final String COUNTER = "console.counter";
+    /** The highest boot verified from each small robot ({@link RobotBoots}). */
+    public static final String BOOTS = "robots.boot";
     /** The five key files {@link #create} writes (not the counter). */
     public static final List<String> FILES = List.of(TEAM_KEY, NAO_SERVER_SECRET, NAO_SERVER_PUBLIC, CONSOLE_SECRET, CONSOLE_PUBLIC);
 
     private static final Set<PosixFilePermission> OWNER_ONLY = PosixFilePermissions.fromString("rw-------");
     private static final Set<PosixFilePermission> READABLE = PosixFilePermissions.fromString("rw-r--r--");
+
+    /** Serialises the file locks of this process: two channels of one JVM may not lock one file at once. */
+    private static final Object LOCKS = new Object();
 
     private final Path dir;
 
@@ -139,6 +145,7 @@ public final class KeyDir {
             write(CONSOLE_PUBLIC, "# This console's CURVE public key: the NAO lists one such file per team laptop.\n"
                     + made + "public-key = " + console[0] + "\n", false);
             Files.deleteIfExists(file(COUNTER)); // a new key starts its own counter
+            Files.deleteIfExists(file(BOOTS)); // and robots flashed with it their own boots
             return team;
         } catch (IOException e) {
             throw new KeyException("cannot write the keys into " + dir + ": " + e);
@@ -177,31 +184,108 @@ public final class KeyDir {
         }
     }
 
-    /** The console counter's reservation in {@code console.counter}; a damaged file counts as 0 (the clock rules). */
+    /**
+     * The console's last tag counter in {@code console.counter}, shared by every console process of
+     * this laptop: each counter is taken under a lock on the file (a damaged file counts as 0, the
+     * clock rules; a read-only key directory leaves the counter to the clock and this run).
+     */
     public CounterSource.Store counterStore() {
         Path f = file(COUNTER);
-        return new CounterSource.Store() {
+        return atLeast -> {
+            long[] taken = {atLeast};
+            try {
+                update(f, text -> {
+                    long last = parseOr(text.strip(), 0);
+                    taken[0] = Math.max(atLeast, last + 1);
+                    return String.format("%020d%n", taken[0]);
+                });
+            } catch (IOException e) {
+                // read-only: counters still increase within this run (and by the clock)
+            }
+            return taken[0];
+        };
+    }
+
+    /** The robots' boots believed ({@code robots.boot}: "robot N = boot" lines), shared like the counter. */
+    public RobotBoots.Store bootStore() {
+        Path f = file(BOOTS);
+        return new RobotBoots.Store() {
             @Override
-            public long load() {
+            public Map<Integer, Integer> load() {
                 try {
-                    return Long.parseLong(Files.readString(f).strip());
-                } catch (IOException | NumberFormatException e) {
-                    return 0;
+                    return parseBoots(Files.readString(f));
+                } catch (IOException | java.io.UncheckedIOException e) {
+                    return Map.of(); // none kept yet, or unreadable: the boots of this run only
                 }
             }
 
             @Override
-            public void save(long reservedUpTo) {
+            public void raise(int robotId, int boot) {
                 try {
-                    Path tmp = file(COUNTER + ".tmp");
-                    Files.writeString(tmp, Long.toString(reservedUpTo) + "\n");
-                    Files.move(tmp, f, java.nio.file.StandardCopyOption.REPLACE_EXISTING,
-                            java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+                    update(f, text -> {
+                        Map<Integer, Integer> boots = new java.util.TreeMap<>(parseBoots(text));
+                        boots.merge(robotId, boot, (a, b) -> Integer.compareUnsigned(a, b) >= 0 ? a : b);
+                        StringBuilder out = new StringBuilder("# The highest boot number verified from each small robot"
+                                + " (docs/security.md): older boots are refused.\n# Delete a line when that robot's flash"
+                                + " was wiped.\n");
+                        boots.forEach((r, b) -> out.append("robot ").append(r).append(" = ")
+                                .append(Integer.toUnsignedString(b)).append('\n'));
+                        return out.toString();
+                    });
                 } catch (IOException e) {
-                    // a read-only key directory: counters still increase within this run (and by the clock)
+                    // read-only: the boot is believed for this run
                 }
             }
         };
     }
 
+    private static Map<Integer, Integer> parseBoots(String text) {
+        Map<Integer, Integer> boots = new java.util.HashMap<>();
+        for (String line : text.split("\n")) {
+            String[] kv = line.split("=");
+            String name = kv[0].strip();
+            if (kv.length == 2 && name.startsWith("robot ")) {
+                long robot = parseOr(name.substring(6).strip(), -1);
+                long boot = parseOr(kv[1].strip(), -1);
+                if (robot >= 0 && robot <= 255 && boot >= 0 && boot <= 0xFFFF_FFFFL) {
+                    boots.put((int) robot, (int) boot);
+                }
+            }
+        }
+        return boots;
+    }
+
+    private static long parseOr(String s, long damaged) {
+        try {
+            return Long.parseLong(s);
+        } catch (NumberFormatException e) {
+            return damaged;
+        }
+    }
+
+    /**
+     * Rewrites a small file in place under an exclusive lock on it, for the console processes of
+     * one laptop (the window and {@code touchline options}) to read and write it in turn; written
+     * in place, not moved into place, since a lock belongs to the file it was taken on.
+     */
+    private static void update(Path f, java.util.function.UnaryOperator<String> change) throws IOException {
+        synchronized (LOCKS) {
+            try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(f,
+                    java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.READ,
+                    java.nio.file.StandardOpenOption.WRITE);
+                 java.nio.channels.FileLock lock = ch.lock()) {
+                java.nio.ByteBuffer in = java.nio.ByteBuffer.allocate((int) Math.min(ch.size(), 64 * 1024));
+                while (in.hasRemaining() && ch.read(in, in.position()) > 0) {
+                    // read to the end (a small file)
+                }
+                String before = new String(in.array(), 0, in.position(), StandardCharsets.UTF_8);
+                byte[] after = change.apply(before).getBytes(StandardCharsets.UTF_8);
+                java.nio.ByteBuffer out = java.nio.ByteBuffer.wrap(after);
+                while (out.hasRemaining()) {
+                    ch.write(out, out.position());
+                }
+                ch.truncate(after.length);
+            }
+        }
+    }
 }

@@ -1,61 +1,66 @@
 package touchline.security;
 
-import java.util.HashSet;
-import java.util.Set;
-
 /**
- * The console's memory of each robot's counter (robot → console): a robot's counter is its
- * boot id (random per start) in the high word and a sequence in the low word. A higher
- * counter of the same boot is accepted; a new boot id is a restart (accepted and noted: "robot
- * 3 restarted: counter reset, accepted"); anything else (the same or an older counter, or a
- * boot id seen before in this session) is a replay. Pure; bounded by the 256 robot ids. Not
- * thread-safe: its owner ({@link InboundVerifier}) checks one datagram at a time. Nothing is
- * allocated per datagram of a known robot (it runs for every tagged datagram the console takes).
+ * The console's check of each robot's counter (robot → console): the robot's boot number in
+ * the high word (counted up by the robot, kept in its flash) and a sequence in the low word. A
+ * counter of the boot believed ({@link RobotBoots}) must be higher than the last one taken; a
+ * higher boot is the robot's restart (accepted, noted); a lower boot is a capture of an earlier
+ * boot and is refused, so no old datagram can displace the robot's current boot or make the
+ * console refuse its current datagrams. Bounded by the 256 robot ids; a new boot believed goes to
+ * {@link RobotBoots} (kept in the key directory), everything else is memory. Not thread-safe: its
+ * owner ({@link InboundVerifier}) checks one datagram at a time. Nothing is allocated per
+ * datagram (it runs for every tagged datagram the console takes).
  */
 public final class ReplayGuard {
 
-    /** The verdict on one counter; {@code restarted} when it began a new boot. */
-    public record Verdict(boolean accepted, boolean restarted) { }
+    /** The verdict on one counter. */
+    public enum Verdict {
+        ACCEPTED, RESTARTED, REPLAYED, EARLIER_BOOT;
 
-    private static final Verdict ACCEPTED = new Verdict(true, false);
-    private static final Verdict RESTARTED = new Verdict(true, true);
-    private static final Verdict REPLAYED = new Verdict(false, false);
+        public boolean accepted() {
+            return this == ACCEPTED || this == RESTARTED;
+        }
 
-    private static final int MAX_BOOTS_REMEMBERED = 64;
-
-    private static final class Seen {
-        long highest;
-        final Set<Integer> boots = new HashSet<>();
+        public boolean restarted() {
+            return this == RESTARTED;
+        }
     }
 
-    private final Seen[] robots = new Seen[256];
+    private final RobotBoots boots;
+    private final long[] highest = new long[256];
+    private final boolean[] seen = new boolean[256];
+
+    public ReplayGuard(RobotBoots boots) {
+        this.boots = boots;
+    }
+
+    /** A guard whose boots live in memory only (tests). */
+    public ReplayGuard() {
+        this(new RobotBoots(RobotBoots.inMemory()));
+    }
 
     public Verdict check(int robotId, long counter) {
-        Seen s = robots[robotId & 0xFF];
+        int id = robotId & 0xFF;
         int boot = (int) (counter >>> 32);
-        if (s == null) {
-            s = new Seen();
-            robots[robotId & 0xFF] = s;
-            s.highest = counter;
-            s.boots.add(boot);
-            return ACCEPTED;
+        java.util.OptionalInt believed = boots.believed(id);
+        int order = believed.isEmpty() ? 1 : Integer.compareUnsigned(boot, believed.getAsInt());
+        if (order < 0) {
+            return Verdict.EARLIER_BOOT;
         }
-        int currentBoot = (int) (s.highest >>> 32);
-        if (boot == currentBoot) {
-            if (Long.compareUnsigned(counter, s.highest) <= 0) {
-                return REPLAYED;
-            }
-            s.highest = counter;
-            return ACCEPTED;
+        if (order > 0) {
+            boots.believe(id, boot);
+            take(id, counter);
+            return believed.isEmpty() ? Verdict.ACCEPTED : Verdict.RESTARTED;
         }
-        if (s.boots.contains(boot)) {
-            return REPLAYED; // a capture of an earlier boot played back
+        if (seen[id] && (int) (highest[id] >>> 32) == boot && Long.compareUnsigned(counter, highest[id]) <= 0) {
+            return Verdict.REPLAYED;
         }
-        if (s.boots.size() >= MAX_BOOTS_REMEMBERED) {
-            s.boots.clear();
-        }
-        s.boots.add(boot);
-        s.highest = counter;
-        return RESTARTED;
+        take(id, counter);
+        return Verdict.ACCEPTED;
+    }
+
+    private void take(int id, long counter) {
+        highest[id] = counter;
+        seen[id] = true;
     }
 }

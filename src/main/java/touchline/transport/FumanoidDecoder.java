@@ -168,15 +168,20 @@ final class FumanoidDecoder extends ChannelInboundHandlerAdapter {
                 d.bytes(), auth.reason() + " (claims robot " + robotId + ")", Origin.LIVE, Authenticity.FORGED);
     }
 
-    /** A datagram that passed the check: counted, and its robot's address learned for the way back. */
+    /**
+     * A datagram that passed the check: counted, and its robot's address learned for the way
+     * back, except an untagged robot's while the console has a key: it is shown, never commanded.
+     */
     private void accepted(ReceivedDatagram d, int robotId, FrameResult.Frame f, InboundVerifier.Result auth) {
-        if (auth.authenticity() == Authenticity.UNVERIFIED) {
+        if (auth.authenticity() == Authenticity.UNVERIFIED || auth.authenticity() == Authenticity.UNTAGGED) {
             counters.countUnverified();
         }
         if (auth.note() != null) {
             org.slf4j.LoggerFactory.getLogger(FumanoidDecoder.class).info(auth.note());
         }
-        if (robotId >= 0) {
+        if (robotId >= 0 && auth.authenticity() == Authenticity.UNTAGGED) {
+            peers.untagged(robotId);
+        } else if (robotId >= 0) {
             peers.learn(robotId, d.sender(), f.framing());
         }
     }

@@ -19,6 +19,8 @@ public final class PeerTable {
     public record Peer(InetSocketAddress address, Framing framing) { }
 
     private final Map<Integer, Peer> peers = new ConcurrentHashMap<>();
+    /** Robots heard untagged by a console with a key: never a command destination. */
+    private final java.util.Set<Integer> untagged = ConcurrentHashMap.newKeySet();
     private final int fixedRobotPort;
 
     /** @param fixedRobotPort the port robots listen on, or 0 to reply to each datagram's source port */
@@ -27,6 +29,9 @@ public final class PeerTable {
     }
 
     public void learn(int robotId, InetSocketAddress source, Framing framing) {
+        if (!untagged.isEmpty()) {
+            untagged.remove(robotId);
+        }
         Peer before = peers.get(robotId);
         if (before != null && before.framing() == framing && sameTarget(before.address(), source)) {
             return; // the usual case, once per datagram: nothing to allocate
@@ -48,6 +53,16 @@ public final class PeerTable {
             }
         }
         return Optional.empty();
+    }
+
+    /** An untagged datagram claiming this robot reached a console with a key: its address is not learned. */
+    public void untagged(int robotId) {
+        untagged.add(robotId);
+    }
+
+    /** True when the robot was heard only untagged by a console with a key. */
+    public boolean isUntagged(int robotId) {
+        return untagged.contains(robotId) && !peers.containsKey(robotId);
     }
 
     public Optional<Peer> peer(int robotId) {

@@ -203,6 +203,10 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     @Override
     public SendResult send(int robotId, Fumanoid.Message message) {
         Optional<PeerTable.Peer> peer = peers.peer(robotId);
+        if (peer.isEmpty() && peers.isUntagged(robotId)) {
+            return SendResult.failed("robot " + robotId + " sends untagged data: with a team key the console sends it"
+                    + " nothing (give the robot the key: docs/security.md, or run the console with --insecure)");
+        }
         if (peer.isEmpty()) {
             return SendResult.failed("robot " + robotId + " has not been seen yet");
         }

@@ -26,13 +26,40 @@ class InboundVerifierTest {
         InboundVerifier.Result replay = v.check(3, fromRobot(3, 0x0000_0007_0000_0001L));
         assertEquals(Authenticity.FORGED, replay.authenticity());
         assertTrue(replay.reason().contains("replayed"), replay.reason());
-        InboundVerifier.Result restart = v.check(3, fromRobot(3, 0x0000_0001_0000_0001L));
+        InboundVerifier.Result restart = v.check(3, fromRobot(3, 0x0000_0008_0000_0001L));
         assertEquals(Authenticity.VERIFIED, restart.authenticity());
-        assertEquals("robot 3 restarted: counter reset, accepted", restart.note());
-        byte[] bad = fromRobot(3, 0x0000_0001_0000_0002L);
+        assertEquals("robot 3 restarted (boot 8): counter reset, accepted", restart.note());
+        byte[] bad = fromRobot(3, 0x0000_0008_0000_0002L);
         bad[bad.length - 1] ^= 1;
         assertEquals("forged: bad tag", v.check(3, bad).reason());
         assertEquals(Authenticity.FORGED, v.check(3, Arrays.copyOf(bad, bad.length - 3)).authenticity());
+    }
+
+    /**
+     * Issue 35: captures of the robot's earlier boot, played after the console verified its
+     * current one, are refused and change nothing: the robot's current datagrams still pass.
+     */
+    @Test
+    void capturesOfAnEarlierBootNeverDisplaceTheCurrentBoot() {
+        InboundVerifier v = new InboundVerifier(key);
+        assertEquals(Authenticity.VERIFIED, v.check(3, fromRobot(3, 0x0000_0008_0000_0001L)).authenticity());
+        for (int seq = 1; seq <= 3; seq++) {
+            InboundVerifier.Result old = v.check(3, fromRobot(3, 0x0000_0007_0000_0100L + seq));
+            assertEquals(Authenticity.FORGED, old.authenticity());
+            assertTrue(old.reason().contains("earlier boot"), old.reason());
+        }
+        assertEquals(Authenticity.VERIFIED, v.check(3, fromRobot(3, 0x0000_0008_0000_0002L)).authenticity(),
+                "the robot's current boot is still believed");
+    }
+
+    /** The boots believed outlive the console: a console started after the capture refuses it too. */
+    @Test
+    void aConsoleStartedLaterStillKnowsTheRobotsBoot(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) {
+        KeyDir keys = new KeyDir(dir);
+        new InboundVerifier(key, new RobotBoots(keys.bootStore())).check(3, fromRobot(3, 0x0000_0008_0000_0005L));
+        InboundVerifier later = new InboundVerifier(key, new RobotBoots(new KeyDir(dir).bootStore()));
+        assertEquals(Authenticity.FORGED, later.check(3, fromRobot(3, 0x0000_0007_0000_0009L)).authenticity());
+        assertEquals(Authenticity.VERIFIED, later.check(3, fromRobot(3, 0x0000_0008_0000_0006L)).authenticity());
     }
 
     /**
@@ -83,9 +110,9 @@ class InboundVerifierTest {
     }
 
     @Test
-    void untaggedDataIsUnverifiedUntilTheRobotHasTagged() {
+    void untaggedDataIsUntaggedUntilTheRobotHasTagged() {
         InboundVerifier v = new InboundVerifier(key);
-        assertEquals(Authenticity.UNVERIFIED, v.check(5, STATUS).authenticity(), "a robot without a key");
+        assertEquals(Authenticity.UNTAGGED, v.check(5, STATUS).authenticity(), "a robot without a key");
         assertEquals(Authenticity.VERIFIED, v.check(3, fromRobot(3, 1)).authenticity());
         InboundVerifier.Result spoof = v.check(3, STATUS);
         assertEquals(Authenticity.FORGED, spoof.authenticity(), "robot 3 tags: untagged data in its name is forged");

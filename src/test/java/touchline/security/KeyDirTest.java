@@ -101,10 +101,21 @@ class KeyDirTest {
     @Test
     void theCounterStoreSurvivesARestartAndADamagedFileCountsAsZero() throws Exception {
         KeyDir dir = made();
-        dir.counterStore().save(123_456L);
-        assertEquals(123_456L, new KeyDir(dir.path()).counterStore().load());
+        assertEquals(123_456L, dir.counterStore().take(123_456L));
+        assertEquals(123_457L, new KeyDir(dir.path()).counterStore().take(5), "one above the last, after a restart");
         Files.writeString(dir.file(KeyDir.COUNTER), "not a number");
-        assertEquals(0L, dir.counterStore().load());
+        assertEquals(7L, dir.counterStore().take(7));
+    }
+
+    @Test
+    void theBootStoreKeepsTheHighestBootOfEachRobotAcrossRestartsAndSkipsDamagedLines() throws Exception {
+        KeyDir dir = made();
+        dir.bootStore().raise(3, 7);
+        dir.bootStore().raise(3, 5);
+        dir.bootStore().raise(4, 0xF000_0000);
+        assertEquals(Map.of(3, 7, 4, 0xF000_0000), new KeyDir(dir.path()).bootStore().load());
+        Files.writeString(dir.file(KeyDir.BOOTS), "robot 3 = 9\nrobot x = 2\ngarbage\n");
+        assertEquals(Map.of(3, 9), dir.bootStore().load());
     }
 
     /** The CURVE pairs are real libzmq keys: a CURVE client and server complete a handshake with them. */

@@ -11,7 +11,7 @@ import static org.junit.jupiter.api.Assertions.*;
 /**
  * The tag and trailer against the golden vector that the firmware's test_auth.c also checks
  * (HMAC-SHA-256, trailer version 2; computed independently with Python's hmac: key 00 01 … 1f, robot 3, counter 0x0123456789abcdef,
- * payload "hello"), and every way a datagram is refused.
+ * payload "hello", console → robot for the robot's boot 7), and every way a datagram is refused.
  */
 class MessageTagTest {
 
@@ -30,18 +30,21 @@ class MessageTagTest {
         TeamKey key = goldenKey();
         assertEquals("630dcd29", key.idHex());
         MessageTag tag = new MessageTag(key);
-        assertEquals("23058bc4411fbf26988613233d4d9f5b",
-                HexFormat.of().formatHex(tag.tag(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
+        assertEquals("f89ae0adf649e6d7c578140cb79a8a5f",
+                HexFormat.of().formatHex(tag.tag(MessageTag.toRobot(7), 3, 0x0123456789abcdefL, HELLO, 0, 5)));
+        assertEquals("6706b936efe762f0098cae1da3259ceb",
+                HexFormat.of().formatHex(tag.tag(MessageTag.toRobot(8), 3, 0x0123456789abcdefL, HELLO, 0, 5)),
+                "the robot's next boot: another tag");
         assertEquals("5c6b4099c5658288dfe02f50628dca73",
                 HexFormat.of().formatHex(tag.tag(MessageTag.FROM_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 5)));
-        assertEquals("6591e4a720424ffb325da6914e4d103e",
-                HexFormat.of().formatHex(tag.tag(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO, 0, 0)));
+        assertEquals("034d61ffbcc87a27491f2702071b4bdb",
+                HexFormat.of().formatHex(tag.tag(MessageTag.toRobot(7), 3, 0x0123456789abcdefL, HELLO, 0, 0)));
     }
 
     @Test
     void trailerLayoutIsMagicKeyIdCounterTag() {
-        byte[] d = new MessageTag(goldenKey()).append(MessageTag.TO_ROBOT, 3, 0x0123456789abcdefL, HELLO);
-        assertEquals("68656c6c6f" + "544c4132" + "630dcd29" + "0123456789abcdef" + "23058bc4411fbf26988613233d4d9f5b",
+        byte[] d = new MessageTag(goldenKey()).append(MessageTag.toRobot(7), 3, 0x0123456789abcdefL, HELLO);
+        assertEquals("68656c6c6f" + "544c4132" + "630dcd29" + "0123456789abcdef" + "f89ae0adf649e6d7c578140cb79a8a5f",
                 HexFormat.of().formatHex(d));
         assertEquals(new Trailer.Present(5, 0x0123456789abcdefL), Trailer.of(d));
     }
@@ -49,24 +52,26 @@ class MessageTagTest {
     @Test
     void refusesNoTagCutTagOtherKeyOtherRobotOtherDirectionAndChangedBytes() {
         MessageTag tag = new MessageTag(goldenKey());
-        byte[] good = tag.append(MessageTag.TO_ROBOT, 3, 42, HELLO);
-        assertEquals(MessageTag.Check.OK, tag.check(MessageTag.TO_ROBOT, 3, good, Trailer.of(good)));
-        assertEquals(MessageTag.Check.NO_TAG, tag.check(MessageTag.TO_ROBOT, 3, HELLO, Trailer.of(HELLO)));
+        byte[] good = tag.append(MessageTag.toRobot(7), 3, 42, HELLO);
+        assertEquals(MessageTag.Check.OK, tag.check(MessageTag.toRobot(7), 3, good, Trailer.of(good)));
+        assertEquals(MessageTag.Check.NO_TAG, tag.check(MessageTag.toRobot(7), 3, HELLO, Trailer.of(HELLO)));
         byte[] cut = Arrays.copyOf(good, good.length - 8);
         assertEquals(new Trailer.Truncated(24), Trailer.of(cut));
-        assertEquals(MessageTag.Check.TRUNCATED, tag.check(MessageTag.TO_ROBOT, 3, cut, Trailer.of(cut)));
-        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.TO_ROBOT, 4, good, Trailer.of(good)));
+        assertEquals(MessageTag.Check.TRUNCATED, tag.check(MessageTag.toRobot(7), 3, cut, Trailer.of(cut)));
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.toRobot(7), 4, good, Trailer.of(good)));
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.toRobot(8), 3, good, Trailer.of(good)),
+                "a request of the robot's boot 7 after it rebooted");
         assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.FROM_ROBOT, 3, good, Trailer.of(good)));
         byte[] changed = good.clone();
         changed[0] ^= 1;
-        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.TO_ROBOT, 3, changed, Trailer.of(changed)));
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.toRobot(7), 3, changed, Trailer.of(changed)));
         byte[] counterChanged = good.clone();
         counterChanged[5 + 15] ^= 1;
-        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.TO_ROBOT, 3, counterChanged, Trailer.of(counterChanged)));
+        assertEquals(MessageTag.Check.BAD_TAG, tag.check(MessageTag.toRobot(7), 3, counterChanged, Trailer.of(counterChanged)));
         byte[] other = new byte[32];
         other[0] = 1;
-        byte[] foreign = new MessageTag(new TeamKey(other)).append(MessageTag.TO_ROBOT, 3, 42, HELLO);
-        assertEquals(MessageTag.Check.WRONG_KEY, tag.check(MessageTag.TO_ROBOT, 3, foreign, Trailer.of(foreign)));
+        byte[] foreign = new MessageTag(new TeamKey(other)).append(MessageTag.toRobot(7), 3, 42, HELLO);
+        assertEquals(MessageTag.Check.WRONG_KEY, tag.check(MessageTag.toRobot(7), 3, foreign, Trailer.of(foreign)));
     }
 
     @Test

@@ -21,14 +21,14 @@ class ReplayGuardTest {
     }
 
     @Test
-    void aRestartIsANewBootIdAndAnEarlierBootIsAReplay() {
+    void aHigherBootIsARestartAndALowerBootIsAnEarlierOne() {
         ReplayGuard g = new ReplayGuard();
-        assertTrue(g.check(3, counter(0x9000_0000, 500)).accepted());
-        ReplayGuard.Verdict restart = g.check(3, counter(0x1234, 1));
-        assertTrue(restart.accepted());
-        assertTrue(restart.restarted(), "a lower counter of a new boot is a restart, not a replay");
-        assertFalse(g.check(3, counter(0x9000_0000, 501)).accepted(), "a capture of the earlier boot");
-        assertTrue(g.check(3, counter(0x1234, 2)).accepted());
+        assertEquals(ReplayGuard.Verdict.ACCEPTED, g.check(3, counter(0x1234, 500)));
+        assertEquals(ReplayGuard.Verdict.RESTARTED, g.check(3, counter(0x1235, 1)),
+                "a lower counter of the next boot is a restart, not a replay");
+        assertEquals(ReplayGuard.Verdict.EARLIER_BOOT, g.check(3, counter(0x1234, 501)), "a capture of the earlier boot");
+        assertEquals(ReplayGuard.Verdict.EARLIER_BOOT, g.check(3, counter(0x0001, 9)));
+        assertEquals(ReplayGuard.Verdict.ACCEPTED, g.check(3, counter(0x1235, 2)), "the current boot goes on");
     }
 
     @Test

@@ -232,9 +232,14 @@ class UdpTransportTest {
         send(status(3, Framing.LEGACY)); // untagged in the name of a robot that tags
         assertTrue(next().error().contains("untagged"));
         send(status(5, Framing.LEGACY)); // a robot without a key
-        assertEquals(Authenticity.UNVERIFIED, next().authenticity());
+        assertEquals(Authenticity.UNTAGGED, next().authenticity());
         assertEquals(3, transport.counters().forgedIn());
         assertEquals(1, transport.counters().unverifiedIn());
+        assertTrue(transport.peers().peer(5).isEmpty(), "an untagged robot is no command destination");
+        SendResult refused = transport.send(5, Fumanoid.Message.newBuilder().setRobotID(0).setExtension(
+                Fumanoid.debugOptionListRequest, Fumanoid.DebugOptionListRequest.getDefaultInstance()).build());
+        assertFalse(refused.isSent());
+        assertTrue(refused.reason().contains("untagged"), refused.reason());
     }
 
     @Test
@@ -255,8 +260,11 @@ class UdpTransportTest {
             assertArrayEquals(wire, out.raw(), "the envelope shows what went out, tag included");
             Trailer t = Trailer.of(wire);
             assertInstanceOf(Trailer.Present.class, t);
-            assertEquals(MessageTag.Check.OK, robotSide.check(MessageTag.TO_ROBOT, 3, wire, t));
-            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.TO_ROBOT, 4, wire, t));
+            assertEquals(MessageTag.Check.OK, robotSide.check(MessageTag.toRobot(0), 3, wire, t),
+                    "tagged for the boot of the robot's counter (boot 0)");
+            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.toRobot(0), 4, wire, t));
+            assertEquals(MessageTag.Check.BAD_TAG, robotSide.check(MessageTag.toRobot(1), 3, wire, t),
+                    "not valid in another boot of the robot");
             counters[i] = ((Trailer.Present) t).counter();
         }
         assertTrue(counters[1] > counters[0]);
