@@ -50,7 +50,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 });
             }
             if (!remote.remote()) {
-                console.start();
+                udp.start(console);
             }
             var guard = budget.guard(console, udp.bind);
             System.err.println(console.remoteStatus().map(r -> r.describe()).orElse("listening on UDP port "

@@ -39,7 +39,7 @@ final class OptionsCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        try (Console console = new Console(udp.config()).start()) {
+        try (Console console = udp.startConsole()) {
             long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
             if (!await(deadline, () -> console.options().options(robot).listReceived())) {
                 System.err.println(console.robots().robot(robot).isPresent()
