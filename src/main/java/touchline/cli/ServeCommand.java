@@ -153,6 +153,7 @@ final class ServeCommand implements Callable<Integer> {
                     }
                     throw e;
                 }
+                new FirstListenLines(err, "serve").follow(console.matchMode());
                 if (replayFile != null) {
                     console.setLiveListening(false);
                     try {

@@ -68,6 +68,46 @@ class NaoCommandTest {
         }
     }
 
+    /**
+     * The wait before the first call is shown on the terminal: a line when it starts, one when it
+     * ends and why — at once when the GameController (on loopback, INITIAL every 500 ms) is heard,
+     * after the whole listen when none is.
+     */
+    @Test
+    void theFirstListenIsALineWhenItStartsAndOneWhenItEnds() throws Exception {
+        byte[] initial;
+        try (InputStream in = getClass().getResourceAsStream("/golden/gamecontroller/hsl20/00-initial.bin")) {
+            initial = in.readAllBytes();
+        }
+        int gcPort = freePort();
+        try (FakeNaoRobot robot = new FakeNaoRobot(0)) {
+            String target = "127.0.0.1:" + robot.port();
+            assertEquals(0, run("call", target, "Test.echo", "1", "--insecure", "--gc-port", Integer.toString(gcPort)));
+            assertTrue(err.toString().contains("touchline nao: match mode: listening for a GameController before "
+                    + "talking to robots ("), err.toString());
+            assertTrue(err.toString().contains("touchline nao: match mode: no GameController heard in "
+                    + touchline.app.game.MatchMode.LISTEN_FIRST_MS + " ms: talking to robots"), err.toString());
+
+            err.getBuffer().setLength(0);
+            ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
+            try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+                gameController.scheduleAtFixedRate(() -> {
+                    try {
+                        gc.send(new DatagramPacket(initial, initial.length, InetAddress.getLoopbackAddress(), gcPort));
+                    } catch (java.io.IOException e) {
+                        throw new java.io.UncheckedIOException(e);
+                    }
+                }, 0, 500, TimeUnit.MILLISECONDS);
+                assertEquals(0, run("call", target, "Test.echo", "2", "--insecure", "--gc-port",
+                        Integer.toString(gcPort)));
+                assertTrue(err.toString().contains("touchline nao: match mode: heard INITIAL (GameController at "
+                        + "127.0.0.1:" + gc.getLocalPort() + "): talking to robots"), err.toString());
+            } finally {
+                gameController.shutdownNow();
+            }
+        }
+    }
+
     @Test
     void anAbsentRobotIsAClearMessage() throws Exception {
         int port;
