@@ -99,6 +99,9 @@ class RobotGameControllerSpoofingIntegrationTest {
                     "the robot believed a forged state: " + statuses.stream().map(Fumanoid.Status::getGameState).toList());
             Fumanoid.Status last = statuses.get(statuses.size() - 1);
             assertTrue(last.hasGcOtherSource() && last.getGcOtherSource() > 0, "the forger's packets counted: " + last);
+            String shown = console.robots().robot(8).orElseThrow().gameStateShown();
+            assertTrue(shown.startsWith("PLAYING (") && shown.endsWith(" from another GameController, not believed)"),
+                    shown);
             assertTrue(robot.isAlive());
         } finally {
             field.shutdownNow();
