@@ -517,50 +517,47 @@ static void test_follow_rule(void)
     CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_PIN_SILENT_MS + 10));
 }
 
+/* 10 s of a real GameController saying `playing` every 500 ms and a forger at `forger` sending
+ * `forged` in every poll between; returns in how many polls the robot was out of its limit. */
+static int play_against_forger(const uint8_t *playing, const uint8_t *forged, size_t n, const wlan_peer *forger)
+{
+    uint32_t t0 = g_clock, next_real = g_clock + 500;
+    int lifted = 0;
+    while (g_clock < t0 + 10000) {
+        if (g_clock >= next_real) {
+            hear(playing, n);
+            next_real += 500;
+        } else {
+            hear_from(forger, forged, n);
+        }
+        if (!robot_in_match()) lifted++;
+    }
+    return lifted;
+}
+
 /* A real GameController says PLAYING every 500 ms; a forger floods FINISHED, from another
- * address and from the GameController's own: the limit stays, the forgeries are counted. */
+ * port and from the GameController's own address and port: the limit stays, the forgeries
+ * from another source are counted. */
 static void test_robot_forged_finished(void)
 {
     static uint8_t playing[256], finished[256];
     static const wlan_peer forger = {0, {127, 0, 0, 1}, 40999};
     size_t np = golden("hsl20/07-playing-after-delay.bin", playing, sizeof playing);
-    uint32_t t0, next_real;
-    int lifted = 0;
+    uint32_t t0;
     start_robot(1, 5);
     enable_all_options();
     memcpy(finished, playing, np);
     finished[10] = FW_GC_FINISHED;
     hear(playing, np);
     t0 = g_clock;
-    next_real = t0 + 500;
-    while (g_clock < t0 + 10000) {
-        if (g_clock >= next_real) {
-            hear(playing, np);
-            next_real += 500;
-        } else {
-            hear_from(&forger, finished, np);
-        }
-        if (!robot_in_match()) lifted++;
-    }
-    CHECK_EQ(lifted, 0);
+    CHECK_EQ(play_against_forger(playing, finished, np, &forger), 0);
     CHECK(strcmp(robot_game_state(), "PLAYING") == 0);
     CHECK(robot_stats()->gc_other_source >= 900);
     CHECK(count(true, 0, t0, g_clock) <= 10); /* the Status once a second, no option data */
     CHECK(min_console_gap(t0, g_clock) >= FW_MATCH_DEBUG_PERIOD_MS);
 
-    /* a forger on the GameController's own address and port, between its packets */
     t0 = g_clock;
-    next_real = t0 + 500;
-    while (g_clock < t0 + 10000) {
-        if (g_clock >= next_real) {
-            hear(playing, np);
-            next_real += 500;
-        } else {
-            hear(finished, np);
-        }
-        if (!robot_in_match()) lifted++;
-    }
-    CHECK_EQ(lifted, 0);
+    CHECK_EQ(play_against_forger(playing, finished, np, &k_gc_addr), 0);
     CHECK(count(true, 0, t0, g_clock) <= 10);
 }
 

@@ -68,6 +68,17 @@ class NaoCommandTest {
         }
     }
 
+    /** A GameController on loopback: {@code packet} to {@code port} every {@code periodMs}. */
+    private static void sendEvery(ScheduledExecutorService field, DatagramSocket gc, byte[] packet, int port, long periodMs) {
+        field.scheduleAtFixedRate(() -> {
+            try {
+                gc.send(new DatagramPacket(packet, packet.length, InetAddress.getLoopbackAddress(), port));
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        }, 0, periodMs, TimeUnit.MILLISECONDS);
+    }
+
     /**
      * The wait before the first call is shown on the terminal: a line when it starts, one when it
      * ends and why — at once when the GameController (on loopback, INITIAL every 500 ms) is heard,
@@ -91,13 +102,7 @@ class NaoCommandTest {
             err.getBuffer().setLength(0);
             ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
             try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
-                gameController.scheduleAtFixedRate(() -> {
-                    try {
-                        gc.send(new DatagramPacket(initial, initial.length, InetAddress.getLoopbackAddress(), gcPort));
-                    } catch (java.io.IOException e) {
-                        throw new java.io.UncheckedIOException(e);
-                    }
-                }, 0, 500, TimeUnit.MILLISECONDS);
+                sendEvery(gameController, gc, initial, gcPort, 500);
                 assertEquals(0, run("call", target, "Test.echo", "2", "--insecure", "--gc-port",
                         Integer.toString(gcPort)));
                 assertTrue(err.toString().contains("touchline nao: match mode: heard INITIAL (GameController at "
@@ -173,13 +178,7 @@ class NaoCommandTest {
             String target = "127.0.0.1:" + sim.port();
             ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
             try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
-                gameController.scheduleAtFixedRate(() -> {
-                    try {
-                        gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
-                    } catch (java.io.IOException e) {
-                        throw new java.io.UncheckedIOException(e);
-                    }
-                }, 0, 100, TimeUnit.MILLISECONDS);
+                sendEvery(gameController, gc, playing, gcPort, 100);
                 assertEquals(NaoCommand.HELD_BACK, run("call", target, "ALMemory.insertData", "Touchline/cli", "7",
                         "--insecure", "--gc-port", Integer.toString(gcPort), "--listen", "10000"), "out: " + out + " err: " + err);
                 assertTrue(err.toString().contains("held back: match mode, game is PLAYING"), err.toString());
