@@ -116,7 +116,9 @@ bool fw_gc_in_play(uint8_t state)
 bool fw_gc_follow_take(fw_gc_follow *f, const uint8_t ip[4], uint16_t port, uint8_t state, uint32_t now)
 {
     uint8_t i;
-    if (f->pinned && now - f->heard_at >= FW_GC_PIN_SILENT_MS) f->pinned = false;
+    if (f->pinned && now - f->heard_at >= (f->finished ? FW_GC_GAME_OVER_SILENT_MS : FW_GC_PIN_SILENT_MS)) {
+        f->pinned = false;
+    }
     if (!f->pinned) {
         for (i = 0; i < 4; i++) f->ip[i] = ip[i];
         f->port = port;
@@ -132,7 +134,7 @@ bool fw_gc_follow_take(fw_gc_follow *f, const uint8_t ip[4], uint16_t port, uint
         f->play_at = now;
     }
     f->in_play = fw_gc_in_play(state);
-    if (state == FW_GC_FINISHED) f->pinned = false; /* the next game's GameController may be another */
+    f->finished = state == FW_GC_FINISHED; /* silent after it: the next game's may be another */
     return true;
 }
 

@@ -71,15 +71,18 @@ bool fw_gc_penalised(const fw_gc_info *g);
 
 /* Which GameController the robot believes: the rule of the console's (docs/security.md,
  * "GameController spoofing"). The first source heard in a game is pinned by address and port
- * until it says FINISHED (the game or half is over) or has been silent FW_GC_PIN_SILENT_MS;
+ * until the game is over (it said FINISHED, then fell silent FW_GC_GAME_OVER_SILENT_MS: closed
+ * after the game) or it has been silent FW_GC_PIN_SILENT_MS;
  * packets from any other source are counted and never believed. The debug limit ends only
  * after the believed GameController said a non-play state for FW_GC_PLAY_MEMORY_MS, so a
  * forger on the GameController's own address cannot lift it between two real packets. */
 #define FW_GC_PIN_SILENT_MS 30000u
+#define FW_GC_GAME_OVER_SILENT_MS 2000u
 #define FW_GC_PLAY_MEMORY_MS 2000u
 
 typedef struct {
     bool pinned;
+    bool finished;          /* the pinned source's last state was FINISHED */
     uint8_t ip[4];
     uint16_t port;
     uint32_t heard_at;

@@ -503,15 +503,20 @@ static void test_follow_rule(void)
     CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_FINISHED, t + 10)); /* another address */
     CHECK(!fw_gc_follow_take(&f, gc, 40001, FW_GC_FINISHED, t + 20));     /* another port of its address */
     CHECK(fw_gc_follow_play_recent(&f, t + 60000)); /* silent in PLAYING: still in play */
-    /* the GameController's own FINISHED: in play 2 s more, and the pin goes (game over) */
+    /* the GameController's own FINISHED: in play 2 s more; the pin goes when it falls silent
+     * after it (closed after the game), not while it keeps sending */
     t += 500;
     CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_FINISHED, t));
     CHECK(fw_gc_follow_play_recent(&f, t + FW_GC_PLAY_MEMORY_MS - 1));
     CHECK(!fw_gc_follow_play_recent(&f, t + FW_GC_PLAY_MEMORY_MS));
-    CHECK(fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + 100)); /* the next game's first */
-    CHECK(!fw_gc_follow_take(&f, gc, 40000, FW_GC_INITIAL, t + 200));
-    /* silent 30 s: the next source heard is followed */
-    t += 100;
+    CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + 100));
+    CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_FINISHED, t + 500));
+    t += 500;
+    CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_GAME_OVER_SILENT_MS - 1));
+    CHECK(fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_GAME_OVER_SILENT_MS)); /* the next game's */
+    CHECK(!fw_gc_follow_take(&f, gc, 40000, FW_GC_INITIAL, t + FW_GC_GAME_OVER_SILENT_MS + 100));
+    t += FW_GC_GAME_OVER_SILENT_MS; /* the forger's last packet */
+    /* silent 30 s (no FINISHED): the next source heard is followed */
     CHECK(!fw_gc_follow_take(&f, gc, 40000, FW_GC_READY, t + FW_GC_PIN_SILENT_MS - 1));
     CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_READY, t + FW_GC_PIN_SILENT_MS));
     CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_PIN_SILENT_MS + 10));
