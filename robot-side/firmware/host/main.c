@@ -425,11 +425,12 @@ int main(int argc, char **argv)
         const robot_counters *c = robot_stats();
         fprintf(stderr,
                 "robot %ld: stopping; in %lu, handled %lu, malformed %lu, unknown extensions %lu, gc %lu (rejected %lu, "
-                "other team %lu), reliable %lu, out %lu (%lu bytes, %lu failed), held in play %lu, "
+                "other team %lu, other source %lu), reliable %lu, out %lu (%lu bytes, %lu failed), held in play %lu, "
                 "return packets %lu, team messages %lu (held %lu)\n",
                 (long)cfg.robot_id, (unsigned long)c->datagrams_in, (unsigned long)c->messages_handled,
                 (unsigned long)c->malformed, (unsigned long)c->unknown_ext, (unsigned long)c->gc_packets,
-                (unsigned long)c->gc_rejected, (unsigned long)c->gc_other_team, (unsigned long)c->reliable_segments,
+                (unsigned long)c->gc_rejected, (unsigned long)c->gc_other_team, (unsigned long)c->gc_other_source,
+                (unsigned long)c->reliable_segments,
                 (unsigned long)c->messages_out, (unsigned long)c->bytes_out, (unsigned long)c->send_failures,
                 (unsigned long)c->debug_held, (unsigned long)c->gc_returns_out, (unsigned long)c->team_msgs_out,
                 (unsigned long)c->team_msgs_held);

@@ -108,6 +108,41 @@ bool fw_gc_wants_return_v4(uint8_t version) { return version == 18 || version ==
 
 bool fw_gc_penalised(const fw_gc_info *g) { return g->own_player_found && g->penalty != FW_GC_PENALTY_NONE; }
 
+bool fw_gc_in_play(uint8_t state)
+{
+    return state == FW_GC_READY || state == FW_GC_SET || state == FW_GC_PLAYING;
+}
+
+bool fw_gc_follow_take(fw_gc_follow *f, const uint8_t ip[4], uint16_t port, uint8_t state, uint32_t now)
+{
+    uint8_t i;
+    if (f->pinned && now - f->heard_at >= (f->finished ? FW_GC_GAME_OVER_SILENT_MS : FW_GC_PIN_SILENT_MS)) {
+        f->pinned = false;
+    }
+    if (!f->pinned) {
+        for (i = 0; i < 4; i++) f->ip[i] = ip[i];
+        f->port = port;
+        f->pinned = true;
+    }
+    for (i = 0; i < 4; i++) {
+        if (f->ip[i] != ip[i]) break;
+    }
+    if (i < 4 || f->port != port) return false;
+    f->heard_at = now;
+    if (fw_gc_in_play(state) || f->in_play) {
+        f->play_heard = true;
+        f->play_at = now;
+    }
+    f->in_play = fw_gc_in_play(state);
+    f->finished = state == FW_GC_FINISHED; /* silent after it: the next game's may be another */
+    return true;
+}
+
+bool fw_gc_follow_play_recent(const fw_gc_follow *f, uint32_t now)
+{
+    return f->in_play || (f->play_heard && now - f->play_at < FW_GC_PLAY_MEMORY_MS);
+}
+
 void fw_gc_put_f32(uint8_t *p, float f)
 {
     union { float f; uint32_t u; } v;

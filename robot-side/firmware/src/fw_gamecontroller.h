@@ -69,6 +69,36 @@ bool fw_gc_wants_return_v4(uint8_t version);
 /* True when the own player is penalised (any penalty, including SUBSTITUTE and SENT_OFF). */
 bool fw_gc_penalised(const fw_gc_info *g);
 
+/* Which GameController the robot believes: the rule of the console's (docs/security.md,
+ * "GameController spoofing"). The first source heard in a game is pinned by address and port
+ * until the game is over (it said FINISHED, then fell silent FW_GC_GAME_OVER_SILENT_MS: closed
+ * after the game) or it has been silent FW_GC_PIN_SILENT_MS;
+ * packets from any other source are counted and never believed. The debug limit ends only
+ * after the believed GameController said a non-play state for FW_GC_PLAY_MEMORY_MS, so a
+ * forger on the GameController's own address cannot lift it between two real packets. */
+#define FW_GC_PIN_SILENT_MS 30000u
+#define FW_GC_GAME_OVER_SILENT_MS 2000u
+#define FW_GC_PLAY_MEMORY_MS 2000u
+
+typedef struct {
+    bool pinned;
+    bool finished;          /* the pinned source's last state was FINISHED */
+    uint8_t ip[4];
+    uint16_t port;
+    uint32_t heard_at;
+    bool play_heard;
+    bool in_play;           /* the believed source's last state was READY/SET/PLAYING */
+    uint32_t play_at;       /* its last READY/SET/PLAYING, or its first other state after one */
+} fw_gc_follow;
+
+/* One parsed packet from ip:port at now: true = believe it (it comes from the pinned source,
+ * or pins its source); false = another source (the caller counts it). */
+bool fw_gc_follow_take(fw_gc_follow *f, const uint8_t ip[4], uint16_t port, uint8_t state, uint32_t now);
+/* The believed GameController said READY, SET or PLAYING, or has said another state for less
+ * than FW_GC_PLAY_MEMORY_MS. */
+bool fw_gc_follow_play_recent(const fw_gc_follow *f, uint32_t now);
+bool fw_gc_in_play(uint8_t state);
+
 /* Robot -> GameController return packet "RGrt" version 4, 32 bytes, little-endian. */
 typedef struct {
     uint8_t player;

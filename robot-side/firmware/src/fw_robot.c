@@ -29,6 +29,7 @@ static fw_gc_info g_gc;
 static bool g_gc_heard;
 static uint32_t g_gc_heard_at;
 static wlan_peer g_gc_from;
+static fw_gc_follow g_gc_follow;
 static uint32_t g_next_return;
 static bool g_returning;
 /* game limits and the motion clock */
@@ -136,6 +137,8 @@ static void send_status(uint32_t now)
     st->has_batteryPercent = true;
     st->batteryPercent = 100u - (drained % 90u);
     copy_str(st->gameState, sizeof st->gameState, fw_gc_state_name(g_game_state));
+    st->has_gcOtherSource = true;
+    st->gcOtherSource = g_count.gc_other_source;
     if (g_cfg->team_key != 0) {
         const fw_auth_counters *c = &g_auth.count;
         st->has_auth = true;
@@ -241,6 +244,7 @@ void robot_init(const robot_config *cfg, uint32_t now)
     g_now = now;
     g_gc = (fw_gc_info){0};
     g_gc_heard = false;
+    g_gc_follow = (fw_gc_follow){0};
     g_returning = false;
     g_debug_sent = false;
     g_motion_ms = now;
@@ -262,6 +266,15 @@ static void on_gamecontroller(const uint8_t *d, uint16_t len, const wlan_peer *f
         return;
     }
     g_count.gc_packets++;
+    {
+        static const wlan_peer k_nobody;
+        const wlan_peer *src = from != 0 ? from : &k_nobody;
+        if (!fw_gc_follow_take(&g_gc_follow, src->ip, src->port, info.state, g_now)) {
+            uint32_t n = ++g_count.gc_other_source;
+            if ((n & (n - 1u)) == 0u) fw_log("gamecontroller packet from another source, not believed", 0, src->port);
+            return;
+        }
+    }
     if (info.has_game_fields && !info.own_team_found) {
         /* another game's GameController, or a practice game without us: follow its state
          * (the console's demo does that), but there is no penalty of ours to read */
@@ -351,7 +364,7 @@ const fw_gc_info *robot_gamecontroller(void) { return &g_gc; }
 
 bool robot_in_match(void)
 {
-    return g_gc_heard && (g_gc.state == FW_GC_READY || g_gc.state == FW_GC_SET || g_gc.state == FW_GC_PLAYING);
+    return g_gc_heard && fw_gc_follow_play_recent(&g_gc_follow, g_now);
 }
 
 bool robot_may_move(void)
@@ -406,7 +419,10 @@ static bool team_budget_left(void)
 {
     /* The budget counts in READY/SET/PLAYING, outside penalty shoot-outs; the GameController's
      * count lags by up to one packet interval, so each robot leaves a reserve untouched. */
-    if (!robot_in_match() || !g_gc.own_team_found || g_gc.game_phase == FW_GC_PHASE_PENALTY_SHOOT_OUT) return true;
+    if (!g_gc_heard || !fw_gc_in_play(g_gc.state) || !g_gc.own_team_found ||
+        g_gc.game_phase == FW_GC_PHASE_PENALTY_SHOOT_OUT) {
+        return true;
+    }
     return g_gc.message_budget > FW_TEAM_MSG_RESERVE;
 }
 

@@ -1,8 +1,8 @@
 /* The robot's communication core: one polled step (robot_poll) receives and dispatches
  * every waiting datagram, sends the Status keep-alive every 200 ms and the data of every
- * debug option that is switched on, and drives the reliable stream. During a game (a
- * GameController says READY, SET or PLAYING) it keeps to the league's limit on debug
- * traffic: one Status a second and nothing else to the console. When it hears an HSL (or
+ * debug option that is switched on, and drives the reliable stream. During a game (the
+ * GameController it follows says READY, SET or PLAYING, and for 2 s after) it keeps to the
+ * league's limit on debug traffic: one Status a second and nothing else to the console. When it hears an HSL (or
  * SPL) GameController it also sends return packets to it and, if configured, team messages.
  * Static memory only; the platform supplies the network driver (fw_wlan.h), the clock
  * (passed in) and fw_log(). */
@@ -107,6 +107,7 @@ typedef struct {
     uint32_t gc_packets;
     uint32_t gc_rejected;
     uint32_t gc_other_team;    /* accepted packets (v18-v20) without our team number */
+    uint32_t gc_other_source;  /* good packets from another GameController than the one followed */
     uint32_t gc_returns_out;
     uint32_t team_msgs_out;
     uint32_t team_msgs_held;   /* not sent: the team's message budget is (nearly) used up */
@@ -129,7 +130,8 @@ const char *robot_game_state(void);
 /* The last GameController packet accepted (valid once robot_gc_heard()). */
 const fw_gc_info *robot_gamecontroller(void);
 bool robot_gc_heard(void);
-/* READY, SET or PLAYING: the game's debug limit applies. */
+/* The game's debug limit applies: the GameController followed says READY, SET or PLAYING, or
+ * said it within FW_GC_PLAY_MEMORY_MS. */
 bool robot_in_match(void);
 /* False while the GameController forbids locomotion (penalised, INITIAL, SET, stopped...). */
 bool robot_may_move(void);

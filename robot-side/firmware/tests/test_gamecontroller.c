@@ -266,6 +266,7 @@ static uint32_t g_clock;
 static const uint8_t *g_inbox;
 static uint16_t g_inbox_len;
 static const wlan_peer k_gc_addr = {0, {127, 0, 0, 1}, 40123};
+static const wlan_peer *g_inbox_from = &k_gc_addr;
 
 static bool fake_init(void *ctx, uint32_t now) { (void)ctx; (void)now; return true; }
 static bool fake_recv(void *ctx, uint8_t *buf, uint16_t cap, uint16_t *len, wlan_peer *from)
@@ -274,7 +275,7 @@ static bool fake_recv(void *ctx, uint8_t *buf, uint16_t cap, uint16_t *len, wlan
     if (g_inbox == NULL || g_inbox_len > cap) return false;
     memcpy(buf, g_inbox, g_inbox_len);
     *len = g_inbox_len;
-    *from = k_gc_addr;
+    *from = *g_inbox_from;
     g_inbox = NULL;
     return true;
 }
@@ -304,14 +305,18 @@ static bool fake_send_peer(void *ctx, const wlan_peer *to, const uint8_t *msg, u
 }
 static const wlan_driver k_fake = {fake_init, fake_recv, fake_send_con, fake_send_peer, NULL};
 
-/* One datagram from the GameController's address, then one poll (10 ms after the last). */
-static void hear(const uint8_t *d, size_t n)
+/* One datagram from `from`, then one poll (10 ms after the last). */
+static void hear_from(const wlan_peer *from, const uint8_t *d, size_t n)
 {
     g_clock += 10;
     g_inbox = d;
     g_inbox_len = (uint16_t)n;
+    g_inbox_from = from;
     robot_poll(g_clock);
 }
+
+/* One datagram from the GameController's address. */
+static void hear(const uint8_t *d, size_t n) { hear_from(&k_gc_addr, d, n); }
 
 static void run_until(uint32_t end)
 {
@@ -411,8 +416,12 @@ static void test_robot_debug_limit(void)
     CHECK(robot_stats()->debug_held >= 8 * 90);
     CHECK(robot_option_enabled("demo.text")); /* held, not switched off */
 
-    /* the game stops (INITIAL): back to the lab rate, option data flows again */
+    /* the game stops (INITIAL): after 2 s of it, back to the lab rate, option data flows again */
     hear(initial, ni);
+    CHECK(robot_in_match());
+    run_until(g_clock + FW_GC_PLAY_MEMORY_MS - 20);
+    CHECK(robot_in_match());
+    run_until(g_clock + 20);
     CHECK(!robot_in_match());
     t1 = g_clock;
     run_until(t1 + 1000);
@@ -481,6 +490,80 @@ static void test_robot_return_packets(void)
     CHECK_EQ(count(false, FW_GC_RETURN_PORT, 0, g_clock), 0);
     CHECK_EQ(robot_stats()->gc_other_team, 1);
     CHECK(robot_in_match()); /* but it follows the game's state */
+}
+
+/* ---- which GameController the robot follows ---- */
+
+static void test_follow_rule(void)
+{
+    static const uint8_t gc[4] = {10, 0, 0, 2}, forger[4] = {10, 0, 0, 66};
+    fw_gc_follow f = {0};
+    uint32_t t = 5000;
+    CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_PLAYING, t));          /* the first heard is pinned */
+    CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_FINISHED, t + 10)); /* another address */
+    CHECK(!fw_gc_follow_take(&f, gc, 40001, FW_GC_FINISHED, t + 20));     /* another port of its address */
+    CHECK(fw_gc_follow_play_recent(&f, t + 60000)); /* silent in PLAYING: still in play */
+    /* the GameController's own FINISHED: in play 2 s more; the pin goes when it falls silent
+     * after it (closed after the game), not while it keeps sending */
+    t += 500;
+    CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_FINISHED, t));
+    CHECK(fw_gc_follow_play_recent(&f, t + FW_GC_PLAY_MEMORY_MS - 1));
+    CHECK(!fw_gc_follow_play_recent(&f, t + FW_GC_PLAY_MEMORY_MS));
+    CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + 100));
+    CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_FINISHED, t + 500));
+    t += 500;
+    CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_GAME_OVER_SILENT_MS - 1));
+    CHECK(fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_GAME_OVER_SILENT_MS)); /* the next game's */
+    CHECK(!fw_gc_follow_take(&f, gc, 40000, FW_GC_INITIAL, t + FW_GC_GAME_OVER_SILENT_MS + 100));
+    t += FW_GC_GAME_OVER_SILENT_MS; /* the forger's last packet */
+    /* silent 30 s (no FINISHED): the next source heard is followed */
+    CHECK(!fw_gc_follow_take(&f, gc, 40000, FW_GC_READY, t + FW_GC_PIN_SILENT_MS - 1));
+    CHECK(fw_gc_follow_take(&f, gc, 40000, FW_GC_READY, t + FW_GC_PIN_SILENT_MS));
+    CHECK(!fw_gc_follow_take(&f, forger, 40000, FW_GC_INITIAL, t + FW_GC_PIN_SILENT_MS + 10));
+}
+
+/* 10 s of a real GameController saying `playing` every 500 ms and a forger at `forger` sending
+ * `forged` in every poll between; returns in how many polls the robot was out of its limit. */
+static int play_against_forger(const uint8_t *playing, const uint8_t *forged, size_t n, const wlan_peer *forger)
+{
+    uint32_t t0 = g_clock, next_real = g_clock + 500;
+    int lifted = 0;
+    while (g_clock < t0 + 10000) {
+        if (g_clock >= next_real) {
+            hear(playing, n);
+            next_real += 500;
+        } else {
+            hear_from(forger, forged, n);
+        }
+        if (!robot_in_match()) lifted++;
+    }
+    return lifted;
+}
+
+/* A real GameController says PLAYING every 500 ms; a forger floods FINISHED, from another
+ * port and from the GameController's own address and port: the limit stays, the forgeries
+ * from another source are counted. */
+static void test_robot_forged_finished(void)
+{
+    static uint8_t playing[256], finished[256];
+    static const wlan_peer forger = {0, {127, 0, 0, 1}, 40999};
+    size_t np = golden("hsl20/07-playing-after-delay.bin", playing, sizeof playing);
+    uint32_t t0;
+    start_robot(1, 5);
+    enable_all_options();
+    memcpy(finished, playing, np);
+    finished[10] = FW_GC_FINISHED;
+    hear(playing, np);
+    t0 = g_clock;
+    CHECK_EQ(play_against_forger(playing, finished, np, &forger), 0);
+    CHECK(strcmp(robot_game_state(), "PLAYING") == 0);
+    CHECK(robot_stats()->gc_other_source >= 900);
+    CHECK(count(true, 0, t0, g_clock) <= 10); /* the Status once a second, no option data */
+    CHECK(min_console_gap(t0, g_clock) >= FW_MATCH_DEBUG_PERIOD_MS);
+
+    t0 = g_clock;
+    CHECK_EQ(play_against_forger(playing, finished, np, &k_gc_addr), 0);
+    CHECK(count(true, 0, t0, g_clock) <= 10);
 }
 
 static void test_robot_penalised_and_stopped(void)
@@ -605,6 +688,8 @@ int main(int argc, char **argv)
     test_rejected();
     test_return_packet();
     test_robot_debug_limit();
+    test_follow_rule();
+    test_robot_forged_finished();
     test_robot_return_packets();
     test_robot_penalised_and_stopped();
     test_robot_team_messages();

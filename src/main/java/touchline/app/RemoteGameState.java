@@ -28,7 +28,7 @@ final class RemoteGameState implements EnvelopeSink {
     public void accept(Envelope e) {
         KnownGameStateFormats.Match m = gameStates.read(e);
         if (m != null) {
-            matchMode.observe(m.data().state(), "the remote console's GameController"
+            matchMode.observeBelieved(m.data().state(), "the remote console's GameController"
                     + (e.peer() == null ? "" : " at " + e.peer().getHostString() + ":" + e.peer().getPort()));
         }
         next.accept(e);

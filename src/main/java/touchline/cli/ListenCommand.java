@@ -33,6 +33,9 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
     @Option(names = "--table-every", description = "seconds between robot tables (default ${DEFAULT-VALUE})", defaultValue = "2")
     long tableEvery;
 
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
         PrintStream out = new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.out), true);
@@ -50,7 +53,8 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                 });
             }
             if (!remote.remote()) {
-                console.start();
+                udp.start(console);
+                new FirstListenLines(spec.commandLine().getErr(), "listen").follow(console.matchMode());
             }
             var guard = budget.guard(console, udp.bind);
             System.err.println(console.remoteStatus().map(r -> r.describe()).orElse("listening on UDP port "

@@ -84,16 +84,19 @@ public final class NaoCommand implements Runnable {
                 description = "believe game states only from this GameController (default: the first heard)")
         String gcAddress;
 
-        @Option(names = "--listen", paramLabel = "MS", defaultValue = "" + MatchMode.LISTEN_FIRST_MS,
-                description = "how long to listen for a GameController before the first call (default ${DEFAULT-VALUE}; "
-                        + "longer on a lossy network)")
+        @Option(names = "--listen", paramLabel = "MS", defaultValue = "0",
+                description = "listen at least this long for a GameController before the first call (default: match"
+                        + " mode's first listen, up to " + MatchMode.LISTEN_FIRST_MS + " ms, over as soon as a"
+                        + " GameController says play is off)")
         long listenMs;
 
         /** The application core the calls go through: it only listens (GameController port, no robot port). */
         Console startConsole() throws InterruptedException {
             ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(0))
                     .withGameControllerPort(gcPort).withGcAddress(gcAddress);
-            return new Console(config).start();
+            Console console = new Console(config).start();
+            new FirstListenLines(err(), "nao").follow(console.matchMode());
+            return console;
         }
 
         /** Prints the outcome; the exit code for it. */

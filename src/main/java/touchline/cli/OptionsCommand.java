@@ -37,9 +37,13 @@ final class OptionsCommand implements Callable<Integer> {
     @Mixin
     UdpOptions udp;
 
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
-        try (Console console = new Console(udp.config()).start()) {
+        try (Console console = udp.startConsole()) {
+            new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.matchMode());
             long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
             if (!await(deadline, () -> console.options().options(robot).listReceived())) {
                 System.err.println(console.robots().robot(robot).isPresent()

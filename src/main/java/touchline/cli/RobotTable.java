@@ -17,6 +17,10 @@ final class RobotTable {
                     r.teamId() < 0 ? "?" : r.teamId(), r.batteryPercent() < 0 ? "?" : r.batteryPercent() + "%",
                     r.role(), r.state(), r.gameState(), r.online() ? "online" : "OFFLINE", r.packets(),
                     r.packetsPerSecond(), r.bytesPerSecond(), r.malformed(), r.auth().describe());
+            if (r.gcOtherSource() > 0) {
+                out.printf("  robot %d: %d GameController packet(s) from another source than the one it follows, "
+                        + "not believed%n", r.id(), r.gcOtherSource());
+            }
             if (r.auth().forged() > 0) {
                 out.printf("  robot %d: %d forged datagram(s) dropped; last from %s%n", r.id(), r.auth().forged(),
                         r.auth().lastForgery());

@@ -156,12 +156,23 @@ final class ServeCommand implements Callable<Integer> {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;
             } catch (Exception e) {
+                if (StartFailure.addressInUse(e)) {
+                    return say(err, StartFailure.portInUse("WebSocket", port, "viewers", bind, "--port"));
+                }
                 err.println("touchline serve: cannot serve on " + bind + ":" + port + ": " + e.getMessage());
                 return 1;
             }
             FoxgloveServer server = serving.server();
             try (serving) {
-                console.start();
+                try {
+                    console.start();
+                } catch (Exception e) { // Netty rethrows the native bind error undeclared
+                    if (StartFailure.addressInUse(e)) {
+                        return say(err, StartFailure.portInUse("UDP", robotsPort, "robots", robotsBind, "--robots-port"));
+                    }
+                    throw e;
+                }
+                new FirstListenLines(err, "serve").follow(console.matchMode());
                 if (replayFile != null) {
                     console.setLiveListening(false);
                     try {
@@ -196,6 +207,12 @@ final class ServeCommand implements Callable<Integer> {
             }
         }
         return 0;
+    }
+
+    private static int say(PrintWriter err, StartFailure f) {
+        err.println("touchline serve: " + f.getMessage());
+        err.flush();
+        return f.exitCode();
     }
 
     private void watch(FoxgloveServer server, CountDownLatch stop, PrintWriter out) throws InterruptedException {

@@ -25,10 +25,20 @@ final class StartFailure extends Exception {
         return exitCode;
     }
 
-    static StartFailure portInUse(String bind, int port) {
-        return new StartFailure("UDP port " + port + " on " + bind + " is already in use (another Touchline or a team "
-                + "tool is listening there): close that program, or start with --port and a free port, e.g. --port "
-                + (port == 65535 ? 11012 : port + 1) + ".", PORT_IN_USE);
+    /**
+     * A port this command binds is taken: the sentence names the port, what it is for and the
+     * flag that moves it, e.g. "UDP port 11011 (robots) on 0.0.0.0 is already in use (…): close
+     * that program, or start with --port N (a free port), e.g. --port 11012."
+     */
+    static StartFailure portInUse(String protocol, int port, String purpose, String bind, String flag) {
+        return new StartFailure(protocol + " port " + port + " (" + purpose + ") on " + bind + " is already in use "
+                + "(another Touchline or a team tool is listening there): close that program, or start with " + flag
+                + " N (a free port), e.g. " + flag + " " + (port == 65535 ? port - 1 : port + 1) + ".", PORT_IN_USE);
+    }
+
+    /** The UDP port the robots send to ({@code --port} of console, listen, record, options, stream). */
+    static StartFailure robotsPortInUse(String bind, int port) {
+        return portInUse("UDP", port, "robots", bind, "--port");
     }
 
     /** A file or option the user gave that cannot be used; {@code sentence} says which and why. */
@@ -37,8 +47,9 @@ final class StartFailure extends Exception {
     }
 
     static StartFailure teamPortInUse(String bind, int port) {
-        return new StartFailure("UDP port " + port + " on " + bind + " (the team's messages) is already in use by a "
-                + "program that does not share it: close it, or give the port with --team-port.", PORT_IN_USE);
+        return new StartFailure("UDP port " + port + " (team messages) on " + bind + " is already in use by a "
+                + "program that does not share it: close it, or start with --team-port N (the port the team's "
+                + "robots send to).", PORT_IN_USE);
     }
 
     static StartFailure noDisplay(String why) {

@@ -38,7 +38,7 @@ final class StreamCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        try (Console console = new Console(udp.config()).start()) {
+        try (Console console = udp.startConsole()) {
             Optional<RobotSnapshot> seen = console.waitForRobot(robot, java.time.Duration.ofSeconds(timeoutSeconds));
             if (seen.isEmpty()) {
                 System.err.println("robot " + robot + " was not seen within " + timeoutSeconds + " s");

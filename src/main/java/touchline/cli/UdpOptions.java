@@ -67,11 +67,20 @@ final class UdpOptions {
     touchline.app.Console startConsole() throws InterruptedException, StartFailure {
         touchline.app.Console console = new touchline.app.Console(config());
         try {
+            return start(console);
+        } catch (InterruptedException | StartFailure | RuntimeException e) {
+            console.close();
+            throw e;
+        }
+    }
+
+    /** Starts {@code console}, made on these options; a port in use fails with one sentence naming it. */
+    touchline.app.Console start(touchline.app.Console console) throws InterruptedException, StartFailure {
+        try {
             return console.start();
         } catch (Exception e) { // Netty rethrows the native bind error undeclared
-            console.close();
             if (StartFailure.addressInUse(e)) {
-                throw StartFailure.portInUse(bind, port);
+                throw StartFailure.robotsPortInUse(bind, port);
             }
             throw e;
         }

@@ -90,6 +90,7 @@ final class Robot {
                 s.getRobotPosition().getX(), s.getRobotPosition().getY(), s.getRobotPosition().getTheta(), hasPosition,
                 s.getTimeOnline(), firstSeenMicros, lastSeenMicros, online, packets,
                 rate.perSecond(now), rate.bytesPerSecond(now), malformed, addressChanges, address, origin,
-                new RobotAuth(auth, verified, unverified, forged, lastForgery, s.hasAuth() ? s.getAuth() : null));
+                new RobotAuth(auth, verified, unverified, forged, lastForgery, s.hasAuth() ? s.getAuth() : null),
+                s.getGcOtherSource());
     }
 }

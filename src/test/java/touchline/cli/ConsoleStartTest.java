@@ -5,8 +5,6 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
-import java.net.DatagramSocket;
-import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -20,8 +18,9 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The console's start fails clearly: a port in use, no display, a robot side not built each
- * end the command with one sentence saying what to do and an exit code, never a stack trace.
+ * The console's start fails clearly: no display, a robot side not built each end the command
+ * with one sentence saying what to do and an exit code, never a stack trace (a port in use:
+ * {@link PortInUseTest}).
  */
 class ConsoleStartTest {
 
@@ -35,18 +34,6 @@ class ConsoleStartTest {
             assertTrue(lines.get(0).contains(w), w + " in: " + err);
         }
         assertFalse(err.contains("Exception") || err.contains("\tat "), "no stack trace: " + err);
-    }
-
-    @Test
-    void aPortInUseIsNamedWithWhatToDo() throws Exception {
-        try (DatagramSocket taken = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
-            int port = taken.getLocalPort();
-            StringWriter err = new StringWriter();
-            int code = Main.execute(new String[] {"console", "--bind", "127.0.0.1", "--port", Integer.toString(port),
-                    "--layouts", dir.toString()}, new PrintWriter(err, true));
-            assertEquals(StartFailure.PORT_IN_USE, code);
-            assertOneSentence(err.toString(), "UDP port " + port + " on 127.0.0.1 is already in use", "--port");
-        }
     }
 
     @Test

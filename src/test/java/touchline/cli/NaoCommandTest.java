@@ -68,6 +68,51 @@ class NaoCommandTest {
         }
     }
 
+    /** A GameController on loopback: {@code packet} to {@code port} every {@code periodMs}. */
+    private static void sendEvery(ScheduledExecutorService field, DatagramSocket gc, byte[] packet, int port, long periodMs) {
+        field.scheduleAtFixedRate(() -> {
+            try {
+                gc.send(new DatagramPacket(packet, packet.length, InetAddress.getLoopbackAddress(), port));
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        }, 0, periodMs, TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * The wait before the first call is shown on the terminal: a line when it starts, one when it
+     * ends and why — at once when the GameController (on loopback, INITIAL every 500 ms) is heard,
+     * after the whole listen when none is.
+     */
+    @Test
+    void theFirstListenIsALineWhenItStartsAndOneWhenItEnds() throws Exception {
+        byte[] initial;
+        try (InputStream in = getClass().getResourceAsStream("/golden/gamecontroller/hsl20/00-initial.bin")) {
+            initial = in.readAllBytes();
+        }
+        int gcPort = freePort();
+        try (FakeNaoRobot robot = new FakeNaoRobot(0)) {
+            String target = "127.0.0.1:" + robot.port();
+            assertEquals(0, run("call", target, "Test.echo", "1", "--insecure", "--gc-port", Integer.toString(gcPort)));
+            assertTrue(err.toString().contains("touchline nao: match mode: listening for a GameController before "
+                    + "talking to robots ("), err.toString());
+            assertTrue(err.toString().contains("touchline nao: match mode: no GameController heard in "
+                    + touchline.app.game.MatchMode.LISTEN_FIRST_MS + " ms: talking to robots"), err.toString());
+
+            err.getBuffer().setLength(0);
+            ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
+            try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+                sendEvery(gameController, gc, initial, gcPort, 500);
+                assertEquals(0, run("call", target, "Test.echo", "2", "--insecure", "--gc-port",
+                        Integer.toString(gcPort)));
+                assertTrue(err.toString().contains("touchline nao: match mode: heard INITIAL (GameController at "
+                        + "127.0.0.1:" + gc.getLocalPort() + "): talking to robots"), err.toString());
+            } finally {
+                gameController.shutdownNow();
+            }
+        }
+    }
+
     @Test
     void anAbsentRobotIsAClearMessage() throws Exception {
         int port;
@@ -133,13 +178,7 @@ class NaoCommandTest {
             String target = "127.0.0.1:" + sim.port();
             ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
             try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
-                gameController.scheduleAtFixedRate(() -> {
-                    try {
-                        gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
-                    } catch (java.io.IOException e) {
-                        throw new java.io.UncheckedIOException(e);
-                    }
-                }, 0, 100, TimeUnit.MILLISECONDS);
+                sendEvery(gameController, gc, playing, gcPort, 100);
                 assertEquals(NaoCommand.HELD_BACK, run("call", target, "ALMemory.insertData", "Touchline/cli", "7",
                         "--insecure", "--gc-port", Integer.toString(gcPort), "--listen", "10000"), "out: " + out + " err: " + err);
                 assertTrue(err.toString().contains("held back: match mode, game is PLAYING"), err.toString());

@@ -70,17 +70,6 @@ class ServeCommandTest {
     }
 
     @Test
-    void aPortInUseIsReportedNotAStackTrace() throws Exception {
-        try (java.net.ServerSocket taken = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
-            Run run = serve("--port", Integer.toString(taken.getLocalPort()), "--robots-port", "0",
-                    "--robots-bind", "127.0.0.1", "--seconds", "1");
-            assertEquals(1, run.exit());
-            assertTrue(run.err().contains("cannot serve on 127.0.0.1:" + taken.getLocalPort()), run.err());
-            assertFalse(run.err().contains("\tat "), run.err());
-        }
-    }
-
-    @Test
     void aBrokenTeamKeyOrContradictoryKeyOptionsStopItBeforeServing(@org.junit.jupiter.api.io.TempDir java.nio.file.Path tmp)
             throws Exception {
         java.nio.file.Path keys = tmp.resolve("keys");

@@ -36,6 +36,20 @@ class RobotRegistryTest {
         assertEquals(40, r.bytesPerSecond(), 0.001);
     }
 
+    /** The robot's own count of GameController packets it did not believe is shown beside its game state. */
+    @Test
+    void theOtherGameControllerTheRobotDidNotBelieveIsShownWithItsGameState() {
+        registry.accept(status(2, a, "striker"));
+        assertEquals(0, registry.robot(2).orElseThrow().gcOtherSource());
+        assertEquals("", registry.robot(2).orElseThrow().gameStateShown(), "nothing added while the robot counts none");
+        Fumanoid.Message m = Fumanoid.Message.newBuilder().setRobotID(2).setExtension(Fumanoid.status,
+                Fumanoid.Status.newBuilder().setGameState("PLAYING").setGcOtherSource(1234).build()).build();
+        registry.accept(new Envelope(now[0], Direction.IN, Channel.FUMANOID, a, 2, "status", m, new byte[40], null));
+        RobotSnapshot r = registry.robot(2).orElseThrow();
+        assertEquals(1234, r.gcOtherSource());
+        assertEquals("PLAYING (1234 from another GameController, not believed)", r.gameStateShown());
+    }
+
     @Test
     void goesOfflineWhenKeepAlivesStopAndStaysListed() {
         registry.accept(status(2, a, "striker"));

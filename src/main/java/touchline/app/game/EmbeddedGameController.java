@@ -247,7 +247,7 @@ public final class EmbeddedGameController implements AutoCloseable {
             m.publish(referee.trueData());
         }
         if (matchMode != null) {
-            matchMode.observe(data.state(), OWN_SOURCE);
+            matchMode.observeBelieved(data.state(), OWN_SOURCE);
         }
         return data;
     }

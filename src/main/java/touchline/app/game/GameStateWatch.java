@@ -113,9 +113,13 @@ public final class GameStateWatch implements AutoCloseable {
         sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 m == null ? "gc.unknown" : m.format().kind(), null, data, error));
         if (m != null && (error == null || intruder)) {
-            // the strictest claim wins: an intruder saying PLAYING silences the console too
-            matchMode.observe(m.data().state(), (intruder ? "other source at " : "GameController at ") + host + ":"
-                    + from.getPort());
+            // the strictest claim wins: an intruder saying PLAYING silences the console too (but
+            // its INITIAL does not end the first listen)
+            if (intruder) {
+                matchMode.observe(m.data().state(), "other source at " + host + ":" + from.getPort());
+            } else {
+                matchMode.observeBelieved(m.data().state(), "GameController at " + host + ":" + from.getPort());
+            }
         }
     }
 

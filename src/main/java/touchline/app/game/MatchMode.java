@@ -36,12 +36,15 @@ public final class MatchMode {
      * let a forged FINISHED through. The price: a true FINISHED releases the console 2 s late.
      */
     public static final long PLAY_MEMORY_MS = 2000;
+    /** Every GameController format (HL, SPL, HSL) is sent twice a second. */
+    public static final long GAMECONTROLLER_INTERVAL_MS = 500;
     /**
-     * How long a console that starts listening to the field holds robot traffic back: one
-     * GameController interval (500 ms) and its jitter, so a console started in the middle of a
-     * game hears the GameController before it says anything to a robot.
+     * How long a console that starts listening to the field holds robot traffic back: 2.5
+     * GameController intervals, so a console started in the middle of a game on a network that
+     * loses one packet in two (PLAYING heard once a second) hears the GameController before it
+     * says anything to a robot. A non-play state from a believed GameController ends it early.
      */
-    public static final long LISTEN_FIRST_MS = 600;
+    public static final long LISTEN_FIRST_MS = GAMECONTROLLER_INTERVAL_MS * 5 / 2;
     /** How many held-back request descriptions are kept for the notice. */
     public static final int HELD_LOG = 100;
 
@@ -75,6 +78,12 @@ public final class MatchMode {
     private boolean override;
     private boolean lastMaySend = true;
     private long listeningUntilMs = Long.MIN_VALUE;
+    private long listenMs;
+    /** What ended the first listen early (a non-play state heard), else null. */
+    private String listenEndedBy;
+    /** Why the first listen ended, once it has; null before. */
+    private String listenOutcome;
+    private final List<Consumer<String>> listenEndListeners = new CopyOnWriteArrayList<>();
 
     public MatchMode(GameClock clock) {
         this.clock = clock;
@@ -96,8 +105,44 @@ public final class MatchMode {
     public void listenFirst(long ms) {
         synchronized (this) {
             listeningUntilMs = clock.millis() + ms;
+            listenMs = ms;
+            listenEndedBy = null;
+            listenOutcome = null;
         }
         refresh();
+    }
+
+    /**
+     * Calls {@code onEnd} once with why the first listen ended ("heard INITIAL (GameController
+     * at …): talking to robots", "no GameController heard in 1250 ms: …", or play
+     * heard): at once when it has already ended, else on the thread that notices the end.
+     */
+    public void onListenEnd(Consumer<String> onEnd) {
+        String outcome;
+        synchronized (this) {
+            outcome = listenOutcome;
+            if (outcome == null) {
+                listenEndListeners.add(onEnd);
+            }
+        }
+        if (outcome != null) {
+            onEnd.accept(outcome);
+        }
+    }
+
+    /**
+     * Records a game state from a GameController the console believes (the pinned one, its own,
+     * the remote console's): as {@link #observe}, and a state that is not play ends the first
+     * listen at once, since that GameController is heard and says play is off.
+     */
+    public void observeBelieved(int gameState, String source) {
+        synchronized (this) {
+            if (!GameControlData.isPlay(gameState) && listening()) {
+                listeningUntilMs = clock.millis();
+                listenEndedBy = "heard " + GameControlData.stateName(gameState) + " (" + source + ")";
+            }
+        }
+        observe(gameState, source);
     }
 
     /** Records a game state byte (0 INITIAL ... 4 FINISHED) heard from, or sent by, {@code source}. */
@@ -191,7 +236,8 @@ public final class MatchMode {
         synchronized (this) {
             String source = playingSource();
             if (source == null) {
-                return override || !listening() ? "" : LISTENING;
+                return override || !listening() ? "" : LISTENING + " (" + (listeningUntilMs - clock.millis())
+                        + " ms more; a GameController losing one packet in two is heard within " + listenMs + " ms)";
             }
             Heard now = heard.get(source);
             if (now == null) { // forgotten in a flood of other sources; its claim of play is kept
@@ -212,8 +258,18 @@ public final class MatchMode {
         boolean now;
         boolean changed;
         String why;
+        String listenEnd = null;
+        List<Consumer<String>> toTell = List.of();
         synchronized (this) {
             String source = playingSource();
+            if (listenOutcome == null && listenMs > 0 && (source != null || !listening())) {
+                listenOutcome = source != null ? "a game in play (" + source + "): silent while it lasts"
+                        : (listenEndedBy != null ? listenEndedBy : "no GameController heard in " + listenMs + " ms")
+                        + ": talking to robots";
+                listenEnd = listenOutcome;
+                toTell = List.copyOf(listenEndListeners);
+                listenEndListeners.clear();
+            }
             now = override || source == null && !listening();
             changed = now != lastMaySend;
             lastMaySend = now;
@@ -228,6 +284,9 @@ public final class MatchMode {
             for (Consumer<Boolean> l : listeners) {
                 l.accept(now);
             }
+        }
+        for (Consumer<String> l : toTell) {
+            l.accept(listenEnd);
         }
     }
 

@@ -66,7 +66,7 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
         table.getColumns().add(column("Role", r -> text(r.role()), 90));
         table.getColumns().add(column("State", r -> text(r.state()), 90));
-        table.getColumns().add(column("Game", r -> text(r.gameState()), 80));
+        table.getColumns().add(column("Game", r -> text(r.gameStateShown()), 80));
         table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
         table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.console().replayClock()
                 : context.console().clock()).nowMicros() - r.lastSeenMicros()), 76));

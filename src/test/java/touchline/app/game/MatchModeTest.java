@@ -177,6 +177,60 @@ class MatchModeTest {
         assertTrue(fresh.mayConsoleSend());
     }
 
+    /**
+     * Started during play on Wi-Fi that loses one GameController packet in two: PLAYING is heard
+     * once a second, so the first one may come 1 s after the start; the console is still silent.
+     */
+    @Test
+    void theFirstListenOutlastsTwoGameControllerIntervals() {
+        assertTrue(MatchMode.LISTEN_FIRST_MS * 2 >= MatchMode.GAMECONTROLLER_INTERVAL_MS * 5,
+                "at least 2.5 intervals: " + MatchMode.LISTEN_FIRST_MS);
+        mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        clock.advance(2 * MatchMode.GAMECONTROLLER_INTERVAL_MS); // one packet lost, the next just due
+        assertFalse(mode.mayConsoleSend(), "a lossy GameController not heard yet: still listening");
+        assertTrue(mode.play().startsWith("listening for a GameController before talking to robots ("
+                + (MatchMode.LISTEN_FIRST_MS - 2 * MatchMode.GAMECONTROLLER_INTERVAL_MS) + " ms more"), mode.play());
+        mode.observeBelieved(3, "GameController at 10.0.0.2:3838");
+        clock.advance(MatchMode.LISTEN_FIRST_MS);
+        assertFalse(mode.mayConsoleSend());
+    }
+
+    /** The wait ends as soon as the GameController it believes says play is off; robots and strangers do not end it. */
+    @Test
+    void aNonPlayStateFromTheBelievedGameControllerEndsTheFirstListenAtOnce() {
+        List<String> ends = new ArrayList<>();
+        mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        mode.onListenEnd(ends::add);
+        clock.advance(100);
+        mode.observe(0, "robot 3"); // a robot that heard no GameController reports INITIAL
+        mode.observe(4, "other source at 10.0.0.66:40000");
+        assertFalse(mode.mayConsoleSend());
+        assertEquals(List.of(), ends);
+        mode.observeBelieved(0, "GameController at 10.0.0.2:3838");
+        assertTrue(mode.mayConsoleSend());
+        assertEquals(List.of("heard INITIAL (GameController at 10.0.0.2:3838): talking to robots"), ends);
+        List<String> late = new ArrayList<>();
+        mode.onListenEnd(late::add); // told at once, once
+        mode.refresh();
+        assertEquals(ends, late);
+        assertEquals(1, ends.size());
+    }
+
+    @Test
+    void theEndOfTheFirstListenSaysWhy() {
+        List<String> ends = new ArrayList<>();
+        mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        mode.onListenEnd(ends::add);
+        clock.advance(MatchMode.LISTEN_FIRST_MS);
+        mode.refresh();
+        assertEquals(List.of("no GameController heard in " + MatchMode.LISTEN_FIRST_MS + " ms: talking to robots"), ends);
+        MatchMode fresh = new MatchMode(clock);
+        fresh.listenFirst(MatchMode.LISTEN_FIRST_MS);
+        fresh.onListenEnd(ends::add);
+        fresh.observeBelieved(3, "GameController at 10.0.0.2:3838");
+        assertEquals("a game in play (GameController at 10.0.0.2:3838): silent while it lasts", ends.get(1));
+    }
+
     @Test
     void aPlayingHeardWhileListeningKeepsTheConsoleSilent() {
         mode.listenFirst(MatchMode.LISTEN_FIRST_MS);
