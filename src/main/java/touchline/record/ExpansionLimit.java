@@ -4,7 +4,7 @@ package touchline.record;
  * How far a recording may expand when it is read. What its chunks hold (their records,
  * uncompressed; a chunk that another chunk's index entry overlaps counts again) may exceed the
  * file's own size by {@code ratio} times that size, by at least {@value #FLOOR_MB} MB and by at
- * most {@code ratio} × {@value #CAP_MB_PER_RATIO} MB (16 GB at the default ratio). Real
+ * most {@code ratio} × {@value #CAP_MB_PER_RATIO} MB (8 GB at the default ratio). Real
  * recordings compress 2 to 10 times; a small file made to expand to gigabytes (a 198 KB file
  * once held 2.98 million envelopes) is refused beyond the limit, chunk by chunk in file
  * order, and the reader says how much. A user who trusts a file raises the ratio
@@ -12,7 +12,7 @@ package touchline.record;
  */
 public record ExpansionLimit(int ratio) {
 
-    public static final int DEFAULT_RATIO = 64;
+    public static final int DEFAULT_RATIO = 32;
     public static final ExpansionLimit DEFAULT = new ExpansionLimit(DEFAULT_RATIO);
     static final int FLOOR_MB = 16;
     static final int CAP_MB_PER_RATIO = 256;
@@ -38,8 +38,9 @@ public record ExpansionLimit(int ratio) {
     }
 
     static String size(long bytes) {
-        if (bytes >= 10L << 30) {
-            return (bytes >> 30) + " GB";
+        if (bytes >= 1L << 30) {
+            return bytes % (1L << 30) == 0 ? (bytes >> 30) + " GB" : String.format(java.util.Locale.ROOT, "%.1f GB",
+                    bytes / (double) (1L << 30));
         }
         if (bytes >= 10L << 20) {
             return (bytes >> 20) + " MB";

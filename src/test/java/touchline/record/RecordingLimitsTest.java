@@ -19,6 +19,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -121,7 +122,7 @@ class RecordingLimitsTest {
             assertEquals(4L * PER_CHUNK, envelopes(r));
             assertEquals(20, r.mcap().refusedChunks());
             assertTrue(noted(r, "20 of 24 chunks (from byte "), r.problems().toString());
-            assertTrue(noted(r, "may expand to 16 MB (64 times its size more, at least 16 MB, at most 16 GB;"
+            assertTrue(noted(r, "may expand to 16 MB (32 times its size more, at least 16 MB, at most 8 GB;"
                     + " --max-expansion raises the ratio)"), r.problems().toString());
         }
         try (Recording r = Recording.open(f, new MessageKinds(), new ExpansionLimit(100_000))) {
@@ -157,6 +158,59 @@ class RecordingLimitsTest {
                 .setErr(new PrintWriter(err)).execute(f.toString(), "--info", "--max-expansion", "0");
         assertEquals(2, code);
         assertTrue(err.toString().contains("--max-expansion is at least 1"), err.toString());
+    }
+
+
+    /**
+     * A file of the GameController's packets only, {@code chunks} zstd chunks of 4 MiB each
+     * holding one recorded packet over and over: about a million packets in a few KB.
+     */
+    private Path gameControllerFlood(String name, int chunks, long startNanos) throws Exception {
+        Path recorded = dir.resolve("recorded.mcap");
+        RecordingFixture.write(recorded, RecordingFixture.team(1, 2), EnvelopeWriter.Options.defaults());
+        try (Recording r = Recording.open(recorded)) {
+            McapReader.Cursor c = r.mcap().cursor(0);
+            for (McapReader.McapMessage m = c.next(); m != null; m = c.next()) {
+                touchline.transport.Envelope e = r.toEnvelope(m);
+                if (e != null && touchline.transport.GameStateReader.isGameState(e)) {
+                    McapReader.ChannelInfo gc = r.mcap().channels().get(m.channelId());
+                    McapReader.Schema schema = r.mcap().schemas().get(gc.schemaId());
+                    CraftedMcap crafted = new CraftedMcap(gc, schema);
+                    byte[] records = CraftedMcap.messages((4 << 20) / (31 + m.data().length), m.data(), startNanos);
+                    for (int i = 0; i < chunks; i++) {
+                        crafted.chunk(ChunkCompression.ZSTD, records, startNanos);
+                    }
+                    return file(name, crafted.bytes());
+                }
+            }
+        }
+        throw new AssertionError("the fixture has no GameController packet");
+    }
+
+    @Test
+    void twoSmallFilesFullOfGameControllerPacketsReplayInTheWindowsHeap() throws Exception {
+        // once: every packet of both files kept for the clock alignment, OutOfMemoryError in 512 MB
+        Path a = gameControllerFlood("a.mcap", 40, 1_000_000_000L);
+        Path b = gameControllerFlood("b.mcap", 40, 2_000_000_000L);
+        assertTrue(Files.size(a) < 64 * 1024, Files.size(a) + " bytes");
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String classpath = System.getProperty("surefire.test.class.path", System.getProperty("java.class.path"));
+        Path err = dir.resolve("replay.err");
+        Process p = new ProcessBuilder(java, "-Xmx512m", "-cp", classpath, "touchline.cli.Main", "replay",
+                a.toString(), b.toString(), "--headless")
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).redirectError(err.toFile()).start();
+        p.getOutputStream().close();
+        boolean ended = p.waitFor(180, TimeUnit.SECONDS); // a guard against the old minutes
+        if (!ended) {
+            p.destroyForcibly();
+        }
+        String said = Files.readString(err);
+        assertTrue(ended, "replay did not end: " + said);
+        assertEquals(0, p.exitValue(), said);
+        assertTrue(said.contains("note: a.mcap: 36 of 40 chunks") && said.contains("note: b.mcap: 36 of 40 chunks"),
+                said);
+        assertTrue(said.contains("file b.mcap: +1.000 s,"), said);
+        assertTrue(said.contains("replayed ") && said.contains(" from 2 files"), said);
     }
 
     @Test
