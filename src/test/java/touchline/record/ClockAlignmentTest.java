@@ -90,7 +90,8 @@ class ClockAlignmentTest {
     }
 
     @Test
-    @Timeout(60) // a guard only: every pair of equal packets once took 54 s for two 4.7 KB files; these are 10^12 pairs
+    // a guard only: every pair of equal packets once took 54 s for two 4.7 KB files; these are 10^12 pairs
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void aMillionRepeatsOfOnePacketInEachFileAlignInLinearWork() {
         // a GameController that never changes its bytes (or a file made to repeat one), heard twice a second by both
         byte[] same = packet(7, 0);

@@ -84,8 +84,8 @@ class RecordingLimitsTest {
 
     @Test
     void aClaimWithinTheLimitIsDecompressedInStepsOfWhatTheFrameHolds() throws Exception {
-        // 1 MB of padding allows 64 MB more: five chunks claiming 12 MB each pass, each holding 33 bytes
-        CraftedMcap crafted = CraftedMcap.json().padding(1 << 20);
+        // 2 MB of padding allow 64 MB more: five chunks claiming 12 MB each pass, each holding 33 bytes
+        CraftedMcap crafted = CraftedMcap.json().padding(2 << 20);
         for (int i = 0; i < 5; i++) {
             crafted.chunk(ChunkCompression.ZSTD, CraftedMcap.messages(1, EMPTY_JSON, i), i, 12L << 20);
         }
@@ -214,7 +214,8 @@ class RecordingLimitsTest {
     }
 
     @Test
-    @Timeout(120) // a guard only: one registry build per file took 21 s for 8 000 files, minutes for these
+    // a guard only: one registry build per file took 21 s for 8 000 files, minutes for these
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void aSchemaOfThirtyThousandFilesLoadsWithOneRegistryBuild() throws Exception {
         int files = 30_000;
         FileDescriptorSet.Builder set = FileDescriptorSet.newBuilder();
