@@ -105,4 +105,17 @@ class ClockAlignmentTest {
         assertEquals(1_250_000, o.offsetMicros(), o.describe());
         assertEquals(1_000_000, o.matches(), "each of the robot's packets has its twin 1.25 s earlier");
     }
+
+    @Test
+    void packetsBeyondTheBoundAreCountedNotKeptAndTheKeptOnesStillAlign() {
+        ClockAlignment.Packets laptop = new ClockAlignment.Packets(300);
+        ClockAlignment.Packets robot = new ClockAlignment.Packets(300);
+        heard(0, 1000, 40, 0, 0, 0, 1).forEach(p -> laptop.add(p.timeMicros(), p.bytes()));
+        heard(0, 1000, 40, 400_000, 0, 0, 2).forEach(p -> robot.add(p.timeMicros(), p.bytes()));
+        assertEquals(300, laptop.size());
+        assertEquals(700, laptop.refused());
+        ClockAlignment.Offset o = alignment.estimate(laptop, robot);
+        assertEquals(400_000, o.offsetMicros());
+        assertEquals(300, o.matches());
+    }
 }
