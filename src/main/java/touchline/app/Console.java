@@ -423,11 +423,7 @@ public final class Console implements AutoCloseable {
      * that could not be used (the others are used).
      */
     public List<String> loadTeamSchemas(List<com.google.protobuf.Descriptors.FileDescriptor> files) {
-        List<String> problems = new java.util.ArrayList<>();
-        for (var f : files) {
-            kinds.add(f).ifPresent(problems::add);
-        }
-        return problems;
+        return List.copyOf(kinds.add(files).values());
     }
 
     /**

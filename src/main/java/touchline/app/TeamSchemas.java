@@ -10,6 +10,7 @@ import touchline.record.SchemaSet;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 /**
  * A team's own message types loaded at run time from a protoc descriptor set: the files are
@@ -38,8 +39,9 @@ public final class TeamSchemas {
         if (added.isEmpty()) {
             refusals.add(file.getFileName() + ": nothing new (its files are loaded already)");
         }
+        Map<FileDescriptor, String> refusedByFile = kinds.add(added);
         for (FileDescriptor f : added) {
-            String refused = kinds.add(f).orElse("");
+            String refused = refusedByFile.getOrDefault(f, "");
             if (!refused.isEmpty()) {
                 refusals.add(f.getName() + ": " + refused);
             }

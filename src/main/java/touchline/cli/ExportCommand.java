@@ -58,6 +58,9 @@ public final class ExportCommand implements Callable<Integer> {
     @Option(names = "--out", description = "output file (default for CSV: standard output; required for foxglove)")
     Path out;
 
+    @CommandLine.Mixin
+    ExpansionOption expansion = new ExpansionOption();
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -87,10 +90,14 @@ public final class ExportCommand implements Callable<Integer> {
             }
         }
         DebugCsvExport.Kind what = parsed;
+        touchline.record.ExpansionLimit limit = expansion.limit(err, "export");
+        if (limit == null) {
+            return 2;
+        }
         Recording recording;
         MessageKinds kinds = new MessageKinds();
         try {
-            recording = Recording.open(file, kinds);
+            recording = Recording.open(file, kinds, limit);
         } catch (RecordingException e) {
             err.println("touchline export: " + e.getMessage());
             return 1;

@@ -27,6 +27,9 @@ public final class RecoverCommand implements Callable<Integer> {
     @Option(names = "--out", description = "the finished copy (default: FILE-recovered.mcap beside it)")
     Path out;
 
+    @CommandLine.Mixin
+    ExpansionOption expansion = new ExpansionOption();
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -39,9 +42,13 @@ public final class RecoverCommand implements Callable<Integer> {
             err.println("touchline recover: --out must differ from FILE (the damaged file is kept as it is)");
             return 2;
         }
+        touchline.record.ExpansionLimit limit = expansion.limit(err, "recover");
+        if (limit == null) {
+            return 2;
+        }
         Recovery.Result result;
         try {
-            result = new Recovery(file).writeTo(target);
+            result = new Recovery(file, limit).writeTo(target);
         } catch (RecordingException e) {
             err.println("touchline recover: " + e.getMessage());
             return 1;

@@ -58,6 +58,9 @@ public final class ReplayCommand implements Callable<Integer> {
             + " replay would skip, without playing it")
     boolean info;
 
+    @CommandLine.Mixin
+    ExpansionOption expansion = new ExpansionOption();
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -81,9 +84,13 @@ public final class ReplayCommand implements Callable<Integer> {
                 return 2;
             }
         }
+        touchline.record.ExpansionLimit limit = expansion.limit(err, "replay");
+        if (limit == null) {
+            return 2;
+        }
         ReplaySession session;
         try {
-            session = ReplaySession.open(files, given, new MessageKinds());
+            session = ReplaySession.open(files, given, new MessageKinds(), limit);
         } catch (RecordingException e) {
             err.println("touchline replay: " + e.getMessage());
             return 1;

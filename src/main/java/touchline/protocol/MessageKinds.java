@@ -6,6 +6,9 @@ import com.google.protobuf.ExtensionRegistry;
 import com.google.protobuf.Descriptors.FileDescriptor;
 import touchline.proto.Fumanoid;
 
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
@@ -42,32 +45,51 @@ public final class MessageKinds {
      * Adds every extension of {@code Message} declared in {@code file} (a team's own types).
      * An extension whose number is taken already is refused with the reason returned.
      */
-    public synchronized Optional<String> add(FileDescriptor file) {
-        ExtensionRegistry r = ExtensionRegistry.newInstance();
-        Fumanoid.registerAllExtensions(r);
-        StringBuilder refused = new StringBuilder();
-        for (FieldDescriptor known : byNumber.values()) {
-            if (!known.getFile().equals(Fumanoid.getDescriptor())) {
-                addDynamic(r, known);
+    public Optional<String> add(FileDescriptor file) {
+        return Optional.ofNullable(add(List.of(file)).get(file));
+    }
+
+    /**
+     * Adds every extension of {@code Message} declared in {@code files}; returns the reason for
+     * each file one of whose extensions was refused (its number taken already). The registry is
+     * built anew once per call, and only when something was added: a schema of thousands of
+     * files costs one build, not one per file.
+     */
+    public synchronized Map<FileDescriptor, String> add(Collection<FileDescriptor> files) {
+        Map<FileDescriptor, String> refusals = new LinkedHashMap<>();
+        boolean added = false;
+        for (FileDescriptor file : files) {
+            StringBuilder refused = new StringBuilder();
+            for (FieldDescriptor ext : file.getExtensions()) {
+                if (!ext.getContainingType().getFullName().equals(Fumanoid.Message.getDescriptor().getFullName())) {
+                    continue;
+                }
+                FieldDescriptor taken = byNumber.get(ext.getNumber());
+                if (taken != null && !taken.getFullName().equals(ext.getFullName())) {
+                    refused.append("extension ").append(ext.getNumber()).append(" (").append(ext.getFullName())
+                            .append(") is taken by ").append(taken.getFullName()).append("; ");
+                    continue;
+                }
+                byNumber.put(ext.getNumber(), ext);
+                byName.put(ext.getName(), ext);
+                names.put(ext.getNumber(), ext.getName()); // was perhaps "ext#N" until now
+                added = true;
+            }
+            if (refused.length() > 0) {
+                refusals.put(file, refused.toString().trim());
             }
         }
-        for (FieldDescriptor ext : file.getExtensions()) {
-            if (!ext.getContainingType().getFullName().equals(Fumanoid.Message.getDescriptor().getFullName())) {
-                continue;
+        if (added) {
+            ExtensionRegistry r = ExtensionRegistry.newInstance();
+            Fumanoid.registerAllExtensions(r);
+            for (FieldDescriptor known : byNumber.values()) {
+                if (!known.getFile().equals(Fumanoid.getDescriptor())) {
+                    addDynamic(r, known);
+                }
             }
-            FieldDescriptor taken = byNumber.get(ext.getNumber());
-            if (taken != null && !taken.getFullName().equals(ext.getFullName())) {
-                refused.append("extension ").append(ext.getNumber()).append(" (").append(ext.getFullName())
-                        .append(") is taken by ").append(taken.getFullName()).append("; ");
-                continue;
-            }
-            byNumber.put(ext.getNumber(), ext);
-            byName.put(ext.getName(), ext);
-            names.put(ext.getNumber(), ext.getName()); // was perhaps "ext#N" until now
-            addDynamic(r, ext);
+            registry = r; // readers decoding meanwhile keep the registry they took
         }
-        registry = r;
-        return refused.length() == 0 ? Optional.empty() : Optional.of(refused.toString().trim());
+        return refusals;
     }
 
     private static void addDynamic(ExtensionRegistry r, FieldDescriptor ext) {

@@ -1,14 +1,14 @@
 package touchline.record;
 
 import com.github.luben.zstd.Zstd;
-import com.github.luben.zstd.ZstdException;
-import net.jpountz.lz4.LZ4Exception;
-import net.jpountz.lz4.LZ4FrameInputStream;
+import com.github.luben.zstd.ZstdInputStream;
 import net.jpountz.lz4.LZ4FrameOutputStream;
+import org.apache.commons.compress.compressors.lz4.FramedLZ4CompressorInputStream;
 
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.util.Arrays;
 import java.util.Optional;
@@ -17,7 +17,8 @@ import java.util.Optional;
  * The compressions the MCAP spec names for chunk records: none ({@code ""}), {@code zstd}
  * (a Zstandard frame) and {@code lz4} (an LZ4 frame). The writer compresses a whole chunk's
  * records at once; the reader decompresses into exactly the uncompressed size the chunk
- * declares, so a frame that claims or yields anything else is refused, never trusted.
+ * declares, so a frame that yields anything else is refused, never trusted, and a claim is
+ * never allocated before the frame has yielded it.
  */
 public enum ChunkCompression {
     NONE(""),
@@ -69,43 +70,53 @@ public enum ChunkCompression {
 
     /**
      * Decompresses {@code compressed} into exactly {@code uncompressedSize} bytes. Throws
-     * {@link IOException} with a user-facing reason for a damaged frame or a wrong size.
+     * {@link IOException} with a user-facing reason for a damaged frame or a wrong size. The
+     * output grows in steps with what the frame really yields (at most twice that), so a chunk
+     * that claims far more than its frame holds costs what the frame holds, not the claim.
      */
     byte[] decompress(byte[] compressed, int uncompressedSize) throws IOException {
-        switch (this) {
-            case NONE -> {
-                return compressed;
-            }
-            case ZSTD -> {
-                byte[] out = new byte[uncompressedSize];
-                long n;
-                try {
-                    n = Zstd.decompressByteArray(out, 0, uncompressedSize, compressed, 0, compressed.length);
-                } catch (ZstdException e) {
-                    throw new IOException("its zstd frame does not decompress (" + e.getMessage() + ")");
-                }
-                if (n != uncompressedSize) {
-                    throw new IOException("its zstd frame holds " + n + " bytes, the chunk says " + uncompressedSize);
-                }
-                return out;
-            }
-            case LZ4 -> {
-                byte[] out = new byte[uncompressedSize];
-                int n;
-                boolean more;
-                try (LZ4FrameInputStream in = new LZ4FrameInputStream(new ByteArrayInputStream(compressed))) {
-                    n = in.readNBytes(out, 0, uncompressedSize);
-                    more = in.read() != -1;
-                } catch (IOException | LZ4Exception | IllegalArgumentException e) {
-                    throw new IOException("its lz4 frame does not decompress (" + e.getMessage() + ")");
-                }
-                if (n != uncompressedSize || more) {
-                    throw new IOException("its lz4 frame does not hold the " + uncompressedSize
-                            + " bytes the chunk says");
-                }
-                return out;
-            }
-            default -> throw new IllegalStateException();
+        if (this == NONE) {
+            return compressed;
         }
+        byte[] out = new byte[Math.min(uncompressedSize, FIRST_STEP)];
+        int n = 0;
+        boolean more;
+        try (InputStream in = frame(compressed)) {
+            while (n < uncompressedSize) {
+                if (n == out.length) {
+                    out = Arrays.copyOf(out, (int) Math.min(uncompressedSize, 2L * out.length));
+                }
+                int r = in.read(out, n, out.length - n);
+                if (r < 0) {
+                    break;
+                }
+                n += r;
+            }
+            more = in.read() != -1;
+        } catch (IOException | RuntimeException e) {
+            throw new IOException("its " + mcapName + " frame does not decompress (" + e.getMessage() + ")");
+        }
+        if (n != uncompressedSize || more) {
+            throw new IOException("its " + mcapName + " frame holds " + (more ? "more than " + n : n)
+                    + " bytes, the chunk says " + uncompressedSize);
+        }
+        return out;
+    }
+
+    // what a decompression allocates before the frame has shown it holds more
+    private static final int FIRST_STEP = 1 << 20;
+
+    /**
+     * The decompressing stream of a frame. LZ4: Commons Compress reads every frame the format
+     * allows (linked blocks, content size, block and content checksums); lz4-java's frame reader
+     * refuses linked blocks, which the Python {@code mcap} writer uses for chunks over one block.
+     */
+    private InputStream frame(byte[] compressed) throws IOException {
+        ByteArrayInputStream bytes = new ByteArrayInputStream(compressed);
+        return switch (this) {
+            case ZSTD -> new ZstdInputStream(bytes);
+            case LZ4 -> new FramedLZ4CompressorInputStream(bytes);
+            case NONE -> bytes;
+        };
     }
 }

@@ -1,8 +1,8 @@
 package touchline.record;
 
-import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -27,7 +27,7 @@ public final class ClockAlignment {
     /** A packet further than this from where the rough offset expects it is no match. */
     static final long MATCH_WINDOW_MICROS = 2_000_000;
     private static final long BIN_MICROS = 100_000;
-    private static final int MAX_PAIRS = 2_000_000;
+    private static final int MAX_PAIRS = 1_000_000;
 
     /** One GameController datagram a recording heard: its receive time on that recording's clock, and its bytes. */
     public record Packet(long timeMicros, byte[] bytes) { }
@@ -67,73 +67,166 @@ public final class ClockAlignment {
 
     /** The offset of {@code other}'s clock to {@code reference}'s, or {@link Offset#NONE} without common packets. */
     public Offset estimate(List<Packet> reference, List<Packet> other) {
-        Map<ByteBuffer, List<Long>> ref = byBytes(reference);
-        Map<ByteBuffer, List<Long>> oth = byBytes(other);
-        Map<Long, Integer> bins = new HashMap<>();
-        int pairs = 0;
-        for (Map.Entry<ByteBuffer, List<Long>> e : oth.entrySet()) {
-            List<Long> r = ref.get(e.getKey());
-            if (r == null) {
-                continue;
+        return estimate(Packets.of(reference), Packets.of(other));
+    }
+
+    /**
+     * The offset of {@code other}'s clock to {@code reference}'s, or {@link Offset#NONE} without
+     * common packets. Linear in the packets (apart from sorting each packet's times): the rough
+     * offset weighs at most {@link #MAX_PAIRS} pairs, those of the rarest bytes first (a packet
+     * heard once in each file is one pair; bytes heard a thousand times are a million pairs and
+     * are sampled evenly), and each packet is matched by a binary search among its twins.
+     */
+    public Offset estimate(Packets reference, Packets other) {
+        Map<Long, long[]> ref = reference.byBytes();
+        Map<Long, long[]> oth = other.byBytes();
+        List<long[][]> common = new ArrayList<>();
+        for (Map.Entry<Long, long[]> e : oth.entrySet()) {
+            long[] r = ref.get(e.getKey());
+            if (r != null) {
+                common.add(new long[][]{r, e.getValue(), {e.getKey()}});
             }
-            for (long t : e.getValue()) {
-                for (long tr : r) {
-                    if (pairs++ < MAX_PAIRS) {
-                        bins.merge(Math.floorDiv(t - tr, BIN_MICROS), 1, Integer::sum);
-                    }
+        }
+        if (common.isEmpty()) {
+            return Offset.NONE;
+        }
+        common.sort(Comparator.<long[][]>comparingLong(c -> (long) c[0].length * c[1].length)
+                .thenComparingLong(c -> c[2][0]));
+        Map<Long, Integer> bins = new HashMap<>();
+        long budget = MAX_PAIRS;
+        for (long[][] c : common) {
+            if (budget <= 0) {
+                break;
+            }
+            long[] r = c[0];
+            long[] o = c[1];
+            long pairs = (long) r.length * o.length;
+            int step = pairs <= budget ? 1 : (int) Math.ceil(Math.sqrt((double) pairs / budget));
+            for (int i = 0; i < o.length; i += step) {
+                for (int j = 0; j < r.length; j += step) {
+                    bins.merge(Math.floorDiv(o[i] - r[j], BIN_MICROS), 1, Integer::sum);
+                    budget--;
                 }
             }
         }
-        if (bins.isEmpty()) {
-            return Offset.NONE;
-        }
         long bestBin = 0;
         int bestCount = -1;
-        for (long bin : bins.keySet()) {
-            int count = bins.get(bin) + bins.getOrDefault(bin + 1, 0);
-            if (count > bestCount || (count == bestCount && Math.abs(bin) < Math.abs(bestBin))) {
-                bestBin = bin;
+        for (Map.Entry<Long, Integer> bin : bins.entrySet()) {
+            int count = bin.getValue() + bins.getOrDefault(bin.getKey() + 1, 0);
+            if (count > bestCount || (count == bestCount && Math.abs(bin.getKey()) < Math.abs(bestBin))) {
+                bestBin = bin.getKey();
                 bestCount = count;
             }
         }
         long guess = (bestBin + 1) * BIN_MICROS;
-        List<Long> diffs = new ArrayList<>();
-        for (Map.Entry<ByteBuffer, List<Long>> e : oth.entrySet()) {
-            List<Long> r = ref.get(e.getKey());
-            if (r == null) {
-                continue;
-            }
-            for (long t : e.getValue()) {
-                long best = Long.MAX_VALUE;
-                for (long tr : r) {
-                    long d = t - tr;
-                    if (best == Long.MAX_VALUE || Math.abs(d - guess) < Math.abs(best - guess)) {
-                        best = d;
-                    }
-                }
-                if (Math.abs(best - guess) <= MATCH_WINDOW_MICROS) {
-                    diffs.add(best);
+        long[] diffs = new long[other.size()];
+        int matched = 0;
+        for (long[][] c : common) {
+            for (long t : c[1]) {
+                long d = t - nearest(c[0], t - guess);
+                if (Math.abs(d - guess) <= MATCH_WINDOW_MICROS) {
+                    diffs[matched++] = d;
                 }
             }
         }
-        long offset = median(diffs);
-        long[] residuals = diffs.stream().mapToLong(d -> Math.abs(d - offset)).sorted().toArray();
+        if (matched == 0) {
+            return Offset.NONE;
+        }
+        long[] matches = Arrays.copyOf(diffs, matched);
+        Arrays.sort(matches);
+        long offset = matched % 2 == 1 ? matches[matched / 2]
+                : Math.floorDiv(matches[matched / 2 - 1] + matches[matched / 2], 2);
+        long[] residuals = Arrays.stream(matches).map(d -> Math.abs(d - offset)).sorted().toArray();
         long p95 = residuals[Math.min(residuals.length - 1, (int) Math.ceil(0.95 * residuals.length) - 1)];
-        return new Offset(offset, diffs.size(), p95, How.MATCHED);
+        return new Offset(offset, matched, p95, How.MATCHED);
     }
 
-    private static Map<ByteBuffer, List<Long>> byBytes(List<Packet> packets) {
-        Map<ByteBuffer, List<Long>> m = new HashMap<>();
-        for (Packet p : packets) {
-            m.computeIfAbsent(ByteBuffer.wrap(p.bytes()), k -> new ArrayList<>()).add(p.timeMicros());
+    /** The time in {@code sorted} nearest to {@code target}; of two as near, the earlier. */
+    private static long nearest(long[] sorted, long target) {
+        int i = Arrays.binarySearch(sorted, target);
+        if (i >= 0) {
+            return sorted[i];
         }
-        return m;
+        int after = -i - 1;
+        if (after == 0) {
+            return sorted[0];
+        }
+        if (after == sorted.length) {
+            return sorted[after - 1];
+        }
+        return target - sorted[after - 1] <= sorted[after] - target ? sorted[after - 1] : sorted[after];
     }
 
-    private static long median(List<Long> values) {
-        long[] v = values.stream().mapToLong(Long::longValue).toArray();
-        Arrays.sort(v);
-        int n = v.length;
-        return n % 2 == 1 ? v[n / 2] : Math.floorDiv(v[n / 2 - 1] + v[n / 2], 2);
+    /**
+     * The GameController packets one file heard, kept small: each packet's receive time and a
+     * 64-bit hash of its bytes (16 bytes a packet, whatever its size), at most {@code max}
+     * packets; those beyond are counted, not kept.
+     */
+    public static final class Packets {
+        private final int max;
+        private long[] keys = new long[64];
+        private long[] times = new long[64];
+        private int size;
+        private long refused;
+
+        public Packets(int max) {
+            this.max = max;
+        }
+
+        static Packets of(List<Packet> packets) {
+            Packets p = new Packets(packets.size());
+            packets.forEach(x -> p.add(x.timeMicros(), x.bytes()));
+            return p;
+        }
+
+        /** Adds a packet; false (and counted) when {@code max} are kept already. */
+        public boolean add(long timeMicros, byte[] bytes) {
+            if (size == max) {
+                refused++;
+                return false;
+            }
+            if (size == keys.length) {
+                keys = Arrays.copyOf(keys, (int) Math.min(max, 2L * size));
+                times = Arrays.copyOf(times, keys.length);
+            }
+            keys[size] = hash(bytes);
+            times[size++] = timeMicros;
+            return true;
+        }
+
+        public int size() {
+            return size;
+        }
+
+        /** Packets not kept because {@code max} were. */
+        public long refused() {
+            return refused;
+        }
+
+        /** Each distinct packet's receive times, sorted. */
+        private Map<Long, long[]> byBytes() {
+            Map<Long, int[]> counts = new HashMap<>();
+            for (int i = 0; i < size; i++) {
+                counts.computeIfAbsent(keys[i], k -> new int[1])[0]++;
+            }
+            Map<Long, long[]> times = new HashMap<>();
+            counts.forEach((key, n) -> times.put(key, new long[n[0]]));
+            for (int i = 0; i < size; i++) {
+                times.get(keys[i])[--counts.get(keys[i])[0]] = this.times[i];
+            }
+            times.values().forEach(Arrays::sort);
+            return times;
+        }
+
+        // FNV-1a over the bytes, then a final mix: equal bytes, equal key; a collision only blurs an estimate
+        private static long hash(byte[] bytes) {
+            long h = 0xcbf29ce484222325L ^ bytes.length;
+            for (byte b : bytes) {
+                h = (h ^ (b & 0xFF)) * 0x100000001b3L;
+            }
+            h ^= h >>> 33;
+            h *= 0xff51afd7ed558ccdL;
+            return h ^ (h >>> 33);
+        }
     }
 }

@@ -46,8 +46,29 @@ public final class McapReader implements Closeable {
     /** An attachment record (a file another tool stored in the recording): listed, its data not read. */
     public record Attachment(String name, String mediaType, long size, long logTime) { }
 
-    /** A chunk (or, for {@code loose}, a single message record outside any chunk) in file order. */
-    record Block(long offset, long length, long startTime, long endTime, boolean loose) { }
+    /**
+     * A chunk (or, for {@code loose}, a single message record outside any chunk) in file order;
+     * {@code chunk} is its header once the file is open (null for a loose message).
+     */
+    record Block(long offset, long length, long startTime, long endTime, boolean loose, ChunkHeader chunk) {
+        Block(long offset, long length, long startTime, long endTime, boolean loose) {
+            this(offset, length, startTime, endTime, loose, null);
+        }
+    }
+
+    /**
+     * What a chunk record's header says: the size its records claim uncompressed, their CRC
+     * and compression, and where the stored records lie in the file ({@code cut} when they
+     * run past its end or the chunk's length).
+     */
+    record ChunkHeader(long uncompressedSize, long crc, ChunkCompression compression, long recordsStart,
+                       long storedLength, boolean cut) {
+
+        /** The bytes reading the chunk yields: what decompressing it claims, or what is stored. */
+        long yields() {
+            return compression == ChunkCompression.NONE ? storedLength : uncompressedSize;
+        }
+    }
 
     /**
      * The largest chunk (uncompressed records) read: a chunk's header says how much to
@@ -59,6 +80,8 @@ public final class McapReader implements Closeable {
     private final Path file;
     private final FileChannel in;
     private final long fileSize;
+    private final ExpansionLimit limit;
+    private int refusedChunks;
     private final Map<Integer, Schema> schemas = new ConcurrentHashMap<>();
     private final Map<Integer, ChannelInfo> channels = new ConcurrentHashMap<>();
     private final Map<String, Map<String, String>> metadata = new ConcurrentHashMap<>();
@@ -74,8 +97,9 @@ public final class McapReader implements Closeable {
     private long startTime = Long.MAX_VALUE;
     private long endTime = Long.MIN_VALUE;
 
-    private McapReader(Path file) throws IOException {
+    private McapReader(Path file, ExpansionLimit limit) throws IOException {
         this.file = file;
+        this.limit = limit;
         this.in = FileChannel.open(file, StandardOpenOption.READ);
         this.fileSize = in.size();
     }
@@ -85,9 +109,17 @@ public final class McapReader implements Closeable {
      * cannot be read or is not MCAP; everything else is reported through {@link #problems()}.
      */
     public static McapReader open(Path file) throws RecordingException {
+        return open(file, ExpansionLimit.DEFAULT);
+    }
+
+    /**
+     * Opens {@code file}, reading no more of its chunks than {@code limit} lets it expand to:
+     * the chunks beyond are refused when it is opened, in file order, and said in {@link #problems()}.
+     */
+    public static McapReader open(Path file, ExpansionLimit limit) throws RecordingException {
         McapReader reader;
         try {
-            reader = new McapReader(file);
+            reader = new McapReader(file, limit);
         } catch (IOException e) {
             throw new RecordingException("cannot open " + file + ": " + e.getMessage());
         }
@@ -121,6 +153,7 @@ public final class McapReader implements Closeable {
             attachments.clear(); // the scan finds them again
             scanLinearly();
         }
+        admitBlocks();
         Map<String, String> format = metadata.get(McapWriter.FORMAT_METADATA);
         if (format != null) {
             try {
@@ -369,6 +402,96 @@ public final class McapReader implements Closeable {
         }
     }
 
+    /**
+     * Reads every chunk's header and keeps the blocks whose records the expansion limit still
+     * allows, in file order: a chunk's claimed size is weighed against the file and what is left
+     * of the limit before anything is allocated for it. Chunks that cannot be read at all are
+     * said here, once.
+     */
+    private void admitBlocks() throws IOException {
+        long allowed = limit.allowedBytes(fileSize);
+        long admitted = 0;
+        long refusedBytes = 0;
+        long firstRefused = -1;
+        List<Block> kept = new ArrayList<>();
+        for (Block b : blocks) {
+            Block block = b.loose() ? b : withHeader(b);
+            if (block == null) {
+                continue;
+            }
+            long yields = block.loose() ? block.length() : block.chunk().yields();
+            if (yields > allowed - admitted) {
+                refusedChunks++;
+                refusedBytes += yields;
+                firstRefused = firstRefused < 0 ? block.offset() : firstRefused;
+                continue;
+            }
+            admitted += yields;
+            kept.add(block);
+        }
+        blocks.clear();
+        blocks.addAll(kept);
+        if (refusedChunks > 0) {
+            problems.addIfAbsent(refusedChunks + " of " + (refusedChunks + kept.size()) + " chunks (from byte "
+                    + firstRefused + " on, " + ExpansionLimit.size(refusedBytes) + " uncompressed) are not read: "
+                    + limit.describe(fileSize) + ", and the chunks before them hold " + ExpansionLimit.size(admitted));
+        }
+    }
+
+    /** {@code b} with its chunk header, or null (said) when there is no readable chunk there. */
+    private Block withHeader(Block b) throws IOException {
+        long end = b.offset() + Math.min(b.length(), fileSize - b.offset());
+        int head = (int) Math.min(end - b.offset(), 9 + CHUNK_HEADER_BYTES + MAX_COMPRESSION_NAME);
+        ByteBuffer h = ByteBuffer.wrap(read(b.offset(), head)).order(ByteOrder.LITTLE_ENDIAN);
+        if (head == 0 || h.get(0) != McapRecords.CHUNK) {
+            problems.addIfAbsent("the index points at byte " + b.offset() + ", where there is no chunk; skipped");
+            return null;
+        }
+        if (head < 9 + CHUNK_HEADER_BYTES) {
+            problems.addIfAbsent("the chunk at byte " + b.offset() + " is cut off inside its header; skipped");
+            return null;
+        }
+        h.position(9 + 16);
+        long uncompressedSize = h.getLong();
+        long crc = h.getInt() & 0xFFFFFFFFL;
+        int nameLength = h.getInt();
+        if (nameLength < 0 || nameLength > h.remaining() - 8) {
+            problems.addIfAbsent("chunk at byte " + b.offset() + " names a compression of " + nameLength
+                    + " bytes, which this reader does not know (it reads zstd and lz4); its messages are skipped");
+            return null;
+        }
+        String name = new String(bytes(h, nameLength), StandardCharsets.UTF_8);
+        long recordsLength = h.getLong();
+        ChunkCompression compression = ChunkCompression.ofMcapName(name).orElse(null);
+        if (compression == null) {
+            problems.addIfAbsent("chunk at byte " + b.offset() + " is compressed with '" + name
+                    + "', which this reader does not know (it reads zstd and lz4); its messages are skipped");
+            return null;
+        }
+        if (recordsLength < 0 || uncompressedSize < 0 || uncompressedSize > MAX_CHUNK_BYTES) {
+            problems.addIfAbsent("chunk at byte " + b.offset() + " declares impossible sizes (records "
+                    + recordsLength + ", uncompressed " + uncompressedSize + " bytes); skipped");
+            return null;
+        }
+        long recordsStart = b.offset() + h.position();
+        boolean cut = recordsLength > end - recordsStart;
+        long stored = Math.min(recordsLength, end - recordsStart);
+        if (stored > MAX_CHUNK_BYTES) {
+            problems.addIfAbsent("chunk at byte " + b.offset() + " is larger than " + (MAX_CHUNK_BYTES >> 20)
+                    + " MB; skipped");
+            return null;
+        }
+        if (cut && compression != ChunkCompression.NONE) {
+            problems.addIfAbsent("the compressed chunk at byte " + b.offset() + " is cut off; its messages are lost");
+            return null;
+        }
+        return new Block(b.offset(), b.length(), b.startTime(), b.endTime(), false,
+                new ChunkHeader(uncompressedSize, crc, compression, recordsStart, stored, cut));
+    }
+
+    // a compression name longer than this is none the reader knows
+    private static final int MAX_COMPRESSION_NAME = 64;
+
     // start, end, uncompressed size, CRC, compression string length, records length
     private static final int CHUNK_HEADER_BYTES = 8 + 8 + 8 + 4 + 4 + 8;
     // channel id, sequence, log time, publish time
@@ -497,6 +620,11 @@ public final class McapReader implements Closeable {
         return List.copyOf(blocks);
     }
 
+    /** Chunks not read because the file would expand beyond its {@link ExpansionLimit} (said in {@link #problems()}). */
+    public int refusedChunks() {
+        return refusedChunks;
+    }
+
     public long chunkCount() {
         return blocks.stream().filter(b -> !b.loose()).count();
     }
@@ -599,81 +727,39 @@ public final class McapReader implements Closeable {
         private ByteBuffer load(Block b) {
             recordsOffset = b.offset();
             try {
-                long available = Math.min(b.length(), fileSize - b.offset());
-                if (available > MAX_CHUNK_BYTES + 4096) {
-                    problems.addIfAbsent("chunk at byte " + b.offset() + " is larger than " + (MAX_CHUNK_BYTES >> 20)
-                            + " MB; skipped");
-                    return null;
-                }
-                ByteBuffer whole = ByteBuffer.wrap(read(b.offset(), (int) available)).order(ByteOrder.LITTLE_ENDIAN);
                 if (b.loose()) {
-                    return whole;
+                    return ByteBuffer.wrap(read(b.offset(), (int) b.length())).order(ByteOrder.LITTLE_ENDIAN);
                 }
-                return records(b, whole);
+                return records(b.offset(), b.chunk());
             } catch (IOException | RuntimeException e) {
-                // the checks in records() should leave nothing to catch; a file from outside
-                // still must not stop the replay if one was missed
+                // the checks when the file was opened should leave nothing to catch; a file from
+                // outside still must not stop the replay if one was missed
                 problems.addIfAbsent("chunk at byte " + b.offset() + " could not be read (" + e.getMessage()
                         + "); skipped");
                 return null;
             }
         }
 
-        private ByteBuffer records(Block b, ByteBuffer whole) throws IOException {
-            if (whole.remaining() < 9 + CHUNK_HEADER_BYTES || whole.get(0) != McapRecords.CHUNK) {
-                problems.addIfAbsent("the index points at byte " + b.offset() + ", where there is no chunk; skipped");
-                return null;
-            }
-            whole.position(9);
-            whole.getLong();
-            whole.getLong();
-            long uncompressedSize = whole.getLong();
-            long crc = whole.getInt() & 0xFFFFFFFFL;
-            String name = string(whole);
-            if (whole.remaining() < 8) {
-                throw new BufferUnderflowException();
-            }
-            long recordsLength = whole.getLong();
-            ChunkCompression compression = ChunkCompression.ofMcapName(name).orElse(null);
-            if (compression == null) {
-                problems.addIfAbsent("chunk at byte " + b.offset() + " is compressed with '" + name
-                        + "', which this reader does not know (it reads zstd and lz4); its messages are skipped");
-                return null;
-            }
-            if (recordsLength < 0 || uncompressedSize < 0 || uncompressedSize > MAX_CHUNK_BYTES) {
-                problems.addIfAbsent("chunk at byte " + b.offset() + " declares impossible sizes (records "
-                        + recordsLength + ", uncompressed " + uncompressedSize + " bytes); skipped");
-                return null;
-            }
-            boolean cut = recordsLength > whole.remaining();
-            if (cut && compression != ChunkCompression.NONE) {
-                problems.addIfAbsent("the compressed chunk at byte " + b.offset() + " is cut off; its messages are lost");
-                return null;
-            }
-            ByteBuffer stored = whole.slice(whole.position(), (int) Math.min(recordsLength, whole.remaining()));
+        private ByteBuffer records(long offset, ChunkHeader chunk) throws IOException {
+            byte[] stored = read(chunk.recordsStart(), (int) chunk.storedLength());
             ByteBuffer records;
-            if (compression == ChunkCompression.NONE) {
-                records = stored;
-            } else {
-                byte[] packed = new byte[stored.remaining()];
-                stored.get(packed);
-                try {
-                    records = ByteBuffer.wrap(compression.decompress(packed, (int) uncompressedSize));
-                } catch (IOException e) {
-                    problems.addIfAbsent("chunk at byte " + b.offset() + " is damaged: " + e.getMessage()
-                            + "; its messages are skipped, the rest plays");
-                    return null;
-                }
+            try {
+                records = ByteBuffer.wrap(chunk.compression().decompress(stored, (int) chunk.uncompressedSize()));
+            } catch (IOException e) {
+                problems.addIfAbsent("chunk at byte " + offset + " is damaged: " + e.getMessage()
+                        + "; its messages are skipped, the rest plays");
+                return null;
             }
             records.order(ByteOrder.LITTLE_ENDIAN);
-            if (!cut && (crc != 0 || uncompressedSize != records.remaining())) {
+            if (!chunk.cut() && (chunk.crc() != 0 || chunk.uncompressedSize() != records.remaining())) {
                 CRC32 check = new CRC32();
                 check.update(records.duplicate());
-                if ((crc != 0 && check.getValue() != crc) || uncompressedSize != records.remaining()) {
-                    problems.addIfAbsent("chunk at byte " + b.offset() + " is corrupt (CRC "
-                            + Long.toHexString(check.getValue()) + ", expected " + Long.toHexString(crc) + ", "
-                            + records.remaining() + " of " + uncompressedSize + " bytes); its messages are skipped,"
-                            + " the rest plays");
+                if ((chunk.crc() != 0 && check.getValue() != chunk.crc())
+                        || chunk.uncompressedSize() != records.remaining()) {
+                    problems.addIfAbsent("chunk at byte " + offset + " is corrupt (CRC "
+                            + Long.toHexString(check.getValue()) + ", expected " + Long.toHexString(chunk.crc()) + ", "
+                            + records.remaining() + " of " + chunk.uncompressedSize() + " bytes); its messages are"
+                            + " skipped, the rest plays");
                     return null;
                 }
             }

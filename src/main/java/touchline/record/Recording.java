@@ -55,11 +55,17 @@ public final class Recording implements Closeable {
 
     /** Opens {@code file}; team types found in its schemas are added to {@code kinds}. */
     public static Recording open(Path file, MessageKinds kinds) throws RecordingException {
-        return new Recording(McapReader.open(file), kinds);
+        return open(file, kinds, ExpansionLimit.DEFAULT);
+    }
+
+    /** Opens {@code file} as {@link #open(Path, MessageKinds)} does, reading no more than {@code limit} lets it expand to. */
+    public static Recording open(Path file, MessageKinds kinds, ExpansionLimit limit) throws RecordingException {
+        return new Recording(McapReader.open(file, limit), kinds);
     }
 
     private void loadSchemas(MessageKinds kinds) {
         SchemaSet known = types;
+        Map<FileDescriptor, String> schemaOf = new java.util.LinkedHashMap<>();
         for (McapReader.Schema s : mcap.schemas().values()) {
             if (!s.encoding().equals("protobuf")) {
                 continue;
@@ -68,7 +74,7 @@ public final class Recording implements Closeable {
                 FileDescriptorSet set = FileDescriptorSet.parseFrom(s.data());
                 schemas.add(set);
                 for (FileDescriptor f : known.add(set)) {
-                    kinds.add(f).ifPresent(refused -> problems.addIfAbsent("schema " + s.name() + ": " + refused));
+                    schemaOf.put(f, s.name());
                 }
             } catch (InvalidProtocolBufferException | RecordingException e) {
                 problems.addIfAbsent("schema " + s.id() + " (" + s.name() + ") in the recording does not parse ("
@@ -76,6 +82,9 @@ public final class Recording implements Closeable {
                         + " (those of another tool's channel are skipped)");
             }
         }
+        // every file of every schema at once: one registry build for the recording, not one per file
+        kinds.add(schemaOf.keySet()).forEach((f, refused) ->
+                problems.addIfAbsent("schema " + schemaOf.get(f) + ": " + refused));
     }
 
     /** The FileDescriptorSets the recording was made with (one per protobuf schema that parses). */

@@ -26,7 +26,12 @@ public final class Recovery {
 
     /** Reads {@code damaged}; throws with a user-facing message when it is not MCAP at all. */
     public Recovery(Path damaged) throws RecordingException {
-        this.damaged = McapReader.open(damaged);
+        this(damaged, ExpansionLimit.DEFAULT);
+    }
+
+    /** Reads {@code damaged}, no more of it than {@code limit} lets it expand to (the rest is said, not written). */
+    public Recovery(Path damaged, ExpansionLimit limit) throws RecordingException {
+        this.damaged = McapReader.open(damaged, limit);
     }
 
     /** Writes the finished copy to {@code out} (never the damaged file itself, which stays as it was). */

@@ -30,13 +30,20 @@ public final class ReplaySession implements Closeable {
     private final CopyOnWriteArrayList<String> notes = new CopyOnWriteArrayList<>();
     private List<TimelineEvent> events; // guarded by this
 
-    private ReplaySession(List<Part> parts) {
+    /**
+     * The most GameController packets of one file an alignment weighs: 200 000 are 28 hours of
+     * one GameController's, kept in 3.2 MB (a hash and a time each); those beyond are said.
+     */
+    static final int MAX_ALIGNMENT_PACKETS = 200_000;
+
+    private ReplaySession(List<Part> parts, List<String> notes) {
         this.parts = List.copyOf(parts);
+        this.notes.addAll(notes);
     }
 
     /** A session of one recording, on its own clock. */
     public static ReplaySession of(Recording recording) {
-        return new ReplaySession(List.of(new Part("", recording, ClockAlignment.Offset.REFERENCE)));
+        return new ReplaySession(List.of(new Part("", recording, ClockAlignment.Offset.REFERENCE)), List.of());
     }
 
     /**
@@ -46,6 +53,12 @@ public final class ReplaySession implements Closeable {
      */
     public static ReplaySession open(List<Path> files, Map<Path, Long> given, MessageKinds kinds)
             throws RecordingException {
+        return open(files, given, kinds, ExpansionLimit.DEFAULT);
+    }
+
+    /** Opens {@code files} as {@link #open(List, Map, MessageKinds)} does, each read no further than {@code limit} allows. */
+    public static ReplaySession open(List<Path> files, Map<Path, Long> given, MessageKinds kinds,
+                                     ExpansionLimit limit) throws RecordingException {
         if (files.isEmpty()) {
             throw new IllegalArgumentException("a session needs at least one file");
         }
@@ -53,7 +66,7 @@ public final class ReplaySession implements Closeable {
         try {
             for (Path f : files) {
                 try {
-                    opened.add(Recording.open(f, kinds));
+                    opened.add(Recording.open(f, kinds, limit));
                 } catch (RecordingException e) {
                     throw files.size() == 1 ? e : new RecordingException(f.getFileName() + ": " + e.getMessage());
                 }
@@ -66,8 +79,9 @@ public final class ReplaySession implements Closeable {
             return of(opened.get(0));
         }
         ClockAlignment alignment = new ClockAlignment();
-        List<ClockAlignment.Packet> reference = null;
+        ClockAlignment.Packets reference = null;
         List<Part> parts = new ArrayList<>();
+        List<String> notes = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
             Path f = files.get(i);
             Long offset = given.get(f);
@@ -78,23 +92,30 @@ public final class ReplaySession implements Closeable {
                 o = ClockAlignment.Offset.REFERENCE;
             } else {
                 if (reference == null) {
-                    reference = gameControllerPackets(opened.get(0));
+                    reference = gameControllerPackets(opened.get(0), files.get(0), notes);
                 }
-                o = alignment.estimate(reference, gameControllerPackets(opened.get(i)));
+                o = alignment.estimate(reference, gameControllerPackets(opened.get(i), f, notes));
             }
             parts.add(new Part(f.getFileName().toString(), opened.get(i), o));
         }
-        return new ReplaySession(parts);
+        return new ReplaySession(parts, notes);
     }
 
-    /** Every GameController game-state datagram in {@code r} (any format Touchline recognises), in file order. */
-    static List<ClockAlignment.Packet> gameControllerPackets(Recording r) {
-        List<ClockAlignment.Packet> packets = new ArrayList<>();
+    /**
+     * The GameController game-state datagrams in {@code r} (any format Touchline recognises),
+     * the first {@link #MAX_ALIGNMENT_PACKETS} of them; more are said in {@code notes}.
+     */
+    static ClockAlignment.Packets gameControllerPackets(Recording r, Path file, List<String> notes) {
+        ClockAlignment.Packets packets = new ClockAlignment.Packets(MAX_ALIGNMENT_PACKETS);
         Recording.Cursor c = r.cursor(Long.MIN_VALUE);
         for (Envelope e = c.next(); e != null; e = c.next()) {
             if (GameStateReader.isGameState(e)) {
-                packets.add(new ClockAlignment.Packet(e.timeMicros(), e.raw()));
+                packets.add(e.timeMicros(), e.raw());
             }
+        }
+        if (packets.refused() > 0) {
+            notes.add(file.getFileName() + ": its clock is aligned by its first " + MAX_ALIGNMENT_PACKETS
+                    + " GameController packets; " + packets.refused() + " later ones are not weighed");
         }
         return packets;
     }

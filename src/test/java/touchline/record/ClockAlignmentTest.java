@@ -1,6 +1,7 @@
 package touchline.record;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -86,5 +87,35 @@ class ClockAlignmentTest {
         assertEquals(ClockAlignment.Offset.NONE, alignment.estimate(laptop, robot));
         assertEquals(ClockAlignment.Offset.NONE, alignment.estimate(laptop, List.of()));
         assertTrue(ClockAlignment.Offset.NONE.describe().startsWith("not aligned: no GameController packets in common"));
+    }
+
+    @Test
+    // a guard only: every pair of equal packets once took 54 s for two 4.7 KB files; these are 10^12 pairs
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aMillionRepeatsOfOnePacketInEachFileAlignInLinearWork() {
+        // a GameController that never changes its bytes (or a file made to repeat one), heard twice a second by both
+        byte[] same = packet(7, 0);
+        List<ClockAlignment.Packet> laptop = new ArrayList<>();
+        List<ClockAlignment.Packet> robot = new ArrayList<>();
+        for (int n = 0; n < 1_000_000; n++) {
+            laptop.add(new ClockAlignment.Packet(1_000_000_000L + n * 500_000L, same));
+            robot.add(new ClockAlignment.Packet(1_000_000_000L + n * 500_000L + 1_250_000, same));
+        }
+        ClockAlignment.Offset o = alignment.estimate(laptop, robot);
+        assertEquals(1_250_000, o.offsetMicros(), o.describe());
+        assertEquals(1_000_000, o.matches(), "each of the robot's packets has its twin 1.25 s earlier");
+    }
+
+    @Test
+    void packetsBeyondTheBoundAreCountedNotKeptAndTheKeptOnesStillAlign() {
+        ClockAlignment.Packets laptop = new ClockAlignment.Packets(300);
+        ClockAlignment.Packets robot = new ClockAlignment.Packets(300);
+        heard(0, 1000, 40, 0, 0, 0, 1).forEach(p -> laptop.add(p.timeMicros(), p.bytes()));
+        heard(0, 1000, 40, 400_000, 0, 0, 2).forEach(p -> robot.add(p.timeMicros(), p.bytes()));
+        assertEquals(300, laptop.size());
+        assertEquals(700, laptop.refused());
+        ClockAlignment.Offset o = alignment.estimate(laptop, robot);
+        assertEquals(400_000, o.offsetMicros());
+        assertEquals(300, o.matches());
     }
 }

@@ -39,7 +39,10 @@ class OtherToolsRecordingTest {
 
     static final int N = 40;
 
-    /** argv: out, layout (NONE-64, NONE-10000000, ZSTD-4096, LZ4-4096, UNCHUNKED), fumanoid FDS, fumanoid payload, N. */
+    /**
+     * argv: out, layout (NONE-64, NONE-10000000, ZSTD-4096, LZ4-4096, UNCHUNKED, or ZSTD / LZ4 for the
+     * writer's default chunk size), fumanoid FDS, fumanoid payload, N.
+     */
     private static final String WRITE = """
             import json, sys
             from google.protobuf import descriptor_pb2, descriptor_pool, message_factory
@@ -63,6 +66,8 @@ class OtherToolsRecordingTest {
             with open(out, 'wb') as o:
                 if kind == 'UNCHUNKED':
                     w = Writer(o, use_chunking=False)
+                elif size == '0':
+                    w = Writer(o, compression=CompressionType[kind])
                 else:
                     w = Writer(o, chunk_size=int(size), compression=CompressionType[kind])
                 w.start('', 'python-mcap')
@@ -101,6 +106,10 @@ class OtherToolsRecordingTest {
     Path dir;
 
     private Path written(String layout) throws Exception {
+        return written(layout, N);
+    }
+
+    private Path written(String layout, int n) throws Exception {
         PythonMcap.require("mcap", "mcap_protobuf", "zstandard", "lz4");
         Path fds = dir.resolve("fumanoid.desc");
         Files.write(fds, SchemaSet.descriptorSet(List.of(Fumanoid.getDescriptor())).toByteArray());
@@ -109,8 +118,48 @@ class OtherToolsRecordingTest {
         Path payload = dir.resolve("status.bin");
         Files.write(payload, status.message().toByteArray());
         Path file = dir.resolve(layout + ".mcap");
-        PythonMcap.run(WRITE, file, layout, fds, payload, N);
+        PythonMcap.run(WRITE, file, layout, fds, payload, n);
         return file;
+    }
+
+    /**
+     * The Python writer with its defaults: 1 MiB chunks, whose LZ4 frames are 64 KiB blocks
+     * linked to each other (lz4-java's frame reader refused them: 89 of 9 295 messages played).
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"LZ4", "ZSTD"})
+    void filesWithTheWritersDefaultChunksPlayWhole(String compression) throws Exception {
+        int n = 3_000;
+        Path file = written(compression, n);
+        byte[] bytes = Files.readAllBytes(file);
+        java.nio.ByteBuffer chunk = firstChunk(bytes);
+        long uncompressed = chunk.getLong(16);
+        int nameLength = chunk.getInt(28);
+        assertEquals(compression.toLowerCase(java.util.Locale.ROOT),
+                new String(bytes, chunk.arrayOffset() + 32, nameLength, java.nio.charset.StandardCharsets.US_ASCII));
+        assertTrue(uncompressed >= 1 << 20, "a default chunk of " + uncompressed + " bytes");
+        if (compression.equals("LZ4")) {
+            int flags = bytes[chunk.arrayOffset() + 32 + nameLength + 8 + 4];
+            assertEquals(0, flags & 0x20, "the frame's blocks are linked (block independence flag clear)");
+        }
+        try (Recording r = Recording.open(file)) {
+            assertTrue(r.mcap().chunkCount() >= 2, r.mcap().chunkCount() + " chunks");
+            assertEquals(3L * n, RecordingFixture.readAll(r).size());
+            assertEquals(List.of(), r.problems());
+        }
+    }
+
+    /** The content of the file's first chunk record (start time at 0), over the file's bytes. */
+    private static java.nio.ByteBuffer firstChunk(byte[] file) {
+        for (int at = 8; at < file.length; ) {
+            long length = McapSurgery.u64(file, at + 1);
+            if (file[at] == McapRecords.CHUNK) {
+                return java.nio.ByteBuffer.wrap(file, at + 9, (int) length).slice()
+                        .order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            }
+            at += 9 + (int) length;
+        }
+        throw new AssertionError("no chunk");
     }
 
     @ParameterizedTest
