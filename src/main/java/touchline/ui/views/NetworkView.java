@@ -54,6 +54,7 @@ public final class NetworkView implements View {
         this.context = context;
         this.robot = new RobotFilter(context);
         table.setId("network-table");
+        robot.setId("network-robot");
         count.setId("network-count");
         table.setFixedCellSize(24);
         table.getColumns().add(columns.column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96,
