@@ -45,6 +45,10 @@ public final class Player implements AutoCloseable {
     private long loopFrom = -1;
     private long loopTo = -1;
     private long emitted;
+    /** A seek's position whose state ({@link PlayHead}) is still to be delivered, or -1. */
+    private long headDue = -1;
+    /** Counts the jumps: a state read for one jump is not delivered after another. */
+    private long jumps;
     private boolean closed;
     private Thread thread;
 
@@ -103,10 +107,45 @@ public final class Player implements AutoCloseable {
     }
 
     /**
-     * Delivers every envelope due by now. Returns the wall time in ns until the next one is
-     * due (Long.MAX_VALUE when paused or finished).
+     * Delivers the state at the play head after a seek (playing or paused), then every envelope
+     * due by now. Returns the wall time in ns until the next one is due (Long.MAX_VALUE when paused
+     * or finished).
      */
-    public synchronized long pump() {
+    public long pump() {
+        deliverTheStateAtTheHead();
+        return pumpDue();
+    }
+
+    /**
+     * After a seek: the newest envelope of each kind at or before the position, read without the
+     * lock (the controls stay quick while it reads), delivered unless another jump came meanwhile;
+     * playing goes on after them.
+     */
+    private void deliverTheStateAtTheHead() {
+        long at;
+        long jump;
+        synchronized (this) {
+            if (headDue < 0) {
+                return;
+            }
+            at = headDue;
+            jump = jumps;
+            headDue = -1;
+        }
+        List<PlayHead.Newest> state = new PlayHead(session).at(at);
+        synchronized (this) {
+            if (jump != jumps || closed) {
+                return;
+            }
+            for (PlayHead.Newest n : state) {
+                deliver(n.envelope(), n.source());
+            }
+            cursor = session.cursor(at + 1); // what the state delivered does not play again
+            pending = null;
+        }
+    }
+
+    private synchronized long pumpDue() {
         if (!playing) {
             return Long.MAX_VALUE;
         }
@@ -180,6 +219,7 @@ public final class Player implements AutoCloseable {
         position = Math.max(session.startMicros(), Math.min(micros, session.endMicros()));
         cursor = session.cursor(position);
         pending = null;
+        jumps++;
         reanchor();
         jumped.run();
     }
@@ -207,6 +247,7 @@ public final class Player implements AutoCloseable {
     /** Jumps to {@code timeMicros} (clamped to the recording); playing continues from there. */
     public synchronized void seek(long timeMicros) {
         reposition(timeMicros);
+        headDue = position;
         finished = false;
         notifyAll();
     }
