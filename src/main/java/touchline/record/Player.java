@@ -16,7 +16,9 @@ import java.util.Optional;
  * Every envelope it delivers is marked {@linkplain Envelope#asReplayed() replayed}, so nothing
  * that acts on the live field reacts to it. Whenever the position jumps (a seek, a loop going
  * round, playing again from the start) the {@code jumped} callback runs before the next
- * envelope is delivered, so what was built from the replay can start again from there.
+ * envelope is delivered, so what was built from the replay can start again from there; after a
+ * seek, playing or paused, the state at the play head ({@link PlayHead}: the newest envelope of
+ * each kind at or before it) is delivered first, so the views show that moment at once.
  */
 public final class Player implements AutoCloseable {
 
@@ -47,8 +49,11 @@ public final class Player implements AutoCloseable {
     private long emitted;
     /** A seek's position whose state ({@link PlayHead}) is still to be delivered, or -1. */
     private long headDue = -1;
-    /** Counts the jumps: a state read for one jump is not delivered after another. */
-    private long jumps;
+    /**
+     * Moves on each jump and each unpaced run: a state read before is stale and not delivered (an
+     * unpaced run, {@link #runFor}, plays from the position for a headless tool and wants no state).
+     */
+    private long headEpoch;
     private boolean closed;
     private Thread thread;
 
@@ -129,12 +134,12 @@ public final class Player implements AutoCloseable {
                 return;
             }
             at = headDue;
-            jump = jumps;
+            jump = headEpoch;
             headDue = -1;
         }
         List<PlayHead.Newest> state = new PlayHead(session).at(at);
         synchronized (this) {
-            if (jump != jumps || closed) {
+            if (jump != headEpoch || closed) {
                 return;
             }
             for (PlayHead.Newest n : state) {
@@ -219,7 +224,7 @@ public final class Player implements AutoCloseable {
         position = Math.max(session.startMicros(), Math.min(micros, session.endMicros()));
         cursor = session.cursor(position);
         pending = null;
-        jumps++;
+        headEpoch++;
         reanchor();
         jumped.run();
     }
@@ -298,9 +303,16 @@ public final class Player implements AutoCloseable {
         return runFor(Long.MAX_VALUE);
     }
 
-    /** Delivers up to {@code max} envelopes from the position on the calling thread, unpaced. */
+    /**
+     * Delivers up to {@code max} envelopes from the position on the calling thread, unpaced; a
+     * headless run plays from the position and takes no state at the play head.
+     */
     public long runFor(long max) {
         long n = 0;
+        synchronized (this) {
+            headDue = -1;
+            headEpoch++;
+        }
         while (true) {
             synchronized (this) {
                 int batch = 0;

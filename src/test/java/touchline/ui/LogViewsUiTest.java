@@ -1,5 +1,6 @@
 package touchline.ui;
 
+import javafx.scene.control.ComboBox;
 import javafx.scene.control.IndexedCell;
 import javafx.scene.control.ListView;
 import javafx.scene.control.TableView;
@@ -10,6 +11,8 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import touchline.testing.RobotProcess;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutNode;
@@ -22,13 +25,16 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * Issue 36 item 4, in the real window (headless) with a robot sending: a line the user selects in
- * the Network console stays selected and shown while rows keep coming and the oldest go; Pause in
- * the Debug console freezes the lines that were on screen.
+ * Issue 36 items 2 and 4, in the real window (headless) with a robot sending: the robot filter of
+ * the Debug console, the Network console and Plot fields offers the robot that reports (its first
+ * read was never due: a "never read" time of Long.MIN_VALUE overflowed the twice-a-second check);
+ * a line the user selects in the Network console stays selected and shown while rows keep coming
+ * and the oldest go, and the console says it holds it; Pause in the Debug console freezes the
+ * lines that were on screen.
  */
 @Tag("ui")
 @Tag("integration")
-class LinesStayPutUiTest {
+class LogViewsUiTest {
 
     @TempDir
     Path layouts;
@@ -49,6 +55,28 @@ class LinesStayPutUiTest {
         ui.await(30, () -> ui.robot.lookup(control).tryQuery().map(n -> n.getScene() != null).orElse(false));
     }
 
+    /** View {@code viewId} alone, once its {@code control} is in the scene, and the robot's demo text switched on. */
+    private void onlyWithText(String viewId, String control, int robotId) throws Exception {
+        only(viewId, control);
+        ui.await(15, () -> ui.console.options().options(robotId).listReceived());
+        ui.console.setOption(robotId, "demo.text", true);
+    }
+
+    @ParameterizedTest
+    @CsvSource({"debug-console, #debug-robot", "network, #network-robot", "field-plot, #field-robot"})
+    @SuppressWarnings("unchecked")
+    void theRobotFilterOffersTheRobotThatReports(String viewId, String filterId) throws Exception {
+        touchline.testing.Requirement.robotSide("touchline-robot");
+        try (RobotProcess robot = RobotProcess.robot(7, ui.port(), "--rate", "20").start()) {
+            only(viewId, filterId);
+            ui.await(30, () -> ui.console.robots().robots().stream().anyMatch(r -> r.id() == 7));
+            ui.await(30, () -> ui.robot.lookup(filterId).queryAs(ComboBox.class).getItems().contains("robot 7"));
+            ComboBox<String> filter = ui.fx(() -> ui.robot.lookup(filterId).queryAs(ComboBox.class));
+            ui.fxRun(() -> filter.getSelectionModel().select("robot 7"));
+            ui.await(30, () -> "robot 7".equals(filter.getValue())); // chosen and kept over the next refreshes
+        }
+    }
+
     /** The indices of the first and last row on screen. */
     private static int[] onScreen(javafx.scene.control.Control control) {
         VirtualFlow<?> flow = (VirtualFlow<?>) control.lookup(".virtual-flow");
@@ -62,9 +90,7 @@ class LinesStayPutUiTest {
     void aClickedDatagramStaysSelectedAndShownWhileTheOldestGo() throws Exception {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(5, ui.port(), "--rate", "400").start()) {
-            only("network", "#network-table");
-            ui.await(15, () -> ui.console.options().options(5).listReceived());
-            ui.console.setOption(5, "demo.text", true);
+            onlyWithText("network", "#network-table", 5);
             TableView<Envelope> table = ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
             ui.await(30, () -> table.getItems().size() >= 150);
             // a user's click on a row in the middle of the screen
@@ -83,6 +109,8 @@ class LinesStayPutUiTest {
             Envelope oldest = ui.fx(() -> table.getItems().get(0));
             ui.await(60, () -> table.getItems().indexOf(oldest) < 0);
             assertSame(chosen, ui.fx(() -> table.getSelectionModel().getSelectedItem()), "the clicked datagram stays selected");
+            ui.await(30, () -> ui.robot.lookup("#network-count").queryLabeled().getText()
+                    .endsWith(" · held at the selected row (Ctrl+click it to follow)")); // and the console says it stopped following
             assertEquals(detail, ui.fx(() -> ((javafx.scene.control.TextArea) ui.robot.lookup("#network-hex").query()).getText()));
         }
     }
@@ -92,9 +120,7 @@ class LinesStayPutUiTest {
     void pauseInTheDebugConsoleFreezesTheLinesOnScreen() throws Exception {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(4, ui.port(), "--rate", "50").start()) {
-            only("debug-console", "#debug-lines");
-            ui.await(15, () -> ui.console.options().options(4).listReceived());
-            ui.console.setOption(4, "demo.text", true);
+            onlyWithText("debug-console", "#debug-lines", 4);
             ListView<String> lines = ui.fx(() -> ui.robot.lookup("#debug-lines").queryAs(ListView.class));
             ui.await(30, () -> {
                 String count = ui.robot.lookup("#debug-count").queryLabeled().getText();
