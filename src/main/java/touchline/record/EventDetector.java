@@ -21,17 +21,30 @@ import java.util.Map;
  * game-state format the console recognises on the network, HL v12 to HSL v20; once an HSL
  * GameController's true data for monitors is recorded, it replaces the robots' copy, which
  * shows SET for 10 s after each whistle), players penalised (in any of those formats), game-state changes the robots report in their Status
- * when no GameController packets are recorded, robots silent for longer than
- * {@link #LOST_AFTER_MICROS}, and link events whose kind says "lost".
+ * when no GameController packets are recorded, robots silent for five of their periods (the game's:
+ * 200 ms, once a second in play; or the robot's own when it sends faster; at least
+ * {@link #LOST_AFTER_MICROS}), and link events whose kind says "lost".
  */
 final class EventDetector {
 
     /** Five keep-alive periods without any datagram: the robot counts as lost. */
     static final long LOST_AFTER_MICROS = 1_000_000;
+    /** The robots' keep-alive period outside play and in play (READY, SET, PLAYING: the HSL's once a second). */
+    static final long PERIOD_MICROS = 200_000;
+    static final long PERIOD_IN_PLAY_MICROS = 1_000_000;
+    /** Periods of silence after which a robot counts as lost. */
+    private static final int LOST_PERIODS = 5;
 
     private final GameStateReader gameStates = new GameStateReader();
     private final List<TimelineEvent> events = new ArrayList<>();
     private final Map<Integer, Long> lastSeen = new HashMap<>();
+    /**
+     * Each robot's longest interval between datagrams since the game went into or out of play: a
+     * robot that keeps sending faster than the game's rate (five a second in play) is judged by its own.
+     */
+    private final Map<Integer, Long> period = new HashMap<>();
+    /** The newest game state heard, from a GameController or else the robots' status (-1: none yet). */
+    private int playState = -1;
     // per direction: a GameController on the network (IN) and the console's own (OUT) are tracked apart
     private final int[] gcState = {-1, -1};
     // scores by team number: the teams swap slots at half time
@@ -63,9 +76,12 @@ final class EventDetector {
                     "link lost: " + new String(e.raw(), java.nio.charset.StandardCharsets.UTF_8)));
         } else if (e.channel() == Channel.FUMANOID && e.direction() == Direction.IN && e.robotId() >= 0) {
             Long seen = lastSeen.put(e.robotId(), e.timeMicros());
-            if (seen != null && e.timeMicros() - seen > LOST_AFTER_MICROS) {
-                events.add(new TimelineEvent(seen + LOST_AFTER_MICROS, TimelineEvent.Type.ROBOT_LOST, e.robotId(),
+            long lostAfter = lostAfter(e.robotId());
+            if (seen != null && e.timeMicros() - seen > lostAfter) {
+                events.add(new TimelineEvent(seen + lostAfter, TimelineEvent.Type.ROBOT_LOST, e.robotId(),
                         String.format("robot %d lost (back after %.1f s)", e.robotId(), (e.timeMicros() - seen) / 1e6)));
+            } else if (seen != null) {
+                period.merge(e.robotId(), e.timeMicros() - seen, Math::max);
             }
             if (!sawGc && e.message() instanceof Fumanoid.Message m && m.hasExtension(Fumanoid.status)) {
                 Fumanoid.Status s = m.getExtension(Fumanoid.status);
@@ -75,6 +91,7 @@ final class EventDetector {
                                 "robot " + e.robotId() + ": " + robotState + " → " + s.getGameState()));
                     }
                     robotState = s.getGameState();
+                    playState(GameControlData.stateCode(robotState));
                 }
             }
         }
@@ -122,6 +139,24 @@ final class EventDetector {
             }
         }
         gcState[d] = state;
+        playState(state);
+    }
+
+    private void playState(int state) {
+        if (GameControlData.isPlay(state) != GameControlData.isPlay(playState)) {
+            period.clear(); // the robots change their rate with the game's
+        }
+        playState = state;
+    }
+
+    /**
+     * How long a robot may be silent: five of its periods, the game's (once a second in play) or the
+     * robot's own when it sends faster, never less than {@link #LOST_AFTER_MICROS}.
+     */
+    private long lostAfter(int robotId) {
+        long game = GameControlData.isPlay(playState) ? PERIOD_IN_PLAY_MICROS : PERIOD_MICROS;
+        long own = period.getOrDefault(robotId, game);
+        return Math.max(LOST_AFTER_MICROS, LOST_PERIODS * Math.min(game, own));
     }
 
     private static String penaltyName(int neutralCode) {
@@ -131,8 +166,9 @@ final class EventDetector {
 
     List<TimelineEvent> finish() {
         for (Map.Entry<Integer, Long> seen : lastSeen.entrySet()) {
-            if (lastTime - seen.getValue() > LOST_AFTER_MICROS) {
-                events.add(new TimelineEvent(seen.getValue() + LOST_AFTER_MICROS, TimelineEvent.Type.ROBOT_LOST,
+            long lostAfter = lostAfter(seen.getKey());
+            if (lastTime - seen.getValue() > lostAfter) {
+                events.add(new TimelineEvent(seen.getValue() + lostAfter, TimelineEvent.Type.ROBOT_LOST,
                         seen.getKey(), "robot " + seen.getKey() + " lost"));
             }
         }

@@ -16,7 +16,9 @@ import java.util.Optional;
  * Every envelope it delivers is marked {@linkplain Envelope#asReplayed() replayed}, so nothing
  * that acts on the live field reacts to it. Whenever the position jumps (a seek, a loop going
  * round, playing again from the start) the {@code jumped} callback runs before the next
- * envelope is delivered, so what was built from the replay can start again from there.
+ * envelope is delivered, so what was built from the replay can start again from there; after a
+ * seek, playing or paused, the state at the play head ({@link PlayHead}: the newest envelope of
+ * each kind at or before it) is delivered first, so the views show that moment at once.
  */
 public final class Player implements AutoCloseable {
 
@@ -45,6 +47,13 @@ public final class Player implements AutoCloseable {
     private long loopFrom = -1;
     private long loopTo = -1;
     private long emitted;
+    /** A seek's position whose state ({@link PlayHead}) is still to be delivered, or -1. */
+    private long headDue = -1;
+    /**
+     * Moves on each jump and each unpaced run: a state read before is stale and not delivered (an
+     * unpaced run, {@link #runFor}, plays from the position for a headless tool and wants no state).
+     */
+    private long headEpoch;
     private boolean closed;
     private Thread thread;
 
@@ -103,10 +112,45 @@ public final class Player implements AutoCloseable {
     }
 
     /**
-     * Delivers every envelope due by now. Returns the wall time in ns until the next one is
-     * due (Long.MAX_VALUE when paused or finished).
+     * Delivers the state at the play head after a seek (playing or paused), then every envelope
+     * due by now. Returns the wall time in ns until the next one is due (Long.MAX_VALUE when paused
+     * or finished).
      */
-    public synchronized long pump() {
+    public long pump() {
+        deliverTheStateAtTheHead();
+        return pumpDue();
+    }
+
+    /**
+     * After a seek: the newest envelope of each kind at or before the position, read without the
+     * lock (the controls stay quick while it reads), delivered unless another jump came meanwhile;
+     * playing goes on after them.
+     */
+    private void deliverTheStateAtTheHead() {
+        long at;
+        long jump;
+        synchronized (this) {
+            if (headDue < 0) {
+                return;
+            }
+            at = headDue;
+            jump = headEpoch;
+            headDue = -1;
+        }
+        List<PlayHead.Newest> state = new PlayHead(session).at(at);
+        synchronized (this) {
+            if (jump != headEpoch || closed) {
+                return;
+            }
+            for (PlayHead.Newest n : state) {
+                deliver(n.envelope(), n.source());
+            }
+            cursor = session.cursor(at + 1); // what the state delivered does not play again
+            pending = null;
+        }
+    }
+
+    private synchronized long pumpDue() {
         if (!playing) {
             return Long.MAX_VALUE;
         }
@@ -180,6 +224,7 @@ public final class Player implements AutoCloseable {
         position = Math.max(session.startMicros(), Math.min(micros, session.endMicros()));
         cursor = session.cursor(position);
         pending = null;
+        headEpoch++;
         reanchor();
         jumped.run();
     }
@@ -207,6 +252,7 @@ public final class Player implements AutoCloseable {
     /** Jumps to {@code timeMicros} (clamped to the recording); playing continues from there. */
     public synchronized void seek(long timeMicros) {
         reposition(timeMicros);
+        headDue = position;
         finished = false;
         notifyAll();
     }
@@ -257,9 +303,16 @@ public final class Player implements AutoCloseable {
         return runFor(Long.MAX_VALUE);
     }
 
-    /** Delivers up to {@code max} envelopes from the position on the calling thread, unpaced. */
+    /**
+     * Delivers up to {@code max} envelopes from the position on the calling thread, unpaced; a
+     * headless run plays from the position and takes no state at the play head.
+     */
     public long runFor(long max) {
         long n = 0;
+        synchronized (this) {
+            headDue = -1;
+            headEpoch++;
+        }
         while (true) {
             synchronized (this) {
                 int batch = 0;

@@ -52,9 +52,10 @@ final class HelpWindow {
         if (owner != null && owner.getScene() != null) {
             scene.getStylesheets().addAll(owner.getScene().getStylesheets());
         }
+        CloseAfterKey closer = new CloseAfterKey(stage);
         scene.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
             if (e.getCode() == KeyCode.ESCAPE) {
-                stage.close();
+                closer.close();
                 e.consume();
             }
         });

@@ -81,17 +81,18 @@ public final class QuickOpen {
             items.setPredicate(c -> c.label().toLowerCase(Locale.ROOT).contains(n));
             list.getSelectionModel().select(0);
         });
+        CloseAfterKey closer = new CloseAfterKey(stage);
         Runnable go = () -> {
             Choice c = list.getSelectionModel().getSelectedItem();
             if (c != null) {
-                stage.close();
-                opener.accept(c.spec(), c.source());
+                closer.close(() -> opener.accept(c.spec(), c.source()));
             }
         };
         filter.setOnAction(e -> go.run());
         filter.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
             if (e.getCode() == KeyCode.ESCAPE) {
-                stage.close();
+                closer.close();
+                e.consume();
             } else if (e.getCode() == KeyCode.DOWN) {
                 list.getSelectionModel().selectNext();
                 e.consume();

@@ -137,4 +137,35 @@ class EventDetectorTest {
         List<String> penalties = labels(eventsOf("hsl20", "gc.hsl20"), TimelineEvent.Type.PENALTY);
         assertTrue(penalties.contains("23 GC: team 14 player 3 penalised: pushing"), penalties.toString());
     }
+
+    private static Envelope robot(long t, int id) {
+        return new Envelope(t, Direction.IN, Channel.FUMANOID, null, id, "status", null, new byte[0], null);
+    }
+
+    /**
+     * Issue 36 item 5: in play robots send once a second, so a robot is lost only after five of those
+     * (1.2 s between its datagrams was "lost" on every beat); outside play after 1 s as before (a robot
+     * that sends faster in play, as the sample's do, is judged by its own rate: SampleRecordingTest).
+     */
+    @Test
+    void aRobotIsJudgedLostByTheGamesRate() throws Exception {
+        EventDetector detector = new EventDetector();
+        detector.accept(gc(0, "00-initial.bin", null));
+        long t = 0;
+        for (int i = 0; i < 3; i++) {
+            detector.accept(robot(t += 200_000, 3)); // five a second outside play
+        }
+        detector.accept(robot(t += 1_200_000, 3)); // silent 1.2 s before play: lost
+        detector.accept(gc(t += 100_000, "07-playing-after-delay.bin", null));
+        for (int i = 0; i < 10; i++) {
+            detector.accept(robot(t += 1_200_000, 3)); // once a second (and a bit) in play: never lost
+        }
+        long before = t;
+        detector.accept(robot(t += 6_000_000, 3)); // six seconds silent in play: lost
+        List<TimelineEvent> lost = detector.finish().stream().filter(e -> e.type() == TimelineEvent.Type.ROBOT_LOST).toList();
+        assertEquals(2, lost.size(), lost.toString());
+        assertEquals(600_000 + EventDetector.LOST_AFTER_MICROS, lost.get(0).timeMicros());
+        assertEquals(before + 5_000_000, lost.get(1).timeMicros(), "five once-a-second periods");
+        assertEquals(3, lost.get(1).robotId());
+    }
 }

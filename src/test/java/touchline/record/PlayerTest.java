@@ -94,16 +94,57 @@ class PlayerTest {
         player.seek(target);
         assertEquals(target, player.snapshot().positionMicros());
         assertEquals(List.of(0), jumps, "the jump is announced before anything plays from there");
+        player.pump();
+        int state = got.size(); // the state at the play head (aSeekWhilePaused…)
         player.play();
         advanceMillis(1_000);
         List<Envelope> expected = sent.stream()
-                .filter(e -> e.timeMicros() >= target && e.timeMicros() <= target + 1_000_000).toList();
-        assertEquals(expected, got);
-        assertTrue(got.get(0).timeMicros() - target < 100_000, "the first envelope after the seek is right there");
+                .filter(e -> e.timeMicros() > target && e.timeMicros() <= target + 1_000_000).toList();
+        assertEquals(expected, got.subList(state, got.size()));
+        assertTrue(got.get(state).timeMicros() - target < 100_000, "the first envelope after the seek is right there");
 
         got.clear();
         player.seek(recording.startMicros() - 5_000_000L);
         assertEquals(recording.startMicros(), player.snapshot().positionMicros(), "clamped to the start");
+    }
+
+    /** The newest envelope of each direction, channel, robot and kind up to {@code micros}, oldest first. */
+    private List<Envelope> newestOfEachKindUpTo(long micros) {
+        java.util.Map<List<Object>, Envelope> newest = new java.util.LinkedHashMap<>();
+        for (Envelope e : sentUpTo(micros)) {
+            List<Object> key = List.of(e.direction(), e.channel(), e.robotId(), e.kind());
+            newest.remove(key);
+            newest.put(key, e);
+        }
+        return List.copyOf(newest.values());
+    }
+
+    /**
+     * Issue 36 item 5: a seek while paused shows the state at the play head: the newest envelope of
+     * each robot and kind at or before it is delivered once, and playing goes on after it.
+     */
+    @Test
+    void aSeekWhilePausedDeliversTheNewestOfEachRobotAndKindAtThePlayHead() {
+        long target = recording.startMicros() + 30_000_000L + 123;
+        player.seek(target);
+        advanceMillis(1_000);
+        List<Envelope> state = newestOfEachKindUpTo(target);
+        assertTrue(state.stream().map(Envelope::robotId).distinct().count() >= 3, "every robot of the team: " + state);
+        assertEquals(state, got);
+        assertEquals(state.size(), player.snapshot().emitted(), "counted as delivered");
+        advanceMillis(1_000);
+        assertEquals(state, got, "once");
+
+        player.seek(target + 5_000_000L); // again, further on: that state, afresh
+        advanceMillis(1_000);
+        assertEquals(List.of(0, state.size()), jumps);
+        assertEquals(newestOfEachKindUpTo(target + 5_000_000L), got.subList(state.size(), got.size()));
+
+        got.clear();
+        player.play();
+        advanceMillis(1_000);
+        assertEquals(sent.stream().filter(e -> e.timeMicros() > target + 5_000_000L
+                && e.timeMicros() <= target + 6_000_000L).toList(), got, "then it plays on from the play head");
     }
 
     @Test

@@ -64,6 +64,7 @@ public final class DebugConsoleView implements View {
         this.context = context;
         this.robot = new RobotFilter(context);
         lines.setId("debug-lines");
+        robot.setId("debug-robot");
         lines.getSelectionModel().setSelectionMode(SelectionMode.MULTIPLE);
         lines.setStyle("-fx-font-family: monospace;");
         lines.setFixedCellSize(ROW_HEIGHT); // no per-cell measuring: appending stays cheap

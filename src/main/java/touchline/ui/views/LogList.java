@@ -271,10 +271,16 @@ final class LogList<E, T> {
      * which the line at the top, now whole, pushed under the edge or the sideways scroll bar).
      */
     private void showEverything() {
+        if (control.getScene() != null) {
+            control.layout(); // a scroll asked for in this frame (the list taking over from the glance) is where the screen is
+        }
         int offset = all.size() - tail.size();
         List<Integer> selected = List.copyOf(selection.get().getSelectedIndices());
         int focused = focus.get().getFocusedIndex();
-        int anchor = focused >= 0 ? focused : selected.isEmpty() ? -1 : selected.get(selected.size() - 1);
+        // the focus a list gives its first line by itself is no place of the user's: only a selection or
+        // the keyboard in the list make one (else a pause centred the list on that first line, 200 back)
+        boolean chosen = !selected.isEmpty() || control.isFocused();
+        int anchor = !chosen ? -1 : focused >= 0 ? focused : selected.isEmpty() ? -1 : selected.get(selected.size() - 1);
         int[] shown = onScreen();
         int top = shown == null ? Math.max(0, tail.size() - 1) : shown[0];
         if (anchor >= 0 && shown != null && (anchor < shown[0] || anchor > shown[1])) {

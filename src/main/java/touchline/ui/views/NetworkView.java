@@ -54,6 +54,7 @@ public final class NetworkView implements View {
         this.context = context;
         this.robot = new RobotFilter(context);
         table.setId("network-table");
+        robot.setId("network-robot");
         count.setId("network-count");
         table.setFixedCellSize(24);
         table.getColumns().add(columns.column("Time", e -> DebugConsoleView.TIME.format(Instant.ofEpochSecond(0, e.timeMicros() * 1000)), 96,
@@ -138,12 +139,14 @@ public final class NetworkView implements View {
         }
         Predicate<Envelope> f = filter();
         // follow the newest until the user picks a row; then the rows on screen stay as the oldest go
-        SequencedRing.Entry<Envelope> newest = log.follow(table.getSelectionModel().isEmpty(), context.stores().network().version(),
+        boolean held = !table.getSelectionModel().isEmpty();
+        SequencedRing.Entry<Envelope> newest = log.follow(!held, context.stores().network().version(),
                 (after, max) -> context.stores().network().since(after, max, f), e -> e);
         if (newest == null) {
             return;
         }
         frame.shown(newest.value().timeMicros());
-        count.setText(log.all().size() + " shown of " + context.stores().network().size() + " kept");
+        count.setText(log.all().size() + " shown of " + context.stores().network().size() + " kept"
+                + (held ? " · held at the selected row (Ctrl+click it to follow)" : ""));
     }
 }

@@ -14,7 +14,8 @@ final class RobotFilter extends ComboBox<String> {
     static final String ALL = "all robots";
     private final ViewContext context;
     private long seenVersion = -1;
-    private long readMicros = Long.MIN_VALUE;
+    private boolean read;
+    private long readMicros;
 
     RobotFilter(ViewContext context) {
         this.context = context;
@@ -31,10 +32,12 @@ final class RobotFilter extends ComboBox<String> {
     void refresh() {
         long v = context.console().robots().version();
         long now = context.console().clock().nowMicros();
-        // every datagram moves the version: the robot list is read at most twice a second
-        if (v == seenVersion || now - readMicros < touchline.ui.SourceBar.REREAD_MICROS) {
+        // every datagram moves the version: the robot list is read at most twice a second (the first
+        // time at once: a "never read" of Long.MIN_VALUE overflowed now - readMicros and kept the list empty)
+        if (v == seenVersion || read && now - readMicros < touchline.ui.SourceBar.REREAD_MICROS) {
             return;
         }
+        read = true;
         readMicros = now;
         seenVersion = v;
         List<String> items = new ArrayList<>();

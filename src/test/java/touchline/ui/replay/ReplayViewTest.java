@@ -82,6 +82,27 @@ class ReplayViewTest {
         console.close();
     }
 
+    /**
+     * Issue 36 item 5: a seek while paused shows the state at the play head: the replayed robots and
+     * every store the views read hold the newest of each kind at or before it (it said "0 envelopes").
+     */
+    @Test
+    void aSeekWhilePausedShowsTheStateAtThePlayHead() throws Exception {
+        openFile(SAMPLE);
+        await(20, () -> !view.shownEvents().isEmpty());
+        robot.clickOn("#replay-live"); // replay alone
+        robot.clickOn("#replay-next-goal");
+        TimelineEvent goal = fx(() -> view.shownEvents().stream()
+                .filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow());
+        await(5, () -> state().positionMicros() == goal.timeMicros());
+        assertFalse(state().playing(), "never played");
+        await(20, () -> console.robots().robots().size() == 3);
+        await(20, () -> fx(() -> window.context().stores().network().size()) > 0
+                && fx(() -> window.context().stores().text().size()) > 0);
+        await(20, () -> !robot.lookup("#replay-position").queryAs(Label.class).getText().contains(" 0 envelopes"));
+        assertTrue(console.robots().robots().stream().allMatch(r -> r.replayed()), "the replay's robots");
+    }
+
     @Test
     void theSamplePlaysIntoTheModelAndSeeksToTheGoal() throws Exception {
         openFile(SAMPLE);
