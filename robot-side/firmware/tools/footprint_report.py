@@ -18,7 +18,9 @@ import sys
 
 # Issue 15 (team keys): with the verifier linked, code <= 20 KB, static RAM <= 6 KB, worst-case
 # stack <= 1.5 KB (checked for the send path and for the whole main loop incl. the receive path).
-BUDGET_CODE = 20 * 1024
+# Issues 35 and 40 (match-day hardening, the in-game digest): code may grow to 22 KB for both
+# together; RAM and stack budgets stay.
+BUDGET_CODE = 22 * 1024
 BUDGET_RAM = 6 * 1024
 BUDGET_SEND_STACK = 1536
 BUDGET_LOOP_STACK = 1536
