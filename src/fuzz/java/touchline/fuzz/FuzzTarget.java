@@ -19,6 +19,10 @@ public interface FuzzTarget {
     /** Well-formed inputs to start from: golden files and sample messages. */
     List<byte[]> seeds();
 
+    /** Stops what the target started for its inputs (a server); a target of pure decoders has nothing. */
+    default void close() {
+    }
+
     /** Throws a finding unless {@code property} holds. */
     static void check(boolean property, String what) {
         if (!property) {
