@@ -55,7 +55,8 @@ for t in "${JAVA_TARGETS[@]}"; do
   max_len=16384
   [ "$t" = recording ] && max_len=262144
   # Single-threaded, a bounded heap; the harness writes its seeds into the work corpus first.
-  java -Xmx1g -Dtouchline.fuzz.target="$t" -Dtouchline.fuzz.seeds="$work/corpus" \
+  # Netty without sun.misc.Unsafe: Jazzer's Unsafe sanitizer breaks its queues (serve-client).
+  java -Xmx1g -Dio.netty.noUnsafe=true -Dtouchline.fuzz.target="$t" -Dtouchline.fuzz.seeds="$work/corpus" \
     -cp "target/test-classes:target/classes:$(cat target/fuzz-classpath.txt)" \
     com.code_intelligence.jazzer.Jazzer --target_class=touchline.fuzz.JazzerEntry \
     --instrumentation_includes='touchline.**' --keep_going=50 --reproducer_path="$work" \
