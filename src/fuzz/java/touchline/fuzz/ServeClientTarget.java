@@ -24,7 +24,8 @@ import java.util.concurrent.TimeUnit;
  * and then a WebSocket ping. The server handles a connection's frames in order, so its pong
  * says the frame was dealt with; no pong within 5 s on an open connection is a finding (a
  * server that stalls on a message). A server that closes the connection has refused the
- * frame: the next input opens a new one. The server is started at the first input.
+ * frame: the next input opens a new one. The server is started by {@link #prepare} or the
+ * first input.
  */
 final class ServeClientTarget implements FuzzTarget {
 
@@ -99,6 +100,14 @@ final class ServeClientTarget implements FuzzTarget {
             throw new IllegalStateException("interrupted", e);
         } catch (java.util.concurrent.TimeoutException e) {
             throw new AssertionError("the server did not take a viewer's frame within " + PONG_SECONDS + " s", e);
+        }
+    }
+
+    /** Starts the server and sends the first frames (loading and instrumenting the server's code takes seconds). */
+    @Override
+    public void prepare() {
+        for (byte[] seed : seeds()) {
+            accept(seed);
         }
     }
 
