@@ -55,8 +55,6 @@ public final class MonitorService implements AutoCloseable {
     private record Outgoing(byte[] data, int port) {
     }
 
-    private static final Outgoing STOP = new Outgoing(new byte[0], 0);
-
     private final GameStateFormat trueData;
     private final int trueDataPort;
     private final int forwardPort;
@@ -232,9 +230,6 @@ public final class MonitorService implements AutoCloseable {
             } catch (InterruptedException e) {
                 return;
             }
-            if (next == STOP) {
-                return;
-            }
             for (InetAddress gone : leases.expire(clock.nowMicros())) {
                 expired.incrementAndGet();
                 events.accept("monitor " + gone.getHostAddress() + " expired: no request for " + MonitorStats.lease(leaseMs));
@@ -242,6 +237,8 @@ public final class MonitorService implements AutoCloseable {
             for (InetAddress m : leases.hosts()) {
                 try {
                     out.send(ByteBuffer.wrap(next.data()), new InetSocketAddress(m, next.port()));
+                } catch (java.nio.channels.ClosedChannelException e) {
+                    return; // closed (or interrupted by close): the service is ending
                 } catch (IOException e) {
                     String error = m.getHostAddress() + ": " + e.getMessage();
                     if (!error.equals(lastError)) {
@@ -261,8 +258,7 @@ public final class MonitorService implements AutoCloseable {
             t = sender;
         }
         if (t != null) {
-            queue.clear();
-            queue.offer(STOP);
+            t.interrupt(); // it waits for the queue, or sends on a channel closed below anyway
             try {
                 t.join(2000);
             } catch (InterruptedException e) {
