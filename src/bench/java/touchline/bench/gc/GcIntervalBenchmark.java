@@ -40,7 +40,7 @@ import java.util.Locale;
  * {@code --hsl} measures the HSL schedule instead: an hsl20 game is stopped every 5 s, and the
  * stop-to-datagram latency, the burst's 200 ms and the grid's 500 ms are reported apart.
  * {@code --monitor-flood N} measures the embedded HSL GameController's 500 ms grid while N
- * monitor requests a second arrive from 1 000 loopback hosts (127.1.x.y).
+ * monitor requests a second arrive, each from a new loopback host (127.1.0.1 upwards).
  */
 public final class GcIntervalBenchmark {
 
@@ -169,7 +169,7 @@ public final class GcIntervalBenchmark {
 
     /**
      * The embedded HSL GameController serving monitors while {@code perSecond} monitor requests
-     * a second arrive from {@link #FLOOD_HOSTS} loopback hosts: the robots' intervals (500 ms grid,
+     * a second arrive, each from a new loopback host: the robots' intervals (500 ms grid,
      * nothing stopped) and what the monitor service made of the requests.
      */
     private static void monitorFlood(int perSecond, int seconds, int warmupSeconds, boolean realtime)
@@ -184,17 +184,17 @@ public final class GcIntervalBenchmark {
                      List.of(probe.address()), null, loopback, null, INTERVAL_MS, realtime), e -> { }, null,
                      new touchline.app.SystemClock())) {
             MonitorService monitors = gc.serveMonitors(loopback, monitorsPort.getLocalPort(), monitorsPort.getLocalPort());
-            System.out.printf(Locale.ROOT, "HSL GameController, %d monitor requests/s from %d loopback hosts, %d s after"
-                    + " %d s warm-up, %d cores%n", perSecond, FLOOD_HOSTS, seconds, warmupSeconds,
+            System.out.printf(Locale.ROOT, "HSL GameController, %d monitor requests/s each from a new loopback host,"
+                    + " %d s after %d s warm-up, %d cores%n", perSecond, seconds, warmupSeconds,
                     Runtime.getRuntime().availableProcessors());
             gc.start();
-            try (MonitorFlood flood = new MonitorFlood(monitors.requestAddress(), perSecond, FLOOD_HOSTS)) {
+            try (MonitorFlood flood = new MonitorFlood(monitors.requestAddress(), perSecond)) {
                 flood.start();
                 Thread.sleep(warmupSeconds * 1000L);
                 probe.reset();
                 Thread.sleep(seconds * 1000L);
                 flood.close();
-                System.out.println("monitor requests sent: " + flood.sent());
+                System.out.println("monitor flood: " + flood.summary());
             }
             System.out.println("sender real-time priority: " + (gc.realtimeOutcome().isEmpty() ? "yes"
                     : gc.realtimeOutcome()));
@@ -202,9 +202,6 @@ public final class GcIntervalBenchmark {
             System.out.println("touchline HSL GameController under the flood: " + probe.summary());
         }
     }
-
-    /** Distinct hosts of the monitor flood (127.1.0.1 upwards). */
-    private static final int FLOOD_HOSTS = 1000;
 
     private static void sleepAfterSend(DatagramSocket socket, Game game, HlGameState12 format,
                                        InetSocketAddress to) {

@@ -7,40 +7,35 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * Monitor requests ("RGTr") at a steady rate from many loopback hosts (127.1.x.y, every one
- * its own address, so every request is a newcomer or a renewal as a flood from a subnet
- * would be): the load of {@code bench gc --monitor-flood N}. Sends in batches every 10 ms
+ * Monitor requests ("RGTr") at a steady rate, each from a loopback host that never asked before
+ * (127.1.0.1 upwards through 127.0.0.0/8, a socket bound to it for the one request): what a
+ * flood of new registrations looks like to the GameController. Sends in batches every 10 ms
  * from its own thread until closed; counts what it sent.
  */
 final class MonitorFlood implements AutoCloseable {
 
     private static final long BATCH_NANOS = 10_000_000;
+    /** 127.1.0.1: the first host (127.0.0.x is left to the probe and the GameController). */
+    private static final int FIRST_HOST = (127 << 24) | (1 << 16) | 1;
 
-    private final List<DatagramChannel> hosts = new ArrayList<>();
     private final InetSocketAddress target;
     private final int perSecond;
     private final Thread thread;
     private volatile boolean running = true;
+    private int nextHost = FIRST_HOST;
     private long sent;
+    private String failure = "";
 
     /**
      * @param target    the GameController's monitor-request address
-     * @param perSecond requests a second
-     * @param hostCount distinct source hosts, 127.1.0.1 upwards (at most 65 000)
+     * @param perSecond requests a second, each from a new host
      */
-    MonitorFlood(InetSocketAddress target, int perSecond, int hostCount) throws IOException {
+    MonitorFlood(InetSocketAddress target, int perSecond) {
         this.target = target;
         this.perSecond = perSecond;
-        for (int i = 1; i <= hostCount; i++) {
-            DatagramChannel c = DatagramChannel.open();
-            c.bind(new InetSocketAddress(InetAddress.getByAddress(new byte[]{127, 1, (byte) (i >> 8), (byte) i}), 0));
-            hosts.add(c);
-        }
         thread = new Thread(this::loop, "monitor-flood");
         thread.setDaemon(true);
     }
@@ -52,27 +47,36 @@ final class MonitorFlood implements AutoCloseable {
     private void loop() {
         byte[] request = new MonitorRequest().encode();
         long next = System.nanoTime();
-        int host = 0;
         double owed = 0;
         while (running) {
             owed += perSecond * (BATCH_NANOS / 1e9);
             for (; owed >= 1; owed--) {
-                try {
-                    hosts.get(host).send(ByteBuffer.wrap(request), target);
+                try (DatagramChannel c = DatagramChannel.open()) {
+                    c.bind(new InetSocketAddress(host(), 0));
+                    c.send(ByteBuffer.wrap(request), target);
                     sent++;
                 } catch (IOException e) {
+                    failure = e.toString();
                     return;
                 }
-                host = (host + 1) % hosts.size();
             }
             next += BATCH_NANOS;
             LockSupport.parkNanos(next - System.nanoTime());
         }
     }
 
-    /** Requests sent so far (read after {@link #close}). */
-    long sent() {
-        return sent;
+    /** The next host's address, skipping .0 and .255 in the last byte. */
+    private InetAddress host() throws IOException {
+        int h = nextHost++;
+        if ((h & 0xFF) == 255) {
+            nextHost += 2;
+        }
+        return InetAddress.getByAddress(new byte[]{(byte) (h >>> 24), (byte) (h >>> 16), (byte) (h >>> 8), (byte) h});
+    }
+
+    /** Requests sent so far, and why the flood stopped early ("" when it did not); read after {@link #close}. */
+    String summary() {
+        return sent + " requests from as many hosts" + (failure.isEmpty() ? "" : "; stopped early: " + failure);
     }
 
     @Override
@@ -82,13 +86,6 @@ final class MonitorFlood implements AutoCloseable {
             thread.join(2000);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        }
-        for (DatagramChannel c : hosts) {
-            try {
-                c.close();
-            } catch (IOException ignored) {
-                // a bench socket: nothing to flush
-            }
         }
     }
 }
