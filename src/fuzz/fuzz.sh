@@ -13,7 +13,7 @@ cd "$ROOT"
 say() { printf '\033[1;34m[touchline fuzz]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[touchline fuzz]\033[0m %s\n' "$*" >&2; exit 1; }
 
-JAVA_TARGETS=(framing message gamecontroller return-packet reliable mixed-value jpeg nao-param trailer)
+JAVA_TARGETS=(framing message gamecontroller return-packet reliable mixed-value jpeg nao-param trailer recording serve-client gc-monitor)
 C_TARGETS=(gs1500 process auth)
 minutes=1
 only=""
@@ -51,12 +51,20 @@ for t in "${JAVA_TARGETS[@]}"; do
   mkdir -p "$work/corpus" "$findings"
   before=$(find "$findings" -type f | wc -l)
   say "fuzzing $t for $minutes min (log: $work/log)"
+  # A recording's seeds are whole MCAP files (one or two, every compression): they need room.
+  max_len=16384
+  [ "$t" = recording ] && max_len=262144
+  # The serve-client target talks to its own server on 127.0.0.1: Jazzer's request-forgery
+  # detector (which refuses every connection) is off for it.
+  hooks=()
+  [ "$t" = serve-client ] && hooks=(--disabled_hooks=com.code_intelligence.jazzer.sanitizers.ServerSideRequestForgery)
   # Single-threaded, a bounded heap; the harness writes its seeds into the work corpus first.
-  java -Xmx1g -Dtouchline.fuzz.target="$t" -Dtouchline.fuzz.seeds="$work/corpus" \
+  # Netty without sun.misc.Unsafe: Jazzer's Unsafe sanitizer breaks its queues (serve-client).
+  java -Xmx1g -Dio.netty.noUnsafe=true -Dtouchline.fuzz.target="$t" -Dtouchline.fuzz.seeds="$work/corpus" \
     -cp "target/test-classes:target/classes:$(cat target/fuzz-classpath.txt)" \
     com.code_intelligence.jazzer.Jazzer --target_class=touchline.fuzz.JazzerEntry \
-    --instrumentation_includes='touchline.**' --keep_going=50 --reproducer_path="$work" \
-    -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+    --instrumentation_includes='touchline.**' ${hooks[@]+"${hooks[@]}"} --keep_going=50 --reproducer_path="$work" \
+    -max_total_time="$seconds" -max_len="$max_len" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
     -artifact_prefix="$findings/" "$work/corpus" "$findings" >"$work/log" 2>&1 || true
   after=$(find "$findings" -type f | wc -l)
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/log" | grep -o '[0-9]*$' || echo "?")

@@ -240,11 +240,11 @@ class ArchitectureTest {
             "touchline.transport.GameStateReader",
             // a reliable stream the core opened (Console.openStream)
             "touchline.transport.ReliableSession",
-            // the GameController's configuration and the tallies its views read (liveness, bad packets)
+            // the GameController's configuration and the tallies its views read (liveness, bad packets, monitors)
             "touchline.transport.gamecontroller.GcConfig", "touchline.transport.gamecontroller.GcProfile",
             "touchline.transport.gamecontroller.RobotLiveness", "touchline.transport.gamecontroller.RobotLiveness$RobotKey",
             "touchline.transport.gamecontroller.RobotLiveness$Status", "touchline.transport.gamecontroller.BadPackets",
-            "touchline.transport.gamecontroller.BadPackets$Tally",
+            "touchline.transport.gamecontroller.BadPackets$Tally", "touchline.transport.gamecontroller.MonitorStats",
             // viewing another Touchline: its status, and the certificate to trust
             "touchline.transport.remote.RemoteStatus", "touchline.transport.remote.RemoteStatus$State",
             "touchline.transport.remote.RemoteTrust",

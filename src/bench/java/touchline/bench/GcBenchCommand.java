@@ -10,7 +10,8 @@ import java.util.concurrent.Callable;
 /** {@code bench gc}: the GameController's send intervals on loopback against a sleep-after-send baseline. */
 @Command(name = "gc", mixinStandardHelpOptions = true,
         description = "GameController send intervals vs 500 ms (options: --seconds N, --load-threads N, --warmup N, "
-                + "--realtime, --hsl: the HSL schedule with its burst when play stops).")
+                + "--realtime, --hsl: the HSL schedule with its burst when play stops, --monitor-flood N: the embedded "
+                + "HSL GameController with N monitor requests a second arriving).")
 final class GcBenchCommand implements Callable<Integer> {
 
     @Unmatched

@@ -1,5 +1,6 @@
 package touchline.fuzz;
 
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestFactory;
@@ -28,6 +29,11 @@ class FuzzCorpusTest {
 
     // A guard only, so an input that makes a decoder loop fails instead of hanging the suite.
     private static final Duration GUARD = Duration.ofSeconds(30);
+
+    @AfterEach
+    void closeTargets() {
+        targets.all().forEach(FuzzTarget::close);
+    }
 
     @TestFactory
     Stream<DynamicTest> everyKeptFindingAndSeedStaysHarmless() throws IOException {

@@ -19,6 +19,17 @@ public interface FuzzTarget {
     /** Well-formed inputs to start from: golden files and sample messages. */
     List<byte[]> seeds();
 
+    /**
+     * Sets up what the inputs need before the fuzzer's clock runs (a server, its first
+     * connection, the code it loads), so the first input is not a timeout; called once.
+     */
+    default void prepare() {
+    }
+
+    /** Stops what the target started for its inputs (a server); a target of pure decoders has nothing. */
+    default void close() {
+    }
+
     /** Throws a finding unless {@code property} holds. */
     static void check(boolean property, String what) {
         if (!property) {

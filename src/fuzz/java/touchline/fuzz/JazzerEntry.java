@@ -23,6 +23,7 @@ public final class JazzerEntry {
         String name = System.getProperty("touchline.fuzz.target", "");
         target = new Targets().named(name)
                 .orElseThrow(() -> new IllegalArgumentException("no fuzz target named '" + name + "'"));
+        target.prepare();
         String seeds = System.getProperty("touchline.fuzz.seeds");
         if (seeds != null) {
             write(Path.of(seeds), target.seeds());

@@ -8,7 +8,8 @@ final class Targets {
 
     private final List<FuzzTarget> all = List.of(new FramingTarget(), new MessageTarget(), new GameStateTarget(),
             new ReturnPacketTarget(), new ReliableStreamTarget(), new MixedValueTarget(), new JpegHeaderTarget(),
-            new ParamSyntaxTarget(), new TrailerTarget());
+            new ParamSyntaxTarget(), new TrailerTarget(), new RecordingTarget(), new ServeClientTarget(),
+            new GcMonitorTarget());
 
     List<FuzzTarget> all() {
         return all;

@@ -288,6 +288,9 @@ public final class GcCommand implements Callable<Integer> {
         }
         gc.badPackets().bySource().forEach((src, t) ->
                 print("bad GameController packets from " + src + ": " + t.count() + " (last: " + t.lastReason() + ")"));
+        if (gc.monitorStats() != null) {
+            print("monitors: " + gc.monitorStats().describe());
+        }
         String warning = gc.rivalWarning();
         if (!warning.isEmpty()) {
             print("! " + warning);

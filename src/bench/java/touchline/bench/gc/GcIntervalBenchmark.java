@@ -1,6 +1,10 @@
 package touchline.bench.gc;
 
+import touchline.app.game.EmbeddedGameController;
+import touchline.transport.gamecontroller.GcConfig;
+import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.GcSender;
+import touchline.transport.gamecontroller.MonitorService;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
@@ -35,6 +39,8 @@ import java.util.Locale;
  * (and both receivers, not the baseline sender) SCHED_RR like {@code touchline gc --realtime}.
  * {@code --hsl} measures the HSL schedule instead: an hsl20 game is stopped every 5 s, and the
  * stop-to-datagram latency, the burst's 200 ms and the grid's 500 ms are reported apart.
+ * {@code --monitor-flood N} measures the embedded HSL GameController's 500 ms grid while N
+ * monitor requests a second arrive, each from a new loopback host (127.1.0.1 upwards).
  */
 public final class GcIntervalBenchmark {
 
@@ -49,6 +55,7 @@ public final class GcIntervalBenchmark {
         int warmupSeconds = 10;
         boolean realtime = false;
         boolean hsl = false;
+        int monitorFlood = 0;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
@@ -56,8 +63,10 @@ public final class GcIntervalBenchmark {
                 case "--warmup" -> warmupSeconds = Integer.parseInt(args[++i]);
                 case "--realtime" -> realtime = true;
                 case "--hsl" -> hsl = true;
+                case "--monitor-flood" -> monitorFlood = Integer.parseInt(args[++i]);
                 default -> {
-                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N] [--realtime] [--hsl]");
+                    System.err.println("usage: GcIntervalBenchmark [--seconds N] [--load-threads N] [--warmup N] [--realtime]"
+                            + " [--hsl | --monitor-flood REQUESTS_PER_SECOND]");
                     return 2;
                 }
             }
@@ -71,6 +80,10 @@ public final class GcIntervalBenchmark {
         }
         if (hsl) {
             hslBursts(seconds, warmupSeconds, realtime);
+            return 0;
+        }
+        if (monitorFlood > 0) {
+            monitorFlood(monitorFlood, seconds, warmupSeconds, realtime);
             return 0;
         }
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
@@ -151,6 +164,42 @@ public final class GcIntervalBenchmark {
             System.out.println("touchline GcSender, HSL schedule: "
                     + new BurstTiming(probe.receiveTimes(), stopNanos, INTERVAL_MS, GcSender.BURST_SPACING_MS)
                     .summary());
+        }
+    }
+
+    /**
+     * The embedded HSL GameController serving monitors while {@code perSecond} monitor requests
+     * a second arrive, each from a new loopback host: the robots' intervals (500 ms grid,
+     * nothing stopped) and what the monitor service made of the requests.
+     */
+    private static void monitorFlood(int perSecond, int seconds, int warmupSeconds, boolean realtime)
+            throws Exception {
+        HslGame game = new HslGame(HslRules.v7(Competition.MIDDLE_ADVANCED), 5,
+                new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
+                new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, new touchline.app.SystemClock());
+        InetSocketAddress loopback = new InetSocketAddress(java.net.InetAddress.getLoopbackAddress(), 0);
+        try (GcIntervalProbe probe = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
+             DatagramSocket monitorsPort = new DatagramSocket(new InetSocketAddress(0));
+             EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.HSL20, false,
+                     List.of(probe.address()), null, loopback, null, INTERVAL_MS, realtime), e -> { }, null,
+                     new touchline.app.SystemClock())) {
+            MonitorService monitors = gc.serveMonitors(loopback, monitorsPort.getLocalPort(), monitorsPort.getLocalPort());
+            System.out.printf(Locale.ROOT, "HSL GameController, %d monitor requests/s each from a new loopback host,"
+                    + " %d s after %d s warm-up, %d cores%n", perSecond, seconds, warmupSeconds,
+                    Runtime.getRuntime().availableProcessors());
+            gc.start();
+            try (MonitorFlood flood = new MonitorFlood(monitors.requestAddress(), perSecond)) {
+                flood.start();
+                Thread.sleep(warmupSeconds * 1000L);
+                probe.reset();
+                Thread.sleep(seconds * 1000L);
+                flood.close();
+                System.out.println("monitor flood: " + flood.summary());
+            }
+            System.out.println("sender real-time priority: " + (gc.realtimeOutcome().isEmpty() ? "yes"
+                    : gc.realtimeOutcome()));
+            System.out.println("monitors: " + monitors.stats().describe());
+            System.out.println("touchline HSL GameController under the flood: " + probe.summary());
         }
     }
 

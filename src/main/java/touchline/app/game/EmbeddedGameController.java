@@ -3,6 +3,7 @@ package touchline.app.game;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcSender;
 import touchline.transport.gamecontroller.MonitorService;
+import touchline.transport.gamecontroller.MonitorStats;
 import touchline.transport.gamecontroller.BadPackets;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.RobotLiveness;
@@ -113,7 +114,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         if (config.v7Compat() && config.profile() != GcProfile.V7) {
             formats.add(new GameState7());
         }
-        sender = new GcSender(this::nextState, formats, config.destinations(), config.senderBind(), sink,
+        sender = new GcSender(new RobotsCycle(), formats, config.destinations(), config.senderBind(), sink,
                 config.intervalMs(), config.profile().hsl(), stamps);
         senderPort = sender.localAddress().getPort();
         sender.useRealtimePriority(config.realtime());
@@ -144,7 +145,8 @@ public final class EmbeddedGameController implements AutoCloseable {
             throw new IllegalStateException("monitors are served in the HSL formats only");
         }
         MonitorService m = new MonitorService(requestBind, trueDataPort, forwardPort,
-                config.profile().trueDataFormat(), this::emit);
+                config.profile().trueDataFormat(), this::emit, stamps);
+        m.start();
         monitors = m;
         return m;
     }
@@ -156,6 +158,12 @@ public final class EmbeddedGameController implements AutoCloseable {
     public InetSocketAddress monitorRequestAddress() throws IOException {
         MonitorService m = monitors;
         return m == null ? null : m.requestAddress();
+    }
+
+    /** What the monitor service did so far; null before {@link #serveMonitors} ran. */
+    public MonitorStats monitorStats() {
+        MonitorService m = monitors;
+        return m == null ? null : m.stats();
     }
 
     /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
@@ -237,19 +245,38 @@ public final class EmbeddedGameController implements AutoCloseable {
         return rivals.warning(referee.now());
     }
 
-    private GameControlData nextState(boolean periodic) {
-        if (periodic) {
-            referee.advance();
+    /**
+     * The robots' send cycle: the state to send, and after the robots' datagrams went out, the
+     * true state handed to the monitors (whose thread sends it), so no monitor delays the robots.
+     */
+    private final class RobotsCycle implements GcSender.Source {
+
+        /** The true state of the last periodic cycle, until it is handed over (sender thread only). */
+        private GameControlData truth;
+
+        @Override
+        public GameControlData next(boolean periodic) {
+            if (periodic) {
+                referee.advance();
+            }
+            GameControlData data = referee.controlData();
+            if (periodic && monitors != null) {
+                truth = referee.trueData();
+            }
+            if (matchMode != null) {
+                matchMode.observeBelieved(data.state(), OWN_SOURCE);
+            }
+            return data;
         }
-        GameControlData data = referee.controlData();
-        MonitorService m = monitors;
-        if (periodic && m != null) {
-            m.publish(referee.trueData());
+
+        @Override
+        public void sent(boolean periodic) {
+            MonitorService m = monitors;
+            if (periodic && m != null && truth != null) {
+                m.publish(truth);
+            }
+            truth = null;
         }
-        if (matchMode != null) {
-            matchMode.observeBelieved(data.state(), OWN_SOURCE);
-        }
-        return data;
     }
 
     private void onReturnPortDatagram(byte[] data, InetSocketAddress from) {
@@ -283,8 +310,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     }
 
     private void rejectReturn(byte[] data, InetSocketAddress from, String reason) {
-        boolean first = badPackets.bySource().keySet().stream().noneMatch(k -> k.equals(sourceKey(from)));
-        badPackets.count(from, reason);
+        boolean first = badPackets.count(from, reason);
         sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 "gc.return.malformed", null, data, reason));
         if (first) {

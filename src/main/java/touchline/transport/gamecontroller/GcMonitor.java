@@ -28,8 +28,10 @@ import java.util.concurrent.TimeUnit;
  * every {@link #REQUEST_INTERVAL_MS}, so a restarted GameController registers it again — notes
  * the registration (so the true state it then receives on 3838 is believed), and listens on
  * 3940 for the robots' return packets the GameController forwards: each robot's last packet
- * (fallen, pose, ball) and its liveness as the GameController sees it. Forwarded packets that
- * do not decode (a bad address prefix, a bad return packet) are counted with their reason.
+ * (fallen, pose, ball) and its liveness as the GameController sees it. Forwarded packets are
+ * believed only from the monitored GameController's address; the others, and those that do not
+ * decode (a bad address prefix, a bad return packet), are counted with their reason, per
+ * source up to {@link BadPackets#MAX_SOURCES} and together beyond.
  * The official GameController refuses a host that itself sent return packets as a monitor.
  */
 public final class GcMonitor implements AutoCloseable {
@@ -102,8 +104,10 @@ public final class GcMonitor implements AutoCloseable {
 
     private void onForwarded(byte[] data, InetSocketAddress from) {
         Decoded<ForwardedReturnPacket> d = decoder.decode(data);
-        if (!d.isOk()) {
-            String reason = d.failure() + ": " + d.detail();
+        String reason = !from.getAddress().equals(gameController.getAddress())
+                ? "not from the monitored GameController " + gameController.getAddress().getHostAddress()
+                : d.isOk() ? null : d.failure() + ": " + d.detail();
+        if (reason != null) {
             badPackets.count(from, reason);
             sink.accept(new Envelope(clock.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                     "gc.return.forwarded", null, data, reason));

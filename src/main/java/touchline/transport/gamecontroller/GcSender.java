@@ -35,6 +35,13 @@ public final class GcSender implements AutoCloseable {
     @FunctionalInterface
     public interface Source {
         GameControlData next(boolean periodic);
+
+        /**
+         * The cycle's datagrams went out (on the sender's thread): the place for work that must
+         * not delay them, such as handing the true state to monitors.
+         */
+        default void sent(boolean periodic) {
+        }
     }
 
     /** Spacing of the HSL burst after play gets stopped. */
@@ -235,6 +242,11 @@ public final class GcSender implements AutoCloseable {
             }
         }
         packetNumber = (packetNumber + 1) & 0xFF;
+        try {
+            source.sent(periodic);
+        } catch (RuntimeException e) {
+            LOG.error("after-send work of the game state source failed", e);
+        }
     }
 
     private void sendOne(GameStateFormat f, byte[] bytes, InetSocketAddress dest) {

@@ -24,6 +24,7 @@ import touchline.app.game.SenderPriority;
 import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
+import touchline.transport.gamecontroller.MonitorStats;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
@@ -59,6 +60,7 @@ public final class GameControllerTab implements View {
     private final RememberedSetup remembered;
     private final Label setupMessage = new Label();
     private final Label priority = new Label();
+    private final Label monitors = new Label();
     private final Label matchNotice = new Label();
     private final CheckBox override = new CheckBox("Override match mode (logged)");
     private final TextField overrideReason = new TextField();
@@ -95,6 +97,7 @@ public final class GameControllerTab implements View {
         realtime.setSelected(true);
         realtime.setId("gc-realtime");
         priority.setId("gc-priority");
+        monitors.setId("gc-monitors");
         setup = new VBox(8,
                 new FlowPane(8, 8, new Label("Format"), format, new Label("Team A (left, kicks off)"), teamA,
                         new Label("Team B"), teamB),
@@ -151,10 +154,10 @@ public final class GameControllerTab implements View {
             } else {
                 game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, console.gameClock());
             }
-            Integer monitors = profile.hsl() ? hsl.monitorPort() : null;
+            Integer monitorPort = profile.hsl() ? hsl.monitorPort() : null;
             remembered.save(format, teamA, teamB, destinations, returnPort, hsl);
             EmbeddedGameController gc = console.startGameController(game, config);
-            monitorLine = monitors == null ? "" : serveMonitors(gc, monitors);
+            monitorLine = monitorPort == null ? "" : serveMonitors(gc, monitorPort);
             show(gc);
         } catch (NumberFormatException e) {
             setupMessage.setText("team numbers and ports are whole numbers: " + e.getMessage());
@@ -182,8 +185,7 @@ public final class GameControllerTab implements View {
         stop.setId("gc-stop");
         stop.setOnAction(e -> stop());
         priority.setText("");
-        Label monitors = new Label(monitorLine);
-        monitors.setId("gc-monitors");
+        monitors.setText(monitorLine);
         HBox header = new HBox(12, stop, new Label(gc.config().profile().cliName() + " to " + gc.config().destinations()),
                 priority, monitors);
         header.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
@@ -235,6 +237,13 @@ public final class GameControllerTab implements View {
         if (referee != null) {
             referee.refresh(frame);
             priority.setText(priorityText(shown.senderPriority()));
+            MonitorStats served = shown.monitorStats();
+            String line = served == null || monitorLine.isEmpty() ? monitorLine : monitorLine + "; "
+                    + served.monitors() + " of " + served.capacity() + " registered, "
+                    + (served.refusedFull() + served.badRequests()) + " refused";
+            if (!line.equals(monitors.getText())) {
+                monitors.setText(line);
+            }
         }
         String notice = console.matchMode().notice();
         matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);

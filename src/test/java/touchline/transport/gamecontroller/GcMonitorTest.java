@@ -67,4 +67,43 @@ class GcMonitorTest {
             assertEquals(RobotLiveness.Status.OFFLINE, monitor.liveness().status(5, 1, now.get()));
         }
     }
+
+    @Test
+    void forwardedPacketsAreBelievedOnlyFromTheMonitoredGameController() throws Exception {
+        try (LoopbackReceiver gameController = new LoopbackReceiver();
+             java.net.DatagramSocket stranger = new java.net.DatagramSocket(new InetSocketAddress("127.0.0.2", 0));
+             GcMonitor monitor = new GcMonitor(gameController.address(), ANY_LOOPBACK_PORT, new MonitorRegistrations(),
+                     e -> { }, () -> 1_000_000)) {
+            byte[] madeUp = forwarded(10, 0, 14, 20, FALLEN);
+            stranger.send(new java.net.DatagramPacket(madeUp, madeUp.length, monitor.forwardAddress()));
+            gameController.send(forwarded(10, 0, 5, 12, UPRIGHT), monitor.forwardAddress());
+            Await.until(() -> monitor.robots().size() + monitor.badPackets().total() == 2, 2000,
+                    "both forwarded packets judged");
+            assertEquals(java.util.Set.of(new RobotLiveness.RobotKey(5, 1)), monitor.robots().keySet(),
+                    "only the GameController's robot is shown");
+            BadPackets.Tally refused = monitor.badPackets().bySource().values().iterator().next();
+            assertEquals("not from the monitored GameController 127.0.0.1", refused.lastReason());
+        }
+    }
+
+    @Test
+    void badPacketsFromManySourcesCostOneLineEachUpToTheLimit() throws Exception {
+        int sources = BadPackets.MAX_SOURCES + 6;
+        List<LoopbackReceiver> senders = new java.util.ArrayList<>();
+        try (LoopbackReceiver gameController = new LoopbackReceiver();
+             GcMonitor monitor = new GcMonitor(gameController.address(), ANY_LOOPBACK_PORT, new MonitorRegistrations(),
+                     e -> { }, () -> 1_000_000)) {
+            for (int i = 0; i < sources; i++) {
+                LoopbackReceiver s = new LoopbackReceiver();
+                senders.add(s);
+                s.send(new byte[]{1, 2, 3}, monitor.forwardAddress());
+            }
+            Await.until(() -> monitor.badPackets().total() == sources, 2000, "every bad packet counted");
+            assertEquals(BadPackets.MAX_SOURCES + 1, monitor.badPackets().bySource().size());
+            assertEquals(6, monitor.badPackets().bySource().get(BadPackets.OTHER_SOURCES).count());
+            assertEquals(BadPackets.MAX_SOURCES + 1, monitor.describe(1000).size(), "one line a source, one for the rest");
+        } finally {
+            senders.forEach(LoopbackReceiver::close);
+        }
+    }
 }
