@@ -104,6 +104,10 @@ public final class SchemaSet {
             return file;
         } catch (DescriptorValidationException e) {
             throw new RecordingException("schema file " + name + " does not build: " + e.getMessage());
+        } catch (RuntimeException e) {
+            // protobuf-java trusts some parts of a descriptor it does not validate (a field without a
+            // type throws a NullPointerException while linking): from outside, that is a broken schema
+            throw new RecordingException("schema file " + name + " does not build: " + e);
         }
     }
 
