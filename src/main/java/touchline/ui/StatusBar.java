@@ -107,8 +107,9 @@ public final class StatusBar extends HBox {
         bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
         int waitingNow = readings.waitingNow();
         waiting.setText(waitingNow == 1 ? "1 request waiting now" : waitingNow + " requests waiting now");
-        waitingTip.setText(readings.heldTotal() + " requests held back by match mode since the console started "
-                + "(each retry counts); waiting requests go out when play stops");
+        waitingTip.setText("Debug-option changes not yet on the robots because match mode holds the console back; "
+                + "they go out when play stops.\n" + readings.heldTotal() + " send attempts held back by match mode "
+                + "since the console started (retries included)");
         String why = readings.silence();
         silence.setText(why);
         silenceTip.setText(why + "\nIn match mode the console sends nothing to robots (debug requests wait until play "

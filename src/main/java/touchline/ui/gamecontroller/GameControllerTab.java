@@ -66,9 +66,11 @@ public final class GameControllerTab implements View {
     private View referee;
     private String monitorLine = "";
     private EmbeddedGameController shown;
+    private final touchline.ui.ConsoleStatus status;
 
     public GameControllerTab(ViewContext context, ViewSource source) {
         this.console = context.console();
+        this.status = new touchline.ui.ConsoleStatus(console);
         this.remembered = new RememberedSetup(context.settingsDir());
         root.setId("gamecontroller-tab");
         for (GcProfile p : GcProfile.values()) {
@@ -237,7 +239,10 @@ public final class GameControllerTab implements View {
             priority.setText(priorityText(shown.senderPriority()));
         }
         String notice = console.matchMode().notice();
-        matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);
+        // the same words as the status bar: attempts held back (retries count) beside the requests waiting now
+        int waiting = status.waitingNow();
+        matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots."
+                : notice + "; " + (waiting == 1 ? "1 request waiting now" : waiting + " requests waiting now"));
         matchNotice.setStyle(notice.isEmpty() ? "" : "-fx-text-fill: #e0a000; -fx-font-weight: bold;");
     }
 
