@@ -60,6 +60,7 @@ public final class GameControllerTab implements View {
     private final Label setupMessage = new Label();
     private final Label priority = new Label();
     private final Label matchNotice = new Label();
+    private final javafx.scene.control.Tooltip matchNoticeTip = new javafx.scene.control.Tooltip();
     private final CheckBox override = new CheckBox("Override match mode (logged)");
     private final TextField overrideReason = new TextField();
     private final VBox setup;
@@ -109,8 +110,18 @@ public final class GameControllerTab implements View {
         override.setId("gc-override");
         override.setOnAction(e -> toggleOverride());
         matchNotice.setId("match-notice");
-        matchNotice.setWrapText(true);
-        FlowPane bottom = new FlowPane(8, 4, matchNotice, override, overrideReason);
+        // one line that takes the room left and never asks for more: a longer notice (READY's, a
+        // hint) must not widen the tab, or the frame scrolls and every referee button moves; the
+        // whole text is in the tooltip
+        matchNotice.setMinWidth(0);
+        matchNotice.setPrefWidth(0);
+        matchNotice.setMaxWidth(Double.MAX_VALUE);
+        matchNotice.setTooltip(matchNoticeTip);
+        HBox.setHgrow(matchNotice, javafx.scene.layout.Priority.ALWAYS);
+        override.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
+        overrideReason.setPrefColumnCount(16);
+        HBox bottom = new HBox(8, matchNotice, override, overrideReason);
+        bottom.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
         bottom.setPadding(new Insets(4, 8, 4, 8));
         root.setCenter(setup);
         root.setBottom(bottom);
@@ -243,6 +254,7 @@ public final class GameControllerTab implements View {
         int waiting = status.waitingNow();
         matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots."
                 : notice + "; " + (waiting == 1 ? "1 request waiting now" : waiting + " requests waiting now"));
+        matchNoticeTip.setText(matchNotice.getText());
         matchNotice.setStyle(notice.isEmpty() ? "" : "-fx-text-fill: #e0a000; -fx-font-weight: bold;");
     }
 
