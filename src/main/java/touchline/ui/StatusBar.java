@@ -21,8 +21,9 @@ public final class StatusBar extends HBox {
     private final ConsoleStatus readings;
     private final Label silence = new Label();
     /** The least the match-mode and remote banner is shrunk to, in pixels. */
-    static final double SILENCE_MIN_WIDTH = 260;
+    static final double SILENCE_MIN_WIDTH = 200;
     private final Label rates = new Label();
+    private final Tooltip ratesTip = new Tooltip();
     private final Label bad = new Label();
     private final Label waiting = new Label();
     private final Tooltip waitingTip = new Tooltip();
@@ -40,7 +41,7 @@ public final class StatusBar extends HBox {
     private double packetsPerSecond;
 
     public StatusBar(touchline.app.Console console) {
-        super(12);
+        super(10);
         this.console = console;
         this.readings = new ConsoleStatus(console);
         setId("status-bar");
@@ -52,9 +53,11 @@ public final class StatusBar extends HBox {
         // never wider than the window can be (a 1280-pixel laptop)
         silence.setMinWidth(SILENCE_MIN_WIDTH);
         silence.setTooltip(silenceTip);
-        // the counts, the meter and the frame rate keep their words; the message and the platform give
-        // way on a narrow window, cut with "…" and whole in their tooltips
-        rates.setMinWidth(Region.USE_PREF_SIZE);
+        // the counts, the meter and the frame rate keep their words; the rates, the message and the
+        // platform give way on a narrow window, cut with "…" and whole in their tooltips: together the
+        // least they take stays inside a 1280-pixel window in play, or the whole window would be cut
+        rates.setMinWidth(120);
+        rates.setTooltip(ratesTip);
         bad.setMinWidth(Region.USE_PREF_SIZE);
         waiting.setMinWidth(Region.USE_PREF_SIZE);
         silence.setVisible(false);
@@ -62,7 +65,7 @@ public final class StatusBar extends HBox {
         waiting.setId("status-waiting");
         waiting.setTooltip(waitingTip);
         message.setId("status-message");
-        message.setMinWidth(40);
+        message.setMinWidth(0);
         message.setTooltip(messageTip);
         fps.setId("status-fps");
         fps.setMinWidth(Region.USE_PREF_SIZE);
@@ -72,7 +75,7 @@ public final class StatusBar extends HBox {
         touchline.app.RuntimeReport runtime = console.runtime();
         platform.setId("status-platform");
         platform.setText(runtime.portability());
-        platform.setMinWidth(40);
+        platform.setMinWidth(0);
         platform.setTooltip(new Tooltip(String.join("\n", runtime.lines())));
         getChildren().addAll(silence, rates, bad, waiting, meter, message, grow, platform, fps);
     }
@@ -103,6 +106,8 @@ public final class StatusBar extends HBox {
         rates.setText(String.format("in %.0f pkt/s %s/s · out %.0f pkt/s %s/s", packetsPerSecond,
                 bytes((c.bytesIn() - lastBytesIn) / dt), (out - lastOut) / dt,
                 bytes((c.bytesOut() - lastBytesOut) / dt)));
+        ratesTip.setText(rates.getText() + "\nDatagrams and bytes per second the console received (robots, team "
+                + "messages, GameController) and sent (robots, its own GameController)");
         bad.setText("malformed " + c.malformedIn());
         bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
         int waitingNow = readings.waitingNow();

@@ -105,4 +105,23 @@ class BudgetMeterUiTest {
             assertTrue(details.contains("127.0.0.1:" + robot.getLocalPort()) && details.contains("600 bytes"), details);
         }
     }
+
+    /** The status bar's "in" rate counts the team messages the console hears (it read 0 pkt/s while they came). */
+    @Test
+    void theInRateCountsTeamMessages() throws Exception {
+        ui.console.guardTeamMessages(RuleProfile.named("hsl-2026"), 13, new InetSocketAddress("127.0.0.1", 0));
+        InetSocketAddress to = new InetSocketAddress("127.0.0.1", ui.console.teamMessagePort());
+        java.util.regex.Pattern in = java.util.regex.Pattern.compile("^in (\\d+) pkt/s");
+        try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            // no robot talks to the console: only team messages arrive, a few on every look
+            ui.await(30, () -> {
+                for (int i = 0; i < 5; i++) {
+                    robot.send(new DatagramPacket(new byte[40], 40, to));
+                }
+                java.util.regex.Matcher m = in.matcher(ui.fx(() -> ((Label) ui.window.status().lookup("#status-rates")).getText()));
+                return m.find() && Long.parseLong(m.group(1)) > 0;
+            });
+        }
+        assertEquals(0, ui.console.robots().robots().size(), "no robot was heard: the rate is the team messages'");
+    }
 }
