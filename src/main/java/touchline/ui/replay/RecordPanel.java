@@ -117,8 +117,7 @@ final class RecordPanel {
             toggle.setText(now ? "Stop recording" : "Start recording");
             path.setDisable(now);
             if (!now) {
-                this.name = new RecordingName(console.clock(), java.time.ZoneId.systemDefault());
-        path.setText(name.offer()); // the next recording must not overwrite this one
+                path.setText(name.offer()); // the next recording must not overwrite this one
             }
         }
         if (s != null) {
