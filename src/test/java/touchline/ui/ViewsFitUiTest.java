@@ -180,4 +180,29 @@ class ViewsFitUiTest {
         double width = ui.fx(() -> ui.window.scene().getWidth());
         org.junit.jupiter.api.Assertions.assertTrue(status.getMaxX() <= width + 0.5, status + " in " + width);
     }
+
+    /** In the demo layout at 1280 pixels the Robots table shows Game and Authenticity without a sideways scroll. */
+    @Test
+    void theRobotsTableShowsGameAndAuthenticityInTheDemoLayout() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+        ui.await(30, () -> ui.window.scene().lookup("#robot-table") instanceof javafx.scene.control.TableView<?> t
+                && FramePulse.showing(t) && t.getWidth() > 0);
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 5);
+        String where = ui.fx(() -> {
+            javafx.scene.control.TableView<?> table = (javafx.scene.control.TableView<?>) ui.window.scene().lookup("#robot-table");
+            table.applyCss();
+            table.layout();
+            double right = 0;
+            StringBuilder out = new StringBuilder();
+            for (javafx.scene.control.TableColumn<?, ?> c : table.getVisibleLeafColumns()) {
+                right += c.getWidth();
+                if ((c.getText().equals("Game") || c.getText().equals("Authenticity")) && right > table.getWidth() + 0.5) {
+                    out.append(c.getText()).append(" ends at ").append(right).append(" of ").append(table.getWidth()).append("; ");
+                }
+            }
+            return out.toString();
+        });
+        assertEquals("", where);
+    }
 }

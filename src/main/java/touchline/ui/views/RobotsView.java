@@ -63,10 +63,10 @@ public final class RobotsView implements View {
         // what a team watches in a game first (Game and Authenticity inside the demo layout's left pane
         // at 1280 pixels, no sideways scroll), the traffic after
         table.getColumns().add(column("ID", r -> Integer.toString(r.id()), 44));
-        table.getColumns().add(column("Name", r -> text(r.label()), 90)); // "robot 3 (replay)" for a replayed one
+        table.getColumns().add(column("Name", r -> text(r.label()), 80)); // "robot 3 (replay)" for a replayed one
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
         table.getColumns().add(column("Game", r -> text(r.gameState()), 80));
-        table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 110));
+        table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 100));
         table.getColumns().add(column("Role", r -> text(r.role()), 90));
         table.getColumns().add(column("State", r -> text(r.state()), 90));
         table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
