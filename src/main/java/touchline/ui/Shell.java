@@ -45,6 +45,7 @@ public final class Shell {
         this.registry = registry;
         this.maker = maker;
         bento.events().addDockableCloseListener((path, d) -> forget(d));
+        bento.controlsBuilding().setCanvasFactory(leaf -> new DropHint());
         root = bento.dockBuilding().root("main");
         host.setCenter(root);
     }
