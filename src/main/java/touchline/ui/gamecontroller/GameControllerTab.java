@@ -117,11 +117,12 @@ public final class GameControllerTab implements View {
         matchNotice.setPrefWidth(0);
         matchNotice.setMaxWidth(Double.MAX_VALUE);
         matchNotice.setTooltip(matchNoticeTip);
-        HBox.setHgrow(matchNotice, javafx.scene.layout.Priority.ALWAYS);
         override.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
         overrideReason.setPrefColumnCount(16);
-        HBox bottom = new HBox(8, matchNotice, override, overrideReason);
-        bottom.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
+        HBox overriding = new HBox(8, override, overrideReason);
+        overriding.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
+        // two lines of fixed height: the notice on its own (the whole width), the override below
+        VBox bottom = new VBox(4, matchNotice, overriding);
         bottom.setPadding(new Insets(4, 8, 4, 8));
         root.setCenter(setup);
         root.setBottom(bottom);
