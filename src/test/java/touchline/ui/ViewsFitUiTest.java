@@ -205,4 +205,59 @@ class ViewsFitUiTest {
         });
         assertEquals("", where);
     }
+
+    /** How much wider than its pane the view's content is (0: it fits, no sideways scroll). */
+    private double overflow(String id) throws Exception {
+        return ui.fx(() -> {
+            Shell.OpenView v = ui.window.shell().openViews().stream().filter(o -> o.spec().id().equals(id)).findFirst()
+                    .orElseThrow();
+            javafx.scene.Parent root = ui.window.scene().getRoot();
+            root.applyCss();
+            root.layout();
+            Node n = v.view().node();
+            while (n != null && !(n instanceof javafx.scene.control.ScrollPane)) {
+                n = n.getParent();
+            }
+            if (!(n instanceof javafx.scene.control.ScrollPane sp) || sp.getContent() == null) {
+                return 0.0;
+            }
+            return Math.max(0, sp.getContent().getLayoutBounds().getWidth() - sp.getViewportBounds().getWidth());
+        });
+    }
+
+    /**
+     * The default (demo) layout at 1280×720 is usable without dragging a divider: the GameController
+     * (both teams), the NAO view (Connect) and the Network console opened into it show their
+     * controls without a sideways scroll (they get a row of the window's width when no pane is wide enough).
+     */
+    @Test
+    void wideViewsOpenedIntoTheDemoLayoutNeedNoDividerDragged() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (String id : List.of("gamecontroller", "nao", "network")) {
+            ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+            long restored = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > restored + 5);
+            if (id.equals("gamecontroller")) {
+                field = new java.net.DatagramSocket(new java.net.InetSocketAddress("127.0.0.1", 0));
+                new GameControllerTabDriver(ui).start(field, "hsl20"); // opens the tab as the View menu does
+                ui.await(30, () -> ui.window.scene().lookup("#gamecontroller-hsl") != null);
+            } else {
+                ui.fxRun(() -> ui.window.open(id, ViewSource.NONE));
+            }
+            ui.await(30, () -> ui.fx(() -> ui.window.shell().openViews().stream()
+                    .anyMatch(v -> v.spec().id().equals(id) && FramePulse.showing(v.frame()))));
+            long start = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > start + 10);
+            double over = overflow(id);
+            if (over > 0.5) {
+                problems.add(id + " is " + over + " px wider than its pane");
+            }
+            if (id.equals("gamecontroller")) {
+                ui.console.stopGameController();
+                field.close();
+                field = null;
+            }
+        }
+        assertEquals(List.of(), problems);
+    }
 }
