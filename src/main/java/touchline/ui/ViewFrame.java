@@ -141,15 +141,32 @@ public final class ViewFrame extends BorderPane {
 
     /** Buttons never shrink below their label: the pane scrolls instead (nodes the view has now). */
     private static void keepLabels(javafx.scene.Node node) {
+        if (node instanceof javafx.scene.control.IndexedCell<?>) {
+            return; // a table's or list's cells: their rows are the data, not the view's words
+        }
         if (node instanceof javafx.scene.control.ButtonBase b && b.getText() != null && !b.getText().isEmpty()
                 && b.getMinWidth() == USE_COMPUTED_SIZE) {
             b.setMinWidth(USE_PREF_SIZE);
+        }
+        if (node instanceof Label l && l.getTooltip() == null && cut(l)) {
+            // a status text cut to "…" in a narrow pane: the whole of it, as it changes, under the pointer
+            javafx.scene.control.Tooltip whole = new javafx.scene.control.Tooltip();
+            whole.textProperty().bind(l.textProperty());
+            whole.setWrapText(true);
+            whole.setMaxWidth(640);
+            l.setTooltip(whole);
         }
         if (node instanceof javafx.scene.Parent p) {
             for (javafx.scene.Node child : p.getChildrenUnmodifiable()) {
                 keepLabels(child);
             }
         }
+    }
+
+    /** Whether a label shows less than its text (cut to "…"). */
+    static boolean cut(Label l) {
+        return l.isVisible() && l.getText() != null && !l.getText().isEmpty() && l.getWidth() > 0
+                && l.getWidth() + 0.5 < l.prefWidth(-1);
     }
 
     @Override
