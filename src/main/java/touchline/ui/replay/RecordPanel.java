@@ -70,7 +70,7 @@ final class RecordPanel {
             chooser.setInitialDirectory(current.getParent().toFile());
         }
         chooser.setInitialFileName(current.getFileName().toString());
-        java.io.File f = new touchline.ui.OwnerKept(root.getScene().getWindow()).show(chooser::showSaveDialog);
+        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
         if (f != null) {
             path.setText(f.toString());
         }

@@ -141,7 +141,7 @@ public final class FieldPlotView implements View {
         chooser.setTitle("Export the plotted data as CSV");
         chooser.setInitialFileName("plot.csv");
         chooser.getExtensionFilters().add(new FileChooser.ExtensionFilter("CSV", "*.csv"));
-        java.io.File f = new touchline.ui.OwnerKept(root.getScene().getWindow()).show(chooser::showSaveDialog);
+        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
         if (f != null) {
             exportCsv(f.toPath());
         }
