@@ -2,7 +2,6 @@ package touchline.ui;
 
 import javafx.scene.control.Label;
 import javafx.scene.text.Text;
-import javafx.stage.Window;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
@@ -36,13 +35,7 @@ class BudgetMeterUiTest {
     void open() throws Exception {
         ui = new ConsoleWindowFixture(layouts);
         field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
-        ui.fxRun(() -> {
-            Window w = ui.window.scene().getWindow();
-            w.setX(0);
-            w.setY(0);
-            w.setWidth(1280);
-            w.setHeight(650); // a 1280x720 screen less a panel and the title bar
-        });
+        ui.laptopSize();
     }
 
     @AfterEach

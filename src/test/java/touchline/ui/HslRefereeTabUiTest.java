@@ -320,12 +320,8 @@ class HslRefereeTabUiTest {
 
     @Test
     void hsl20IsTheDefaultAndTheRefereeBoxFitsA1280By720WindowWithoutScrolling() throws Exception {
+        ui.laptopSize();
         ui.fxRun(() -> {
-            javafx.stage.Window w = ui.window.scene().getWindow();
-            w.setX(0);
-            w.setY(0);
-            w.setWidth(1280);
-            w.setHeight(650); // a 1280x720 screen less a panel and the title bar, as in ViewsFitUiTest
             ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", "")))));
         });
         GameControllerTabDriver gc = new GameControllerTabDriver(ui);
@@ -373,12 +369,8 @@ class HslRefereeTabUiTest {
      */
     @Test
     void aLongMatchNoticeNeitherWidensTheTabNorMovesTheRefereesControls() throws Exception {
+        ui.laptopSize();
         ui.fxRun(() -> {
-            javafx.stage.Window w = ui.window.scene().getWindow();
-            w.setX(0);
-            w.setY(0);
-            w.setWidth(1280);
-            w.setHeight(650);
             ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", "")))));
         });
         GameControllerTabDriver gc = new GameControllerTabDriver(ui);

@@ -4,7 +4,6 @@ import javafx.geometry.Bounds;
 import javafx.scene.Node;
 import javafx.scene.control.ButtonBase;
 import javafx.scene.control.Label;
-import javafx.stage.Window;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
@@ -32,13 +31,7 @@ class ViewsFitUiTest {
     @BeforeEach
     void open() throws Exception {
         ui = new ConsoleWindowFixture(layouts);
-        ui.fxRun(() -> {
-            Window w = ui.window.scene().getWindow();
-            w.setX(0);
-            w.setY(0);
-            w.setWidth(1280);
-            w.setHeight(650); // a 1280x720 screen less a panel and the title bar
-        });
+        ui.laptopSize();
     }
 
     @AfterEach
