@@ -391,6 +391,8 @@ public final class ConsoleWindow {
         layoutMenu.getItems().remove(LAYOUT_MENU_FIXED, layoutMenu.getItems().size());
         renameMenu.getItems().clear();
         deleteMenu.getItems().clear();
+        renameMenu.setDisable(layouts.names().isEmpty()); // nothing saved yet: nothing to rename or delete
+        deleteMenu.setDisable(layouts.names().isEmpty());
         for (String name : layouts.names()) {
             MenuItem rename = new MenuItem("\"" + name + "\"…");
             rename.setOnAction(e -> new NameDialog(stage, places, "Rename layout", "New name of \"" + name + "\"", name)
