@@ -13,8 +13,9 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
-say() { printf '\033[1;34m[touchline check-fresh]\033[0m %s\n' "$*" >&2; }
-die() { printf '\033[1;31m[touchline check-fresh]\033[0m %s\n' "$*" >&2; exit 1; }
+. "$ROOT/packaging/colour.sh"
+say() { printf '%s %s\n' "$(paint err '1;34' '[touchline check-fresh]')" "$*" >&2; }
+die() { printf '%s %s\n' "$(paint err '1;31' '[touchline check-fresh]')" "$*" >&2; exit 1; }
 
 KEEP=0
 DEB=""

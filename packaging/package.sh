@@ -14,8 +14,9 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
-say() { printf '\033[1;34m[touchline package]\033[0m %s\n' "$*" >&2; }
-die() { printf '\033[1;31m[touchline package]\033[0m %s\n' "$*" >&2; exit 1; }
+. "$ROOT/packaging/colour.sh"
+say() { printf '%s %s\n' "$(paint err '1;34' '[touchline package]')" "$*" >&2; }
+die() { printf '%s %s\n' "$(paint err '1;31' '[touchline package]')" "$*" >&2; exit 1; }
 
 PLATFORM=linux
 while [ $# -gt 0 ]; do

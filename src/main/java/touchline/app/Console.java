@@ -87,6 +87,9 @@ public final class Console implements AutoCloseable {
     private GcMonitor gcMonitor;
     private EmbeddedGameController gameController;
     private TeamMessageListener teamMessages;
+    /** Team messages heard since the console started, for the counts in (read without the console's lock). */
+    private final java.util.concurrent.atomic.AtomicLong teamDatagramsIn = new java.util.concurrent.atomic.AtomicLong();
+    private final java.util.concurrent.atomic.AtomicLong teamBytesIn = new java.util.concurrent.atomic.AtomicLong();
     private AutoCloseable budgetSubscription;
     private TeamMessageBudget budget;
     private DebugRateGuard debugRate;
@@ -397,7 +400,7 @@ public final class Console implements AutoCloseable {
 
     /** The UDP transport's counts of datagrams and bytes in and out, now. */
     public TransportCounts transportCounts() {
-        return TransportCounts.of(udp.counters());
+        return TransportCounts.of(udp.counters(), teamDatagramsIn.get(), teamBytesIn.get());
     }
 
     /**
@@ -706,7 +709,11 @@ public final class Console implements AutoCloseable {
         budgetSubscription = bus.subscribe(budget);
         debugRate = new DebugRateGuard(clock, profile);
         debugRateSubscription = bus.subscribe(debugRate);
-        teamMessages = new TeamMessageListener(bind, live, clock);
+        teamMessages = new TeamMessageListener(bind, e -> {
+            teamDatagramsIn.incrementAndGet();
+            teamBytesIn.addAndGet(e.size());
+            live.accept(e);
+        }, clock);
         return budget;
     }
 

@@ -29,7 +29,7 @@ final class ReportedGameState implements EnvelopeSink {
             int state = GameControlData.stateCode(status.getGameState());
             // the five states every league's robots report; SPL's STANDBY never reached match mode
             if (state >= 0 && state <= GameControlData.STATE_FINISHED) {
-                matchMode.observe(state, "robot " + e.robotId());
+                matchMode.observeReported(state, e.robotId());
             }
         }
     }

@@ -7,8 +7,9 @@ import java.util.Optional;
 import java.util.function.Supplier;
 
 /**
- * The team-message budget meter as the JSON channel {@code /team/budget}: messages used and left
- * (and whether the figure is the GameController's own), the rate over the last minute, the rule
+ * The team-message budget meter as the JSON channel {@code /team/budget}: messages used and left,
+ * those heard but not counted (outside READY, SET and PLAYING, or before a GameController was heard;
+ * and whether the figure is the GameController's own), the rate over the last minute, the rule
  * profile's limit, the forecast and oversize messages. Served only while the console guards a
  * team's budget ({@code --team}); the channel is advertised once the guard runs
  * ({@code touchline.serve.JsonChannel} serves it).
@@ -20,7 +21,7 @@ public final class TeamBudgetJson {
     public static final String SCHEMA = """
                 {"type":"object","properties":{\
                 "team":{"type":"integer"},"profile":{"type":"string"},"limit":{"type":"string"},\
-                "used":{"type":"integer"},"left":{"type":"integer"},"leftFromGc":{"type":"boolean"},\
+                "used":{"type":"integer"},"notCounted":{"type":"integer"},"gameControllerHeard":{"type":"boolean"},"left":{"type":"integer"},"leftFromGc":{"type":"boolean"},\
                 "perMinute":{"type":"number"},"secondsLeftInGame":{"type":"integer"},"secondsToEmpty":{"type":"integer"},\
                 "verdict":{"type":"string"},"oversize":{"type":"integer"},"summary":{"type":"string"}}}""";
 
@@ -39,6 +40,7 @@ public final class TeamBudgetJson {
         // the rate is rounded to a tenth, so the channel does not send a new value every tick for noise
         return new JSONObject().put("team", s.team()).put("profile", s.profile().name())
                 .put("limit", s.profile().teamMessageBudget().describe()).put("used", s.used()).put("left", s.left())
+                .put("notCounted", s.notCounted()).put("gameControllerHeard", s.gameControllerHeard())
                 .put("leftFromGc", s.leftFromGc()).put("perMinute", Math.round(s.perMinute() * 10) / 10.0)
                 .put("secondsLeftInGame", s.secondsLeftInGame()).put("secondsToEmpty", s.secondsToEmpty())
                 .put("verdict", s.verdict().name()).put("oversize", s.oversize()).put("summary", s.describe());

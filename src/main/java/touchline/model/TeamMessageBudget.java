@@ -20,7 +20,8 @@ import java.util.Map;
  * The budget guard: the team's own team messages (UDP 10000 + team number, heard by
  * {@code touchline.transport.TeamMessageListener}) against the active {@link RuleProfile}. It
  * counts the messages per team and per sender as the official GameController does (only in
- * READY, SET and PLAYING, not in a penalty shoot-out), takes the budget left from the
+ * READY, SET and PLAYING, not in a penalty shoot-out; before any GameController is heard the state
+ * is not known, so messages are heard but not counted), takes the budget left from the
  * GameController's own count when a 2026 GameController is heard, measures the rate over the
  * last minute and forecasts when the budget runs out compared with the time left in the game,
  * warning before it does. A message over the profile's size limit is flagged at once with its
@@ -52,6 +53,8 @@ public final class TeamMessageBudget implements EnvelopeSink {
      * @param profile             the rules in force
      * @param team                our team number
      * @param used                messages counted by the console this game
+     * @param notCounted          messages heard outside READY, SET and PLAYING (or before a GameController was heard)
+     * @param gameControllerHeard whether any GameController was heard (without one nothing counts)
      * @param left                messages left, or -1 when not known
      * @param leftFromGc          whether {@code left} is the GameController's own figure
      * @param perMinute           the team's rate over the last minute
@@ -62,7 +65,8 @@ public final class TeamMessageBudget implements EnvelopeSink {
      * @param lastOversize        "robot at 127.0.0.1:40001 sent 600 bytes (limit 512)", or null
      * @param senders             per sender, most messages first
      */
-    public record Snapshot(RuleProfile profile, int team, long used, long left, boolean leftFromGc, double perMinute,
+    public record Snapshot(RuleProfile profile, int team, long used, long notCounted, boolean gameControllerHeard,
+                           long left, boolean leftFromGc, double perMinute,
                            long secondsLeftInGame, long secondsToEmpty, Verdict verdict, long oversize,
                            String lastOversize, List<Sender> senders) {
 
@@ -81,11 +85,30 @@ public final class TeamMessageBudget implements EnvelopeSink {
                         + minutes(secondsLeftInGame) + " of the game left";
                 case EXHAUSTED -> " · EXHAUSTED: a further message resets the score";
             };
+            if (!gameControllerHeard && notCounted > 0) {
+                line += " · " + notCounted + " heard, not counted: no GameController heard yet";
+            }
             if (oversize > 0) {
                 line += " · " + oversize + " over " + profile.maxTeamMessageBytes().value() + " bytes (last: "
                         + lastOversize + ")";
             }
             return line;
+        }
+
+        /**
+         * The meter's short form, which never changes its shape: used, left and the forecast, e.g.
+         * "3 used · 11997 left · lasts the game"; the rest (senders, rates, the rules) is in {@link #describe()}.
+         */
+        public String brief() {
+            String budget = left < 0 ? "limit not known" : left + " left";
+            String forecast = switch (verdict) {
+                case NO_LIMIT -> "no budget";
+                case LIMIT_NOT_KNOWN, WAITING_FOR_MESSAGES -> gameControllerHeard ? "no forecast yet" : "no GameController: not counting";
+                case ON_TRACK -> secondsLeftInGame < 0 ? "lasts " + minutes(secondsToEmpty) : "lasts the game";
+                case RUNS_OUT_BEFORE_THE_END -> "runs out in " + minutes(secondsToEmpty);
+                case EXHAUSTED -> "EXHAUSTED";
+            };
+            return used + " used · " + budget + " · " + forecast + (oversize > 0 ? " · " + oversize + " OVERSIZE" : "");
         }
 
         private static String minutes(long seconds) {
@@ -100,6 +123,7 @@ public final class TeamMessageBudget implements EnvelopeSink {
     private final Map<String, SenderCount> senders = new LinkedHashMap<>();
     private final KnownGameStateFormats formats = new KnownGameStateFormats();
     private long used;
+    private long notCounted;
     private long oversize;
     private String lastOversize;
     private GameControlData game;
@@ -155,6 +179,7 @@ public final class TeamMessageBudget implements EnvelopeSink {
             lastOversize = "sender " + s.name + " sent " + e.size() + " bytes (limit " + max.value() + ")";
         }
         if (!counted()) {
+            notCounted++;
             return;
         }
         used++;
@@ -166,7 +191,7 @@ public final class TeamMessageBudget implements EnvelopeSink {
     /** The official GameController counts only in READY, SET and PLAYING, never in a shoot-out. */
     private boolean counted() {
         if (game == null) {
-            return true; // no GameController heard: every message may count
+            return false; // no GameController heard: the state is not known, and INITIAL does not count
         }
         int state = game.state();
         return (state == GameControlData.STATE_READY || state == GameControlData.STATE_SET
@@ -185,7 +210,7 @@ public final class TeamMessageBudget implements EnvelopeSink {
             rows.add(new Sender(s.name, s.messages, s.rate.inWindow(now), s.oversize, s.largest));
         }
         rows.sort(Comparator.comparingLong(Sender::messages).reversed());
-        return new Snapshot(profile, team, used, left, left >= 0 && gcBudget() >= 0, perSecond * 60,
+        return new Snapshot(profile, team, used, notCounted, game != null, left, left >= 0 && gcBudget() >= 0, perSecond * 60,
                 secondsLeftInGame, toEmpty, verdict, oversize, lastOversize, List.copyOf(rows));
     }
 

@@ -9,7 +9,6 @@ import javafx.scene.control.Menu;
 import javafx.scene.control.MenuBar;
 import javafx.scene.control.MenuItem;
 import javafx.scene.control.SeparatorMenuItem;
-import javafx.scene.control.TextInputDialog;
 import javafx.scene.input.KeyCode;
 import javafx.scene.input.KeyCodeCombination;
 import javafx.scene.input.KeyCombination;
@@ -43,6 +42,10 @@ public final class ConsoleWindow {
     private final FramePulse pulse;
     private final LayoutStore layouts;
     private final WindowPlaces places;
+    /** Save, Default, Rename, Delete and a separator: the saved layouts follow them. */
+    private static final int LAYOUT_MENU_FIXED = 5;
+    private final Menu renameMenu = new Menu("_Rename layout");
+    private final Menu deleteMenu = new Menu("De_lete layout");
     private final BorderPane root = new BorderPane();
     private final Set<String> demoSwitched = new HashSet<>();
     private final Menu layoutMenu = new Menu("_Layout");
@@ -186,6 +189,27 @@ public final class ConsoleWindow {
         rebuildLayoutMenu();
     }
 
+    /** Renames a saved layout; the status line says what happened or why not. */
+    public void renameLayout(String from, String to) {
+        try {
+            layouts.rename(from, to);
+            status.say("layout \"" + from + "\" is now \"" + to + "\"");
+        } catch (IOException e) {
+            status.say("could not rename layout \"" + from + "\": " + e.getMessage());
+        }
+        rebuildLayoutMenu();
+    }
+
+    /** Deletes a saved layout; the status line says so. */
+    public void deleteLayout(String name) {
+        try {
+            status.say(layouts.delete(name) ? "layout \"" + name + "\" deleted" : "no layout \"" + name + "\"");
+        } catch (IOException e) {
+            status.say("could not delete layout \"" + name + "\": " + e.getMessage());
+        }
+        rebuildLayoutMenu();
+    }
+
     public boolean loadLayout(String name) throws IOException {
         Optional<List<LayoutNode>> l = layouts.load(name);
         l.ifPresent(shell::restore);
@@ -288,23 +312,19 @@ public final class ConsoleWindow {
 
     private MenuBar menus() {
         MenuItem save = new MenuItem("_Save layout as…");
-        save.setOnAction(e -> {
-            TextInputDialog d = new TextInputDialog("my layout");
-            d.initOwner(stage);
-            d.setTitle("Save layout");
-            d.setHeaderText("Name of the layout");
-            places.keep((Stage) d.getDialogPane().getScene().getWindow(), "save-layout", 420, 200);
-            d.showAndWait().ifPresent(name -> {
-                try {
-                    saveLayout(name);
-                } catch (IOException ex) {
-                    new Alert(Alert.AlertType.ERROR, "Could not save: " + ex.getMessage()).show();
-                }
-            });
-        });
+        save.setOnAction(e -> new NameDialog(stage, places, "Save layout", "Name of the layout", "my layout").ask()
+                .ifPresent(name -> {
+                    try {
+                        saveLayout(name);
+                    } catch (IOException ex) {
+                        new Alert(Alert.AlertType.ERROR, "Could not save: " + ex.getMessage()).show();
+                    }
+                }));
         MenuItem demo = new MenuItem("_Default layout");
         demo.setOnAction(e -> shell.restore(DemoLayout.standard()));
-        layoutMenu.getItems().addAll(save, demo, new SeparatorMenuItem());
+        renameMenu.setId("menu-rename-layout");
+        deleteMenu.setId("menu-delete-layout");
+        layoutMenu.getItems().addAll(save, demo, renameMenu, deleteMenu, new SeparatorMenuItem());
         layoutMenu.setOnShowing(e -> rebuildLayoutMenu());
         rebuildLayoutMenu();
 
@@ -368,8 +388,19 @@ public final class ConsoleWindow {
     }
 
     private void rebuildLayoutMenu() {
-        layoutMenu.getItems().remove(3, layoutMenu.getItems().size());
+        layoutMenu.getItems().remove(LAYOUT_MENU_FIXED, layoutMenu.getItems().size());
+        renameMenu.getItems().clear();
+        deleteMenu.getItems().clear();
+        renameMenu.setDisable(layouts.names().isEmpty()); // nothing saved yet: nothing to rename or delete
+        deleteMenu.setDisable(layouts.names().isEmpty());
         for (String name : layouts.names()) {
+            MenuItem rename = new MenuItem("\"" + name + "\"…");
+            rename.setOnAction(e -> new NameDialog(stage, places, "Rename layout", "New name of \"" + name + "\"", name)
+                    .ask().filter(to -> !to.equals(name)).ifPresent(to -> renameLayout(name, to)));
+            renameMenu.getItems().add(rename);
+            MenuItem delete = new MenuItem("\"" + name + "\"…");
+            delete.setOnAction(e -> confirmDelete(name));
+            deleteMenu.getItems().add(delete);
             MenuItem item = new MenuItem("Open \"" + name + "\"");
             item.setOnAction(e -> {
                 try {
@@ -380,5 +411,15 @@ public final class ConsoleWindow {
             });
             layoutMenu.getItems().add(item);
         }
+    }
+
+    private void confirmDelete(String name) {
+        Alert a = new Alert(Alert.AlertType.CONFIRMATION, "Delete the layout \"" + name + "\"? Its file in "
+                + layouts.dir() + " is removed.", javafx.scene.control.ButtonType.OK, javafx.scene.control.ButtonType.CANCEL);
+        a.initOwner(stage);
+        a.setTitle("Delete layout");
+        a.setHeaderText(null);
+        a.getDialogPane().setMinHeight(javafx.scene.layout.Region.USE_PREF_SIZE);
+        a.showAndWait().filter(b -> b == javafx.scene.control.ButtonType.OK).ifPresent(b -> deleteLayout(name));
     }
 }

@@ -45,6 +45,7 @@ public final class Shell {
         this.registry = registry;
         this.maker = maker;
         bento.events().addDockableCloseListener((path, d) -> forget(d));
+        bento.controlsBuilding().setCanvasFactory(leaf -> new DropHint());
         root = bento.dockBuilding().root("main");
         host.setCenter(root);
     }
@@ -103,6 +104,8 @@ public final class Shell {
         if (target == null) {
             target = bento.dockBuilding().leaf();
             root.addContainer(target);
+        } else if (spec.needWidth() > target.getWidth() + 0.5 && leaves(root).size() > 1) {
+            target = fullWidthRow(); // the referee's both teams, the NAO's Connect: no dragging of dividers
         }
         target.addDockable(v.dockable());
         target.selectDockable(v.dockable());
@@ -169,6 +172,34 @@ public final class Shell {
             }
         });
         return v;
+    }
+
+    /** The window's share of its height a view gets in a row of the whole width ({@link #fullWidthRow}). */
+    static final double WIDE_ROW_SHARE = 0.6;
+
+    /**
+     * A new pane across the whole window at the bottom, the layout as it was above it: for a view
+     * that needs more width than any pane has.
+     */
+    private DockContainerLeaf fullWidthRow() {
+        DockContainerBranch above = bento.dockBuilding().branch();
+        above.setOrientation(root.getOrientation());
+        double[] positions = root.getDividerPositions();
+        for (DockContainer c : List.copyOf(root.getChildContainers())) {
+            root.removeContainer(c);
+            above.addContainer(c);
+        }
+        DockContainerLeaf row = bento.dockBuilding().leaf();
+        root.setOrientation(Orientation.VERTICAL);
+        root.addContainer(above);
+        root.addContainer(row);
+        Runnable dividers = () -> {
+            above.setDividerPositions(positions);
+            root.setDividerPositions(1 - WIDE_ROW_SHARE);
+        };
+        dividers.run();
+        javafx.application.Platform.runLater(dividers); // as restore does: once more after the layout pass
+        return row;
     }
 
     private DockContainerLeaf largestLeaf() {

@@ -21,8 +21,11 @@ final class Shortcuts {
         }
     }
 
-    /** The keys views handle themselves (no menu item shows them). */
-    static final List<Key> VIEW_KEYS = List.of(
+    /** The keys views handle themselves (no menu item shows them); the referee's from its own list. */
+    static final List<Key> VIEW_KEYS = viewKeys();
+
+    private static List<Key> viewKeys() {
+        List<Key> keys = new ArrayList<>(List.of(
             new Key("options", "Space", "switch the selected option on or off"),
             new Key("options", "Enter", "open the selected option's visualisation"),
             new Key("options", "type in the filter", "show only the options whose name matches"),
@@ -30,11 +33,16 @@ final class Shortcuts {
             new Key("debug-console", "Ctrl+C", "copy the selected lines (all shown lines when none is selected)"),
             new Key("network", "Up / Down", "walk the datagrams; the selected one stays in view while more arrive"),
             new Key("field-plot", "Ctrl+F", "find a field path: type to filter, Up/Down choose, Enter adds it"),
-            new Key("gamecontroller", "Ctrl+Z", "undo the last action"),
-            new Key("nao", "W A S D Q E", "walk and turn while the walk pad has the keyboard"),
+            new Key("gamecontroller", "Ctrl+Z", "undo the last action"),            new Key("nao", "W A S D Q E", "walk and turn while the walk pad has the keyboard"),
             new Key("", "Tab / Shift+Tab", "move the keyboard to the next / previous control (the focused one is ringed)"),
             new Key("", "Esc", "close a help window, quick-open or a dialog"),
-            new Key("", "F10 or Alt", "the menu bar; the underlined letter opens a menu"));
+            new Key("", "F10 or Alt", "the menu bar; the underlined letter opens a menu")));
+        int at = keys.indexOf(keys.stream().filter(k -> k.viewId().equals("gamecontroller")).findFirst().orElseThrow());
+        for (touchline.ui.gamecontroller.RefereeKey k : touchline.ui.gamecontroller.RefereeKey.values()) {
+            keys.add(at++, new Key("gamecontroller", k.keys(), k.what() + " (HSL; not while typing in a field)"));
+        }
+        return List.copyOf(keys);
+    }
 
     private final List<Key> menuKeys;
 

@@ -1,7 +1,6 @@
 package touchline.ui;
 
 import javafx.scene.control.Label;
-import javafx.scene.control.ProgressBar;
 import javafx.scene.control.Tooltip;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.Priority;
@@ -22,18 +21,17 @@ public final class StatusBar extends HBox {
     private final ConsoleStatus readings;
     private final Label silence = new Label();
     /** The least the match-mode and remote banner is shrunk to, in pixels. */
-    static final double SILENCE_MIN_WIDTH = 260;
+    static final double SILENCE_MIN_WIDTH = 200;
     private final Label rates = new Label();
+    private final Tooltip ratesTip = new Tooltip();
     private final Label bad = new Label();
     private final Label waiting = new Label();
     private final Tooltip waitingTip = new Tooltip();
     private final Tooltip silenceTip = new Tooltip();
-    private final ProgressBar meter = new ProgressBar(0);
-    private final Label meterText = new Label();
-    private final Label meterName = new Label("Team");
-    private final Tooltip meterTip = new Tooltip("Team traffic (IP/UDP included) against the 1 Mbit/s league limit");
+    private final BudgetMeter meter = new BudgetMeter();
     private final Label fps = new Label();
     private final Label message = new Label();
+    private final Tooltip messageTip = new Tooltip();
     private final Label platform = new Label();
     private long lastMicros;
     private long lastIn;
@@ -43,13 +41,11 @@ public final class StatusBar extends HBox {
     private double packetsPerSecond;
 
     public StatusBar(touchline.app.Console console) {
-        super(12);
+        super(10);
         this.console = console;
         this.readings = new ConsoleStatus(console);
         setId("status-bar");
         setStyle("-fx-padding: 3 8 3 8; -fx-alignment: center-left;");
-        meter.setPrefWidth(120);
-        meter.setTooltip(meterTip);
         rates.setId("status-rates");
         silence.setId("status-silence");
         silence.getStyleClass().add("status-silence");
@@ -57,25 +53,31 @@ public final class StatusBar extends HBox {
         // never wider than the window can be (a 1280-pixel laptop)
         silence.setMinWidth(SILENCE_MIN_WIDTH);
         silence.setTooltip(silenceTip);
-        // the counts keep their words; the meter's text and messages give way on a narrow window
-        rates.setMinWidth(Region.USE_PREF_SIZE);
+        // the counts, the meter and the frame rate keep their words; the rates, the message and the
+        // platform give way on a narrow window, cut with "…" and whole in their tooltips: together the
+        // least they take stays inside a 1280-pixel window in play, or the whole window would be cut
+        rates.setMinWidth(120);
+        rates.setTooltip(ratesTip);
         bad.setMinWidth(Region.USE_PREF_SIZE);
         waiting.setMinWidth(Region.USE_PREF_SIZE);
         silence.setVisible(false);
         silence.setManaged(false);
         waiting.setId("status-waiting");
         waiting.setTooltip(waitingTip);
-        meterText.setId("status-meter");
-        meterName.setMinWidth(Region.USE_PREF_SIZE);
+        message.setId("status-message");
+        message.setMinWidth(0);
+        message.setTooltip(messageTip);
+        fps.setId("status-fps");
+        fps.setMinWidth(Region.USE_PREF_SIZE);
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
         // the transport and priority in use: epoll + recvmmsg on Linux, NIO / normal priority as the portable fallback
         touchline.app.RuntimeReport runtime = console.runtime();
         platform.setId("status-platform");
         platform.setText(runtime.portability());
-        platform.setMinWidth(Region.USE_PREF_SIZE);
+        platform.setMinWidth(0);
         platform.setTooltip(new Tooltip(String.join("\n", runtime.lines())));
-        getChildren().addAll(silence, rates, bad, waiting, meterName, meter, meterText, message, grow, platform, fps);
+        getChildren().addAll(silence, rates, bad, waiting, meter, message, grow, platform, fps);
     }
 
     public double packetsPerSecond() {
@@ -85,6 +87,7 @@ public final class StatusBar extends HBox {
     /** A one-line message (layout saved, command held, ...). */
     public void say(String text) {
         message.setText(text);
+        messageTip.setText(text);
     }
 
     /** The frame pulse stopped because nothing changed: the frame rate reads "idle" until it runs again. */
@@ -103,12 +106,15 @@ public final class StatusBar extends HBox {
         rates.setText(String.format("in %.0f pkt/s %s/s · out %.0f pkt/s %s/s", packetsPerSecond,
                 bytes((c.bytesIn() - lastBytesIn) / dt), (out - lastOut) / dt,
                 bytes((c.bytesOut() - lastBytesOut) / dt)));
+        ratesTip.setText(rates.getText() + "\nDatagrams and bytes per second the console received (robots, team "
+                + "messages, GameController) and sent (robots, its own GameController)");
         bad.setText("malformed " + c.malformedIn());
         bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
         int waitingNow = readings.waitingNow();
         waiting.setText(waitingNow == 1 ? "1 request waiting now" : waitingNow + " requests waiting now");
-        waitingTip.setText(readings.heldTotal() + " requests held back by match mode since the console started "
-                + "(each retry counts); waiting requests go out when play stops");
+        waitingTip.setText("Debug-option changes not yet on the robots because match mode holds the console back; "
+                + "they go out when play stops.\n" + readings.heldTotal() + " send attempts held back by match mode "
+                + "since the console started (retries included)");
         String why = readings.silence();
         silence.setText(why);
         silenceTip.setText(why + "\nIn match mode the console sends nothing to robots (debug requests wait until play "
@@ -134,41 +140,37 @@ public final class StatusBar extends HBox {
     private void showBudget(touchline.model.TeamMessageBudget.Snapshot s) {
         long total = s.left() >= 0 ? s.left() + s.used() : -1;
         double f = total > 0 ? (double) s.used() / total : 0;
-        meterName.setText("Messages");
-        meter.setProgress(Math.min(1, f));
-        boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED;
-        boolean warn = s.verdict() == touchline.model.TeamMessageBudget.Verdict.RUNS_OUT_BEFORE_THE_END;
-        meter.setStyle(alarm ? "-fx-accent: #cf222e;" : warn ? "-fx-accent: #bf8700;" : "-fx-accent: #2da44e;");
         java.util.List<touchline.model.DebugRateGuard.OverLimit> over = console.debugRateGuard()
                 .map(touchline.model.DebugRateGuard::overLimit).orElse(java.util.List.of());
-        alarm |= !over.isEmpty();
-        StringBuilder text = new StringBuilder(s.describe());
-        over.forEach(o -> text.append(" · ").append(o.describe()).append(" (limit ")
-                .append(s.profile().debugPacketsPerSecond().describe()).append(")"));
-        meterText.setText(text.toString());
-        meterText.setStyle(alarm ? "-fx-text-fill: #cf222e;" : warn ? "-fx-text-fill: #bf8700;" : "");
-        StringBuilder tip = new StringBuilder("Team " + s.team() + "'s messages under " + s.profile().name()
-                + ": budget " + s.profile().teamMessageBudget().describe() + " per game, at most "
-                + s.profile().maxTeamMessageBytes().describe() + " bytes each. Counted in READY, SET and PLAYING.");
+        boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED
+                || !over.isEmpty();
+        boolean warn = s.verdict() == touchline.model.TeamMessageBudget.Verdict.RUNS_OUT_BEFORE_THE_END;
+        StringBuilder tip = new StringBuilder(s.describe()).append("\n\nTeam ").append(s.team())
+                .append("'s messages under ").append(s.profile().name()).append(": budget ")
+                .append(s.profile().teamMessageBudget().describe()).append(" per game, at most ")
+                .append(s.profile().maxTeamMessageBytes().describe()).append(" bytes each. Counted as the "
+                        + "GameController counts them: in READY, SET and PLAYING only (not before a GameController "
+                        + "is heard, not in INITIAL, not in a penalty shoot-out).");
         for (touchline.model.TeamMessageBudget.Sender r : s.senders()) {
             tip.append(String.format("%n%s: %d messages, %.0f/min, largest %d bytes%s", r.sender(), r.messages(),
                     r.perMinute(), r.largest(), r.oversize() > 0 ? ", " + r.oversize() + " OVERSIZE" : ""));
         }
-        meterTip.setText(tip.toString());
+        over.forEach(o -> tip.append("\n").append(o.describe()).append(" (limit ")
+                .append(s.profile().debugPacketsPerSecond().describe()).append(")"));
+        meter.show(f, alarm ? BudgetMeter.Level.ALARM : warn ? BudgetMeter.Level.WARN : BudgetMeter.Level.CALM,
+                "team " + s.team() + ": " + s.brief() + (over.isEmpty() ? "" : " · debug over limit"), tip.toString());
     }
 
     /** Without a budget guard: the team's traffic against the 1 Mbit/s limit of the leagues before 2026. */
     private void showTraffic() {
-        meterName.setText("Team");
-        meterTip.setText("Team traffic (IP/UDP included) against the 1 Mbit/s league limit (HL 2025; start with "
-                + "--team N for the 2026 team-message budget)");
         TrafficMeter.Reading r = console.traffic().read();
         double f = r.fractionOfLimit();
-        meter.setProgress(Math.min(1, f));
-        meter.setStyle(f > 1 ? "-fx-accent: #cf222e;" : f > 0.8 ? "-fx-accent: #bf8700;" : "-fx-accent: #2da44e;");
-        meterText.setText(String.format("%.0f kbit/s of 1 Mbit/s (%.0f %%)%s", r.teamBitsPerSecond() / 1000, f * 100,
-                r.overShare().isEmpty() ? "" : " · over share: " + r.overShare()));
-        meterText.setStyle("");
+        meter.show(f, f > 1 ? BudgetMeter.Level.ALARM : f > 0.8 ? BudgetMeter.Level.WARN : BudgetMeter.Level.CALM,
+                String.format("team %.0f kbit/s (%.0f %%)%s", r.teamBitsPerSecond() / 1000, f * 100,
+                        r.overShare().isEmpty() ? "" : " · over share: " + r.overShare()),
+                "Team traffic (IP/UDP included) against the 1 Mbit/s league limit (HL 2025; start with --team N "
+                        + "for the 2026 team-message budget)" + (r.overShare().isEmpty() ? ""
+                        : "\nOver their share: " + r.overShare()));
     }
 
     static String bytes(double b) {

@@ -141,15 +141,58 @@ public final class ViewFrame extends BorderPane {
 
     /** Buttons never shrink below their label: the pane scrolls instead (nodes the view has now). */
     private static void keepLabels(javafx.scene.Node node) {
+        if (node instanceof javafx.scene.control.IndexedCell<?>) {
+            return; // a table's or list's cells: their rows are the data, not the view's words
+        }
         if (node instanceof javafx.scene.control.ButtonBase b && b.getText() != null && !b.getText().isEmpty()
                 && b.getMinWidth() == USE_COMPUTED_SIZE) {
             b.setMinWidth(USE_PREF_SIZE);
+        }
+        if (node instanceof Label l && l.getTooltip() == null && !l.getProperties().containsKey(WHOLE_TEXT)) {
+            wholeTextWhenCut(l);
+        }
+        // an empty table's or list's words join the scene only with its skin: reached here from the start
+        if (node instanceof javafx.scene.control.TableView<?> t && t.getPlaceholder() != null) {
+            keepLabels(t.getPlaceholder());
+        }
+        if (node instanceof javafx.scene.control.ListView<?> list && list.getPlaceholder() != null) {
+            keepLabels(list.getPlaceholder());
         }
         if (node instanceof javafx.scene.Parent p) {
             for (javafx.scene.Node child : p.getChildrenUnmodifiable()) {
                 keepLabels(child);
             }
         }
+    }
+
+    /** The key under which a label keeps the tooltip {@link #wholeTextWhenCut} gives it. */
+    private static final String WHOLE_TEXT = "touchline.wholeText";
+
+    /**
+     * A status text cut to "…" in a narrow pane shows the whole of it, as it changes, under the
+     * pointer; a text shown whole has no tooltip (it would only repeat itself). Followed as the
+     * label's width and text change, not only when a pass looks.
+     */
+    private static void wholeTextWhenCut(Label l) {
+        javafx.scene.control.Tooltip whole = new javafx.scene.control.Tooltip();
+        whole.textProperty().bind(l.textProperty());
+        whole.setWrapText(true);
+        whole.setMaxWidth(640);
+        l.getProperties().put(WHOLE_TEXT, whole);
+        javafx.beans.InvalidationListener follow = o -> {
+            if (l.getTooltip() == null || l.getTooltip() == whole) {
+                l.setTooltip(cut(l) ? whole : null);
+            }
+        };
+        l.widthProperty().addListener(follow);
+        l.textProperty().addListener(follow);
+        follow.invalidated(null);
+    }
+
+    /** Whether a label shows less than its text (cut to "…"). */
+    static boolean cut(Label l) {
+        return l.isVisible() && l.getText() != null && !l.getText().isEmpty() && l.getWidth() > 0
+                && l.getWidth() + 0.5 < l.prefWidth(-1);
     }
 
     @Override

@@ -58,12 +58,13 @@ public final class ViewRegistry {
             new ViewSpec("text", "Text", "An option's text lines.", Set.of(DebugKind.TEXT_VALUE), TextView::new),
             new ViewSpec("gamecontroller", "GameController", "Referee a practice game: format, teams, destinations; "
                     + "state, clock, set plays, penalties, cards and robots' liveness; match mode and its override.",
-                    Set.of(), touchline.ui.gamecontroller.GameControllerTab::new),
+                    Set.of(), touchline.ui.gamecontroller.GameControllerTab::new, 1240), // HSL: both teams side by side
             new ViewSpec("gc-robots", "GameController's robots", "Each robot as the field's HSL GameController sees "
                     + "it (return packets: fallen, pose, ball; liveness), with --gc-monitor HOST.", Set.of(),
                     (c, s) -> new touchline.ui.views.GcRobotsView(c)),
             new ViewSpec("nao", "NAO", "Connect to a NAO: connection state, method browser with typed parameters, "
-                    + "stand/sit/turn head/say, walk with W A S D Q E, camera.", Set.of(), touchline.ui.nao.NaoView::new),
+                    + "stand/sit/turn head/say, walk with W A S D Q E, camera.", Set.of(), touchline.ui.nao.NaoView::new,
+                    850), // the connection row up to Connect
             new ViewSpec("replay", "Record & replay", "Record the session to MCAP; open a recording, play, seek by "
                     + "timeline or event, loop, speed; live listening; load team schemas.", Set.of(), (c, s) -> new ReplayView(c)),
             new ViewSpec("viewers", "Viewers", "Serve this console to remote viewers (Foxglove, Lichtblick, another "

@@ -59,19 +59,27 @@ class TeamMessageBudgetTest {
     }
 
     @Test
-    void withoutAGameControllerEveryMessageCountsAgainstTheProfilesBudget() {
+    void withoutAGameControllerMessagesAreHeardButNotCounted() throws IOException {
         TeamMessageBudget budget = new TeamMessageBudget(() -> now[0], hsl, TEAM);
+        send(budget, 30, 10);
+        TeamMessageBudget.Snapshot before = budget.snapshot();
+        assertEquals(0, before.used(), "the state is not known: INITIAL does not count");
+        assertEquals(30, before.notCounted());
+        assertFalse(before.gameControllerHeard());
+        assertEquals(12_000, before.left());
+        assertTrue(before.describe().contains("30 heard, not counted: no GameController heard yet"), before.describe());
+        assertEquals("0 used · 12000 left · no GameController: not counting", before.brief());
+        assertEquals(3, before.senders().size(), "the senders are listed all the same");
+
+        budget.accept(gc(golden("01-kickoff-team5-ready.bin")));
         send(budget, 120, 60);
         TeamMessageBudget.Snapshot s = budget.snapshot();
         assertEquals(120, s.used());
-        assertEquals(12_000 - 120, s.left());
-        assertFalse(s.leftFromGc());
+        assertTrue(s.gameControllerHeard());
         // the last minute in 5 s buckets: the oldest bucket has just left the window
         assertTrue(s.perMinute() >= 110 && s.perMinute() <= 120, "rate " + s.perMinute());
-        assertEquals(3, s.senders().size());
-        assertEquals(40, s.senders().get(0).messages());
-        assertEquals(TeamMessageBudget.Verdict.ON_TRACK, s.verdict(), "no game time known: no warning");
-        assertEquals((long) Math.floor((12_000 - 120) / (s.perMinute() / 60)), s.secondsToEmpty());
+        assertEquals(TeamMessageBudget.Verdict.ON_TRACK, s.verdict(), s.describe());
+        assertTrue(s.brief().startsWith("120 used · " + s.left() + " left · lasts"), s.brief());
     }
 
     @Test
@@ -142,8 +150,9 @@ class TeamMessageBudgetTest {
     }
 
     @Test
-    void theRateForgetsMessagesOlderThanAMinute() {
+    void theRateForgetsMessagesOlderThanAMinute() throws IOException {
         TeamMessageBudget budget = new TeamMessageBudget(() -> now[0], hsl, TEAM);
+        budget.accept(gc(golden("07-playing-after-delay.bin")));
         send(budget, 60, 30);
         now[0] += 120_000_000L;
         TeamMessageBudget.Snapshot s = budget.snapshot();

@@ -55,6 +55,17 @@ final class ConsoleWindowFixture implements AutoCloseable {
         }).get(10, TimeUnit.SECONDS);
     }
 
+    /** The window as on a 1280×720 laptop: 1280 × 650, a screen less a panel and the title bar. */
+    void laptopSize() throws Exception {
+        fxRun(() -> {
+            javafx.stage.Window w = window.scene().getWindow();
+            w.setX(0);
+            w.setY(0);
+            w.setWidth(1280);
+            w.setHeight(650);
+        });
+    }
+
     int port() {
         return console.port();
     }

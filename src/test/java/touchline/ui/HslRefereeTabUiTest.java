@@ -320,12 +320,8 @@ class HslRefereeTabUiTest {
 
     @Test
     void hsl20IsTheDefaultAndTheRefereeBoxFitsA1280By720WindowWithoutScrolling() throws Exception {
+        ui.laptopSize();
         ui.fxRun(() -> {
-            javafx.stage.Window w = ui.window.scene().getWindow();
-            w.setX(0);
-            w.setY(0);
-            w.setWidth(1280);
-            w.setHeight(650); // a 1280x720 screen less a panel and the title bar, as in ViewsFitUiTest
             ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", "")))));
         });
         GameControllerTabDriver gc = new GameControllerTabDriver(ui);
@@ -363,5 +359,37 @@ class HslRefereeTabUiTest {
             return out;
         });
         assertEquals(List.of(), problems);
+    }
+
+    /**
+     * A long match-mode notice (a far GameController's address, a hint) never widens the tab: under
+     * load the notice got longer in the whole suite ("game was READY … ms ago (…), now says …"),
+     * the tab grew wider than its pane, the frame scrolled and every referee control moved. The
+     * notice takes one line of the room left, its whole text in its tooltip.
+     */
+    @Test
+    void aLongMatchNoticeNeitherWidensTheTabNorMovesTheRefereesControls() throws Exception {
+        ui.laptopSize();
+        ui.fxRun(() -> {
+            ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("gamecontroller", "")))));
+        });
+        GameControllerTabDriver gc = new GameControllerTabDriver(ui);
+        gc.start(field, "hsl20");
+        Node tab = gc.node();
+        ui.await(30, () -> tab.lookup("#gamecontroller-hsl") != null);
+        List<javafx.geometry.Bounds> before = settledPlaces(tab);
+        double widthBefore = ui.fx(() -> tab.getLayoutBounds().getWidth());
+        String far = "the remote console's GameController at 2001:db8:85a3:0:0:8a2e:370:7334%enp0s31f6:3838";
+        // observed again on every look, so the claim never goes stale however slow the machine
+        ui.await(30, () -> {
+            ui.console.matchMode().observe(GameControlData.STATE_PLAYING, far);
+            return text(tab, "#match-notice").contains(far);
+        });
+        ui.console.matchMode().observe(GameControlData.STATE_PLAYING, far);
+        List<javafx.geometry.Bounds> after = laidOutPlaces(tab);
+        assertEquals(widthBefore, ui.fx(() -> tab.getLayoutBounds().getWidth()), "the tab kept its width");
+        assertEquals(before, after, "nothing moves when the notice grows");
+        String tip = ui.fx(() -> ((Label) tab.lookup("#match-notice")).getTooltip().getText());
+        assertTrue(tip.contains(far), tip);
     }
 }

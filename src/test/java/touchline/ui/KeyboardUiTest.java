@@ -105,6 +105,28 @@ class KeyboardUiTest {
         assertTrue(sheet.contains("F1") && sheet.contains("Help for this view"), sheet);
         assertTrue(sheet.contains("Alt+V") && sheet.contains("the View menu"), sheet);
         assertTrue(sheet.contains("Space") && sheet.contains("Debug options"), sheet);
+        // the referee's keys, each with what it does (issue 36)
+        String referee = sheet.substring(sheet.indexOf("\nGameController\n"));
+        for (String key : List.of("Space", "R", "S", "P", "B", "D", "A", "Esc", "Ctrl+Z")) {
+            assertTrue(referee.lines().anyMatch(l -> l.trim().startsWith(key + " ")), key + " missing:\n" + referee);
+        }
+    }
+
+    @Test
+    void f1InTheGameControllerTabListsTheRefereesKeys() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                List.of(new LayoutNode.Entry("gamecontroller", ""))))));
+        ui.await(30, () -> ui.robot.lookup("#gc-start").tryQuery().map(n -> n.getScene() != null).orElse(false));
+        ui.fxRun(() -> {
+            ui.window.scene().getWindow().requestFocus();
+            ui.robot.lookup("#gc-start").query().requestFocus();
+        });
+        ui.await(30, () -> ui.window.scene().getFocusOwner() == ui.robot.lookup("#gc-start").query());
+        ui.robot.type(KeyCode.F1);
+        ui.await(30, () -> helpWindow().isPresent());
+        String help = helpText();
+        assertTrue(help.contains("stop or resume play") && help.contains("Ready") && help.contains("dropped ball")
+                && help.contains("+1 minute") && help.contains("forget the call"), help);
     }
 
     @Test

@@ -124,7 +124,7 @@ class StatusBarUiTest {
             long total = ui.console.matchMode().heldCount();
             ui.await(30, () -> ui.console.matchMode().heldCount() > total);
             ui.await(30, () -> ui.window.status().lookup("#status-waiting") instanceof Label l
-                    && l.getTooltip().getText().startsWith(ui.console.matchMode().heldCount() + " requests held back"));
+                    && l.getTooltip().getText().contains(ui.console.matchMode().heldCount() + " send attempts held back"));
             assertTrue(text("#status-waiting").equals("1 request waiting now"));
             assertFalse(text("#status-rates").contains("held") || ui.fx(() -> ((Label) ui.window.status().getChildren().get(2))
                     .getText()).contains("held"), "the running total is in the tooltip only");

@@ -4,7 +4,6 @@ import javafx.geometry.Bounds;
 import javafx.scene.Node;
 import javafx.scene.control.ButtonBase;
 import javafx.scene.control.Label;
-import javafx.stage.Window;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
@@ -32,13 +31,7 @@ class ViewsFitUiTest {
     @BeforeEach
     void open() throws Exception {
         ui = new ConsoleWindowFixture(layouts);
-        ui.fxRun(() -> {
-            Window w = ui.window.scene().getWindow();
-            w.setX(0);
-            w.setY(0);
-            w.setWidth(1280);
-            w.setHeight(650); // a 1280x720 screen less a panel and the title bar
-        });
+        ui.laptopSize();
     }
 
     @AfterEach
@@ -63,6 +56,13 @@ class ViewsFitUiTest {
         }
         if (n instanceof Label name && name.getText() != null && name.getText().length() <= 12 && cut(name)) {
             problems.add(view + ": field name \"" + name.getText() + "\" cut"); // "Robot", "Source", "RPC" …
+        }
+        if (n instanceof javafx.scene.control.IndexedCell<?>) {
+            return; // rows of data: a cell cut to "…" is the table's business
+        }
+        if (n instanceof Label t && t.getTooltip() == null && t.getText() != null && t.getText().length() > 12
+                && t.getWidth() > 0 && cut(t) && !(t.getParent() != null && t.getParent().getStyleClass().contains("column-header"))) {
+            problems.add(view + ": text \"" + t.getText() + "\" cut with no tooltip");
         }
         if (n instanceof Label h && h.getParent() != null && h.getParent().getStyleClass().contains("column-header")) {
             HEADERS_SEEN.add(view + "/" + h.getText());
@@ -179,5 +179,85 @@ class ViewsFitUiTest {
         Bounds status = ui.fx(() -> ui.window.status().localToScene(ui.window.status().getLayoutBounds()));
         double width = ui.fx(() -> ui.window.scene().getWidth());
         org.junit.jupiter.api.Assertions.assertTrue(status.getMaxX() <= width + 0.5, status + " in " + width);
+    }
+
+    /** In the demo layout at 1280 pixels the Robots table shows Game and Authenticity without a sideways scroll. */
+    @Test
+    void theRobotsTableShowsGameAndAuthenticityInTheDemoLayout() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+        ui.await(30, () -> ui.window.scene().lookup("#robot-table") instanceof javafx.scene.control.TableView<?> t
+                && FramePulse.showing(t) && t.getWidth() > 0);
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 5);
+        String where = ui.fx(() -> {
+            javafx.scene.control.TableView<?> table = (javafx.scene.control.TableView<?>) ui.window.scene().lookup("#robot-table");
+            table.applyCss();
+            table.layout();
+            double right = 0;
+            StringBuilder out = new StringBuilder();
+            for (javafx.scene.control.TableColumn<?, ?> c : table.getVisibleLeafColumns()) {
+                right += c.getWidth();
+                if ((c.getText().equals("Game") || c.getText().equals("Authenticity")) && right > table.getWidth() + 0.5) {
+                    out.append(c.getText()).append(" ends at ").append(right).append(" of ").append(table.getWidth()).append("; ");
+                }
+            }
+            return out.toString();
+        });
+        assertEquals("", where);
+    }
+
+    /** How much wider than its pane the view's content is (0: it fits, no sideways scroll). */
+    private double overflow(String id) throws Exception {
+        return ui.fx(() -> {
+            Shell.OpenView v = ui.window.shell().openViews().stream().filter(o -> o.spec().id().equals(id)).findFirst()
+                    .orElseThrow();
+            javafx.scene.Parent root = ui.window.scene().getRoot();
+            root.applyCss();
+            root.layout();
+            Node n = v.view().node();
+            while (n != null && !(n instanceof javafx.scene.control.ScrollPane)) {
+                n = n.getParent();
+            }
+            if (!(n instanceof javafx.scene.control.ScrollPane sp) || sp.getContent() == null) {
+                return 0.0;
+            }
+            return Math.max(0, sp.getContent().getLayoutBounds().getWidth() - sp.getViewportBounds().getWidth());
+        });
+    }
+
+    /**
+     * The default (demo) layout at 1280×720 is usable without dragging a divider: the GameController
+     * (both teams), the NAO view (Connect) and the Network console opened into it show their
+     * controls without a sideways scroll (they get a row of the window's width when no pane is wide enough).
+     */
+    @Test
+    void wideViewsOpenedIntoTheDemoLayoutNeedNoDividerDragged() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (String id : List.of("gamecontroller", "nao", "network")) {
+            ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+            long restored = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > restored + 5);
+            if (id.equals("gamecontroller")) {
+                field = new java.net.DatagramSocket(new java.net.InetSocketAddress("127.0.0.1", 0));
+                new GameControllerTabDriver(ui).start(field, "hsl20"); // opens the tab as the View menu does
+                ui.await(30, () -> ui.window.scene().lookup("#gamecontroller-hsl") != null);
+            } else {
+                ui.fxRun(() -> ui.window.open(id, ViewSource.NONE));
+            }
+            ui.await(30, () -> ui.fx(() -> ui.window.shell().openViews().stream()
+                    .anyMatch(v -> v.spec().id().equals(id) && FramePulse.showing(v.frame()))));
+            long start = ui.fx(() -> ui.window.pulse().frames());
+            ui.await(30, () -> ui.window.pulse().frames() > start + 10);
+            double over = overflow(id);
+            if (over > 0.5) {
+                problems.add(id + " is " + over + " px wider than its pane");
+            }
+            if (id.equals("gamecontroller")) {
+                ui.console.stopGameController();
+                field.close();
+                field = null;
+            }
+        }
+        assertEquals(List.of(), problems);
     }
 }

@@ -52,7 +52,8 @@ public final class MatchMode {
     /** Why the console is silent in its first moments, before any GameController was heard. */
     private static final String LISTENING = "listening for a GameController before talking to robots";
 
-    private record Heard(int state, long atMs) {
+    /** A state heard from a source; {@code reported} when a robot repeats what it heard from a GameController. */
+    private record Heard(int state, long atMs, boolean reported) {
     }
 
     /**
@@ -75,6 +76,7 @@ public final class MatchMode {
     private final List<OverrideEntry> overrideLog = new ArrayList<>();
     private final List<Consumer<Boolean>> listeners = new CopyOnWriteArrayList<>();
     private long heldCount;
+    private long heldSincePlay;
     private boolean override;
     private boolean lastMaySend = true;
     private long listeningUntilMs = Long.MIN_VALUE;
@@ -147,8 +149,21 @@ public final class MatchMode {
 
     /** Records a game state byte (0 INITIAL ... 4 FINISHED) heard from, or sent by, {@code source}. */
     public void observe(int gameState, String source) {
+        observe(gameState, source, false);
+    }
+
+    /**
+     * Records the game state a robot reports (what it last heard from a GameController). It keeps
+     * match mode on like any claim, but a GameController heard at the same time is named first: the
+     * robot only repeats it.
+     */
+    public void observeReported(int gameState, int robot) {
+        observe(gameState, "robot " + robot, true);
+    }
+
+    private void observe(int gameState, String source, boolean reported) {
         synchronized (this) {
-            Heard h = new Heard(gameState, clock.millis());
+            Heard h = new Heard(gameState, clock.millis(), reported);
             heard.put(source, h);
             if (GameControlData.isPlay(gameState)) {
                 lastPlayClaim.put(source, h);
@@ -180,6 +195,7 @@ public final class MatchMode {
         }
         synchronized (this) {
             heldCount++;
+            heldSincePlay++;
             held.addLast(what);
             while (held.size() > HELD_LOG) {
                 held.removeFirst();
@@ -225,8 +241,9 @@ public final class MatchMode {
             if (override) {
                 return "MATCH MODE OVERRIDDEN: " + play + " but the console may send";
             }
-            return "Match mode: " + play + ", console silent except GameController; "
-                    + heldCount + " request(s) held back";
+            return "Match mode: " + play + ", console silent except GameController; " + heldSincePlay
+                    + (heldSincePlay == 1 ? " send attempt" : " send attempts")
+                    + " held back since play began (retries included)";
         }
     }
 
@@ -243,6 +260,11 @@ public final class MatchMode {
             if (now == null) { // forgotten in a flood of other sources; its claim of play is kept
                 return "game was " + GameControlData.stateName(lastPlayClaim.get(source).state) + " (" + source
                         + "); silent until " + PLAY_MEMORY_MS + " ms after play";
+            }
+            if (GameControlData.isPlay(now.state) && now.reported && !gameControllerHeard()) {
+                return "game is " + GameControlData.stateName(now.state) + " (" + source + " reports it; no "
+                        + "GameController heard for " + STALE_MS / 1000 + " s: the robots repeat the last state they "
+                        + "heard; start a GameController and finish the game, or override match mode with a reason)";
             }
             if (GameControlData.isPlay(now.state)) {
                 return "game is " + GameControlData.stateName(now.state) + " (" + source + ")";
@@ -273,6 +295,9 @@ public final class MatchMode {
             now = override || source == null && !listening();
             changed = now != lastMaySend;
             lastMaySend = now;
+            if (changed && !now) {
+                heldSincePlay = 0;
+            }
             if (changed && now) {
                 held.clear();
             }
@@ -303,14 +328,30 @@ public final class MatchMode {
         return listening() && !override && playingSource() == null;
     }
 
-    /** The source whose claim of play keeps match mode on (as "source", or "source, earlier"), or null. */
+    /** Whether a source other than a robot's report was heard within {@link #STALE_MS}. */
+    private boolean gameControllerHeard() {
+        long now = clock.millis();
+        return heard.values().stream().anyMatch(h -> !h.reported && now - h.atMs <= STALE_MS);
+    }
+
+    /**
+     * The source whose claim of play keeps match mode on, or null: a GameController before the
+     * robots that repeat it, then the most recent claim of play.
+     */
     private String playingSource() {
         long now = clock.millis();
+        String reported = null;
         for (Map.Entry<String, Heard> e : heard.entries()) {
             Heard h = e.getValue();
             if (now - h.atMs <= STALE_MS && GameControlData.isPlay(h.state)) {
-                return e.getKey();
+                if (!h.reported) {
+                    return e.getKey();
+                }
+                reported = reported == null ? e.getKey() : reported;
             }
+        }
+        if (reported != null) {
+            return reported;
         }
         for (Map.Entry<String, Heard> e : lastPlayClaim.entries()) {
             if (now - e.getValue().atMs <= PLAY_MEMORY_MS) {

@@ -62,15 +62,18 @@ public final class GameControllerTab implements View {
     private final Label priority = new Label();
     private final Label monitors = new Label();
     private final Label matchNotice = new Label();
+    private final javafx.scene.control.Tooltip matchNoticeTip = new javafx.scene.control.Tooltip();
     private final CheckBox override = new CheckBox("Override match mode (logged)");
     private final TextField overrideReason = new TextField();
     private final VBox setup;
     private View referee;
     private String monitorLine = "";
     private EmbeddedGameController shown;
+    private final touchline.ui.ConsoleStatus status;
 
     public GameControllerTab(ViewContext context, ViewSource source) {
         this.console = context.console();
+        this.status = new touchline.ui.ConsoleStatus(console);
         this.remembered = new RememberedSetup(context.settingsDir());
         root.setId("gamecontroller-tab");
         for (GcProfile p : GcProfile.values()) {
@@ -110,8 +113,19 @@ public final class GameControllerTab implements View {
         override.setId("gc-override");
         override.setOnAction(e -> toggleOverride());
         matchNotice.setId("match-notice");
-        matchNotice.setWrapText(true);
-        FlowPane bottom = new FlowPane(8, 4, matchNotice, override, overrideReason);
+        // one line that takes the room left and never asks for more: a longer notice (READY's, a
+        // hint) must not widen the tab, or the frame scrolls and every referee button moves; the
+        // whole text is in the tooltip
+        matchNotice.setMinWidth(0);
+        matchNotice.setPrefWidth(0);
+        matchNotice.setMaxWidth(Double.MAX_VALUE);
+        matchNotice.setTooltip(matchNoticeTip);
+        override.setMinWidth(javafx.scene.layout.Region.USE_PREF_SIZE);
+        overrideReason.setPrefColumnCount(16);
+        HBox overriding = new HBox(8, override, overrideReason);
+        overriding.setAlignment(javafx.geometry.Pos.CENTER_LEFT);
+        // two lines of fixed height: the notice on its own (the whole width), the override below
+        VBox bottom = new VBox(4, matchNotice, overriding);
         bottom.setPadding(new Insets(4, 8, 4, 8));
         root.setCenter(setup);
         root.setBottom(bottom);
@@ -246,7 +260,11 @@ public final class GameControllerTab implements View {
             }
         }
         String notice = console.matchMode().notice();
-        matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots." : notice);
+        // the same words as the status bar: attempts held back (retries count) beside the requests waiting now
+        int waiting = status.waitingNow();
+        matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots."
+                : notice + "; " + (waiting == 1 ? "1 request waiting now" : waiting + " requests waiting now"));
+        matchNoticeTip.setText(matchNotice.getText());
         matchNotice.setStyle(notice.isEmpty() ? "" : "-fx-text-fill: #e0a000; -fx-font-weight: bold;");
     }
 

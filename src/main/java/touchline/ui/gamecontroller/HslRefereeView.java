@@ -163,20 +163,12 @@ public final class HslRefereeView implements View {
         if (e.isShortcutDown() || e.isAltDown()) {
             return;
         }
-        HslAction action = switch (e.getCode()) {
-            case SPACE -> model.stopOrResume();
-            case R -> model.ready();
-            case S -> model.set();
-            case P -> model.play();
-            case B -> model.ballFree();
-            case D -> model.droppedBall();
-            case A -> model.additionalMinute();
-            default -> null;
-        };
-        if (e.getCode() == KeyCode.ESCAPE && model.chosen() != null) {
+        RefereeKey key = RefereeKey.of(e.getCode()).orElse(null);
+        if (key == RefereeKey.FORGET_CALL && model.chosen() != null) {
             buttons.act(() -> model.choose(null));
             e.consume();
-        } else if (action != null) {
+        } else if (key != null && key.action(model) != null) {
+            HslAction action = key.action(model);
             buttons.act(() -> model.perform(action));
             e.consume();
         }

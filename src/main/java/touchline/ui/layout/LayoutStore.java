@@ -55,6 +55,31 @@ public final class LayoutStore {
         return Optional.of(codec.read(Files.readString(p, StandardCharsets.UTF_8)));
     }
 
+    /**
+     * Gives a saved layout another name; an existing layout of that name is never overwritten.
+     *
+     * @throws IOException with the reason in words: no such layout, the name is taken, the disk failed
+     */
+    public void rename(String from, String to) throws IOException {
+        Path source = dir.resolve(fileName(from));
+        Path target = dir.resolve(fileName(to));
+        if (!Files.isRegularFile(source)) {
+            throw new IOException("no layout \"" + from + "\"");
+        }
+        if (source.equals(target)) {
+            return;
+        }
+        if (Files.exists(target)) {
+            throw new IOException("a layout \"" + to + "\" exists already");
+        }
+        Files.move(source, target);
+    }
+
+    /** Deletes a saved layout; false when there was none of that name. */
+    public boolean delete(String name) throws IOException {
+        return Files.deleteIfExists(dir.resolve(fileName(name)));
+    }
+
     public List<String> names() {
         List<String> out = new ArrayList<>();
         if (!Files.isDirectory(dir)) {

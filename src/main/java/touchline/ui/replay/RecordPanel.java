@@ -14,8 +14,6 @@ import touchline.record.RecorderStats;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.LocalDateTime;
-import java.time.format.DateTimeFormatter;
 import java.util.Locale;
 
 /**
@@ -25,10 +23,9 @@ import java.util.Locale;
  */
 final class RecordPanel {
 
-    static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyy-MM-dd-HHmmss", Locale.ROOT);
-
     private final Console console;
     private final WorkQueue work;
+    private final RecordingName name;
     private final TextField path = new TextField();
     private final Button toggle = new Button("Start recording");
     private final Label counters = new Label("Not recording.");
@@ -41,7 +38,8 @@ final class RecordPanel {
         this.console = console;
         this.work = work;
         path.setId("record-path");
-        path.setText(defaultFile(console.clock().nowMicros()).toString());
+        this.name = new RecordingName(console.clock(), java.time.ZoneId.systemDefault());
+        path.setText(name.offer());
         toggle.setId("record-toggle");
         counters.setId("record-counters");
         failure.setId("record-failure");
@@ -57,13 +55,6 @@ final class RecordPanel {
         Label title = new Label("Record");
         title.setStyle("-fx-font-weight: bold;");
         root = new VBox(6, title, row, counters, failure);
-    }
-
-    /** {@code recordings/touchline-<date-time>.mcap} under the working directory. */
-    static Path defaultFile(long nowMicros) {
-        LocalDateTime now = LocalDateTime.ofInstant(java.time.Instant.EPOCH.plusNanos(nowMicros * 1000),
-                java.time.ZoneId.systemDefault());
-        return Path.of("recordings", "touchline-" + STAMP.format(now) + ".mcap");
     }
 
     Node node() {
@@ -98,8 +89,7 @@ final class RecordPanel {
             });
             return;
         }
-        String text = path.getText().trim();
-        Path file = Path.of(text.isEmpty() ? defaultFile(console.clock().nowMicros()).toString() : text);
+        Path file = name.forStart(path.getText());
         toggle.setDisable(true);
         work.run(() -> {
             try {
@@ -127,7 +117,7 @@ final class RecordPanel {
             toggle.setText(now ? "Stop recording" : "Start recording");
             path.setDisable(now);
             if (!now) {
-                path.setText(defaultFile(console.clock().nowMicros()).toString()); // the next recording must not overwrite this one
+                path.setText(name.offer()); // the next recording must not overwrite this one
             }
         }
         if (s != null) {

@@ -60,13 +60,16 @@ public final class RobotsView implements View {
             }
         });
         table.getColumns().add(online);
+        // what a team watches in a game first (Game and Authenticity inside the demo layout's left pane
+        // at 1280 pixels, no sideways scroll), the traffic after
         table.getColumns().add(column("ID", r -> Integer.toString(r.id()), 44));
-        table.getColumns().add(column("Name", r -> text(r.label()), 100)); // "robot 3 (replay)" for a replayed one
-        table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
+        table.getColumns().add(column("Name", r -> text(r.label()), 80)); // "robot 3 (replay)" for a replayed one
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
+        table.getColumns().add(column("Game", r -> text(r.gameStateShown()), 80));
+        table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 100));
         table.getColumns().add(column("Role", r -> text(r.role()), 90));
         table.getColumns().add(column("State", r -> text(r.state()), 90));
-        table.getColumns().add(column("Game", r -> text(r.gameStateShown()), 80));
+        table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
         table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
         table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.console().replayClock()
                 : context.console().clock()).nowMicros() - r.lastSeenMicros()), 76));
@@ -74,7 +77,6 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
         table.getColumns().add(column("Malformed", r -> Long.toString(r.malformed()), 72));
-        table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 150));
         Function<RobotSnapshot, String> address = r -> r.address() == null ? "" : r.address().getHostString()
                 + ":" + r.address().getPort();
         table.getColumns().add(column("Address", address, 130, "127.000.000.100:65535"));

@@ -27,7 +27,53 @@ class MatchModeTest {
         assertTrue(mode.hold("debug option vision.ball"));
         assertEquals(List.of("debug option vision.ball"), mode.heldBack());
         assertTrue(mode.notice().contains("PLAYING"), mode.notice());
-        assertTrue(mode.notice().contains("1 request(s) held back"), mode.notice());
+        assertTrue(mode.notice().contains("1 send attempt held back since play began (retries included)"), mode.notice());
+    }
+
+    /**
+     * "706 request(s) held back" beside "0 requests waiting now" read as a contradiction: the notice
+     * counts attempts (a retry each second counts again) since this play began, and says so.
+     */
+    @Test
+    void theNoticeCountsAttemptsSincePlayBeganAndSaysThatRetriesCount() {
+        mode.observe(3, "gc");
+        for (int i = 0; i < 5; i++) {
+            mode.hold("console request");
+        }
+        assertTrue(mode.notice().endsWith("5 send attempts held back since play began (retries included)"), mode.notice());
+        mode.observe(4, "gc");
+        clock.advance(MatchMode.PLAY_MEMORY_MS + 1);
+        assertEquals("", mode.notice());
+        mode.observe(3, "gc");
+        mode.hold("console request");
+        assertTrue(mode.notice().endsWith("1 send attempt held back since play began (retries included)"), mode.notice());
+        assertEquals(6, mode.heldCount(), "the total since the console started stays");
+    }
+
+    /** Our own game is ours, not "robot 1"'s: a robot only repeats what it heard from a GameController. */
+    @Test
+    void aGameControllerIsNamedBeforeTheRobotsThatRepeatIt() {
+        for (int robot = 1; robot <= 5; robot++) {
+            mode.observeReported(3, robot);
+        }
+        mode.observe(3, "this console's GameController");
+        assertEquals("game is PLAYING (this console's GameController)", mode.play());
+    }
+
+    /**
+     * The embedded GameController stopped mid-game: robots go on reporting PLAYING, the last state
+     * they heard. The console stays silent (the robots may still play) and says why and what to do.
+     */
+    @Test
+    void robotsStillReportingPlayWithoutAGameControllerGetAHint() {
+        mode.observe(3, "this console's GameController");
+        mode.observeReported(3, 1);
+        clock.advance(MatchMode.STALE_MS + 1);
+        mode.observeReported(3, 1);
+        assertFalse(mode.mayConsoleSend());
+        String play = mode.play();
+        assertTrue(play.startsWith("game is PLAYING (robot 1 reports it; no GameController heard for"), play);
+        assertTrue(play.contains("start a GameController and finish the game, or override match mode"), play);
     }
 
     /**

@@ -96,7 +96,9 @@ class GameControllerTabTest {
                 // granted (root, CAP_SYS_NICE) or refused with the reason: the tab says which
                 assertEquals(outcome.isEmpty(), priority.startsWith("Sender: real-time priority"), priority);
                 assertEquals(!outcome.isEmpty(), priority.contains("real-time refused (" + outcome + ")"), priority);
-                assertTrue(((javafx.scene.control.Label) tab.node().lookup("#match-notice")).getText().contains("PLAYING"));
+                String notice = ((javafx.scene.control.Label) tab.node().lookup("#match-notice")).getText();
+                assertTrue(notice.contains("game is PLAYING (this console's GameController)"), notice);
+                assertTrue(notice.endsWith("held back since play began (retries included); 0 requests waiting now"), notice);
                 ((Button) tab.node().lookup("#gc-stop")).fire();
                 return null;
             });

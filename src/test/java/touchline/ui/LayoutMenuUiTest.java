@@ -1,0 +1,117 @@
+package touchline.ui;
+
+import javafx.scene.Node;
+import javafx.scene.control.Button;
+import javafx.scene.control.Menu;
+import javafx.scene.control.MenuBar;
+import javafx.scene.control.MenuItem;
+import javafx.stage.Stage;
+import javafx.stage.Window;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import touchline.ui.layout.LayoutStore;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The Layout menu: saved layouts can be renamed and deleted, and the name dialog shows its buttons whole. */
+@Tag("ui")
+class LayoutMenuUiTest {
+
+    @TempDir
+    Path layouts;
+    private ConsoleWindowFixture ui;
+
+    @BeforeEach
+    void open() throws Exception {
+        ui = new ConsoleWindowFixture(layouts);
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        ui.close();
+    }
+
+    private Menu menu(String id) throws Exception {
+        return ui.fx(() -> {
+            MenuBar bar = (MenuBar) ui.window.scene().lookup(".menu-bar");
+            return (Menu) bar.getMenus().get(0).getItems().stream().filter(i -> id.equals(i.getId())).findFirst().orElseThrow();
+        });
+    }
+
+    private List<String> listed(String id) throws Exception {
+        Menu m = menu(id);
+        return ui.fx(() -> m.getItems().stream().map(MenuItem::getText).toList());
+    }
+
+    private String said() throws Exception {
+        return ui.fx(() -> ((javafx.scene.control.Label) ui.window.status().lookup("#status-message")).getText());
+    }
+
+    @Test
+    void savedLayoutsCanBeRenamedAndDeleted() throws Exception {
+        ui.fxRun(() -> {
+            try {
+                ui.window.saveLayout("practice");
+                ui.window.saveLayout("match");
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        });
+        LayoutStore store = new LayoutStore(layouts);
+        assertTrue(listed("menu-rename-layout").containsAll(List.of("\"match\"…", "\"practice\"…")), listed("menu-rename-layout").toString());
+        assertTrue(listed("menu-delete-layout").containsAll(List.of("\"match\"…", "\"practice\"…")));
+
+        ui.fxRun(() -> ui.window.renameLayout("practice", "training"));
+        assertEquals("layout \"practice\" is now \"training\"", said());
+        assertTrue(store.names().contains("training") && !store.names().contains("practice"), store.names().toString());
+        assertTrue(listed("menu-rename-layout").contains("\"training\"…"));
+
+        ui.fxRun(() -> ui.window.renameLayout("training", "match"));
+        assertEquals("could not rename layout \"training\": a layout \"match\" exists already", said());
+        assertTrue(store.names().containsAll(List.of("training", "match")), "nothing overwritten");
+
+        ui.fxRun(() -> ui.window.deleteLayout("match"));
+        assertEquals("layout \"match\" deleted", said());
+        assertTrue(!store.names().contains("match") && !listed("menu-delete-layout").contains("\"match\"…"));
+    }
+
+    private Optional<Stage> dialog(String title) {
+        return Window.getWindows().stream().filter(w -> w instanceof Stage s && title.equals(s.getTitle()) && s.isShowing())
+                .map(w -> (Stage) w).findFirst();
+    }
+
+    @Test
+    void theSaveLayoutDialogShowsItsButtonsWhole() throws Exception {
+        // remembered smaller than its content (a window manager's frame takes ~30 px of a remembered
+        // 200 px, Monocle has none): the dialog still grows to show its buttons whole
+        for (String key : List.of("save-layout", "name-dialog")) {
+            ui.window.places().put(key, new WindowPlace(100, 100, 420, 120, false));
+        }
+        MenuItem save = ui.fx(() -> ((MenuBar) ui.window.scene().lookup(".menu-bar")).getMenus().get(0).getItems().get(0));
+        ui.fxRun(() -> javafx.application.Platform.runLater(save::fire)); // it waits for an answer: do not wait here
+        ui.await(30, () -> dialog("Save layout").isPresent());
+        Stage stage = ui.fx(() -> dialog("Save layout").orElseThrow());
+        ui.await(30, () -> {
+            javafx.scene.Scene scene = stage.getScene();
+            scene.getRoot().applyCss();
+            scene.getRoot().layout();
+            for (Node n : scene.getRoot().lookupAll(".button")) {
+                javafx.geometry.Bounds b = n.localToScene(n.getLayoutBounds());
+                if (b.getMaxY() > scene.getHeight() + 0.5 || b.getMaxX() > scene.getWidth() + 0.5
+                        || ((Button) n).getHeight() + 0.5 < ((Button) n).prefHeight(-1)) {
+                    return false;
+                }
+            }
+            return scene.getRoot().lookupAll(".button").size() == 2;
+        });
+        ui.fxRun(stage::close);
+    }
+}
