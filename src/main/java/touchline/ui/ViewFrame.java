@@ -150,6 +150,10 @@ public final class ViewFrame extends BorderPane {
         }
         if (node instanceof Label l && l.getTooltip() == null && !l.getProperties().containsKey(WHOLE_TEXT)) {
             wholeTextWhenCut(l);
+        } else if (node instanceof Label l && l.getProperties().get(WHOLE_TEXT) instanceof javafx.scene.control.Tooltip whole
+                && (l.getTooltip() == null || l.getTooltip() == whole)) {
+            // the text's own width can change without the label's (its font or style applied later)
+            l.setTooltip(cut(l) ? whole : null);
         }
         // an empty table's or list's words join the scene only with its skin: reached here from the start
         if (node instanceof javafx.scene.control.TableView<?> t && t.getPlaceholder() != null) {
