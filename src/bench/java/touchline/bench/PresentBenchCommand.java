@@ -19,7 +19,7 @@ import java.util.concurrent.Callable;
 
 /**
  * What JavaFX costs for each frame it puts on screen, whatever the frame shows (issue 14's
- * budget, docs/benchmarks.md "Thirteenth session"). A window of the console's size shows one
+ * budget, docs/archive/benchmarks-sessions.md "Thirteenth session"). A window of the console's size shows one
  * canvas; in each phase a 2 × 2-pixel square on it changes colour {@code fps} times a second,
  * so each of those frames is drawn and presented but almost nothing is painted. The baseline in
  * the same run: the same window with JavaFX's pulse running and nothing changing. Reported per

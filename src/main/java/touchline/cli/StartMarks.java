@@ -11,7 +11,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * The console's two start marks on standard error, once each: the window shown and the first
  * robot's data in the model, with the milliseconds since the JVM started. {@code ./touchline bench
  * start} reads them; a user sees how long the start took. With {@value #TRAINING_PROPERTY}{@code =N}
- * (the class-data-sharing training run of the launcher and of the package, docs/benchmarks.md
+ * (the class-data-sharing training run of the launcher and of the package, docs/archive/benchmarks-sessions.md
  * "Start") the window closes itself after N frames ({@code ConsoleWindow.closeAfterFrames}), so the JVM exits normally and writes its
  * archive: 1 frame archives what the window needs before its views, more frames the views too.
  */

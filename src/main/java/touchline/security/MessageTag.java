@@ -13,7 +13,7 @@ import java.security.GeneralSecurityException;
  * request captured in an earlier boot fails after a reboot), and {@link #FROM_ROBOT} ('R') for
  * what a robot sends (its boot is in its counter), so a robot's datagram reflected back to it
  * never passes. Version 1 ("TLA1", Touchline 0.5) was HMAC-SHA-512: three times the cost per
- * datagram on the console and about twice on a Cortex-M3, for the same 128-bit tag (docs/benchmarks.md,
+ * datagram on the console and about twice on a Cortex-M3, for the same 128-bit tag (docs/archive/benchmarks-sessions.md,
  * "Eleventh session"). Pure; one instance per thread (a Mac is not thread-safe).
  */
 public final class MessageTag {

@@ -92,7 +92,7 @@ public final class ConsoleWindow {
     /**
      * Shows the window; with {@code viewsAfterShown} the window opens with its menus and status bar
      * first and the layout's views are built in the next turn of the JavaFX thread, so the window
-     * is on screen a second or more sooner (the console's start, docs/benchmarks.md "Start").
+     * is on screen a second or more sooner (the console's start, docs/archive/benchmarks-sessions.md "Start").
      */
     public ConsoleWindow show(Stage stage, boolean viewsAfterShown) {
         this.stage = stage;

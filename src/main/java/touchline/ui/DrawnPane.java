@@ -6,7 +6,7 @@ import javafx.scene.layout.Pane;
  * A pane a view draws into itself (a canvas, its own pixels): it tells the view when it changed
  * size, since a redraw without new data is due then. The pane is opaque: JavaFX then starts a
  * redraw of what is drawn at this pane instead of repainting every background behind it (the
- * views, tabs and splits around it) in each frame it changes (docs/benchmarks.md, "Twelfth
+ * views, tabs and splits around it) in each frame it changes (docs/archive/benchmarks-sessions.md, "Twelfth
  * session").
  */
 public abstract class DrawnPane extends Pane {

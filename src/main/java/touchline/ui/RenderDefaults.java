@@ -11,7 +11,7 @@ public final class RenderDefaults {
      * How many separate changed areas JavaFX repaints in one frame before it merges them: its 6
      * merged the plot, the debug console and the status bar into boxes painted from the window's
      * root, every background under them included; 12 keeps each view's change its own (the most
-     * is 15; docs/benchmarks.md "Twelfth session").
+     * is 15; docs/archive/benchmarks-sessions.md "Twelfth session").
      */
     static final String DIRTY_REGIONS = "12";
 

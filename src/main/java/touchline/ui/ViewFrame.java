@@ -128,7 +128,7 @@ public final class ViewFrame extends BorderPane {
     /**
      * The scroll pane's skin caches its viewport as an image: a view that changes is then drawn whole
      * into that image and the image into the window, every frame (58 % of the render thread's
-     * time with the demo layout in software, docs/benchmarks.md "Twelfth session"). Without the cache only what changed is drawn.
+     * time with the demo layout in software, docs/archive/benchmarks-sessions.md "Twelfth session"). Without the cache only what changed is drawn.
      */
     private static void uncacheViewport(javafx.scene.control.ScrollPane pane) {
         pane.skinProperty().addListener((o, was, skin) -> {

@@ -101,19 +101,19 @@ class BootReplayIntegrationTest {
         try (Console console = console(keys);
              RobotProcess robot = robot3(keys, console.port()).start();
              DatagramChannel attacker = DatagramChannel.open().bind(new InetSocketAddress("127.0.0.1", 0))) {
-            Await.until("robot 3 verified with its option list", 5000, () -> verifiedAndListed(console));
+            Await.until("robot 3 verified with its option list", () -> verifiedAndListed(console));
             InetSocketAddress consoleAddress = new InetSocketAddress("127.0.0.1", console.port());
             for (int round = 0; round < 3; round++) {
                 for (byte[] d : capture) {
                     attacker.send(ByteBuffer.wrap(d), consoleAddress);
                 }
             }
-            Await.until("every replayed datagram refused", 5000,
+            Await.until("every replayed datagram refused",
                     () -> console.robots().robot(3).map(r -> r.auth().forged() >= 3L * capture.size()).orElse(false));
             RobotSnapshot r = console.robots().robot(3).orElseThrow();
             assertTrue(r.auth().lastForgery().contains("earlier boot"), r.auth().lastForgery());
             long verifiedBefore = r.auth().verified();
-            Await.until("the robot's current datagrams still verified", 5000, () -> console.robots().robot(3)
+            Await.until("the robot's current datagrams still verified", () -> console.robots().robot(3)
                     .map(x -> x.auth().verified() > verifiedBefore + 2).orElse(false));
             r = console.robots().robot(3).orElseThrow();
             assertTrue(r.online(), "robot 3 stays online");
@@ -121,7 +121,7 @@ class BootReplayIntegrationTest {
 
             // commands still reach the real robot, and nothing reaches the stranger
             assertTrue(console.setOption(3, "demo.text", true).isSent());
-            Await.until("demo.text on at the robot", 5000, () -> enabledOnRobot(console, "demo.text"));
+            Await.until("demo.text on at the robot", () -> enabledOnRobot(console, "demo.text"));
             assertTrue(seen.stream().filter(e -> e.direction() == Direction.OUT && e.robotId() == 3)
                     .allMatch(e -> e.peer().getPort() == robot.port()), "every command went to the robot's port");
             attacker.configureBlocking(false);
@@ -136,24 +136,24 @@ class BootReplayIntegrationTest {
              DatagramChannel attacker = DatagramChannel.open()) {
             byte[] capture;
             try (RobotProcess earlier = robot3(keys, console.port()).start()) {
-                Await.until("robot 3 verified with its option list", 5000, () -> verifiedAndListed(console));
+                Await.until("robot 3 verified with its option list", () -> verifiedAndListed(console));
                 assertTrue(console.setOption(3, "demo.plotter", true).isSent());
-                Await.until("demo.plotter on", 5000, () -> enabledOnRobot(console, "demo.plotter"));
+                Await.until("demo.plotter on", () -> enabledOnRobot(console, "demo.plotter"));
                 capture = seen.stream().filter(e -> e.direction() == Direction.OUT
                         && e.kind().equals("debugOptionRequest")).reduce((a, b) -> b).orElseThrow().raw();
                 assertTrue(console.setOption(3, "demo.plotter", false).isSent());
-                Await.until("demo.plotter off", 5000, () -> !enabledOnRobot(console, "demo.plotter"));
+                Await.until("demo.plotter off", () -> !enabledOnRobot(console, "demo.plotter"));
             }
             int bootBefore = console.robots().robot(3).orElseThrow().auth().atRobot().getBootId();
             try (RobotProcess rebooted = robot3(keys, console.port()).start()) {
-                Await.until("the robot's next boot verified", 5000, () -> verifiedAndListed(console)
+                Await.until("the robot's next boot verified", () -> verifiedAndListed(console)
                         && atRobot(console).getBootId() != bootBefore);
                 attacker.send(ByteBuffer.wrap(capture), new InetSocketAddress("127.0.0.1", rebooted.port()));
-                Await.until("the robot refused the capture", 5000, () -> atRobot(console).getBadTag() >= 1);
+                Await.until("the robot refused the capture", () -> atRobot(console).getBadTag() >= 1);
                 // the robot handles datagrams in order: once a real request's answer is back, the
                 // capture would already have acted. It did not.
                 assertTrue(console.setOption(3, "demo.table", true).isSent());
-                Await.until("demo.table on", 5000, () -> enabledOnRobot(console, "demo.table"));
+                Await.until("demo.table on", () -> enabledOnRobot(console, "demo.table"));
                 assertFalse(enabledOnRobot(console, "demo.plotter"), "the capture of the earlier boot switched nothing");
                 assertTrue(Integer.compareUnsigned(atRobot(console).getBootId(), bootBefore) > 0,
                         "the boot number went up");

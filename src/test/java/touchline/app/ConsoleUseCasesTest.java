@@ -119,8 +119,7 @@ class ConsoleUseCasesTest {
         try (Console console = new Console(loopback(), micros::get).start();
              DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             sendStatus(robot, 6, console.port());
-            touchline.testing.Await.until("robot 6 in the registry", 30_000,
-                    () -> console.robots().robot(6).isPresent());
+            touchline.testing.Await.until("robot 6 in the registry", () -> console.robots().robot(6).isPresent());
             var seen = console.waitForRobot(6, Duration.ZERO);
             assertTrue(seen.isPresent(), "a robot heard before the wait is there");
             assertEquals(robot.getLocalPort(), seen.get().address().getPort());

@@ -87,12 +87,12 @@ class GameControllerSpoofingIntegrationTest {
                     gcHeard.add(e);
                 }
             });
-            Await.until("option list", 5000, () -> console.options().options(8).listReceived());
+            Await.until("option list", () -> console.options().options(8).listReceived());
             game.perform(new ToReady());
             game.perform(new ToSet());
             game.perform(new ToPlaying());
             referee.start();
-            Await.until("match mode from the GameController's PLAYING", 5000, () -> console.matchMode().playIsOn());
+            Await.until("match mode from the GameController's PLAYING", () -> console.matchMode().playIsOn());
             assertEquals("127.0.0.1", console.gcSources().pinnedHost());
 
             int forged = 10;
@@ -100,11 +100,11 @@ class GameControllerSpoofingIntegrationTest {
                 byte[] finished = forgedFinished(i);
                 forger.send(new DatagramPacket(finished, finished.length, consoleGcPort));
             }
-            Await.until("the forger's packets counted", 5000, () -> console.gcSources().activeIntruders().stream()
+            Await.until("the forger's packets counted", () -> console.gcSources().activeIntruders().stream()
                     .anyMatch(in -> in.packets() == forged));
             byte[] finished = forgedFinished(200);
             sameAddressForger.send(new DatagramPacket(finished, finished.length, consoleGcPort));
-            Await.until("the packet number going back flagged", 5000, () -> console.gcSources().suspicious() > 0);
+            Await.until("the packet number going back flagged", () -> console.gcSources().suspicious() > 0);
 
             assertTrue(console.matchMode().playIsOn(), "a forged FINISHED never ends match mode");
             GameControllerSources.Intruder intruder = console.gcSources().activeIntruders().get(0);
@@ -124,7 +124,7 @@ class GameControllerSpoofingIntegrationTest {
                 byte[] more = forgedFinished(forged + i);
                 forger.send(new DatagramPacket(more, more.length, consoleGcPort));
             }
-            Await.until("a retry held back", 5000, () -> console.matchMode().heldCount() > before);
+            Await.until("a retry held back", () -> console.matchMode().heldCount() > before);
             assertTrue(console.matchMode().playIsOn());
             assertEquals(List.of(), out, "nothing leaves the console for a robot during play");
         }

@@ -61,13 +61,13 @@ class HslMatchModeIntegrationTest {
                     heard.add(e);
                 }
             });
-            Await.until("option list", 5000, () -> console.options().options(8).listReceived());
+            Await.until("option list", () -> console.options().options(8).listReceived());
             assertTrue(console.matchMode().mayConsoleSend());
 
             byte[] playing = golden("07-playing-after-delay.bin");
             assertEquals(158, playing.length);
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
-            Await.until("match mode from the v20 datagram", 5000, () -> console.matchMode().playIsOn());
+            Await.until("match mode from the v20 datagram", () -> console.matchMode().playIsOn());
             // counted from here: until the datagram was believed the console could still ask for
             // the robot's option list (it did once, beside a loaded machine)
             out.clear();
@@ -78,7 +78,7 @@ class HslMatchModeIntegrationTest {
             assertEquals(SendResult.Outcome.HELD, held.outcome());
             long before = console.matchMode().heldCount();
             // the option session retries on its own: wait for a retry to be held, then nothing may have left
-            Await.until("a retry held back", 5000, () -> console.matchMode().heldCount() > before);
+            Await.until("a retry held back", () -> console.matchMode().heldCount() > before);
             assertEquals(List.of(), out, "nothing leaves the console for a robot during play");
         }
     }
@@ -102,7 +102,7 @@ class HslMatchModeIntegrationTest {
                 // during the robots' fake SET the monitor copy already says PLAYING
                 byte[] trueData = golden("05-playing-delayed.monitor.bin");
                 gc.send(new DatagramPacket(trueData, trueData.length, InetAddress.getLoopbackAddress(), gcPort));
-                Await.until("match mode from the true data", 5000, () -> console.matchMode().playIsOn());
+                Await.until("match mode from the true data", () -> console.matchMode().playIsOn());
 
                 byte[] robot = golden("return/r01-team5-player1-upright.bin");
                 byte[] forwarded = new byte[36];
@@ -110,8 +110,7 @@ class HslMatchModeIntegrationTest {
                 forwarded[3] = 7;
                 System.arraycopy(robot, 0, forwarded, 4, 32);
                 gc.send(new DatagramPacket(forwarded, 36, InetAddress.getLoopbackAddress(), forwardPort));
-                Await.until("robot 5/1 seen through the GameController", 5000,
-                        () -> !console.gcMonitor().robots().isEmpty());
+                Await.until("robot 5/1 seen through the GameController", () -> !console.gcMonitor().robots().isEmpty());
                 assertEquals("10.0.0.7", console.gcMonitor().robots().values().iterator().next().robotHost());
             }
         }

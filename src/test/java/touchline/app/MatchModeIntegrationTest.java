@@ -47,11 +47,11 @@ class MatchModeIntegrationTest {
                     out.add(e);
                 }
             });
-            Await.until("option list", 5000, () -> console.options().options(8).listReceived());
+            Await.until("option list", () -> console.options().options(8).listReceived());
 
             byte[] playing = golden("04-playing.bin");
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), robot.port()));
-            Await.until("the robot reports PLAYING", 5000, () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
+            Await.until("the robot reports PLAYING", () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
             assertTrue(console.matchMode().playIsOn());
 
             out.clear();
@@ -64,8 +64,8 @@ class MatchModeIntegrationTest {
 
             byte[] initial = golden("00-initial.bin");
             gc.send(new DatagramPacket(initial, initial.length, InetAddress.getLoopbackAddress(), robot.port()));
-            Await.until("the robot reports INITIAL", 5000, () -> console.robots().robot(8).orElseThrow().gameState().equals("INITIAL"));
-            Await.until("the held request went out and data streams", 5000, () ->
+            Await.until("the robot reports INITIAL", () -> console.robots().robot(8).orElseThrow().gameState().equals("INITIAL"));
+            Await.until("the held request went out and data streams", () ->
                     console.options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false));
             assertTrue(out.stream().anyMatch(e -> e.message() instanceof Fumanoid.Message m
                     && m.hasExtension(Fumanoid.debugOptionRequest)));

@@ -61,13 +61,12 @@ class NaoSessionMatchModeIntegrationTest {
             });
             NaoSession nao = console.connectNao("127.0.0.1", sim.port(), 0, null, NaoLinkConfig.defaults());
             assertEquals(List.of(nao), console.naoSessions());
-            Await.until("the NAO online", 10_000, () -> nao.state() == ConnectionState.ONLINE);
-            Await.until("the console heard no GameController at its start", 5000,
-                    () -> console.matchMode().mayConsoleSend());
+            Await.until("the NAO online", () -> nao.state() == ConnectionState.ONLINE);
+            Await.until("the console heard no GameController at its start", () -> console.matchMode().mayConsoleSend());
 
             byte[] playing = HslMatchModeIntegrationTest.golden("07-playing-after-delay.bin");
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
-            Await.until("match mode from the v20 datagram", 5000, () -> console.matchMode().playIsOn());
+            Await.until("match mode from the v20 datagram", () -> console.matchMode().playIsOn());
 
             CallOutcome insert = get(nao.call(NaoCall.of("ALMemory", "insertData", "Touchline/held", 1)));
             assertInstanceOf(CallOutcome.HeldBack.class, insert);
@@ -82,7 +81,7 @@ class NaoSessionMatchModeIntegrationTest {
 
             byte[] finished = HslMatchModeIntegrationTest.golden("53-finished.bin");
             gc.send(new DatagramPacket(finished, finished.length, InetAddress.getLoopbackAddress(), gcPort));
-            Await.until("play over (FINISHED and the play memory)", 10_000, () -> console.matchMode().mayConsoleSend());
+            Await.until("play over (FINISHED and the play memory)", () -> console.matchMode().mayConsoleSend());
 
             assertInstanceOf(CallOutcome.Failed.class, get(nao.call(NaoCall.of("ALMemory", "getData", "Touchline/held"))),
                     "the held insertData never ran on the robot");

@@ -33,13 +33,13 @@ class NaoViewModelTest {
             assertTrue(nao.connect("127.0.0.1", " " + robot.port(), Integer.toString(camera.port()), "unused", true),
                     nao.result());
             assertTrue(nao.connected());
-            Await.until("online", Await.FLOOR_MILLIS, () -> nao.state().startsWith("online (INSECURE)"));
+            Await.until("online", () -> nao.state().startsWith("online (INSECURE)"));
             nao.discover("Test");
-            Await.until("the methods", Await.FLOOR_MILLIS, () -> nao.methods().contains("echo"));
+            Await.until("the methods", () -> nao.methods().contains("echo"));
             assertEquals(1, nao.methodsVersion());
             nao.call("Test", "echo", "[a, 1]");
-            Await.until("the echo", Await.FLOOR_MILLIS, () -> nao.result().equals("Test.echo: [\"a\", 1]"));
-            Await.until("a frame", Await.FLOOR_MILLIS, () -> nao.frame().isPresent());
+            Await.until("the echo", () -> nao.result().equals("Test.echo: [\"a\", 1]"));
+            Await.until("a frame", () -> nao.frame().isPresent());
             assertEquals(320, nao.frame().orElseThrow().width(), "the resolution asked for before connecting");
             assertTrue(nao.cameraFigures().contains("B/frame"), nao.cameraFigures());
             nao.disconnect();

@@ -55,26 +55,26 @@ class OptionsAcrossConsolesTest {
             a.rememberWantedOptions(fileA);
             try (RobotProcess robot = RobotProcess.robot(ROBOT, field.port()).start()) {
                 field.robotAt(robot.port());
-                Await.until("console A has the option list", 10_000, () -> a.options().options(ROBOT).listReceived());
+                Await.until("console A has the option list", () -> a.options().options(ROBOT).listReceived());
                 assertTrue(a.setOption(ROBOT, "demo.text", true).isSent());
-                Await.until("demo.text streams to A", 10_000, () -> streaming(a, "demo.text"));
+                Await.until("demo.text streams to A", () -> streaming(a, "demo.text"));
 
                 List<Envelope> fromB = new CopyOnWriteArrayList<>();
                 try (Console b = field.join()) {
                     b.rememberWantedOptions(dirB.resolve("wanted-options.properties"));
                     b.bus().subscribe(fromB::add);
-                    Await.until("console B has the option list", 10_000, () -> b.options().options(ROBOT).listReceived());
+                    Await.until("console B has the option list", () -> b.options().options(ROBOT).listReceived());
                     assertTrue(b.setOption(ROBOT, "demo.plotter", true).isSent());
-                    Await.until("demo.plotter streams to B", 10_000, () -> streaming(b, "demo.plotter"));
-                    Await.until("B sees A's demo.text streaming too", 10_000, () -> streaming(b, "demo.text"));
+                    Await.until("demo.plotter streams to B", () -> streaming(b, "demo.plotter"));
+                    Await.until("B sees A's demo.text streaming too", () -> streaming(b, "demo.text"));
                     // B's reconciliation has run many times by now (every 100 ms)
                     long ticksSeen = fromB.size();
-                    Await.until("B keeps hearing the robot", 10_000, () -> fromB.size() > ticksSeen + 20);
+                    Await.until("B keeps hearing the robot", () -> fromB.size() > ticksSeen + 20);
                     assertEquals(0, offRequests(fromB, "demo.text"), "B never switched off A's option");
                     assertTrue(streaming(a, "demo.text"), "A's option is still on");
 
                     assertTrue(b.setOption(ROBOT, "demo.plotter", false).isSent());
-                    Await.until("demo.plotter stops for A", 10_000, () -> !streaming(a, "demo.plotter"));
+                    Await.until("demo.plotter stops for A", () -> !streaming(a, "demo.plotter"));
                     assertTrue(streaming(a, "demo.text"), "B switching its option off left A's on");
                     assertFalse(b.setOption(ROBOT, "demo.text", false).isSent(), "B may not switch off A's option");
                     field.forget(b.port());
@@ -90,8 +90,7 @@ class OptionsAcrossConsolesTest {
                 field.robotAt(robot.port());
                 again.rememberWantedOptions(fileA);
                 assertEquals(Set.of("demo.text"), again.options().wanted(ROBOT), "restored before the robot is seen");
-                Await.until("demo.text streams again to the restarted A without a click", 10_000,
-                        () -> streaming(again, "demo.text"));
+                Await.until("demo.text streams again to the restarted A without a click", () -> streaming(again, "demo.text"));
             }
         }
     }

@@ -76,12 +76,11 @@ class PortableFallbackIntegrationTest {
 
             console.bus().subscribe(seen::add);
             try (RobotProcess r = RobotProcess.robot(9, console.port()).start()) {
-                Await.until("robot 9 appears over NIO", 5000,
-                        () -> console.robots().robot(9).map(RobotSnapshot::online).orElse(false));
+                Await.until("robot 9 appears over NIO", () -> console.robots().robot(9).map(RobotSnapshot::online).orElse(false));
                 assertEquals(13, console.robots().robot(9).orElseThrow().teamId());
-                Await.until("option list", 5000, () -> console.options().options(9).listReceived());
+                Await.until("option list", () -> console.options().options(9).listReceived());
                 assertTrue(console.setOption(9, "demo.text", true).isSent(), "the request went out over NIO");
-                Await.until("demo.text streams", 5000, () -> seen.stream().anyMatch(e -> e.direction() == Direction.IN
+                Await.until("demo.text streams", () -> seen.stream().anyMatch(e -> e.direction() == Direction.IN
                         && e.robotId() == 9 && e.message() instanceof Fumanoid.Message m
                         && m.hasExtension(Fumanoid.debugText)
                         && m.getExtension(Fumanoid.debugText).getOption().equals("demo.text")));

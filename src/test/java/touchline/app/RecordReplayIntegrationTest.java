@@ -39,11 +39,11 @@ class RecordReplayIntegrationTest {
             console.bus().subscribe(live::add);
             int port = console.port();
             try (RobotProcess a = RobotProcess.robot(1, port).start(); RobotProcess b = RobotProcess.robot(2, port).start()) {
-                Await.until("both option lists", 5000, () -> console.options().options(1).listReceived()
+                Await.until("both option lists", () -> console.options().options(1).listReceived()
                         && console.options().options(2).listReceived());
                 console.setOption(1, "demo.plotter", true);
-                Await.until("plots arrive", 5000, () -> live.stream().filter(e -> e.kind().equals("debugPlot")).count() >= 5);
-                Await.until("a good stretch of traffic", 10_000, () -> live.size() > 40);
+                Await.until("plots arrive", () -> live.stream().filter(e -> e.kind().equals("debugPlot")).count() >= 5);
+                Await.until("a good stretch of traffic", () -> live.size() > 40);
             }
             console.stopRecording();
         }
@@ -57,7 +57,7 @@ class RecordReplayIntegrationTest {
             assertEquals(List.of(), replay.problems());
             replay.setSpeed(50);
             replay.play();
-            Await.until("replay finished", 20_000, () -> replay.state().finished());
+            Await.until("replay finished", () -> replay.state().finished());
             assertEquals(live.size(), replayed.size());
             for (int i = 0; i < live.size(); i++) {
                 assertEquals(live.get(i).asReplayed(), replayed.get(i), "envelope " + i);

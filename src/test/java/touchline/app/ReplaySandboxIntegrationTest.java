@@ -60,18 +60,17 @@ class ReplaySandboxIntegrationTest {
              DatagramSocket gc = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
             console.startRecording(file);
             console.bus().subscribe(seen::add);
-            Await.until("option list", 5000, () -> console.options().options(8).listReceived());
+            Await.until("option list", () -> console.options().options(8).listReceived());
             assertTrue(console.setOption(8, PLOT, true).isSent());
-            Await.until("plots", 5000, () -> count(seen, "debugPlot") >= 10);
+            Await.until("plots", () -> count(seen, "debugPlot") >= 10);
             byte[] playing = golden("04-playing.bin");
             for (int port : new int[] {robot.port(), console.port()}) {
                 gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), port));
             }
-            Await.until("the robot reports PLAYING", 5000,
-                    () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
+            Await.until("the robot reports PLAYING", () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
             // during play the robot keeps to the league's debug limit: one status a second, no option data
             long statuses = count(seen, "status");
-            Await.until("statuses during play", 5000, () -> count(seen, "status") >= statuses + 2);
+            Await.until("statuses during play", () -> count(seen, "status") >= statuses + 2);
             console.stopRecording();
         }
         assertTrue(seen.stream().anyMatch(e -> e.channel() == Channel.GAMECONTROLLER), "the GameController is recorded");
@@ -95,18 +94,18 @@ class ReplaySandboxIntegrationTest {
                     sentLive.add(e);
                 }
             });
-            Await.until("the live robot's option list", 5000, () -> console.options().options(8).listReceived());
+            Await.until("the live robot's option list", () -> console.options().options(8).listReceived());
             // wanted live, and off in every option list the recording holds: a replayed list reaching
             // the option session would make it switch demo.text on again at the live robot
             assertTrue(console.setOption(8, "demo.text", true).isSent());
-            Await.until("demo.text streams live", 5000, () -> streaming(console, "demo.text"));
+            Await.until("demo.text streams live", () -> streaming(console, "demo.text"));
             sentLive.clear();
 
             Replay replay = console.openReplay(file);
             assertTrue(console.liveListening(), "the replay runs beside live traffic");
             replay.setSpeed(50);
             replay.play();
-            Await.until("the replay played to its end", 20_000, () -> replay.state().finished());
+            Await.until("the replay played to its end", () -> replay.state().finished());
 
             assertTrue(replayed.stream().anyMatch(e -> e.channel() == Channel.GAMECONTROLLER), () -> "replayed "
                     + replayed.size() + " of " + replay.state() + ": " + replayed.stream().map(Envelope::toString)
@@ -169,7 +168,7 @@ class ReplaySandboxIntegrationTest {
         replay.seek(from);
         assertNull(plots.snapshot(8, PLOT), "nothing of the first playing is left");
         replay.play();
-        Await.until("played to the end again", 20_000, () -> replay.state().finished());
+        Await.until("played to the end again", () -> replay.state().finished());
 
         PlotStore asIfPlayedFromThere = new PlotStore(PlotStore.DEFAULT_POINTS, replay.state().startMicros());
         try (Recording recording = Recording.open(file)) {

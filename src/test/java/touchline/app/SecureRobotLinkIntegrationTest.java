@@ -97,17 +97,17 @@ class SecureRobotLinkIntegrationTest {
              RobotProcess robot = RobotProcess.robot(3, console.port(), "--team-key",
                      team.file(KeyDir.TEAM_KEY).toString()).start();
              DatagramChannel attacker = DatagramChannel.open()) {
-            Await.until("robot 3 verified with its option list", 5000, () -> console.options().options(3).listReceived()
+            Await.until("robot 3 verified with its option list", () -> console.options().options(3).listReceived()
                     && console.robots().robot(3).map(r -> r.auth().state() == Authenticity.VERIFIED).orElse(false));
 
             // the right key: the option switches on, and off again (the "on" request is kept as a capture)
             assertTrue(console.setOption(3, "demo.plotter", true).isSent());
-            Await.until("demo.plotter on", 5000, () -> enabledOnRobot(console, 3, "demo.plotter"));
+            Await.until("demo.plotter on", () -> enabledOnRobot(console, 3, "demo.plotter"));
             byte[] capture = seen.stream().filter(e -> e.direction() == Direction.OUT
                     && e.kind().equals("debugOptionRequest")).reduce((a, b) -> b).orElseThrow().raw();
             assertEquals('T', capture[capture.length - 32], "what went out carries the trailer");
             assertTrue(console.setOption(3, "demo.plotter", false).isSent());
-            Await.until("demo.plotter off", 5000, () -> !enabledOnRobot(console, 3, "demo.plotter"));
+            Await.until("demo.plotter off", () -> !enabledOnRobot(console, 3, "demo.plotter"));
 
             // forgeries straight to the robot's port: no tag, another team's key, the capture replayed
             InetSocketAddress robotAddress = new InetSocketAddress("127.0.0.1", robot.port());
@@ -116,7 +116,7 @@ class SecureRobotLinkIntegrationTest {
             attacker.send(ByteBuffer.wrap(rivalTag.append(MessageTag.toRobot(0), 3, Long.MAX_VALUE,
                     optionRequest("demo.text", true))), robotAddress);
             attacker.send(ByteBuffer.wrap(capture), robotAddress);
-            Await.until("the robot counted all three", 5000, () -> {
+            Await.until("the robot counted all three", () -> {
                 Fumanoid.AuthCounters c = atRobot(console, 3);
                 return c.getNoTag() >= 1 && c.getWrongKey() >= 1 && c.getReplayed() >= 1;
             });
@@ -124,7 +124,7 @@ class SecureRobotLinkIntegrationTest {
             // the robot handles datagrams in order: once a real request's answer is back, any
             // forgery would already have acted. It did not.
             assertTrue(console.setOption(3, "demo.table", true).isSent());
-            Await.until("demo.table on", 5000, () -> enabledOnRobot(console, 3, "demo.table"));
+            Await.until("demo.table on", () -> enabledOnRobot(console, 3, "demo.table"));
             assertFalse(enabledOnRobot(console, 3, "demo.text"), "the forged request switched nothing on");
             assertFalse(enabledOnRobot(console, 3, "demo.plotter"), "the replayed capture switched nothing on");
             assertEquals(0, dataFrom(3, "demo.text"));
@@ -144,7 +144,7 @@ class SecureRobotLinkIntegrationTest {
              RobotProcess impostor = RobotProcess.robot(4, console.port(), "--team-key",
                      rival.file(KeyDir.TEAM_KEY).toString()).start();
              RobotProcess lab = RobotProcess.robot(5, console.port()).start()) {
-            Await.until("robot 4 forged, robot 5 heard", 5000, () ->
+            Await.until("robot 4 forged, robot 5 heard", () ->
                     console.robots().robot(4).map(r -> r.auth().state() == Authenticity.FORGED
                             && r.auth().forged() >= 3).orElse(false)
                             && console.robots().robot(5).map(r -> r.packets() >= 2).orElse(false));
@@ -178,7 +178,7 @@ class SecureRobotLinkIntegrationTest {
              RobotProcess printer = RobotProcess.robot(6, console.port(), "--team-key", key,
                      "--reliable-print").start();
              RobotProcess sender = RobotProcess.robot(7, console.port(), "--team-key", key).start()) {
-            Await.until("robots 6 and 7 verified", 5000, () -> console.robots().robots().stream()
+            Await.until("robots 6 and 7 verified", () -> console.robots().robots().stream()
                     .filter(r -> r.auth().state() == Authenticity.VERIFIED).count() == 2);
             touchline.transport.ReliableSession toPrinter = console.reliable()
                     .open(new InetSocketAddress("127.0.0.1", printer.port()));
@@ -186,10 +186,9 @@ class SecureRobotLinkIntegrationTest {
             for (int off = 0; off < bytes.length; off += 300) {
                 toPrinter.offer(java.util.Arrays.copyOfRange(bytes, off, Math.min(bytes.length, off + 300)));
             }
-            Await.until("robot 6 printed the whole text", 20_000, () -> printer.stdout().contains(line));
+            Await.until("robot 6 printed the whole text", () -> printer.stdout().contains(line));
             // the robot's Status (every 200 ms) reports the segments its verifier accepted
-            Await.until("robot 6 reports the segments as authenticated", 5000,
-                    () -> atRobot(console, 6).getAccepted() > bytes.length / 300);
+            Await.until("robot 6 reports the segments as authenticated", () -> atRobot(console, 6).getAccepted() > bytes.length / 300);
             assertEquals(0, atRobot(console, 6).getBadTag() + atRobot(console, 6).getNoTag());
         }
         // robot to console: a robot with the key sends a file; the console takes its tagged segments
@@ -204,7 +203,7 @@ class SecureRobotLinkIntegrationTest {
                         got.writeBytes(p);
                     }
                 });
-                Await.until("the console received the whole file", 20_000, () -> {
+                Await.until("the console received the whole file", () -> {
                     synchronized (got) {
                         return got.size() >= bytes(line).length;
                     }

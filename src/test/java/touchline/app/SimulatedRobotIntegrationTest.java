@@ -48,29 +48,29 @@ class SimulatedRobotIntegrationTest {
             int port = console.port();
             RobotProcess robot = RobotProcess.robot(7, port).start();
             try {
-                Await.until("robot 7 appears", 5000, () -> console.robots().robot(7).map(RobotSnapshot::online).orElse(false));
+                Await.until("robot 7 appears", () -> console.robots().robot(7).map(RobotSnapshot::online).orElse(false));
                 RobotSnapshot r = console.robots().robot(7).orElseThrow();
                 assertEquals(13, r.teamId());
                 assertFalse(r.role().isEmpty(), "the keep-alive carries a role");
 
-                Await.until("option list", 5000, () -> console.options().options(7).listReceived());
+                Await.until("option list", () -> console.options().options(7).listReceived());
                 List<String> names = console.options().options(7).options().stream().map(OptionState::name).toList();
                 assertTrue(names.containsAll(List.of("demo.text", "demo.plotter", "demo.table", "demo.image",
                         "demo.relative", "demo.field", "havimo.region", "havimo.grid")), names.toString());
                 assertEquals(0, dataFrom(7, "demo.text"), "nothing streams before it is switched on");
 
                 assertTrue(console.setOption(7, "demo.text", true).isSent());
-                Await.until("demo.text data", 5000, () -> dataFrom(7, "demo.text") > 0);
+                Await.until("demo.text data", () -> dataFrom(7, "demo.text") > 0);
 
                 robot.kill();
-                Await.until("robot 7 offline", 5000, () -> !console.robots().robot(7).orElseThrow().online());
+                Await.until("robot 7 offline", () -> !console.robots().robot(7).orElseThrow().online());
                 long requestsBefore = seen.stream().filter(e -> e.direction() == Direction.OUT
                         && e.kind().equals("debugOptionRequest")).count();
                 seen.clear();
 
                 robot = RobotProcess.robot(7, port).start(); // a fresh process: it knows nothing of demo.text
-                Await.until("robot 7 back online", 5000, () -> console.robots().robot(7).orElseThrow().online());
-                Await.until("demo.text streams again without being asked", 5000, () -> dataFrom(7, "demo.text") > 0);
+                Await.until("robot 7 back online", () -> console.robots().robot(7).orElseThrow().online());
+                Await.until("demo.text streams again without being asked", () -> dataFrom(7, "demo.text") > 0);
                 assertTrue(seen.stream().anyMatch(e -> e.direction() == Direction.OUT && e.kind().equals("debugOptionRequest")),
                         "the console re-sent the request by itself");
                 assertTrue(requestsBefore >= 1);
@@ -90,8 +90,8 @@ class SimulatedRobotIntegrationTest {
             try (RobotProcess r1 = RobotProcess.robot(1, port, "--framing", "legacy").start();
                  RobotProcess r2 = RobotProcess.robot(2, port, "--framing", "length").start();
                  RobotProcess r3 = RobotProcess.robot(3, port).start()) {
-                Await.until("three robots online", 5000, () -> console.robots().robots().stream().filter(RobotSnapshot::online).count() == 3);
-                Await.until("all option lists", 5000, () -> console.options().options(1).listReceived()
+                Await.until("three robots online", () -> console.robots().robots().stream().filter(RobotSnapshot::online).count() == 3);
+                Await.until("all option lists", () -> console.options().options(1).listReceived()
                         && console.options().options(2).listReceived() && console.options().options(3).listReceived());
                 assertEquals(0, console.transportCounts().malformedIn());
             }
@@ -106,9 +106,9 @@ class SimulatedRobotIntegrationTest {
         try (Console console = new Console(config).start()) {
             console.bus().subscribe(seen::add);
             try (RobotProcess robot = RobotProcess.robot(9, console.port(), "--wifi-sim").start()) {
-                Await.until("robot 9 and its option list", 10_000, () -> console.options().options(9).listReceived());
+                Await.until("robot 9 and its option list", () -> console.options().options(9).listReceived());
                 assertTrue(console.setOption(9, "demo.text", true).isSent());
-                Await.until("demo.text data through the serial module", 10_000, () -> dataFrom(9, "demo.text") > 0);
+                Await.until("demo.text data through the serial module", () -> dataFrom(9, "demo.text") > 0);
                 assertEquals(0, console.transportCounts().malformedIn());
             }
         }

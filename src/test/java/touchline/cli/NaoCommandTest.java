@@ -185,7 +185,7 @@ class NaoCommandTest {
             } finally {
                 gameController.shutdownNow();
             }
-            touchline.testing.Await.until("a checking link online", 10_000, () -> check.state() == ConnectionState.ONLINE);
+            touchline.testing.Await.until("a checking link online", () -> check.state() == ConnectionState.ONLINE);
             assertInstanceOf(CallOutcome.Failed.class, check.call("ALMemory", "getData", "Touchline/cli").get(30, TimeUnit.SECONDS),
                     "the held call never ran on the robot");
 

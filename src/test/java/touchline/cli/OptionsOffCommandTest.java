@@ -36,9 +36,9 @@ class OptionsOffCommandTest {
             try (RobotProcess robot = RobotProcess.robot(8, field.port()).start()) {
                 field.robotAt(robot.port());
                 try (Console other = field.join()) {
-                    Await.until("the other console has the list", 10_000, () -> other.options().options(8).listReceived());
+                    Await.until("the other console has the list", () -> other.options().options(8).listReceived());
                     assertTrue(other.setOption(8, "demo.text", true).isSent());
-                    Await.until("demo.text streams", 10_000, () -> streaming(watcher));
+                    Await.until("demo.text streams", () -> streaming(watcher));
                     field.forget(other.port());
                 }
                 int port;
@@ -50,7 +50,7 @@ class OptionsOffCommandTest {
                 int code = Main.execute(new String[] {"options", "8", "--off", "demo.text", "--bind", "127.0.0.1",
                         "--port", Integer.toString(port), "--timeout", "10"}, new java.io.PrintWriter(err));
                 assertEquals(0, code, err.toString());
-                Await.until("demo.text stops", 10_000, () -> !streaming(watcher));
+                Await.until("demo.text stops", () -> !streaming(watcher));
             }
         }
     }

@@ -169,7 +169,7 @@ class RecordingEndsTest {
         }, "recorder-output");
         reader.setDaemon(true);
         reader.start();
-        Await.until("the recorder listens", 30_000, () -> output.stream().anyMatch(l -> LISTENING.matcher(l).find())
+        Await.until("the recorder listens", () -> output.stream().anyMatch(l -> LISTENING.matcher(l).find())
                 || !recorder.isAlive());
         assertTrue(recorder.isAlive(), "the recorder started: " + output);
         assertFalse(ignores(recorder.pid(), 2), "SIGINT is not ignored in the recorder process");
@@ -211,7 +211,7 @@ class RecordingEndsTest {
 
     /** Waits until the file being written already holds {@code n} statuses of the robot (read as a cut file). */
     private static void awaitRecorded(Path file, int n) throws InterruptedException {
-        Await.until(n + " statuses in " + file, 20_000, () -> statuses(file) >= n);
+        Await.until(n + " statuses in " + file, () -> statuses(file) >= n);
     }
 
     private static long statuses(Path file) {

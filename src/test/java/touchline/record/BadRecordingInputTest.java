@@ -45,7 +45,7 @@ class BadRecordingInputTest {
         try (Recorder recorder = new Recorder(file, new EnvelopeWriter.Options(0, 0, 2048, List.of()))) {
             List<Envelope> first = sent.subList(0, sent.size() / 2);
             first.forEach(recorder::accept);
-            Await.until("chunks on disk", 30_000, () -> readableNow(file) > 0);
+            Await.until("chunks on disk", () -> readableNow(file) > 0);
             try (Recording r = Recording.open(file)) {
                 // the recorder goes on writing while the file is open and read
                 sent.subList(sent.size() / 2, sent.size()).forEach(recorder::accept);

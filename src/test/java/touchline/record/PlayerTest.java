@@ -4,12 +4,15 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.Await;
 import touchline.transport.Envelope;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -207,16 +210,17 @@ class PlayerTest {
 
     @Test
     void theDeliveryThreadPlaysWithoutPumping() throws Exception {
-        Player threaded = new Player(recording, got::add, new touchline.app.SystemClock());
+        CountDownLatch hundred = new CountDownLatch(100);
+        Player threaded = new Player(recording, e -> {
+            got.add(e);
+            hundred.countDown();
+        }, new touchline.app.SystemClock());
         try {
             threaded.setSpeed(50);
             threaded.start();
             threaded.play();
-            long deadline = System.nanoTime() + 10_000_000_000L;
-            while (got.size() < 100 && System.nanoTime() < deadline) {
-                Thread.onSpinWait();
-            }
-            assertTrue(got.size() >= 100);
+            assertTrue(hundred.await(Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS),
+                    "the delivery thread delivered 100 envelopes, no one pumping (" + got.size() + " so far)");
             assertEquals(sent.subList(0, 100), List.copyOf(got).subList(0, 100)); // a copy: the player thread goes on adding
         } finally {
             threaded.close();

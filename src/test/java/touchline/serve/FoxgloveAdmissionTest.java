@@ -96,12 +96,12 @@ class FoxgloveAdmissionTest {
                     }
                 }, 0, 100, TimeUnit.MILLISECONDS);
             }
-            Await.until("40 accepted, 8 of them waiting", 5000, () -> field.server().stats().refusedBy()
+            Await.until("40 accepted, 8 of them waiting", () -> field.server().stats().refusedBy()
                     .getOrDefault("upgrade slots full", 0L) == 32 && field.server().stats().upgrading() == 8);
 
             try (FoxgloveTestClient viewer = new FoxgloveTestClient(port)) {
                 assertEquals("serverInfo", viewer.serverInfo().getString("op"), "a real viewer gets in meanwhile");
-                Await.until("every trickling connection closed", 5000, () -> field.server().stats().upgrading() == 0);
+                Await.until("every trickling connection closed", () -> field.server().stats().upgrading() == 0);
                 Map<String, Long> by = field.server().stats().refusedBy();
                 assertEquals(40L, by.getOrDefault("upgrade slots full", 0L) + by.getOrDefault("upgrade deadline", 0L), by.toString());
                 assertTrue(by.getOrDefault("upgrade deadline", 0L) >= 1, by.toString());

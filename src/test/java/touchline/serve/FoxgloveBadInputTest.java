@@ -26,19 +26,19 @@ class FoxgloveBadInputTest {
     private static int bystander(ServedField field, FoxgloveTestClient viewer) throws Exception {
         field.publish(ServedField.status(3, "ada", 1), "status");
         viewer.subscribe(1, viewer.awaitChannel("/robot/3/status").getInt("id"));
-        Await.until("the bystander subscribed", 5000, () -> field.server().stats().subscriptions() >= 1);
+        Await.until("the bystander subscribed", () -> field.server().stats().subscriptions() >= 1);
         return viewer.data().size();
     }
 
     private static void stillReceives(ServedField field, FoxgloveTestClient viewer, int before) throws Exception {
         field.publish(ServedField.status(3, "ada", 2), "status");
-        Await.until("the bystander still receives", 5000, () -> viewer.data().size() > before);
+        Await.until("the bystander still receives", () -> viewer.data().size() > before);
         assertFalse(viewer.closed());
         assertTrue(viewer.statuses().isEmpty(), "no status for the bystander: " + viewer.statuses());
     }
 
     private static String lastStatus(FoxgloveTestClient c, int count) throws InterruptedException {
-        Await.until(count + " statuses", 5000, () -> c.statuses().size() >= count);
+        Await.until(count + " statuses", () -> c.statuses().size() >= count);
         JSONObject s = c.statuses().get(count - 1);
         assertEquals(2, s.getInt("level"), "an error status");
         return s.getString("message");
@@ -86,9 +86,9 @@ class FoxgloveBadInputTest {
             assertEquals(14, field.server().stats().badRequests());
 
             // after all that, the hostile viewer's good subscription works like anyone's
-            Await.until("both subscribed", 5000, () -> field.server().stats().subscriptions() == 2);
+            Await.until("both subscribed", () -> field.server().stats().subscriptions() == 2);
             stillReceives(field, bystander, before);
-            Await.until("the hostile viewer receives on its subscription", 5000, () -> !hostile.dataOf(5).isEmpty());
+            Await.until("the hostile viewer receives on its subscription", () -> !hostile.dataOf(5).isEmpty());
             assertFalse(hostile.closed());
         }
     }
@@ -121,7 +121,7 @@ class FoxgloveBadInputTest {
             assertTrue(lastStatus(hostile, 4).contains("no subscription 77"));
             assertEquals(4, hostile.statuses().size(), "one status per frame: " + hostile.statuses().size());
             assertEquals(4, field.server().stats().badRequests());
-            Await.until("the one good entry subscribed, then ended", 5000, () -> field.server().stats().subscriptions() == 1);
+            Await.until("the one good entry subscribed, then ended", () -> field.server().stats().subscriptions() == 1);
             stillReceives(field, bystander, before);
         }
     }
@@ -139,14 +139,14 @@ class FoxgloveBadInputTest {
             fragments.sendPart(subscribe.substring(0, 10), false);
             fragments.sendPart(subscribe.substring(10, 30), false);
             fragments.sendPart(subscribe.substring(30), true);
-            Await.until("the fragmented subscribe took effect", 5000, () -> field.server().stats().subscriptions() == 2);
+            Await.until("the fragmented subscribe took effect", () -> field.server().stats().subscriptions() == 2);
 
             huge.send("{\"op\":\"subscribe\",\"pad\":\"" + "x".repeat(ServeConfig.defaults().maxFrameBytes()) + "\"}");
-            Await.until("the huge frame's connection closed", 5000, huge::closed);
-            Await.until("the huge frame's viewer left the table", 5000, () -> field.server().stats().viewers() == 2);
+            Await.until("the huge frame's connection closed", huge::closed);
+            Await.until("the huge frame's viewer left the table", () -> field.server().stats().viewers() == 2);
 
             stillReceives(field, bystander, before);
-            Await.until("the fragmented subscription receives", 5000, () -> !fragments.dataOf(9).isEmpty());
+            Await.until("the fragmented subscription receives", () -> !fragments.dataOf(9).isEmpty());
         }
     }
 
@@ -177,7 +177,7 @@ class FoxgloveBadInputTest {
                     }
                 }
             }
-            Await.until("no viewer left but the bystander", 5000, () -> field.server().stats().viewers() == 1);
+            Await.until("no viewer left but the bystander", () -> field.server().stats().viewers() == 1);
             assertEquals(1, field.server().stats().subscriptions());
             stillReceives(field, bystander, before);
         }
@@ -192,7 +192,7 @@ class FoxgloveBadInputTest {
             second.serverInfo();
             try (FoxgloveTestClient third = new FoxgloveTestClient(field.server().port())) {
                 assertTrue(lastStatus(third, 1).contains("too many viewers"));
-                Await.until("the third is disconnected", 5000, third::closed);
+                Await.until("the third is disconnected", third::closed);
                 assertEquals(1, field.server().stats().refused());
             }
             assertEquals(2, field.server().stats().viewers());
@@ -223,7 +223,7 @@ class FoxgloveBadInputTest {
             for (int i = 0; i < 20_000; i++) {
                 flood.send(garbage);
             }
-            Await.until("every flood message refused", 5000, () -> field.server().stats().badRequests() == 20_000);
+            Await.until("every flood message refused", () -> field.server().stats().badRequests() == 20_000);
             stillReceives(field, bystander, before);
             assertEquals(List.of(), bystander.statuses());
         }

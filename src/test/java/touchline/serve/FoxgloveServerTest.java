@@ -54,17 +54,17 @@ class FoxgloveServerTest {
 
             viewer.subscribe(7, channel.getInt("id"));
             // a status is a robot's state: the newest one comes at once, with the time it was heard
-            Await.until("the status heard before subscribing", 5000, () -> !viewer.dataOf(7).isEmpty());
+            Await.until("the status heard before subscribing", () -> !viewer.dataOf(7).isEmpty());
             assertEquals("50", field(FoxgloveTestClient.decode(channel, viewer.dataOf(7).get(0).payload()), "batteryPercent"));
             field.send(ServedField.status(3, "ada", 77));
-            Await.until("a status for subscription 7", 5000, () -> viewer.dataOf(7).size() >= 2);
+            Await.until("a status for subscription 7", () -> viewer.dataOf(7).size() >= 2);
             FoxgloveTestClient.Data d = viewer.dataOf(7).get(1);
             DynamicMessage status = FoxgloveTestClient.decode(channel, d.payload());
             assertEquals("ada", field(status, "robotName"));
             assertEquals("77", field(status, "batteryPercent"));
             assertEquals("13", field(status, "teamID"));
             assertTrue(d.timeNanos() > 0);
-            Await.until("server time", 5000, () -> !viewer.times().isEmpty());
+            Await.until("server time", () -> !viewer.times().isEmpty());
             assertEquals(1, field.server().stats().viewers());
         }
     }
@@ -95,9 +95,9 @@ class FoxgloveServerTest {
             JSONObject channel = viewer.awaitChannel("/robot/6/teamBall");
             assertEquals("team.TeamBall", channel.getString("schemaName"));
             viewer.subscribe(1, channel.getInt("id"));
-            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            Await.until("subscribed", () -> field.server().stats().subscriptions() == 1);
             field.send(fromRobot);
-            Await.until("the team's ball", 5000, () -> !viewer.dataOf(1).isEmpty());
+            Await.until("the team's ball", () -> !viewer.dataOf(1).isEmpty());
             assertEquals("1.5", field(FoxgloveTestClient.decode(channel, viewer.dataOf(1).get(0).payload()), "x"));
         }
     }
@@ -123,13 +123,13 @@ class FoxgloveServerTest {
             JSONObject four = b.awaitChannel("/robot/4/status");
             a.subscribe(1, three.getInt("id"));
             b.subscribe(1, four.getInt("id"));
-            Await.until("both subscribed", 5000, () -> field.server().stats().subscriptions() == 2);
+            Await.until("both subscribed", () -> field.server().stats().subscriptions() == 2);
             for (int i = 0; i < 20; i++) {
                 field.send(ServedField.status(3, "three", i));
                 field.send(ServedField.status(4, "four", i));
             }
-            Await.until("a has robot 3's statuses", 5000, () -> a.data().size() >= 5);
-            Await.until("b has robot 4's statuses", 5000, () -> b.data().size() >= 5);
+            Await.until("a has robot 3's statuses", () -> a.data().size() >= 5);
+            Await.until("b has robot 4's statuses", () -> b.data().size() >= 5);
             for (FoxgloveTestClient.Data d : a.data()) {
                 assertEquals("three", field(FoxgloveTestClient.decode(three, d.payload()), "robotName"));
             }
@@ -138,11 +138,11 @@ class FoxgloveServerTest {
             }
 
             b.unsubscribe(1);
-            Await.until("b unsubscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            Await.until("b unsubscribed", () -> field.server().stats().subscriptions() == 1);
             int bHad = b.data().size();
             field.send(ServedField.status(4, "four", 99));
             field.send(ServedField.status(3, "three", 99));
-            Await.until("a has the last status", 5000, () -> a.data().stream()
+            Await.until("a has the last status", () -> a.data().stream()
                     .anyMatch(d -> d.payload().length > 0 && decodeQuietly(three, d).contains("99")));
             field.publish(ServedField.status(4, "four", 100), "status"); // the bus delivers synchronously
             assertEquals(bHad, b.data().size(), "nothing after unsubscribing");
@@ -169,7 +169,7 @@ class FoxgloveServerTest {
             slow.awaitChannel("/robot/5/debugText");
             fast.subscribe(1, channel.getInt("id"));
             slow.subscribe(1, channel.getInt("id"));
-            Await.until("both subscribed", 5000, () -> field.server().stats().subscriptions() == 2);
+            Await.until("both subscribed", () -> field.server().stats().subscriptions() == 2);
             slow.stopReading();
 
             int published = 0;
@@ -188,7 +188,7 @@ class FoxgloveServerTest {
             published++;
             field.publish(ServedField.text(5, "demo.text", published + " last"), "debugText");
             int all = published;
-            Await.until("the fast viewer has the last one", 5000, () -> fast.data().size() >= all);
+            Await.until("the fast viewer has the last one", () -> fast.data().size() >= all);
             assertEquals(published, fast.data().size(), "the fast viewer got every message, none dropped for it");
             for (int i = 0; i < published; i++) {
                 String text = field(FoxgloveTestClient.decode(channel, fast.data().get(i).payload()), "text");
@@ -196,7 +196,7 @@ class FoxgloveServerTest {
             }
 
             slow.resumeReading();
-            Await.until("the slow viewer catches up with the newest", 5000, () -> !slow.data().isEmpty()
+            Await.until("the slow viewer catches up with the newest", () -> !slow.data().isEmpty()
                     && decodeQuietly(channel, slow.data().get(slow.data().size() - 1)).contains(all + " last"));
             assertTrue(slow.data().size() < published, "the stalled viewer's stale messages were dropped");
             assertTrue(field.server().stats().dropped() >= published - slow.data().size(),
@@ -212,14 +212,14 @@ class FoxgloveServerTest {
             assertEquals("jsonschema", channel.getString("schemaEncoding"));
             assertEquals("object", new JSONObject(channel.getString("schema")).getString("type"));
             viewer.subscribe(3, channel.getInt("id"));
-            Await.until("the current match mode", 5000, () -> !viewer.dataOf(3).isEmpty());
+            Await.until("the current match mode", () -> !viewer.dataOf(3).isEmpty());
             JSONObject first = new JSONObject(new String(viewer.dataOf(3).get(0).payload(), StandardCharsets.UTF_8));
             assertTrue(first.getBoolean("mayConsoleSend"));
             assertFalse(first.getBoolean("playIsOn"));
 
             field.publish(Fumanoid.Message.newBuilder().setRobotID(2).setExtension(Fumanoid.status,
                     Fumanoid.Status.newBuilder().setGameState("PLAYING").build()).build(), "status");
-            Await.until("match mode after the robot reports PLAYING", 5000, () -> viewer.dataOf(3).stream()
+            Await.until("match mode after the robot reports PLAYING", () -> viewer.dataOf(3).stream()
                     .map(d -> new JSONObject(new String(d.payload(), StandardCharsets.UTF_8)))
                     .anyMatch(o -> o.getBoolean("playIsOn") && !o.getBoolean("mayConsoleSend")
                             && o.getString("notice").contains("PLAYING")));
@@ -230,7 +230,7 @@ class FoxgloveServerTest {
     void theTeamsMessageBudgetIsAJsonChannelOnceTheConsoleGuardsATeam() throws Exception {
         try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
             viewer.awaitChannel("/touchline/matchMode");
-            Await.until("a few ticks without a guarded team", 5000, () -> viewer.times().size() >= 3);
+            Await.until("a few ticks without a guarded team", () -> viewer.times().size() >= 3);
             assertTrue(viewer.channel("/team/budget").isEmpty(), "no budget channel without --team");
 
             field.console().guardTeamMessages(touchline.model.RuleProfile.named("hsl-2026"), 13,
@@ -238,7 +238,7 @@ class FoxgloveServerTest {
             JSONObject channel = viewer.awaitChannel("/team/budget");
             assertEquals("json", channel.getString("encoding"));
             viewer.subscribe(7, channel.getInt("id"));
-            Await.until("the budget at once", 5000, () -> !viewer.dataOf(7).isEmpty());
+            Await.until("the budget at once", () -> !viewer.dataOf(7).isEmpty());
             JSONObject first = new JSONObject(new String(viewer.dataOf(7).get(0).payload(), StandardCharsets.UTF_8));
             assertEquals(13, first.getInt("team"));
             assertEquals("HSL 2026", first.getString("profile"));
@@ -254,7 +254,7 @@ class FoxgloveServerTest {
                 }
             }
             // no GameController heard: the state is not known, so the three are heard, not counted
-            Await.until("three messages heard", 5000, () -> viewer.dataOf(7).stream()
+            Await.until("three messages heard", () -> viewer.dataOf(7).stream()
                     .map(d -> new JSONObject(new String(d.payload(), StandardCharsets.UTF_8)))
                     .anyMatch(o -> o.getInt("notCounted") == 3 && o.getInt("used") == 0 && o.getLong("left") == limit
                             && !o.getBoolean("gameControllerHeard")));
@@ -268,13 +268,13 @@ class FoxgloveServerTest {
             assertEquals("json", channel.getString("encoding"));
             field.publishGameState("hl12/04-playing.bin");
             viewer.subscribe(1, channel.getInt("id"));
-            Await.until("the last game state at once", 5000, () -> !viewer.dataOf(1).isEmpty());
+            Await.until("the last game state at once", () -> !viewer.dataOf(1).isEmpty());
             JSONObject playing = new JSONObject(new String(viewer.dataOf(1).get(0).payload(), StandardCharsets.UTF_8));
             assertEquals("PLAYING", playing.getString("state"));
             assertEquals("gc.hl12", playing.getString("format"));
 
             field.publishGameState("hl12/06-goal-team13.bin");
-            Await.until("the state after the goal", 5000, () -> viewer.dataOf(1).size() >= 2);
+            Await.until("the state after the goal", () -> viewer.dataOf(1).size() >= 2);
             JSONObject goal = new JSONObject(new String(viewer.dataOf(1).get(1).payload(), StandardCharsets.UTF_8));
             assertEquals("READY", goal.getString("state"));
             JSONObject team13 = goal.getJSONArray("teams").getJSONObject(0);
@@ -292,9 +292,9 @@ class FoxgloveServerTest {
             assertEquals("protobuf", log.getString("encoding"));
             assertEquals("protobuf", log.getString("schemaEncoding"));
             viewer.subscribe(1, log.getInt("id"));
-            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            Await.until("subscribed", () -> field.server().stats().subscriptions() == 1);
             field.send(ServedField.text(5, "demo.text", "ball seen at 1200 mm"));
-            Await.until("the log line", 5000, () -> !viewer.dataOf(1).isEmpty());
+            Await.until("the log line", () -> !viewer.dataOf(1).isEmpty());
             // decoded with the schema the server advertised, as Foxglove's Log panel would
             DynamicMessage line = FoxgloveTestClient.decode(log, viewer.dataOf(1).get(0).payload());
             var fields = line.getDescriptorForType();
@@ -319,10 +319,10 @@ class FoxgloveServerTest {
             JSONObject scene = viewer.awaitChannel("/field/scene");
             assertEquals("foxglove.SceneUpdate", scene.getString("schemaName"));
             viewer.subscribe(1, tf.getInt("id"));
-            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            Await.until("subscribed", () -> field.server().stats().subscriptions() == 1);
             field.send(Fumanoid.Message.newBuilder().setRobotID(4).setExtension(Fumanoid.status, Fumanoid.Status.newBuilder()
                     .setRobotPosition(Fumanoid.Position.newBuilder().setX(2000).setY(500).setTheta(0)).build()).build());
-            Await.until("the transform", 5000, () -> !viewer.dataOf(1).isEmpty());
+            Await.until("the transform", () -> !viewer.dataOf(1).isEmpty());
             String text = FoxgloveTestClient.decode(tf, viewer.dataOf(1).get(0).payload()).toString();
             assertTrue(text.contains("child_frame_id: \"robot4\"") && text.contains("x: 2.0") && text.contains("y: 0.5"), text);
         }

@@ -121,7 +121,7 @@ final class FoxgloveTestClient implements AutoCloseable {
     }
 
     JSONObject serverInfo() throws InterruptedException {
-        Await.until("serverInfo", 5000, () -> texts.stream().anyMatch(o -> o.optString("op").equals("serverInfo")));
+        Await.until("serverInfo", () -> texts.stream().anyMatch(o -> o.optString("op").equals("serverInfo")));
         return texts.stream().filter(o -> o.optString("op").equals("serverInfo")).findFirst().orElseThrow();
     }
 

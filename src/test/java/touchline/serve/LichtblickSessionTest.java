@@ -62,10 +62,10 @@ class LichtblickSessionTest {
             lichtblick.subscribe(0, status.getInt("id"));
             lichtblick.subscribe(1, log.getInt("id"));
             lichtblick.subscribe(2, matchMode.getInt("id"));
-            Await.until("the newest status and match mode at once", 5000,
+            Await.until("the newest status and match mode at once",
                     () -> !lichtblick.dataOf(0).isEmpty() && !lichtblick.dataOf(2).isEmpty());
             field.send(ServedField.text(3, "demo.text", "again"));
-            Await.until("the log under subscription 1", 5000, () -> !lichtblick.dataOf(1).isEmpty());
+            Await.until("the log under subscription 1", () -> !lichtblick.dataOf(1).isEmpty());
             assertTrue(FoxgloveTestClient.decode(log, lichtblick.dataOf(1).get(0).payload()).toString().contains("again"));
             assertTrue(new String(lichtblick.dataOf(2).get(0).payload(), java.nio.charset.StandardCharsets.UTF_8)
                     .startsWith("{"), "match mode is JSON");
@@ -73,10 +73,10 @@ class LichtblickSessionTest {
             // a panel closed, another opened on the same topic: unsubscribe, subscribe under a new id
             lichtblick.unsubscribe(0);
             lichtblick.subscribe(3, status.getInt("id"));
-            Await.until("the status again under subscription 3", 5000, () -> !lichtblick.dataOf(3).isEmpty());
+            Await.until("the status again under subscription 3", () -> !lichtblick.dataOf(3).isEmpty());
             int underZero = lichtblick.dataOf(0).size();
             field.send(ServedField.status(3, "ada", 51));
-            Await.until("the new status under 3", 5000, () -> lichtblick.dataOf(3).size() >= 2);
+            Await.until("the new status under 3", () -> lichtblick.dataOf(3).size() >= 2);
             assertEquals(underZero, lichtblick.dataOf(0).size(), "nothing under the cancelled id");
 
             // ops Lichtblick sends to servers with those capabilities: refused, said, and nothing else happens
@@ -85,14 +85,14 @@ class LichtblickSessionTest {
             lichtblick.send("{\"op\":\"subscribeParameterUpdates\",\"parameterNames\":[\"a\"]}");
             lichtblick.send("{\"op\":\"subscribeConnectionGraph\"}");
             lichtblick.send("{\"op\":\"fetchAsset\",\"uri\":\"package://robot/model.urdf\",\"requestId\":1}");
-            Await.until("four statuses", 5000, () -> lichtblick.statuses().size() >= 4);
+            Await.until("four statuses", () -> lichtblick.statuses().size() >= 4);
             for (JSONObject s : lichtblick.statuses()) {
                 assertEquals(2, s.getInt("level"));
                 assertTrue(s.getString("message").contains("read-only server"), s.toString());
             }
             assertEquals(badBefore + 4, field.server().stats().badRequests());
             field.send(ServedField.text(3, "demo.text", "still here"));
-            Await.until("the log goes on", 5000, () -> lichtblick.dataOf(1).size() >= 2);
+            Await.until("the log goes on", () -> lichtblick.dataOf(1).size() >= 2);
             assertFalse(lichtblick.closed());
         }
     }
@@ -112,12 +112,12 @@ class LichtblickSessionTest {
             assertTrue(lichtblick.channel("/gc/gc.hl12").isEmpty(), "not advertised without ?raw=1");
             // and not to be had by guessing its id
             lichtblick.subscribe(9, gc.getInt("id"));
-            Await.until("refused", 5000, () -> !lichtblick.statuses().isEmpty());
+            Await.until("refused", () -> !lichtblick.statuses().isEmpty());
             assertTrue(lichtblick.statuses().get(0).getString("message").contains("unknown channel " + gc.getInt("id")));
             touchline.subscribe(9, gc.getInt("id"));
-            Await.until("subscribed", 5000, () -> field.server().stats().subscriptions() == 1);
+            Await.until("subscribed", () -> field.server().stats().subscriptions() == 1);
             field.publishGameState("hl12/04-playing.bin");
-            Await.until("the packet's bytes", 5000, () -> !touchline.dataOf(9).isEmpty());
+            Await.until("the packet's bytes", () -> !touchline.dataOf(9).isEmpty());
         }
     }
 

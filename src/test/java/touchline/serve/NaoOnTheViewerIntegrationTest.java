@@ -118,7 +118,7 @@ class NaoOnTheViewerIntegrationTest {
 
     /** The simulated NAO, started, and its camera port. */
     private static int[] simPorts(RobotProcess sim) throws Exception {
-        Await.until("the camera's port", 5000, () -> CAMERA_PORT.matcher(sim.stdout()).find());
+        Await.until("the camera's port", () -> CAMERA_PORT.matcher(sim.stdout()).find());
         Matcher m = CAMERA_PORT.matcher(sim.stdout());
         assertTrue(m.find());
         return new int[]{sim.port(), Integer.parseInt(m.group(1))};
@@ -140,12 +140,12 @@ class NaoOnTheViewerIntegrationTest {
              FoxgloveTestClient foxglove = new FoxgloveTestClient(field.server().port());
              Nao nao = nao(field.console())) {
             second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("frames in the first console", 10_000, () -> here.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).count() >= 3);
+            Await.until("frames in the first console", () -> here.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).count() >= 3);
 
             JSONObject image = foxglove.awaitChannel("/nao/camera/image");
             assertEquals("foxglove.CompressedImage", image.getString("schemaName"));
             foxglove.subscribe(1, image.getInt("id"));
-            Await.until("a CompressedImage", 10_000, () -> !foxglove.dataOf(1).isEmpty());
+            Await.until("a CompressedImage", () -> !foxglove.dataOf(1).isEmpty());
             DynamicMessage jpeg = FoxgloveTestClient.decode(image, foxglove.dataOf(1).get(0).payload());
             assertEquals("jpeg", jpeg.getField(jpeg.getDescriptorForType().findFieldByName("format")));
             ByteString data = (ByteString) jpeg.getField(jpeg.getDescriptorForType().findFieldByName("data"));
@@ -153,8 +153,7 @@ class NaoOnTheViewerIntegrationTest {
             assertEquals(0xD8, data.byteAt(1) & 0xFF);
             assertTrue(data.size() > 1000, "a whole frame: " + data.size() + " bytes");
 
-            Await.until("frames in the viewing console", 10_000,
-                    () -> there.stream().anyMatch(NaoOnTheViewerIntegrationTest::naoFrame));
+            Await.until("frames in the viewing console", () -> there.stream().anyMatch(NaoOnTheViewerIntegrationTest::naoFrame));
             Envelope remote = there.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).findFirst().orElseThrow();
             assertEquals(Origin.REMOTE, remote.origin());
             assertNotNull(remote.message(), "rebuilt with the advertised schema");
@@ -163,13 +162,12 @@ class NaoOnTheViewerIntegrationTest {
             assertTrue(framesHere.stream().anyMatch(b -> Arrays.equals(b, remote.raw())),
                     "the viewer's frame is one the first console got, byte for byte");
 
-            Await.until("the NAO link online", 10_000,
-                    () -> nao.link().state() == touchline.transport.nao.ConnectionState.ONLINE);
+            Await.until("the NAO link online", () -> nao.link().state() == touchline.transport.nao.ConnectionState.ONLINE);
             CallOutcome volume = nao.link().call("ALTextToSpeech", "getVolume").get(20, TimeUnit.SECONDS);
             assertInstanceOf(CallOutcome.Value.class, volume);
             // a call's channels are made by its first envelopes, so the viewer subscribes only after
             // them: call again until one call and its reply reach the viewing console
-            Await.until("a call and its reply in the viewing console", 10_000, () -> {
+            Await.until("a call and its reply in the viewing console", () -> {
                 boolean arrived = there.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC
                         && e.direction() == touchline.transport.Direction.OUT)
                         && there.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC
@@ -210,8 +208,8 @@ class NaoOnTheViewerIntegrationTest {
             first.showCamera(true);
             assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), Integer.toString(ports[1]), "", true),
                     first.result());
-            Await.until("a frame in the first console's NAO view", Await.FLOOR_MILLIS, () -> first.frame().isPresent());
-            Await.until("a frame in the viewer's NAO view", Await.FLOOR_MILLIS, () -> viewing.frame().isPresent());
+            Await.until("a frame in the first console's NAO view", () -> first.frame().isPresent());
+            Await.until("a frame in the viewer's NAO view", () -> viewing.frame().isPresent());
             assertTrue(second.naoSessions().isEmpty(), "the viewer opened no NAO and no camera");
 
             byte[] shown = viewing.frame().orElseThrow().jpeg();
@@ -247,7 +245,7 @@ class NaoOnTheViewerIntegrationTest {
             touchline.app.NaoViewModel first = views.first();
             touchline.app.NaoViewModel viewing = views.viewing();
             assertTrue(first.connect("127.0.0.1", Integer.toString(ports[0]), "0", "", true), first.result());
-            Await.until("the NAO online", Await.FLOOR_MILLIS, () -> first.state().startsWith("online"));
+            Await.until("the NAO online", () -> first.state().startsWith("online"));
 
             String volume = outcomeOnTheViewer(first, viewing, "getVolume");
             assertFalse(volume.contains("error"), volume);
@@ -268,7 +266,7 @@ class NaoOnTheViewerIntegrationTest {
                                              String method) throws InterruptedException {
         String call = "ALTextToSpeech." + method + ": ";
         int[] polls = {0};
-        Await.until(call + "outcome on the viewer", Await.FLOOR_MILLIS, () -> {
+        Await.until(call + "outcome on the viewer", () -> {
             String line = viewing.result();
             if (line.startsWith(call) && !line.endsWith(touchline.app.NaoCallFeed.NO_REPLY_YET)) {
                 return true;
@@ -278,7 +276,7 @@ class NaoOnTheViewerIntegrationTest {
             }
             return false;
         });
-        Await.until(call + "outcome on the first console", Await.FLOOR_MILLIS,
+        Await.until(call + "outcome on the first console",
                 () -> first.result().equals(viewing.result()));
         return viewing.result();
     }

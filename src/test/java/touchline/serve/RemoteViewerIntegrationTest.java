@@ -51,16 +51,15 @@ class RemoteViewerIntegrationTest {
              RobotProcess robot = RobotProcess.robot(4, field.console().port()).start();
              Console second = viewer()) {
             Console first = field.console();
-            Await.until("the first console has robot 4's option list", 5000,
-                    () -> first.options().options(4).listReceived());
+            Await.until("the first console has robot 4's option list", () -> first.options().options(4).listReceived());
             second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("connected", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+            Await.until("connected", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
             assertTrue(first.setOption(4, TEXT, true).isSent());
             // the robot sends its list again when an option changes, and its text from now on
-            Await.until("robot 4 in the second console", 5000, () -> second.robots().robot(4).isPresent());
-            Await.until("the same option tree", 5000, () -> !optionNames(second, 4).isEmpty()
+            Await.until("robot 4 in the second console", () -> second.robots().robot(4).isPresent());
+            Await.until("the same option tree", () -> !optionNames(second, 4).isEmpty()
                     && optionNames(second, 4).equals(optionNames(first, 4)));
-            Await.until("debug text in the second console", 5000, () -> !texts(second, 4).isEmpty());
+            Await.until("debug text in the second console", () -> !texts(second, 4).isEmpty());
             List<String> seen = texts(second, 4);
             assertTrue(texts(first, 4).containsAll(seen), "every line the second shows, the first showed: " + seen);
 
@@ -93,10 +92,10 @@ class RemoteViewerIntegrationTest {
     void aSecondTouchlineShowsTheRobotsOfAConsoleWithATeamKey() throws Exception {
         try (ServedField field = new ServedField(); Console second = viewer()) {
             second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("connected", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+            Await.until("connected", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
             long[] counter = {0};
             // a status each time the condition is polled: the viewer subscribes once the channel is advertised
-            Await.until("robot 6 in the second console", 5000, () -> {
+            Await.until("robot 6 in the second console", () -> {
                 field.publishTagged(ServedField.status(6, "tagged-six", 77), "status", ++counter[0]);
                 return second.robots().robot(6).isPresent();
             });
@@ -122,14 +121,13 @@ class RemoteViewerIntegrationTest {
             java.util.List<touchline.transport.Envelope> heard = new java.util.concurrent.CopyOnWriteArrayList<>();
             try (AutoCloseable sub = second.bus().subscribe(heard::add)) {
                 second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-                Await.until("connected", 5000,
-                        () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+                Await.until("connected", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
                 assertFalse(second.matchMode().playIsOn());
                 byte[] playing;
                 try (var in = RemoteViewerIntegrationTest.class.getResourceAsStream("/golden/gamecontroller/hl12/04-playing.bin")) {
                     playing = in.readAllBytes();
                 }
-                Await.until("the GameController's packet on the viewer", 10_000, () -> {
+                Await.until("the GameController's packet on the viewer", () -> {
                     // as the first console's port watch publishes what it hears on 3838 (the raw channel appears with it)
                     field.console().bus().accept(new touchline.transport.Envelope(field.console().clock().nowMicros(),
                             touchline.transport.Direction.IN, touchline.transport.Channel.GAMECONTROLLER,
@@ -142,15 +140,14 @@ class RemoteViewerIntegrationTest {
                 org.junit.jupiter.api.Assertions.assertArrayEquals(playing, gc.raw(), "the datagram's bytes as heard there");
                 assertEquals("gc.hl12", gc.kind());
                 assertEquals(Origin.REMOTE, gc.origin());
-                Await.until("the viewer's match mode shows the remote field's play", 5000,
-                        () -> second.matchMode().playIsOn());
+                Await.until("the viewer's match mode shows the remote field's play", () -> second.matchMode().playIsOn());
                 assertTrue(second.matchMode().notice().contains("remote console's GameController"),
                         second.matchMode().notice());
 
                 // a datagram the first console could not decode: the viewer's network console shows the same error
                 byte[] garbage = {1, 2, 3, 4, 5, 6, 7};
                 try (java.net.DatagramSocket s = new java.net.DatagramSocket()) {
-                    Await.until("the malformed datagram on the viewer", 10_000, () -> {
+                    Await.until("the malformed datagram on the viewer", () -> {
                         send(s, new java.net.DatagramPacket(garbage, garbage.length,
                                 java.net.InetAddress.getLoopbackAddress(), field.console().port()));
                         return heard.stream().anyMatch(e -> e.error() != null);
@@ -170,17 +167,17 @@ class RemoteViewerIntegrationTest {
             int port = field.server().port();
             second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
             field.publish(ServedField.text(2, "a", "before"), "debugText");
-            Await.until("first text", 5000, () -> {
+            Await.until("first text", () -> {
                 field.publish(ServedField.text(2, "a", "before"), "debugText");
                 return texts(second, 2).contains("before");
             });
             field.server().close();
-            Await.until("lost", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST);
+            Await.until("lost", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST);
             assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
             try (FoxgloveServer again = new FoxgloveServer(ServeConfig.defaults().withPort(port),
                     field.console().kinds(), field.console().clock());
                  AutoCloseable sub = field.console().bus().subscribe(again)) {
-                Await.until("reconnected and subscribed", 10_000, () -> {
+                Await.until("reconnected and subscribed", () -> {
                     field.publish(ServedField.text(2, "a", "after"), "debugText");
                     return texts(second, 2).contains("after");
                 });
@@ -194,7 +191,7 @@ class RemoteViewerIntegrationTest {
         try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withToken("right"));
              Console second = viewer()) {
             second.viewRemote(new URI("ws://127.0.0.1:" + field.server().port() + "/?token=wrong"), null);
-            Await.until("refused", 5000, () -> second.remote().orElseThrow().status().detail().contains("token"));
+            Await.until("refused", () -> second.remote().orElseThrow().status().detail().contains("token"));
             assertEquals(RemoteStatus.State.LOST, second.remote().orElseThrow().status().state());
         }
     }
@@ -204,7 +201,7 @@ class RemoteViewerIntegrationTest {
         try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withMaxViewers(0));
              Console second = viewer()) {
             second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("told why", 5000, () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST
+            Await.until("told why", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST
                     && second.remote().orElseThrow().status().detail().contains("too many viewers"));
             assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
         }

@@ -77,12 +77,12 @@ class ServeTlsTest {
             assertTrue(url.startsWith("wss://"), url);
             trusting.viewRemote(new URI(url), RemoteTrust.trusting(pem[0]));
             doubting.viewRemote(new URI(url), null);
-            Await.until("robot 5 over TLS", 5000, () -> {
+            Await.until("robot 5 over TLS", () -> {
                 field.publish(ServedField.status(5, "tls", 40), "status");
                 return trusting.robots().robot(5).isPresent();
             });
             assertEquals("tls", trusting.robots().robot(5).orElseThrow().name());
-            Await.until("the doubting viewer is refused", 5000,
+            Await.until("the doubting viewer is refused",
                     () -> doubting.remote().orElseThrow().status().state() == RemoteStatus.State.LOST);
             assertFalse(doubting.remote().orElseThrow().status().detail().isEmpty());
             assertTrue(doubting.robots().robots().isEmpty());

@@ -18,6 +18,14 @@ public final class Await {
     private Await() {
     }
 
+    /**
+     * Returns as soon as {@code condition} holds; fails the test naming {@code what} after the floor.
+     * The one to use: how long a test may wait is this class's policy, not each test's guess.
+     */
+    public static void until(String what, BooleanSupplier condition) throws InterruptedException {
+        until(what, FLOOR_MILLIS, condition);
+    }
+
     /** Returns as soon as {@code condition} holds; fails the test naming {@code what} after {@code millis}. */
     public static void until(String what, long millis, BooleanSupplier condition) throws InterruptedException {
         long bound = Math.max(millis, FLOOR_MILLIS);

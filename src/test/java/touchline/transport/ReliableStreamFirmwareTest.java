@@ -105,7 +105,7 @@ class ReliableStreamFirmwareTest {
                         return mathe.peerEnded() && session.idle() && robot.stdout().contains("MATHE ");
                     }
                 });
-                Await.until("the robot's verdict", 10_000, () -> robot.stdout().contains("MATHE OK") || robot.stdout().contains("MISMATCH"));
+                Await.until("the robot's verdict", () -> robot.stdout().contains("MATHE OK") || robot.stdout().contains("MISMATCH"));
                 synchronized (mathe) {
                     assertTrue(mathe.agrees(), mathe.summary());
                 }

@@ -329,8 +329,7 @@ class UdpTransportTest {
                 send(tagged(2, ++counter, status(2, Framing.LEGACY)));
             }
         }
-        touchline.testing.Await.until("every datagram read", touchline.testing.Await.FLOOR_MILLIS,
-                () -> transport.counters().datagramsIn() == n);
+        touchline.testing.Await.until("every datagram read", () -> transport.counters().datagramsIn() == n);
         slowModel = null;
         hold.countDown();
         for (int i = 0; i < n; i++) {

@@ -18,7 +18,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * What keeps the window's software drawing small (issue 14, docs/benchmarks.md "Twelfth
+ * What keeps the window's software drawing small (issue 14, docs/archive/benchmarks-sessions.md "Twelfth
  * session"): no view is drawn into a cached image first, a canvas's repaint starts at its own
  * opaque pane, and no transparent background is filled where views repaint.
  */
@@ -57,7 +57,7 @@ class DrawingCostUiTest {
     /**
      * A fill that is not opaque costs the software renderer a blend of every pixel it covers each
      * time anything under it changes; the dock's split panes lay three of them under the demo
-     * layout's views (two thirds of the render thread, docs/benchmarks.md "Fourteenth session").
+     * layout's views (two thirds of the render thread, docs/archive/benchmarks-sessions.md "Fourteenth session").
      * Only buttons that light up under the mouse may have one.
      */
     @Test

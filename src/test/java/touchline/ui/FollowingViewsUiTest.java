@@ -144,7 +144,7 @@ class FollowingViewsUiTest {
 
     /**
      * The debug console's rows paint no background of their own, only the list does (a scroll fills the
-     * list's area once, not again in every row; docs/benchmarks.md "Seventeenth session"); a selected row
+     * list's area once, not again in every row; docs/archive/benchmarks-sessions.md "Seventeenth session"); a selected row
      * still shows its selection.
      */
     @Test

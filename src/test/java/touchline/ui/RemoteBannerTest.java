@@ -30,7 +30,7 @@ class RemoteBannerTest {
             ConsoleStatus status = new ConsoleStatus(console);
             assertFalse(status.silence().contains(Console.COMMANDS_OFF), "a console on the field sends");
             console.viewRemote(new URI("ws://127.0.0.1:" + nobody + "/?token=secret"), null);
-            Await.until("lost", 5000, () -> status.silence().contains("lost"));
+            Await.until("lost", () -> status.silence().contains("lost"));
             String banner = status.silence();
             assertTrue(banner.startsWith("connection to ws://127.0.0.1:" + nobody + "/ lost (nobody listening), reconnecting…"),
                     banner);

@@ -208,8 +208,7 @@ class ViewFaultUiTest {
                      touchline.transport.nao.NaoLinkConfig.defaults(),
                      new touchline.transport.nao.NaoEnvelopeChannel(ui.console.bus()), null,
                      new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
-            touchline.testing.Await.until("the NAO online", 30_000,
-                    () -> link.state() == touchline.transport.nao.ConnectionState.ONLINE);
+            touchline.testing.Await.until("the NAO online", () -> link.state() == touchline.transport.nao.ConnectionState.ONLINE);
             link.call("ALMotion", "ping").get(30, java.util.concurrent.TimeUnit.SECONDS);
             ui.fxRun(() -> ui.window.open("network", ViewSource.NONE));
             String peer = "127.0.0.1:" + nao.port();

@@ -105,8 +105,7 @@ class ViewersUiTest {
                         closed[0] = true; // the connection went without a close frame
                     }
                 }).get(10, TimeUnit.SECONDS);
-        touchline.testing.Await.until("the channels", 10_000,
-                () -> heard.stream().anyMatch(o -> o.optString("op").equals("advertise")));
+        touchline.testing.Await.until("the channels", () -> heard.stream().anyMatch(o -> o.optString("op").equals("advertise")));
         int matchMode = heard.stream().filter(o -> o.optString("op").equals("advertise"))
                 .flatMap(o -> o.getJSONArray("channels").toList().stream()).map(c -> new JSONObject((java.util.Map<?, ?>) c))
                 .filter(c -> c.getString("topic").equals("/touchline/matchMode")).findFirst().orElseThrow().getInt("id");
@@ -123,7 +122,7 @@ class ViewersUiTest {
         shortcut();
         ui.await(30, () -> !((ToggleButton) view.node().lookup("#viewers-toggle")).isSelected());
         assertFalse(ui.window.serving().serving());
-        touchline.testing.Await.until("the viewer is disconnected", 10_000, () -> closed[0] || ws.isInputClosed());
+        touchline.testing.Await.until("the viewer is disconnected", () -> closed[0] || ws.isInputClosed());
         ui.await(30, () -> table.getItems().isEmpty());
     }
 }

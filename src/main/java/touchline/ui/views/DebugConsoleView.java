@@ -116,7 +116,7 @@ public final class DebugConsoleView implements View {
     /**
      * Whether the list shows and follows the log, or the plain newest lines do in its place ({@link
      * NewestLines}): following a log in the list costs the window a fifth of its time with the demo team
-     * (docs/benchmarks.md, "Eighteenth session"), and at a tournament the console mostly follows with
+     * (docs/archive/benchmarks-sessions.md, "Eighteenth session"), and at a tournament the console mostly follows with
      * nobody at it. The list comes up, at the newest line, as soon as the user points at it, tabs to it,
      * selects, pauses or searches; it goes again when none of these holds. Both look the same.
      */

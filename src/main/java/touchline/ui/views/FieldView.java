@@ -31,7 +31,7 @@ import java.util.Set;
  * <p>
  * The field and the objects are painted on a canvas, the robots are shapes over it: a robot
  * that moves repaints the few pixels around it, not the whole field (it moved with every
- * robot's status, up to 30 times a second with three robots; docs/benchmarks.md, "Sixteenth
+ * robot's status, up to 30 times a second with three robots; docs/archive/benchmarks-sessions.md, "Sixteenth
  * session").
  */
 public final class FieldView extends SourcedView {

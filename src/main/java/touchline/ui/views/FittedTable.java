@@ -9,7 +9,7 @@ import javafx.geometry.Orientation;
  * A table as tall as its rows (and its header and sideways scroll bar), at least
  * {@code minRows} tall so its placeholder fits; in a box that is shorter it scrolls as any
  * table does. JavaFX's table otherwise fills its whole height with empty rows, one cell per
- * column each, which every changed frame walks and styles again (docs/benchmarks.md,
+ * column each, which every changed frame walks and styles again (docs/archive/benchmarks-sessions.md,
  * "Sixteenth session"). Rows have one fixed height.
  */
 final class FittedTable<T> extends TableView<T> {

@@ -16,7 +16,7 @@ import java.util.function.Function;
  * redraws those cells and nothing else. The table's list of rows changes only when rows come or
  * go. Any change to that list (even one row replaced) makes JavaFX's table re-style and lay out
  * every cell it has, empty rows included: for the Robots table with three robots, 340 cells twice
- * a second, two thirds of all the garbage the window made (docs/benchmarks.md, "Fifteenth
+ * a second, two thirds of all the garbage the window made (docs/archive/benchmarks-sessions.md, "Fifteenth
  * session"). The rows keep the order they have in the table (the user's sort).
  *
  * @param <T> what a row shows

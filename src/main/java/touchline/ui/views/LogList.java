@@ -25,7 +25,7 @@ import java.util.function.Supplier;
  * follows (nothing selected, not paused) the control holds only the newest {@link #TAIL} lines
  * (up to {@link #TRIM_SLACK} more before the oldest go, in one cut):
  * JavaFX 21's list and table measure every item again each time they scroll, so following a
- * 5 000-line log took most of the window's FX thread (docs/benchmarks.md, "Thirteenth
+ * 5 000-line log took most of the window's FX thread (docs/archive/benchmarks-sessions.md, "Thirteenth
  * session"). As soon as the user selects a line or pauses, it holds every line, with the
  * selection, the focus and the line at the top kept where they were; when the selection is
  * cleared (and not paused) it follows again; while it holds every line, the lines on screen stay
@@ -43,7 +43,7 @@ final class LogList<E, T> {
      * ... and up to this many more before the oldest go, all in one frame: cutting the front of
      * the list moves every line to another row, so each row on screen gets a new text, is styled
      * and laid out again (most of the debug console's cost when it cut one line a frame;
-     * docs/benchmarks.md, "Sixteenth session"). Appending alone leaves the rows on screen with
+     * docs/archive/benchmarks-sessions.md, "Sixteenth session"). Appending alone leaves the rows on screen with
      * their lines, and only the new ones are drawn.
      */
     static final int TRIM_SLACK = 200;

@@ -12,7 +12,7 @@ import java.util.List;
 
 /**
  * The newest lines of a log as plain text, bottom up, in rows of a fixed height: what a list that
- * follows its log shows, at a fraction of the cost (docs/benchmarks.md, "Nineteenth session"). A
+ * follows its log shows, at a fraction of the cost (docs/archive/benchmarks-sessions.md, "Nineteenth session"). A
  * new line takes the row of the line that left the top, and the rows move up together in one step,
  * so each line is laid out once; nothing here asks the window for a layout. It cannot be selected,
  * scrolled or focused: the debug console shows it while nobody uses its list ({@link LogList#glance}).

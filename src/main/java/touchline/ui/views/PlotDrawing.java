@@ -16,7 +16,7 @@ import java.util.Locale;
  * Pixels of our own ({@link Raster}, labels as {@link LabelSprites}) shown as one image, rather
  * than a chart library (under the software renderer a chart's axis nodes, relayout and layers
  * cost several times the whole frame budget) or a canvas (which replays each of the frame's
- * rectangles through JavaFX's rasteriser and blends itself onto the window: docs/benchmarks.md,
+ * rectangles through JavaFX's rasteriser and blends itself onto the window: docs/archive/benchmarks-sessions.md,
  * "Twentieth session").
  */
 final class PlotDrawing {

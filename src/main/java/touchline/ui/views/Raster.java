@@ -7,7 +7,7 @@ import java.util.Arrays;
  * one image ({@link touchline.ui.RasterPane}) by the plot and the region overlay: under JavaFX's
  * software renderer a canvas replays every one of a frame's rectangles through its rasteriser
  * (the plot: ~1 700, a span per pixel column and series), fills its background and blends itself
- * onto the window, up to 30 times a second (docs/benchmarks.md, "Twentieth session").
+ * onto the window, up to 30 times a second (docs/archive/benchmarks-sessions.md, "Twentieth session").
  * Coordinates are the view's (logical) pixels; {@link #scale()} device pixels each on a
  * high-density screen. What lies under a drawing is opaque; a label's edge or a translucent fill
  * is blended over it. Drawing needs no window: testable without one.

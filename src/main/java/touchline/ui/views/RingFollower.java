@@ -12,7 +12,7 @@ import java.util.function.Function;
  * per frame: appends what arrived since the last frame, read up to the store's version at the
  * start so nothing is read twice; keeps the newest {@code shown} items, trimming the oldest in
  * batches of a tenth of that (one removal every few hundred lines instead of one per frame; the
- * window's CPU showed no difference either way, docs/benchmarks.md "Twelfth session"); and after
+ * window's CPU showed no difference either way, docs/archive/benchmarks-sessions.md "Twelfth session"); and after
  * {@link #reload()} (a filter changed) starts again from what the ring still holds. The
  * text view uses it directly, the debug console and the network console through {@link LogList}.
  *

@@ -8,7 +8,7 @@ import java.util.function.Predicate;
 /**
  * A node of a control's skin (its flow, a scroll bar, the header's background), found by a selector
  * once and kept: {@link Node#lookup} parses its selector and walks the control's nodes at every call,
- * which the views did every frame (docs/benchmarks.md, "Nineteenth session"). Found again when the
+ * which the views did every frame (docs/archive/benchmarks-sessions.md, "Nineteenth session"). Found again when the
  * node left the control (a new skin); {@code null} while the control has none.
  *
  * @param <T> the node's type

@@ -5,7 +5,6 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.transport.Envelope;
 
-import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -36,7 +35,7 @@ class NaoLinkRobotSideTest {
 
     private NaoLink online(RobotSideProcess sim) throws Exception {
         NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         return link;
     }
 
@@ -75,13 +74,13 @@ class NaoLinkRobotSideTest {
             CompletableFuture<CallOutcome> inFlight = link.call(NaoCall.of("ALRobotPosture", "goToPosture", "Sit", 0.2f));
             sim.kill();
             // how fast a loss is noticed is a budget (docs/benchmarks.md), not asserted here
-            assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost");
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST), "lost");
             assertInstanceOf(CallOutcome.Lost.class, get(inFlight));
             assertInstanceOf(CallOutcome.Lost.class, get(link.call("ALMemory", "insertData", "Touchline/late", 1)));
 
             sim = new RobotSideProcess(port, 0);
             RobotSideProcess restarted = sim;
-            assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "back online");
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "back online");
             Thread.sleep(500); // nothing to await: a late delivery would arrive now if anything were queued
             assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "Touchline/late")),
                     "the call made while the robot was down must not run after it restarts");
@@ -102,13 +101,13 @@ class NaoLinkRobotSideTest {
             long frozen = System.nanoTime();
             // Sent into the frozen robot's socket buffer: only its deadline keeps it from running later.
             CompletableFuture<CallOutcome> intoTheFreeze = link.call(NaoCall.of("ALMemory", "insertData", "Touchline/frozen", 1), 1000);
-            assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost");
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST), "lost");
             long detectedMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - frozen);
             CallOutcome outcome = get(intoTheFreeze);
             assertTrue(outcome instanceof CallOutcome.Lost || outcome instanceof CallOutcome.TimedOut, outcome.describe());
             Thread.sleep(1200); // nothing to await: let the call's deadline pass before the robot thaws
             sim.signal("CONT");
-            assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "back online");
+            assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "back online");
             assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "Touchline/frozen")),
                     "a call stuck in a frozen robot must not run after its deadline (detected after " + detectedMs + " ms)");
         }
@@ -136,11 +135,11 @@ class NaoLinkRobotSideTest {
              NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             camera.configure(new CameraSettings(2, 11, 30));
             try (AutoCloseable viewer = camera.subscribe()) {
-                assertTrue(Poll.until(() -> camera.framesReceived() >= 5, Duration.ofSeconds(10)), "" + camera.lastError());
+                assertTrue(Poll.until(() -> camera.framesReceived() >= 5), "" + camera.lastError());
                 assertEquals(640, camera.latestFrame().width());
                 assertEquals(480, camera.latestFrame().height());
                 camera.configure(new CameraSettings(1, 11, 30));
-                assertTrue(Poll.until(() -> camera.latestFrame().width() == 320, Duration.ofSeconds(5)));
+                assertTrue(Poll.until(() -> camera.latestFrame().width() == 320));
             }
         }
     }
@@ -155,7 +154,7 @@ class NaoLinkRobotSideTest {
             assertTrue(Poll.until(() -> {
                 CallOutcome log = link.call("Robot", "getCallLog").join();
                 return log instanceof CallOutcome.Value v && v.value().toString().split("ALTextToSpeech.say", -1).length == 3;
-            }, Duration.ofSeconds(5)), "both workers run a say");
+            }), "both workers run a say");
             // answered while both minute-long says hold the workers (their latency is benchmarked)
             for (int i = 0; i < 20; i++) {
                 assertEquals(new CallOutcome.Value(true), get(link.call("ALMotion", "ping")), "ping " + i);

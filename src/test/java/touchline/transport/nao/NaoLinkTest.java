@@ -8,7 +8,6 @@ import touchline.transport.Direction;
 import touchline.transport.Envelope;
 
 import java.net.ServerSocket;
-import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -30,7 +29,7 @@ class NaoLinkTest {
     private NaoLink connect(NaoLinkConfig config) throws Exception {
         robot = new FakeNaoRobot(0);
         link = new NaoLink("127.0.0.1", robot.port(), config, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         return link;
     }
 
@@ -64,7 +63,7 @@ class NaoLinkTest {
         robot = new FakeNaoRobot(0);
         link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.defaults(), envelopes::add, null,
                 () -> wallMicros, System::nanoTime);
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(30)), "online");
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         assertEquals(new CallOutcome.Value("x"), get(link.call(NaoCall.of("Test", "echo", "x"), 700)));
 
         Envelope request = envelopes.stream().filter(e -> e.direction() == Direction.OUT).findFirst().orElseThrow();
@@ -89,7 +88,7 @@ class NaoLinkTest {
         connect(NaoLinkConfig.defaults());
         CallOutcome outcome = get(link.call(NaoCall.of("Test", "sleep", 600), 150));
         assertInstanceOf(CallOutcome.TimedOut.class, outcome);
-        assertTrue(Poll.until(() -> link.stats().stray() == 1, Duration.ofSeconds(3)), "late reply counted as stray");
+        assertTrue(Poll.until(() -> link.stats().stray() == 1), "late reply counted as stray");
         assertEquals(new CallOutcome.Value("next"), get(link.call("Test", "echo", "next")));
     }
 
@@ -97,11 +96,11 @@ class NaoLinkTest {
     void onlyIdempotentCallsAreRetried() throws Exception {
         connect(NaoLinkConfig.parse("retries=2\nidempotent=Test.sleep\n", "test"));
         assertInstanceOf(CallOutcome.TimedOut.class, get(link.call(NaoCall.of("Test", "sleep", 500), 100)));
-        assertTrue(Poll.until(() -> count("Test.sleep") == 3, Duration.ofSeconds(3)));
+        assertTrue(Poll.until(() -> count("Test.sleep") == 3));
         robot.executed.clear();
         link.close();
         link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.parse("retries=2\n", "test"), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)));
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE));
         assertInstanceOf(CallOutcome.TimedOut.class, get(link.call(NaoCall.of("Test", "sleep", 500), 100)));
         Thread.sleep(600); // nothing to await: we check that no second attempt arrives
         assertEquals(1, count("Test.sleep"));
@@ -118,13 +117,13 @@ class NaoLinkTest {
         CompletableFuture<CallOutcome> inFlight = link.call("Test", "sleep", 2000);
         robot.close();
         // how fast a loss is noticed is a budget (docs/benchmarks.md), not asserted here
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST, Duration.ofSeconds(3)), "lost");
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.LOST), "lost");
         assertInstanceOf(CallOutcome.Lost.class, get(inFlight));
         CallOutcome whileDown = get(link.call("ALMemory", "insertData", "late", 1));
         assertInstanceOf(CallOutcome.Lost.class, whileDown);
 
         robot = new FakeNaoRobot(port);
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "back online");
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "back online");
         assertEquals(new CallOutcome.Value("x"), get(link.call("Test", "echo", "x")));
         assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMemory", "getData", "late")),
                 "the call made while the robot was down must not have run after it came back");
@@ -215,7 +214,7 @@ class NaoLinkTest {
     void requestsRepliesAndConnectionEventsEnterTheEnvelopeStream() throws Exception {
         connect(NaoLinkConfig.defaults());
         get(link.call("Test", "echo", "hi"));
-        assertTrue(Poll.until(() -> envelopes.size() >= 3, Duration.ofSeconds(2)));
+        assertTrue(Poll.until(() -> envelopes.size() >= 3));
         assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.LINK_EVENT && e.kind().equals("nao.online")
                 && new String(e.raw()).contains("online")));
         assertTrue(envelopes.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.direction() == Direction.OUT
@@ -233,7 +232,7 @@ class NaoLinkTest {
                 sendingThreads.add(Thread.currentThread().getName());
             }
         }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE, Duration.ofSeconds(5)), "online");
+        assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         for (int i = 0; i < 20; i++) {
             assertEquals(new CallOutcome.Value((long) i), get(link.call("Test", "echo", i)));
         }

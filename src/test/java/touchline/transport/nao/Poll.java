@@ -12,6 +12,11 @@ final class Poll {
     private Poll() {
     }
 
+    /** True as soon as {@code condition} holds; false after {@link touchline.testing.Await#FLOOR_MILLIS}, the policy. */
+    static boolean until(BooleanSupplier condition) throws InterruptedException {
+        return until(condition, Duration.ofMillis(touchline.testing.Await.FLOOR_MILLIS));
+    }
+
     static boolean until(BooleanSupplier condition, Duration timeout) throws InterruptedException {
         long bound = Math.max(timeout.toMillis(), touchline.testing.Await.FLOOR_MILLIS);
         long end = System.nanoTime() + bound * 1_000_000;

@@ -119,7 +119,7 @@ class RemoteStreamHostileServerTest {
             }
             c.hold();
         }); RemoteStream client = client(server, Duration.ofSeconds(30), Duration.ofSeconds(5))) {
-            Await.until("the first good message", 5000, () -> received.size() >= 1);
+            Await.until("the first good message", () -> received.size() >= 1);
             JSONObject subscribe = new JSONObject(server.fromClients().get(0));
             assertEquals("subscribe", subscribe.getString("op"));
             assertEquals(GOOD, subscribe.getJSONArray("subscriptions").getJSONObject(0).getInt("channelId"));
@@ -162,7 +162,7 @@ class RemoteStreamHostileServerTest {
         }); RemoteStream client = client(server, Duration.ofSeconds(3), Duration.ofSeconds(5))) {
             // the JDK's client says so itself (an InternalError we report as a broken-off message), or
             // would not on some timings: then the silence is noticed; either way it calls again
-            Await.until("the message after reconnecting", 5000, () -> received.size() >= 2);
+            Await.until("the message after reconnecting", () -> received.size() >= 2);
             assertEquals(List.of("packet 0", "packet 2"), payloads().subList(0, 2), "the cut message is not delivered");
             assertTrue(server.connections() >= 2);
             assertTrue(server.fromClients().size() >= 2, "subscribed again on the new connection");
@@ -174,10 +174,10 @@ class RemoteStreamHostileServerTest {
     void aServerThatNeverAnswersTheHandshakeIsSaidAndTriedAgain() throws Exception {
         try (HostileFoxgloveServer server = new HostileFoxgloveServer(HostileFoxgloveServer.Connection::ignore);
              RemoteStream client = client(server, Duration.ofSeconds(30), Duration.ofMillis(300))) {
-            Await.until("given up on the handshake", 5000, () -> client.status().state() == RemoteStatus.State.LOST
+            Await.until("given up on the handshake", () -> client.status().state() == RemoteStatus.State.LOST
                     && client.status().detail().contains("no answer to the WebSocket handshake"));
             assertTrue(client.status().describe().contains("reconnecting"), client.status().describe());
-            Await.until("tried again", 5000, () -> server.connections() >= 2);
+            Await.until("tried again", () -> server.connections() >= 2);
             assertEquals(0, client.status().received());
         }
     }
@@ -189,10 +189,10 @@ class RemoteStreamHostileServerTest {
             c.message(GOOD, 1_000, good(0));
             c.ignore(); // and never a word again, not even the time
         }); RemoteStream client = client(server, Duration.ofMillis(400), Duration.ofSeconds(5))) {
-            Await.until("silence noticed", 5000, () -> client.status().state() == RemoteStatus.State.LOST
+            Await.until("silence noticed", () -> client.status().state() == RemoteStatus.State.LOST
                     && client.status().detail().contains("sent nothing"));
-            Await.until("tried again", 5000, () -> server.connections() >= 2);
-            Await.until("the second connection's message", 5000, () -> received.size() >= 2);
+            Await.until("tried again", () -> server.connections() >= 2);
+            Await.until("the second connection's message", () -> received.size() >= 2);
             assertEquals(List.of("packet 0", "packet 0"), payloads());
         }
     }
@@ -202,9 +202,9 @@ class RemoteStreamHostileServerTest {
         try (HostileFoxgloveServer server = new HostileFoxgloveServer(c -> c.raw("HTTP/1.1 200 OK\r\n\r\nhello".getBytes(
                 StandardCharsets.US_ASCII)));
              RemoteStream client = client(server, Duration.ofSeconds(30), Duration.ofSeconds(5))) {
-            Await.until("refused", 5000, () -> client.status().state() == RemoteStatus.State.LOST
+            Await.until("refused", () -> client.status().state() == RemoteStatus.State.LOST
                     && !client.status().detail().isEmpty());
-            Await.until("tried again", 5000, () -> server.connections() >= 2);
+            Await.until("tried again", () -> server.connections() >= 2);
         }
     }
 

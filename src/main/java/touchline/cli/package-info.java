@@ -1,0 +1,10 @@
+/**
+ * The headless face: {@code Main} and one picocli command per verb ({@code ListenCommand}, {@code RecordCommand},
+ * {@code ReplayCommand}, {@code ExportCommand}, {@code GcCommand}, {@code NaoCommand}, {@code ServeCommand},
+ * {@code KeysCommand}, {@code ConsoleCommand} which opens the window, ...), their shared options ({@code
+ * UdpOptions}, {@code KeyChoice}, {@code TeamBudgetOptions}) and one text line per envelope ({@code
+ * EnvelopeLine}). A command that cannot start says why in one sentence ({@code StartFailure}).
+ * <p>
+ * May depend on: every layer below, and ui for the commands that open the window; nothing uses it.
+ */
+package touchline.cli;
