@@ -46,15 +46,26 @@ final class OptionsCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
+    private java.io.PrintWriter err;
+
     @Override
     public Integer call() throws Exception {
+        err = spec.commandLine().getErr();
+        try {
+            return run();
+        } finally {
+            err.flush();
+        }
+    }
+
+    private int run() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : startOnThePort()) {
             if (!remote.remote()) {
                 new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.matchMode());
             }
             long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
             if (!await(deadline, () -> console.options().options(robot).listReceived())) {
-                System.err.println(console.robots().robot(robot).isPresent()
+                err.println(console.robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
                         + remote.connect + " (" + console.remoteStatus().map(Object::toString).orElse("") + ")"
@@ -83,7 +94,7 @@ final class OptionsCommand implements Callable<Integer> {
             });
             print(console.options().options(robot));
             if (!confirmed) {
-                System.err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
+                err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
                 return 3;
             }
             return 0;
@@ -93,14 +104,14 @@ final class OptionsCommand implements Callable<Integer> {
     private int apply(Console console, String name, boolean enable, long deadlineNanos) throws InterruptedException {
         RobotOptions options = console.options().options(robot);
         if (options.option(name).isEmpty()) {
-            System.err.println("robot " + robot + " offers no option '" + name + "'");
+            err.println("robot " + robot + " offers no option '" + name + "'");
             return 1;
         }
         // --off names the option: switched off whoever switched it on (a new console wants nothing)
         SendResult r = remote.remote() ? askServer(console, name, enable, deadlineNanos)
                 : console.switchOptionAsAsked(robot, name, enable);
         if (!r.isSent()) {
-            System.err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
+            err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
             return 4;
         }
         return 0;

@@ -142,7 +142,7 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
             case HELD -> FoxgloveFrames.STATUS_WARNING;
             case FAILED -> FoxgloveFrames.STATUS_ERROR;
         };
-        viewer.answer(level, clip(r.reason(), 200), id);
+        viewer.answer(level, clip(r.reason(), 400), id);
     }
 
     /**

@@ -74,6 +74,28 @@ class OptionsThroughServeTest {
                 code = Main.execute(new String[] {"options", "5", "--on", "no.such.option",
                         "--connect", "ws://127.0.0.1:" + web + "/", "--timeout", "10"}, new PrintWriter(err, true));
                 assertEquals(1, code, err.toString());
+
+                // match mode's gate is the serving console's: a switch during play is held there
+                try (touchline.app.Console viewer = new touchline.app.Console(touchline.app.ConsoleConfig.defaults()
+                        .withGameControllerPort(0).withUdp(touchline.transport.UdpConfig.defaults()
+                                .withBindAddress("127.0.0.1").withListenPort(0))).start();
+                     DatagramSocket gc = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+                    viewer.viewRemote(new java.net.URI("ws://127.0.0.1:" + web + "/"), null);
+                    byte[] playing;
+                    try (var in = OptionsThroughServeTest.class.getResourceAsStream("/golden/gamecontroller/hl12/04-playing.bin")) {
+                        playing = in.readAllBytes();
+                    }
+                    gc.send(new java.net.DatagramPacket(playing, playing.length, java.net.InetAddress.getLoopbackAddress(),
+                            robot.port()));
+                    Await.until("the serving console heard the robot report PLAYING", () -> viewer.robots().robot(5)
+                            .map(r -> r.gameState().equals("PLAYING")).orElse(false));
+                    err = new StringWriter();
+                    code = Main.execute(new String[] {"options", "5", "--on", "demo.plotter",
+                            "--connect", "ws://127.0.0.1:" + web + "/", "--timeout", "10"}, new PrintWriter(err, true));
+                    assertEquals(4, code, err.toString());
+                    assertTrue(err.toString().contains("demo.plotter: held: ") && err.toString().contains("PLAYING"),
+                            err.toString());
+                }
             }
         } finally {
             serve.interrupt(); // serve waits for Ctrl+C or --seconds: an interrupt ends it as well
