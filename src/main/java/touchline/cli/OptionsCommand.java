@@ -92,7 +92,7 @@ final class OptionsCommand implements Callable<Integer> {
                 RobotOptions o = console.options().options(robot);
                 return on.stream().allMatch(n -> o.option(n).map(OptionState::streaming).orElse(false));
             });
-            print(console.options().options(robot));
+            print(console, console.options().options(robot));
             if (!confirmed) {
                 err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
                 return 3;
@@ -153,12 +153,10 @@ final class OptionsCommand implements Callable<Integer> {
         return condition.getAsBoolean();
     }
 
-    private void print(RobotOptions options) {
+    private void print(Console console, RobotOptions options) {
         System.out.printf("robot %d: %d options%n", options.robotId(), options.options().size());
         for (OptionState o : options.options()) {
-            // through a serving console: on as the robot says (the wish is the serving console's)
-            boolean on = remote.remote() ? o.enabledOnRobot() : o.wanted();
-            System.out.printf("  [%s] %-16s %-20s %s%s%n", on ? "x" : " ", o.name(), o.kindName(),
+            System.out.printf("  [%s] %-16s %-20s %s%s%n", console.optionShownOn(o) ? "x" : " ", o.name(), o.kindName(),
                     o.description(), o.streaming() ? "  (streaming)" : "");
         }
     }
