@@ -313,12 +313,43 @@ public final class Console implements AutoCloseable {
     }
 
     /**
+     * A switch a tool asked for (the {@code options} command, here or through this console's live
+     * server): on is wanted by this console from now on, off switches the option off whoever
+     * switched it on; both pass match mode.
+     */
+    public SendResult switchOptionAsAsked(int robotId, String option, boolean on) {
+        return on ? setOption(robotId, option, true) : switchOptionOff(robotId, option);
+    }
+
+    /**
+     * Whether an option shows as on (its box in the options view, [x] in {@code options}): wanted
+     * by this console; viewing a remote Touchline, on on the robot as the serving console hears it.
+     */
+    public boolean optionShownOn(touchline.model.OptionState option) {
+        return remote != null ? option.enabledOnRobot() : option.wanted();
+    }
+
+    /**
+     * Asks the remote Touchline this console views to switch an option ({@link #switchOptionAsAsked}
+     * there, through its match mode); completes with its answer. Not viewing one: "not sent" at once.
+     */
+    public java.util.concurrent.CompletableFuture<SendResult> switchOptionRemotely(int robotId, String option, boolean on) {
+        touchline.transport.remote.RemoteStream r = remote;
+        return r == null ? java.util.concurrent.CompletableFuture.completedFuture(SendResult.failed("not viewing a remote Touchline"))
+                : r.switchOption(robotId, option, on);
+    }
+
+    /**
      * Keeps the wanted debug options in {@code file} (beside the layouts): what it holds from an
      * earlier run is wanted again now, each robot getting its options when it appears, and every
      * switch from now on is written there. A file that cannot be read or written only costs the
-     * remembering ({@link #wantedOptionsProblem()}).
+     * remembering ({@link #wantedOptionsProblem()}). Viewing a remote Touchline, nothing: the
+     * options are the serving console's, and this one wants none of its own.
      */
     public void rememberWantedOptions(Path file) {
+        if (remote != null) {
+            return;
+        }
         WantedOptionsFile f = new WantedOptionsFile(file);
         options.restoreWanted(f.read());
         wantedFile = f;

@@ -16,7 +16,10 @@ import java.util.function.BooleanSupplier;
 
 /**
  * Drives a robot's debug options from a script: waits for the robot and its option list,
- * switches options on or off, waits until the robot's data confirms it, prints the list.
+ * switches options on or off, waits until the robot's data confirms it, prints the list. With
+ * {@code --connect URL} it does so through a Touchline that already holds the robots' port
+ * ({@code touchline serve}, or a window serving to viewers) on this machine: that console
+ * switches the option, through its match mode, and this one watches its stream.
  */
 @Command(name = "options", mixinStandardHelpOptions = true,
         description = "Show a robot's debug options and switch them on or off.")
@@ -37,30 +40,50 @@ final class OptionsCommand implements Callable<Integer> {
     @Mixin
     UdpOptions udp;
 
+    @Mixin
+    RemoteOptions remote;
+
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
+    private java.io.PrintWriter err;
+
     @Override
     public Integer call() throws Exception {
-        try (Console console = udp.startConsole()) {
-            new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.matchMode());
+        err = spec.commandLine().getErr();
+        try {
+            return run();
+        } finally {
+            err.flush();
+        }
+    }
+
+    private int run() throws Exception {
+        try (Console console = remote.remote() ? remote.startViewing() : startOnThePort()) {
+            if (!remote.remote()) {
+                new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.matchMode());
+            }
             long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
             if (!await(deadline, () -> console.options().options(robot).listReceived())) {
-                System.err.println(console.robots().robot(robot).isPresent()
+                err.println(console.robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
+                        : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
+                        + remote.connect + " (" + console.remoteStatus().map(Object::toString).orElse("") + ")"
                         : "robot " + robot + " was not seen within " + timeoutSeconds + " s (is it sending to port "
                         + console.port() + "?)");
                 return 2;
             }
             // a console that just opened the GameController port listens for one first (match mode):
             // the requests wait for that, or for play to be heard, instead of being held for it
-            console.awaitFirstListen(0, java.time.Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
+            if (!remote.remote()) { // through a serving console: its match mode decides
+                console.awaitFirstListen(0, java.time.Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
+            }
             int status = 0;
             for (String name : on) {
-                status |= apply(console, name, true);
+                status |= apply(console, name, true, deadline);
             }
             for (String name : off) {
-                status |= apply(console, name, false);
+                status |= apply(console, name, false, deadline);
             }
             if (status != 0) {
                 return status;
@@ -69,28 +92,55 @@ final class OptionsCommand implements Callable<Integer> {
                 RobotOptions o = console.options().options(robot);
                 return on.stream().allMatch(n -> o.option(n).map(OptionState::streaming).orElse(false));
             });
-            print(console.options().options(robot));
+            print(console, console.options().options(robot));
             if (!confirmed) {
-                System.err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
+                err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
                 return 3;
             }
             return 0;
         }
     }
 
-    private int apply(Console console, String name, boolean enable) {
+    private int apply(Console console, String name, boolean enable, long deadlineNanos) throws InterruptedException {
         RobotOptions options = console.options().options(robot);
         if (options.option(name).isEmpty()) {
-            System.err.println("robot " + robot + " offers no option '" + name + "'");
+            err.println("robot " + robot + " offers no option '" + name + "'");
             return 1;
         }
         // --off names the option: switched off whoever switched it on (a new console wants nothing)
-        SendResult r = enable ? console.setOption(robot, name, true) : console.switchOptionOff(robot, name);
+        SendResult r = remote.remote() ? askServer(console, name, enable, deadlineNanos)
+                : console.switchOptionAsAsked(robot, name, enable);
         if (!r.isSent()) {
-            System.err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
+            err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
             return 4;
         }
         return 0;
+    }
+
+    /** The robots' port held by another program: the sentence says how to go through a serving Touchline. */
+    private Console startOnThePort() throws InterruptedException, StartFailure {
+        try {
+            return udp.startConsole();
+        } catch (StartFailure e) {
+            if (e.exitCode() != StartFailure.PORT_IN_USE) {
+                throw e;
+            }
+            throw new StartFailure(e.getMessage() + " A Touchline serving there (touchline serve, or a window serving"
+                    + " to viewers) switches options for this machine: options " + robot
+                    + " --connect ws://127.0.0.1:8765/ …", e.exitCode());
+        }
+    }
+
+    private SendResult askServer(Console console, String name, boolean enable, long deadlineNanos)
+            throws InterruptedException {
+        try {
+            return console.switchOptionRemotely(robot, name, enable)
+                    .get(Math.max(1, deadlineNanos - System.nanoTime()), java.util.concurrent.TimeUnit.NANOSECONDS);
+        } catch (java.util.concurrent.TimeoutException e) {
+            return SendResult.failed("no answer from " + remote.connect + " within " + timeoutSeconds + " s");
+        } catch (java.util.concurrent.ExecutionException e) {
+            return SendResult.failed(String.valueOf(e.getCause()));
+        }
     }
 
     private static boolean await(long deadlineNanos, BooleanSupplier condition) throws InterruptedException {
@@ -103,10 +153,10 @@ final class OptionsCommand implements Callable<Integer> {
         return condition.getAsBoolean();
     }
 
-    private void print(RobotOptions options) {
+    private void print(Console console, RobotOptions options) {
         System.out.printf("robot %d: %d options%n", options.robotId(), options.options().size());
         for (OptionState o : options.options()) {
-            System.out.printf("  [%s] %-16s %-20s %s%s%n", o.wanted() ? "x" : " ", o.name(), o.kindName(),
+            System.out.printf("  [%s] %-16s %-20s %s%s%n", console.optionShownOn(o) ? "x" : " ", o.name(), o.kindName(),
                     o.description(), o.streaming() ? "  (streaming)" : "");
         }
     }

@@ -20,7 +20,8 @@ final class RemoteOptions {
 
     @Option(names = "--connect", paramLabel = "URL",
             description = "watch a remote Touchline (touchline serve, or a window serving to viewers): "
-                    + "ws://HOST:8765/?token=… or wss://…; commands are off, a lost connection reconnects by itself")
+                    + "ws://HOST:8765/?token=… or wss://…; commands are off (but options --on/--off, which that Touchline"
+                    + " switches for a tool on its own machine), a lost connection reconnects by itself")
     String connect;
 
     @Option(names = "--trust-cert", paramLabel = "FILE",

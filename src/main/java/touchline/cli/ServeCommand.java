@@ -163,6 +163,9 @@ final class ServeCommand implements Callable<Integer> {
                 return 1;
             }
             FoxgloveServer server = serving.server();
+            if (replayFile == null) { // a replay never acts on the field
+                server.offerOptionSwitches(console::switchOptionAsAsked); // `touchline options --connect`
+            }
             try (serving) {
                 try {
                     console.start();

@@ -9,12 +9,16 @@ import org.json.JSONException;
 import org.json.JSONObject;
 
 import touchline.transport.MicrosClock;
+import touchline.transport.SendResult;
 
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
- * What a viewer may ask: subscribe and unsubscribe. The server is read-only, so every other op
+ * What a viewer may ask: subscribe and unsubscribe; and, from this machine only and when the
+ * console lets it ({@link OptionSwitch}), {@code switchOption} (Touchline's own op: {@code
+ * {"op":"switchOption","robot":3,"option":"demo.text","on":true,"id":"1"}}, answered by a status
+ * with that id: info sent, warning held back by match mode, error not sent). Every other op
  * (publishing, parameters, services) and every binary client message is answered with an
  * error status and goes nowhere near a robot; so are garbage, unknown channels and reused ids.
  * One client message gets at most one status, however many of its entries were refused, and
@@ -33,11 +37,15 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
     private final ChannelTable channels;
     private final AtomicLong badRequests;
     private final MicrosClock clock;
+    private final java.util.function.Supplier<OptionSwitch> switches;
 
-    ClientOps(ChannelTable channels, AtomicLong badRequests, MicrosClock clock) {
+    /** {@code switches}: the console's option switch, or null while it offers none (a viewer's request is refused). */
+    ClientOps(ChannelTable channels, AtomicLong badRequests, MicrosClock clock,
+              java.util.function.Supplier<OptionSwitch> switches) {
         this.channels = channels;
         this.badRequests = badRequests;
         this.clock = clock;
+        this.switches = switches;
     }
 
     @Override
@@ -65,6 +73,7 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
         switch (name) {
             case "subscribe" -> subscribe(viewer, op);
             case "unsubscribe" -> unsubscribe(viewer, op);
+            case "switchOption" -> switchOption(viewer, op);
             default -> refuse(viewer, READ_ONLY + ": op \"" + clip(name, 64) + "\" is not accepted");
         }
     }
@@ -111,6 +120,29 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
             viewer.unsubscribe(id.intValue()).ifPresent(reason -> refused.add(-1, reason));
         }
         refused.said().ifPresent(reason -> refuse(viewer, reason));
+    }
+
+    private void switchOption(Viewer viewer, JSONObject op) {
+        String id = clip(op.optString("id", ""), 64);
+        OptionSwitch s = switches.get();
+        String why = s == null ? READ_ONLY + ": this console switches no options for viewers"
+                : !viewer.local() ? "options are switched only from this machine (a tool on loopback)"
+                : !(op.opt("robot") instanceof Number) || uint32(op.opt("robot")) == null ? "switchOption needs a numeric \"robot\""
+                : op.optString("option", "").isEmpty() ? "switchOption needs an \"option\""
+                : !(op.opt("on") instanceof Boolean) ? "switchOption needs \"on\": true or false" : null;
+        if (why != null) {
+            badRequests.incrementAndGet();
+            viewer.answer(FoxgloveFrames.STATUS_ERROR, why, id);
+            return;
+        }
+        SendResult r = s.switchOption(uint32(op.opt("robot")).intValue(), clip(op.getString("option"), 200),
+                op.getBoolean("on"));
+        int level = switch (r.outcome()) {
+            case SENT -> FoxgloveFrames.STATUS_INFO;
+            case HELD -> FoxgloveFrames.STATUS_WARNING;
+            case FAILED -> FoxgloveFrames.STATUS_ERROR;
+        };
+        viewer.answer(level, clip(r.reason(), 400), id);
     }
 
     /**

@@ -46,6 +46,11 @@ final class FoxgloveFrames {
         return text(new JSONObject().put("op", "status").put("level", level).put("message", message));
     }
 
+    /** A status answering the client's request {@code id} (Foxglove's status carries the id of what it answers). */
+    TextWebSocketFrame status(int level, String message, String id) {
+        return text(new JSONObject().put("op", "status").put("level", level).put("message", message).put("id", id));
+    }
+
     BinaryWebSocketFrame messageData(ByteBufAllocator alloc, int subscriptionId, long timeNanos, byte[] payload) {
         ByteBuf b = alloc.buffer(13 + payload.length);
         b.writeByte(MESSAGE_DATA).writeIntLE(subscriptionId).writeLongLE(timeNanos).writeBytes(payload);

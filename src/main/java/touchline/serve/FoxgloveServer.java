@@ -63,6 +63,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final Refusals refusals = new Refusals();
     private final Admission admission;
     private final AtomicLong badRequests = new AtomicLong();
+    private volatile OptionSwitch optionSwitch; // null: viewers switch nothing
     private final AtomicLong stateFailures = new AtomicLong();
     private final AccessToken token;
     private final io.netty.handler.ssl.SslContext tls; // null: plain ws://
@@ -141,7 +142,7 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                 .build()));
         p.addLast(new WebSocketFrameAggregator(config.maxFrameBytes()));
         p.addLast(new ViewerSession(channels, viewers, frames, config, refusals, admission));
-        p.addLast(new ClientOps(channels, badRequests, clock));
+        p.addLast(new ClientOps(channels, badRequests, clock, () -> optionSwitch));
     }
 
     @Override
@@ -166,6 +167,15 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         for (Subscription s : subscribers) {
             s.viewer().offer(s, timeNanos, payload);
         }
+    }
+
+    /**
+     * Lets tools on this machine switch the robots' options through this server ({@code
+     * touchline options --connect}), by {@code to}, which passes the console's match mode; null
+     * (the default): viewers switch nothing.
+     */
+    public void offerOptionSwitches(OptionSwitch to) {
+        optionSwitch = to;
     }
 
     /** Serves {@code state} as its JSON channel (advertised once it has a value), e.g. the team's budget meter. */

@@ -198,6 +198,21 @@ final class Viewer {
         }
     }
 
+    /** The answer to the viewer's request {@code id}, unless the viewer is not reading (then counted, never queued). */
+    void answer(int level, String message, String id) {
+        if (channel.isWritable()) {
+            channel.writeAndFlush(frames.status(level, message, id), channel.voidPromise());
+        } else {
+            statusesDropped.increment();
+        }
+    }
+
+    /** Whether the viewer connected from this machine (a loopback address). */
+    boolean local() {
+        return address() instanceof java.net.InetSocketAddress i && i.getAddress() != null
+                && i.getAddress().isLoopbackAddress();
+    }
+
     /** The server time, when the viewer keeps up. */
     void time(long timeNanos) {
         if (channel.isActive() && channel.isWritable()) {

@@ -64,6 +64,7 @@ public final class ServeToggle implements AutoCloseable {
         try {
             serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
                     console.servedStateChannels(touchline.serve.JsonChannel::new));
+            serving.server().offerOptionSwitches(console::switchOptionAsAsked); // `touchline options --connect`
             said = "Serving to viewers: " + String.join("  ", serving.server().urls());
         } catch (IllegalArgumentException e) {
             said = "Cannot serve: " + e.getMessage();

@@ -228,4 +228,38 @@ class FoxgloveBadInputTest {
             assertEquals(List.of(), bystander.statuses());
         }
     }
+
+    /**
+     * switchOption (issue 36, item 8): refused with its id while the console offers no switch,
+     * and when malformed; counted; what the console's switch answers comes back with the id.
+     */
+    @Test
+    void switchOptionIsRefusedUntilOfferedMalformedOnesAreRefusedAndTheAnswerCarriesTheId() throws Exception {
+        try (ServedField field = new ServedField();
+             FoxgloveTestClient tool = new FoxgloveTestClient(field.server().port())) {
+            tool.send("{\"op\":\"switchOption\",\"robot\":3,\"option\":\"demo.text\",\"on\":true,\"id\":\"a\"}");
+            assertTrue(lastStatus(tool, 1).contains("switches no options"));
+            assertEquals("a", tool.statuses().get(0).getString("id"));
+            java.util.List<String> asked = new java.util.concurrent.CopyOnWriteArrayList<>();
+            field.server().offerOptionSwitches((robot, option, on) -> {
+                asked.add(robot + " " + option + " " + on);
+                return touchline.transport.SendResult.held("match mode, game is PLAYING");
+            });
+            tool.send("{\"op\":\"switchOption\",\"robot\":\"3\",\"option\":\"demo.text\",\"on\":true}");
+            assertTrue(lastStatus(tool, 2).contains("numeric \"robot\""));
+            tool.send("{\"op\":\"switchOption\",\"robot\":3,\"on\":true}");
+            assertTrue(lastStatus(tool, 3).contains("needs an \"option\""));
+            tool.send("{\"op\":\"switchOption\",\"robot\":3,\"option\":\"demo.text\",\"on\":\"yes\"}");
+            assertTrue(lastStatus(tool, 4).contains("true or false"));
+            assertEquals(4, field.server().stats().badRequests());
+            assertEquals(List.of(), asked, "nothing malformed reached the console");
+            tool.send("{\"op\":\"switchOption\",\"robot\":3,\"option\":\"demo.text\",\"on\":false,\"id\":\"b\"}");
+            Await.until("the answer", () -> tool.statuses().size() >= 5);
+            JSONObject answer = tool.statuses().get(4);
+            assertEquals(1, answer.getInt("level"), "held back: a warning");
+            assertEquals("b", answer.getString("id"));
+            assertTrue(answer.getString("message").contains("PLAYING"));
+            assertEquals(List.of("3 demo.text false"), asked);
+        }
+    }
 }

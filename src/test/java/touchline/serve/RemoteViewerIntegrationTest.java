@@ -83,6 +83,39 @@ class RemoteViewerIntegrationTest {
     }
 
     /**
+     * Issue 36, item 8: a viewer shows the serving console's view of the options — on as the
+     * robot says — not the local user's wanted file (before: those were wanted here, shown as
+     * pending and "not seen yet" while the robot was online).
+     */
+    @Test
+    void aViewerShowsTheServingConsolesOptionsNotItsOwnWantedFile(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        Requirement.robotSide("touchline-robot");
+        java.nio.file.Path wanted = dir.resolve("wanted-options.properties");
+        java.nio.file.Files.writeString(wanted, "4/demo.plotter=on\n4/demo.table=on\n");
+        try (ServedField field = new ServedField();
+             RobotProcess robot = RobotProcess.robot(4, field.console().port()).start();
+             Console second = viewer()) {
+            Console first = field.console();
+            Await.until("the first console has robot 4's option list", () -> first.options().options(4).listReceived());
+            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            second.rememberWantedOptions(wanted); // as the window does after `console --connect`
+            assertTrue(first.setOption(4, TEXT, true).isSent());
+            Await.until("demo.text on at the robot, as the viewer hears it", () -> second.options().options(4).option(TEXT)
+                    .map(OptionState::enabledOnRobot).orElse(false));
+            OptionState text = second.options().options(4).option(TEXT).orElseThrow();
+            OptionState plotter = second.options().options(4).option("demo.plotter").orElseThrow();
+            assertTrue(second.optionShownOn(text), "on, as the serving console has it");
+            assertFalse(plotter.wanted(), "the local wanted file is not this viewer's wish");
+            assertFalse(second.optionShownOn(plotter));
+            assertFalse(first.options().options(4).option("demo.plotter").orElseThrow().enabledOnRobot());
+            assertEquals(0, second.transportCounts().datagramsOut(), "the viewer sent nothing");
+            assertEquals("4/demo.plotter=on\n4/demo.table=on\n", java.nio.file.Files.readString(wanted),
+                    "the user's file is left as it was");
+        }
+    }
+
+    /**
      * The demo runs with a team key, so the first console's robot datagrams carry a trailer: a
      * second Touchline still gets their messages (the served channel says the framing of the
      * frame before the trailer; before, it said neither framing nor schema and the viewer could

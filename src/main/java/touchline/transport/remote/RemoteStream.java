@@ -63,6 +63,9 @@ public final class RemoteStream implements AutoCloseable {
     private volatile RemoteStatus.State state = RemoteStatus.State.CONNECTING;
     private volatile String detail = "";
     private volatile Session session;
+    private final AtomicLong requests = new AtomicLong();
+    private final Map<String, java.util.concurrent.CompletableFuture<touchline.transport.SendResult>> answers =
+            new ConcurrentHashMap<>();
     private volatile boolean closed;
     private Duration backoff = FIRST_BACKOFF;
 
@@ -109,6 +112,28 @@ public final class RemoteStream implements AutoCloseable {
     public RemoteStream start() {
         reconnects.execute(this::connect);
         return this;
+    }
+
+    /**
+     * Asks the serving console to switch robot {@code robotId}'s {@code option} on or off (a
+     * Touchline server offers it to tools on its own machine); completes with the server's
+     * answer — sent, held back by its match mode, or not sent and why — or, unconnected, at once
+     * with "not connected". The server passes its own match mode: this stream sends no datagram.
+     */
+    public java.util.concurrent.CompletableFuture<touchline.transport.SendResult> switchOption(int robotId, String option,
+                                                                                               boolean on) {
+        Session s = session;
+        if (s == null || s.socket == null || s.ended.get()) {
+            return java.util.concurrent.CompletableFuture.completedFuture(
+                    touchline.transport.SendResult.failed("not connected to " + shownUrl));
+        }
+        String id = "switch-" + requests.incrementAndGet();
+        var answer = new java.util.concurrent.CompletableFuture<touchline.transport.SendResult>();
+        answers.put(id, answer);
+        answer.whenComplete((r, e) -> answers.remove(id));
+        s.send(s.socket, new JSONObject().put("op", "switchOption").put("robot", robotId).put("option", option)
+                .put("on", on).put("id", id).toString());
+        return answer;
     }
 
     public RemoteStatus status() {
@@ -325,6 +350,16 @@ public final class RemoteStream implements AutoCloseable {
                     }
                 }
                 case "status" -> {
+                    var answer = o.has("id") ? answers.get(o.optString("id")) : null;
+                    if (answer != null) { // the answer to a switchOption: 0 sent, 1 held back, 2 not sent
+                        String why = o.optString("message", "");
+                        answer.complete(switch (o.optInt("level", 2)) {
+                            case 0 -> touchline.transport.SendResult.sent();
+                            case 1 -> touchline.transport.SendResult.held(why);
+                            default -> touchline.transport.SendResult.failed(why);
+                        });
+                        return;
+                    }
                     lastStatus = o.optString("message", "");
                     detail = lastStatus;
                 }

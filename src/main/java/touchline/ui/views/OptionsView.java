@@ -66,7 +66,7 @@ public final class OptionsView implements View {
                 // a click on the box toggles that row's option (the box shows the model, never its own state)
                 box.setOnAction(e -> {
                     Row row = getItem();
-                    box.setSelected(row != null && row.option() != null && row.option().wanted());
+                    box.setSelected(row != null && row.option() != null && context.console().optionShownOn(row.option()));
                     if (row != null && row.option() != null) {
                         getTreeView().getSelectionModel().select(getTreeItem());
                         toggle(row);
@@ -80,7 +80,7 @@ public final class OptionsView implements View {
                 setText(empty || row == null ? null : row.label());
                 boolean option = !empty && row != null && row.option() != null;
                 if (option) {
-                    box.setSelected(row.option().wanted());
+                    box.setSelected(context.console().optionShownOn(row.option())); // a viewer: the serving console's view
                     box.setDisable(row.replayed());
                 }
                 setGraphic(option ? box : null);
