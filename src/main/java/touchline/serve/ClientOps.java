@@ -127,6 +127,8 @@ final class ClientOps extends SimpleChannelInboundHandler<WebSocketFrame> {
         OptionSwitch s = switches.get();
         String why = s == null ? READ_ONLY + ": this console switches no options for viewers"
                 : !viewer.local() ? "options are switched only from this machine (a tool on loopback)"
+                : viewer.webPage() ? "options are not switched from a web page (only by a tool on this machine, e.g."
+                        + " touchline options --connect)"
                 : !(op.opt("robot") instanceof Number) || uint32(op.opt("robot")) == null ? "switchOption needs a numeric \"robot\""
                 : op.optString("option", "").isEmpty() ? "switchOption needs an \"option\""
                 : !(op.opt("on") instanceof Boolean) ? "switchOption needs \"on\": true or false" : null;

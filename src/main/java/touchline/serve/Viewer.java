@@ -37,12 +37,24 @@ final class Viewer {
     static final String BYTES_PARAMETER = "raw";
 
     private final boolean takesBytes;
+    private final boolean webPage;
 
     Viewer(Channel channel, FoxgloveFrames frames, int queueLimit, boolean takesBytes) {
+        this(channel, frames, queueLimit, takesBytes, false);
+    }
+
+    /** {@code webPage}: the upgrade came with an {@code Origin} (a page in a browser, not a tool). */
+    Viewer(Channel channel, FoxgloveFrames frames, int queueLimit, boolean takesBytes, boolean webPage) {
         this.channel = channel;
         this.frames = frames;
         this.pending = new PendingMessages(queueLimit);
         this.takesBytes = takesBytes;
+        this.webPage = webPage;
+    }
+
+    /** Whether a web page in a browser opened this connection (its upgrade named an origin). */
+    boolean webPage() {
+        return webPage;
     }
 
     /** Whether this viewer hears of {@code c} at all. */

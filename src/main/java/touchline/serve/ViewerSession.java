@@ -46,7 +46,9 @@ final class ViewerSession extends ChannelInboundHandlerAdapter {
             List<String> raw = new io.netty.handler.codec.http.QueryStringDecoder(
                     ((WebSocketServerProtocolHandler.HandshakeComplete) evt).requestUri()).parameters()
                     .getOrDefault(Viewer.BYTES_PARAMETER, List.of());
-            Viewer v = new Viewer(ctx.channel(), frames, config.queueLimit(), raw.contains("1"));
+            boolean webPage = ((WebSocketServerProtocolHandler.HandshakeComplete) evt).requestHeaders()
+                    .contains(io.netty.handler.codec.http.HttpHeaderNames.ORIGIN);
+            Viewer v = new Viewer(ctx.channel(), frames, config.queueLimit(), raw.contains("1"), webPage);
             ctx.channel().attr(VIEWER).set(v);
             channels.welcome(v);
         }

@@ -145,4 +145,41 @@ class FoxgloveAdmissionTest {
             assertEquals(2, field.server().stats().viewers());
         }
     }
+
+    /**
+     * An allowed web page (Foxglove's web app open in this laptop's browser) connects from loopback
+     * like a tool, but switches no option: whatever page that app is made to open would switch the
+     * team's robots. A tool (no origin) on the same server is served.
+     */
+    @Test
+    void anAllowedWebPageWatchesButSwitchesNoOption() throws Exception {
+        try (ServedField field = new ServedField()) {
+            List<String> asked = new java.util.concurrent.CopyOnWriteArrayList<>();
+            field.server().offerOptionSwitches((robot, option, on) -> {
+                asked.add(robot + " " + option + " " + on);
+                return touchline.transport.SendResult.sent();
+            });
+            List<String> texts = new java.util.concurrent.CopyOnWriteArrayList<>();
+            WebSocket page = HttpClient.newHttpClient().newWebSocketBuilder().subprotocols("foxglove.websocket.v1")
+                    .header("Origin", "https://app.foxglove.dev")
+                    .buildAsync(URI.create("ws://127.0.0.1:" + field.server().port() + "/"), new WebSocket.Listener() {
+                        @Override
+                        public java.util.concurrent.CompletionStage<?> onText(WebSocket ws, CharSequence data, boolean last) {
+                            texts.add(data.toString());
+                            ws.request(1);
+                            return null;
+                        }
+                    }).get(30, TimeUnit.SECONDS);
+            page.sendText("{\"op\":\"switchOption\",\"robot\":3,\"option\":\"demo.text\",\"on\":true,\"id\":\"p\"}", true);
+            Await.until("the page's answer", () -> texts.stream().anyMatch(t -> t.contains("\"id\":\"p\"")));
+            String answer = texts.stream().filter(t -> t.contains("\"id\":\"p\"")).findFirst().orElseThrow();
+            assertTrue(answer.contains("web page"), answer);
+            assertEquals(List.of(), asked, "a web page switched an option");
+            page.abort();
+            try (FoxgloveTestClient tool = new FoxgloveTestClient(field.server().port())) {
+                tool.send("{\"op\":\"switchOption\",\"robot\":3,\"option\":\"demo.text\",\"on\":true,\"id\":\"t\"}");
+                Await.until("the tool's switch", () -> asked.size() == 1);
+            }
+        }
+    }
 }
