@@ -94,6 +94,14 @@ public final class FieldPlotView implements View {
         Button export = new Button("Export CSV…");
         export.setId("field-export");
         export.setOnAction(e -> chooseCsv());
+        javafx.scene.control.CheckBox perSeries = new javafx.scene.control.CheckBox("Axis per series");
+        perSeries.setId("field-axis-per-series");
+        perSeries.setTooltip(new javafx.scene.control.Tooltip(
+                "Off: one y axis per unit read from the field's name (…_mm, …Percent, battery, …_deg, …_rad, …_ms)"));
+        perSeries.setOnAction(e -> {
+            plot.axisPerSeries(perSeries.isSelected());
+            dirty = true;
+        });
         status.setId("field-status");
         note.setId("field-note");
         root.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
@@ -103,7 +111,7 @@ public final class FieldPlotView implements View {
                 e.consume();
             }
         });
-        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, path, add, removeLast, export, status, note);
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, path, add, removeLast, perSeries, export, status, note);
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
         root.setLeft(matches);
