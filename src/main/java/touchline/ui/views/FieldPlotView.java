@@ -8,7 +8,6 @@ import javafx.scene.control.TextField;
 import javafx.scene.input.KeyCode;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.FlowPane;
-import javafx.stage.FileChooser;
 import touchline.model.RobotSnapshot;
 import touchline.model.store.FieldPlot;
 import touchline.model.store.PlotStore;
@@ -144,15 +143,10 @@ public final class FieldPlotView implements View {
                 : chosen + ": no numeric field of a kind seen, or already plotted");
     }
 
+    /** Asks where to write the CSV in a dialog that leaves a maximised window maximised ({@link SaveAsDialog}). */
     private void chooseCsv() {
-        FileChooser chooser = new FileChooser();
-        chooser.setTitle("Export the plotted data as CSV");
-        chooser.setInitialFileName("plot.csv");
-        chooser.getExtensionFilters().add(new FileChooser.ExtensionFilter("CSV", "*.csv"));
-        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
-        if (f != null) {
-            exportCsv(f.toPath());
-        }
+        new touchline.ui.SaveAsDialog(root.getScene().getWindow(), "Export the plotted data as CSV",
+                Path.of(System.getProperty("user.home"), "plot.csv")).ask(this::exportCsv);
     }
 
     /** Writes the plotted data as CSV; the status line says where, or why not. */
