@@ -312,8 +312,8 @@ public final class ConsoleWindow {
 
     private MenuBar menus() {
         MenuItem save = new MenuItem("_Save layout as…");
-        save.setOnAction(e -> new NameDialog(stage, places, "Save layout", "Name of the layout", "my layout").ask()
-                .ifPresent(name -> {
+        save.setOnAction(e -> new NameDialog(stage, places, "Save layout", "Name of the layout", "my layout").ask(
+                name -> {
                     try {
                         saveLayout(name);
                     } catch (IOException ex) {
@@ -396,7 +396,11 @@ public final class ConsoleWindow {
         for (String name : layouts.names()) {
             MenuItem rename = new MenuItem("\"" + name + "\"…");
             rename.setOnAction(e -> new NameDialog(stage, places, "Rename layout", "New name of \"" + name + "\"", name)
-                    .ask().filter(to -> !to.equals(name)).ifPresent(to -> renameLayout(name, to)));
+                    .ask(to -> {
+                        if (!to.equals(name)) {
+                            renameLayout(name, to);
+                        }
+                    }));
             renameMenu.getItems().add(rename);
             MenuItem delete = new MenuItem("\"" + name + "\"…");
             delete.setOnAction(e -> confirmDelete(name));

@@ -5,9 +5,10 @@ import javafx.scene.layout.Region;
 import javafx.stage.Stage;
 
 import java.util.Optional;
+import java.util.function.Consumer;
 
 /**
- * Asks for a name (saving or renaming a layout): a small dialog owned by the window, placed where
+ * Asks for a name (saving or renaming a layout): a small dialog owned by the window, not modal, placed where
  * it was last, and never smaller than its own content, so its buttons are never cut off whatever
  * size was remembered or the font asks for.
  */
@@ -18,6 +19,9 @@ final class NameDialog {
     NameDialog(Stage owner, WindowPlaces places, String title, String question, String suggested) {
         dialog = new TextInputDialog(suggested);
         dialog.initOwner(owner);
+        // not modal: under a window manager a modal dialog takes a maximised window out of its
+        // maximised state (openbox, GTK); this one leaves the window as it is (SaveAsDialog too)
+        dialog.initModality(javafx.stage.Modality.NONE);
         dialog.setTitle(title);
         dialog.setHeaderText(question);
         dialog.getDialogPane().setMinHeight(Region.USE_PREF_SIZE);
@@ -38,8 +42,10 @@ final class NameDialog {
         return dialog;
     }
 
-    /** Shows it and waits; the name given, stripped, or empty when cancelled or blank. */
-    Optional<String> ask() {
-        return dialog.showAndWait().map(String::strip).filter(n -> !n.isEmpty());
+    /** Shows it without blocking; {@code onName} gets the name given, stripped, when OK closes it (not on Cancel or blank). */
+    void ask(Consumer<String> onName) {
+        dialog.setOnHidden(e -> Optional.ofNullable(dialog.getResult()).map(String::strip).filter(n -> !n.isEmpty())
+                .ifPresent(onName));
+        dialog.show();
     }
 }

@@ -64,11 +64,29 @@ class FieldPlotUiTest {
             ui.await(10, () -> ui.robot.lookup("#field-status").queryLabeled().getText().matches("1 series · [1-9]\\d* points"));
 
             Path csv = dir.resolve("plot.csv");
-            ui.fxRun(() -> view.exportCsv(csv));
+            // Export CSV… asks in a dialog that is not modal: a modal one (or the native file chooser)
+            // takes a maximised window out of its maximised state under openbox (issue 36 item 7)
+            ui.robot.clickOn("#field-export");
+            ui.await(10, () -> exportDialog() != null);
+            ui.fxRun(() -> {
+                javafx.scene.control.DialogPane pane = exportDialog();
+                assertEquals(javafx.stage.Modality.NONE, ((javafx.stage.Stage) pane.getScene().getWindow()).getModality());
+                ((javafx.scene.control.TextField) pane.lookup(".text-field")).setText(csv.toString());
+                ((javafx.scene.control.Button) pane.lookupButton(javafx.scene.control.ButtonType.OK)).fire();
+            });
+            ui.await(10, () -> Files.exists(csv) && exportDialog() == null);
             List<String> lines = Files.readAllLines(csv);
             assertEquals("time_s,robot 5 status:batteryPercent", lines.get(0));
             assertTrue(lines.size() > 1 && lines.get(1).matches("\\d+\\.\\d{6},\\d+"), lines.toString());
             assertTrue(ui.robot.lookup("#field-note").queryLabeled().getText().startsWith("exported 1 series"));
         }
+    }
+
+    /** The Export CSV dialog while it is showing, else null. */
+    private static javafx.scene.control.DialogPane exportDialog() {
+        return javafx.stage.Window.getWindows().stream().filter(javafx.stage.Window::isShowing)
+                .map(w -> w.getScene() == null ? null : w.getScene().getRoot())
+                .filter(javafx.scene.control.DialogPane.class::isInstance).map(javafx.scene.control.DialogPane.class::cast)
+                .findFirst().orElse(null);
     }
 }

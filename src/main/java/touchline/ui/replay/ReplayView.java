@@ -69,6 +69,8 @@ public final class ReplayView implements View {
     private List<TimelineEvent> events = List.of();
     private long loopA = -1;
     private ReplayNotes shownNotes = ReplayNotes.NONE;
+    /** The message speaks of the replay that is open ("Opened …", "No goal after …"): it goes with it. */
+    private boolean messageOfReplay;
 
     public ReplayView(ViewContext context) {
         this.console = context.console();
@@ -197,11 +199,19 @@ public final class ReplayView implements View {
     private void fail(String why) {
         message.setText(why);
         message.setStyle("-fx-text-fill: #cf222e;");
+        messageOfReplay = false;
     }
 
     private void say(String text) {
         message.setText(text);
         message.setStyle("");
+        messageOfReplay = false;
+    }
+
+    /** Says something about the open replay: the message is cleared when the replay closes. */
+    private void sayOfReplay(String text) {
+        say(text);
+        messageOfReplay = true;
     }
 
     // ---- actions (FX thread); anything slow goes to the work queue ----
@@ -254,7 +264,7 @@ public final class ReplayView implements View {
         work.run(() -> {
             try {
                 console.openReplay(chosen.files(), chosen.offsets());
-                work.handOff(() -> say("Opened " + names + "."));
+                work.handOff(() -> sayOfReplay("Opened " + names + "."));
             } catch (RecordingException e) {
                 work.handOff(() -> fail("Cannot replay " + names + ": " + e.getMessage()));
             }
@@ -287,7 +297,7 @@ public final class ReplayView implements View {
         }
         work.run(() -> {
             if (r.seekToNext(type).isEmpty()) {
-                work.handOff(() -> say("No " + type.name().toLowerCase(Locale.ROOT).replace('_', ' ')
+                work.handOff(() -> sayOfReplay("No " + type.name().toLowerCase(Locale.ROOT).replace('_', ' ')
                         + " after this point."));
             }
         });
@@ -401,6 +411,9 @@ public final class ReplayView implements View {
     private void adopt(Replay r) {
         shown = r;
         events = List.of();
+        if (r == null && messageOfReplay) {
+            say("");
+        }
         loopA = -1;
         loop.setText("");
         replayControls.forEach(n -> n.setDisable(r == null));

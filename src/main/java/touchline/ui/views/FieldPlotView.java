@@ -8,7 +8,6 @@ import javafx.scene.control.TextField;
 import javafx.scene.input.KeyCode;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.FlowPane;
-import javafx.stage.FileChooser;
 import touchline.model.RobotSnapshot;
 import touchline.model.store.FieldPlot;
 import touchline.model.store.PlotStore;
@@ -94,6 +93,14 @@ public final class FieldPlotView implements View {
         Button export = new Button("Export CSV…");
         export.setId("field-export");
         export.setOnAction(e -> chooseCsv());
+        javafx.scene.control.CheckBox perSeries = new javafx.scene.control.CheckBox("Axis per series");
+        perSeries.setId("field-axis-per-series");
+        perSeries.setTooltip(new javafx.scene.control.Tooltip(
+                "Off: one y axis per unit read from the field's name (…_mm, …Percent, battery, …_deg, …_rad, …_ms)"));
+        perSeries.setOnAction(e -> {
+            plot.axisPerSeries(perSeries.isSelected());
+            dirty = true;
+        });
         status.setId("field-status");
         note.setId("field-note");
         root.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
@@ -103,7 +110,7 @@ public final class FieldPlotView implements View {
                 e.consume();
             }
         });
-        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, path, add, removeLast, export, status, note);
+        FlowPane bar = new FlowPane(8, 4, new Label("Robot"), robot, path, add, removeLast, perSeries, export, status, note);
         bar.setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
         root.setTop(bar);
         root.setLeft(matches);
@@ -136,15 +143,10 @@ public final class FieldPlotView implements View {
                 : chosen + ": no numeric field of a kind seen, or already plotted");
     }
 
+    /** Asks where to write the CSV in a dialog that leaves a maximised window maximised ({@link SaveAsDialog}). */
     private void chooseCsv() {
-        FileChooser chooser = new FileChooser();
-        chooser.setTitle("Export the plotted data as CSV");
-        chooser.setInitialFileName("plot.csv");
-        chooser.getExtensionFilters().add(new FileChooser.ExtensionFilter("CSV", "*.csv"));
-        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
-        if (f != null) {
-            exportCsv(f.toPath());
-        }
+        new touchline.ui.SaveAsDialog(root.getScene().getWindow(), "Export the plotted data as CSV",
+                Path.of(System.getProperty("user.home"), "plot.csv")).ask(this::exportCsv);
     }
 
     /** Writes the plotted data as CSV; the status line says where, or why not. */

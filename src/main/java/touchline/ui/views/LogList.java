@@ -99,6 +99,23 @@ final class LogList<E, T> {
     }
 
     /**
+     * The selected line after the oldest went: a table's selection model does not move its
+     * index with a cut at the front, so the selection slid onto another line at every cut (the
+     * network console's datagram changed under the user every second or two). A selected line
+     * that went with the oldest clears the selection: the log follows again.
+     */
+    private void keepSelected(int index) {
+        if (index < 0) {
+            selection.get().clearSelection();
+            return;
+        }
+        if (selection.get().getSelectedIndex() != index) {
+            selection.get().clearAndSelect(index);
+        }
+        focus.get().focus(index);
+    }
+
+    /**
      * Up or Down in a list that follows with nothing selected starts at the newest line, the one in
      * view: the control's own keys would move from its focus, a line out of view or none, and select the
      * oldest held. From then on the selection holds the log still and the keys move as usual.
@@ -168,10 +185,14 @@ final class LogList<E, T> {
             int[] shown = onScreen();
             top = shown == null ? -1 : shown[0];
         }
+        int selected = follow ? -1 : selection.get().getSelectedIndex();
         SequencedRing.Entry<E> newest = follower.follow(version, reader, item);
         if (!follow) {
             if (follower.trimmed() > 0 && top >= 0) {
                 scrollTo.accept(Math.max(0, top - follower.trimmed())); // the lines on screen stay where they were
+            }
+            if (follower.trimmed() > 0 && selected >= 0) {
+                keepSelected(selected - follower.trimmed());
             }
             return newest;
         }

@@ -9,7 +9,8 @@ import java.util.Locale;
 
 /**
  * The drawing of a line plot, shared by the option plot and the field plot: the last
- * {@link #WINDOW_SECONDS} s, y fitted to the data, a legend with each series' colour. Each
+ * {@link #WINDOW_SECONDS} s, a y axis per unit (or per series on request, {@link YAxes}) fitted
+ * to its series, a legend with each series' colour. Each
  * series is reduced to at most four points per pixel column before drawing
  * ({@link ColumnDecimation}) and drawn as one filled span per column ({@link ColumnSpans}), so a
  * burst of 10 000 points costs what the plot's width costs; a non-finite value breaks the line.
@@ -32,6 +33,8 @@ final class PlotDrawing {
     private static final double TOP = 24;
     private static final double BOTTOM = 22;
     private static final double LINE = 1.5;
+    /** Width of each y axis after the first (to the right of the plot). */
+    static final double AXIS_WIDTH = 64;
     private static final Color BACKGROUND = Color.gray(0.12);
     private static final Color GRID = Color.gray(0.26);
     private static final Color LABEL = Color.gray(0.75);
@@ -50,6 +53,8 @@ final class PlotDrawing {
     private double[] sy = new double[256];
     private int points;
     private int drawnPoints;
+    private boolean axisPerSeries;
+    private YAxes axes = new YAxes(List.of(), new int[0], false);
 
     /** @param resized called when the pane changed size (the owner redraws) */
     PlotDrawing(Runnable resized) {
@@ -80,6 +85,16 @@ final class PlotDrawing {
         return labels.rendered();
     }
 
+    /** One y axis per series rather than one per unit (drawn from the next frame). */
+    void axisPerSeries(boolean on) {
+        axisPerSeries = on;
+    }
+
+    /** The y axes of the last draw (for tests). */
+    YAxes axes() {
+        return axes;
+    }
+
     void empty() {
         raster.begin(pane, BACKGROUND_ARGB);
         raster.show(pane);
@@ -98,45 +113,30 @@ final class PlotDrawing {
         // the last WINDOW_SECONDS: what a person reads off a live plot
         double from = newest - WINDOW_SECONDS;
         int[] starts = new int[series.size()];
-        double minY = Double.POSITIVE_INFINITY;
-        double maxY = Double.NEGATIVE_INFINITY;
         int total = 0;
         for (int k = 0; k < starts.length; k++) {
             PlotStore.SeriesData d = series.get(k);
-            int start = firstAtOrAfter(d.x(), d.count(), from);
-            starts[k] = start;
-            for (int i = start; i < d.count(); i++) {
-                double y = d.y()[i];
-                if (Double.isFinite(y)) {
-                    minY = Math.min(minY, y);
-                    maxY = Math.max(maxY, y);
-                }
-            }
-            total += d.count() - start;
+            starts[k] = firstAtOrAfter(d.x(), d.count(), from);
+            total += d.count() - starts[k];
         }
+        axes = new YAxes(series, starts, axisPerSeries);
         double w = pane.getWidth();
         double h = pane.getHeight();
         raster.begin(pane, BACKGROUND_ARGB);
-        double pw = Math.max(1, w - LEFT - RIGHT);
+        double pw = Math.max(1, w - LEFT - RIGHT - (axes.count() - 1) * AXIS_WIDTH);
         double ph = Math.max(1, h - TOP - BOTTOM);
         if (!Double.isFinite(newest)) {
             newest = WINDOW_SECONDS;
             from = 0;
         }
-        if (!(minY <= maxY)) {
-            minY = -1;
-            maxY = 1;
-        }
-        double pad = Math.max(1e-3, (maxY - minY) * 0.05);
-        double y0 = minY - pad;
-        double y1 = maxY + pad;
-        drawAxes(from, newest, y0, y1, pw, ph);
+        drawAxes(from, newest, pw, ph);
         int drawn = 0;
         for (int k = 0; k < starts.length; k++) {
             PlotStore.SeriesData d = series.get(k);
+            YAxes.Axis axis = axes.of(k);
             decimation.run(d.x(), d.y(), starts[k], d.count(), from, newest, (int) Math.ceil(pw));
             drawn += decimation.size();
-            drawSeries(PALETTE_ARGB[k % PALETTE.length], from, newest, y0, y1, pw, ph);
+            drawSeries(PALETTE_ARGB[k % PALETTE.length], from, newest, axis.y0(), axis.y1(), pw, ph);
         }
         drawLegend(series, w);
         raster.show(pane);
@@ -194,14 +194,32 @@ final class PlotDrawing {
         }
     }
 
-    private void drawAxes(double x0, double x1, double y0, double y1, double pw, double ph) {
+    /**
+     * The first y axis on the left with the grid, each further one (another unit) to the right
+     * of the plot, its labels carrying the unit; the time axis below.
+     */
+    private void drawAxes(double x0, double x1, double pw, double ph) {
         double scale = raster.scale();
-        double yStep = niceStep((y1 - y0) / Math.max(2, ph / 40));
-        for (double v = Math.ceil(y0 / yStep) * yStep; v <= y1; v += yStep) {
-            double y = Math.round(TOP + (y1 - v) / (y1 - y0) * ph);
-            raster.fillRect(LEFT, y, pw, 1, GRID_ARGB); // right of the labels, left of the series
-            Raster.Sprite s = labels.of(label(v, yStep), LABEL, scale);
-            raster.draw(s, LEFT - 6 - s.width() / scale, y - s.height() / scale / 2); // right-aligned, centred
+        for (int a = 0; a < axes.count(); a++) {
+            YAxes.Axis axis = axes.axis(a);
+            double y0 = axis.y0();
+            double y1 = axis.y1();
+            double yStep = niceStep((y1 - y0) / Math.max(2, ph / 40));
+            double right = LEFT + pw + (a - 1) * AXIS_WIDTH;
+            for (double v = Math.ceil(y0 / yStep) * yStep; v <= y1; v += yStep) {
+                double y = Math.round(TOP + (y1 - v) / (y1 - y0) * ph);
+                Raster.Sprite s = labels.of(axis.label(label(v, yStep)), LABEL, scale);
+                if (a == 0) {
+                    raster.fillRect(LEFT, y, pw, 1, GRID_ARGB); // right of the labels, left of the series
+                    raster.draw(s, LEFT - 6 - s.width() / scale, y - s.height() / scale / 2); // right-aligned, centred
+                } else {
+                    raster.fillRect(right, y, 4, 1, AXIS_ARGB);
+                    raster.draw(s, right + 6, y - s.height() / scale / 2);
+                }
+            }
+            if (a > 0) {
+                raster.fillRect(right, TOP, 1, ph, AXIS_ARGB);
+            }
         }
         double xStep = niceStep((x1 - x0) / Math.max(2, pw / 70));
         for (double v = Math.ceil(x0 / xStep) * xStep; v <= x1; v += xStep) {

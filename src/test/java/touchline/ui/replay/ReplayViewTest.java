@@ -164,6 +164,30 @@ class ReplayViewTest {
         await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().equals("No recording open."));
     }
 
+    /**
+     * Issue 36 item 9: "Opened demo-team.mcap." goes with the replay when it is closed; an error
+     * about a file that could not be opened stays (it is not about the replay that closed).
+     */
+    @Test
+    void closingTheReplayClearsItsOpenedMessage() throws Exception {
+        openFile(SAMPLE);
+        await(20, () -> message().equals("Opened demo-team.mcap."));
+        await(20, () -> fx(() -> !robot.lookup("#replay-play").query().isDisabled()));
+        robot.clickOn("#replay-close");
+        await(5, () -> console.replay().isEmpty());
+        // the position line and the message are updated in the same frame
+        await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().equals("No recording open."));
+        assertEquals("", message());
+
+        // opening a missing file closes the open replay first: its error stays
+        openFile(SAMPLE);
+        await(20, () -> message().equals("Opened demo-team.mcap."));
+        openFile(dir.resolve("missing.mcap"));
+        await(10, () -> message().contains("Cannot replay missing.mcap"));
+        await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().equals("No recording open."));
+        assertTrue(message().contains("Cannot replay missing.mcap"), message());
+    }
+
     @Test
     void aBrokenFileIsReportedAndTheConsoleCarriesOn() throws Exception {
         Path junk = dir.resolve("junk.mcap");

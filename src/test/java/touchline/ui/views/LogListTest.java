@@ -92,4 +92,58 @@ class LogListTest {
             return null;
         });
     }
+
+    /**
+     * Issue 36 item 4: a row chosen with the keyboard (Up into a table that follows, as the network
+     * console's) stays the selected, focused row while lines arrive and the oldest go in cuts; when
+     * the chosen line itself goes with the oldest, the selection is cleared (the log follows again)
+     * rather than sliding onto the oldest line left, another datagram at every cut (it changed
+     * under the user every second or two at the demo's rates).
+     */
+    @Test
+    void aChosenRowStaysSelectedThroughTheCutsAndNeverSlidesOntoAnother() throws Exception {
+        fx(() -> {
+            javafx.scene.control.TableView<String> table = new javafx.scene.control.TableView<>();
+            javafx.scene.control.TableColumn<String, String> c = new javafx.scene.control.TableColumn<>("line");
+            c.setCellValueFactory(d -> new javafx.beans.property.SimpleStringProperty(d.getValue()));
+            table.getColumns().add(c);
+            new Scene(new StackPane(table), 300, 300);
+            LogList<String, String> log = new LogList<>(table, 1_000);
+            int n = 0;
+            for (; n < 900; n++) {
+                ring.append("line " + n);
+            }
+            log.follow(true, ring.version(), ring::since, s -> s);
+            table.getParent().applyCss();
+            table.getParent().layout();
+            table.requestFocus();
+            javafx.event.Event.fireEvent(table, new javafx.scene.input.KeyEvent(javafx.scene.input.KeyEvent.KEY_PRESSED,
+                    "", "", javafx.scene.input.KeyCode.UP, false, false, false, false));
+            String chosen = table.getSelectionModel().getSelectedItem();
+            assertEquals("line 899", chosen);
+            int cutsWhileHeld = 0;
+            int frame = 0;
+            for (; frame < 400 && !table.getSelectionModel().isEmpty(); frame++) { // 10 lines a frame
+                for (int k = 0; k < 10; k++) {
+                    ring.append("line " + n++);
+                }
+                int before = log.all().size();
+                log.follow(false, ring.version(), ring::since, s -> s);
+                table.getParent().applyCss();
+                table.getParent().layout();
+                String selected = table.getSelectionModel().getSelectedItem();
+                if (selected != null) {
+                    assertEquals(chosen, selected, "frame " + frame);
+                    assertEquals(chosen, table.getItems().get(table.getFocusModel().getFocusedIndex()), "focus, frame " + frame);
+                    if (log.all().size() < before + 10) {
+                        cutsWhileHeld++;
+                    }
+                }
+            }
+            assertTrue(cutsWhileHeld >= 3, cutsWhileHeld + " cuts of the oldest while the chosen line stayed");
+            assertTrue(table.getSelectionModel().isEmpty() && !log.all().contains(chosen),
+                    "the chosen line went with the oldest after " + frame + " frames: nothing selected");
+            return null;
+        });
+    }
 }

@@ -90,4 +90,66 @@ class PlotDrawingTest {
             return null;
         });
     }
+
+    /** Issue 36 item 9: millimetres and a battery's percent each get their own y axis, fitted to their values. */
+    @Test
+    void eachUnitHasItsOwnYAxis() throws Exception {
+        int n = 11;
+        double[] x = new double[n];
+        double[] mm = new double[n];
+        double[] percent = new double[n];
+        double[] plain = new double[n];
+        for (int i = 0; i < n; i++) {
+            x[i] = i;
+            mm[i] = 1000 + 100 * i;
+            percent[i] = 80 + i;
+            plain[i] = i;
+        }
+        List<PlotStore.SeriesData> series = List.of(
+                new PlotStore.SeriesData("robot 1 pose:distance_mm", x, mm, n),
+                new PlotStore.SeriesData("robot 1 status:batteryPercent", x, percent, n),
+                new PlotStore.SeriesData("robot 2 status:batteryPercent", x, percent, n),
+                new PlotStore.SeriesData("robot 1 status:x", x, plain, n));
+        fx(() -> {
+            PlotDrawing plot = plot();
+            plot.draw(series);
+            YAxes axes = plot.axes();
+            assertEquals(3, axes.count());
+            assertEquals("mm", axes.of(0).unit());
+            assertEquals("%", axes.of(1).unit());
+            assertEquals(axes.of(1), axes.of(2));
+            assertEquals("", axes.of(3).unit());
+            assertTrue(axes.of(0).y0() < 1000 && axes.of(0).y1() > 2000 && axes.of(0).y0() > 900, axes.of(0).toString());
+            assertTrue(axes.of(1).y0() > 75 && axes.of(1).y1() < 95, axes.of(1).toString());
+            assertEquals("1200 mm", axes.of(0).label("1200"));
+
+            plot.axisPerSeries(true);
+            plot.draw(series);
+            assertEquals(4, plot.axes().count());
+            return null;
+        });
+    }
+
+    /** A plot of series with no known unit keeps one y axis, as before units were read. */
+    @Test
+    void seriesOfNoKnownUnitShareOneAxis() throws Exception {
+        fx(() -> {
+            PlotDrawing plot = plot();
+            plot.draw(series());
+            assertEquals(1, plot.axes().count());
+            assertEquals("", plot.axes().axis(0).unit());
+            return null;
+        });
+    }
+
+    @Test
+    void theUnitIsReadFromTheFieldsName() {
+        assertEquals("mm", YAxes.unitOf("robot 3 pose:ball.distance_mm"));
+        assertEquals("mm", YAxes.unitOf("robot 3 pose:ballDistanceMm"));
+        assertEquals("%", YAxes.unitOf("robot 3 status:batteryPercent"));
+        assertEquals("%", YAxes.unitOf("robot 3 status:battery"));
+        assertEquals("°", YAxes.unitOf("robot 3 head:yaw_deg"));
+        assertEquals("", YAxes.unitOf("robot 3 status:comm"));
+        assertEquals("", YAxes.unitOf("robot 3 pose:x"));
+    }
 }
