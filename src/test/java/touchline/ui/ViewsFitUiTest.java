@@ -158,6 +158,21 @@ class ViewsFitUiTest {
         assertEquals(List.of(), problems);
     }
 
+    /** The replay's file field opened into the demo layout's narrow left pane is wide enough to type a path in. */
+    @Test
+    void theReplaysFileFieldKeepsItsWidthInTheDemoLayoutsNarrowPane() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+        long restored = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > restored + 5);
+        ui.fxRun(() -> ui.window.open("replay", ViewSource.NONE));
+        ui.await(30, () -> ui.fx(() -> ui.window.scene().getRoot().lookup("#replay-path") != null
+                && ui.window.scene().getRoot().lookup("#replay-path").getLayoutBounds().getWidth() > 0));
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 5);
+        double width = ui.fx(() -> ui.window.scene().getRoot().lookup("#replay-path").getLayoutBounds().getWidth());
+        org.junit.jupiter.api.Assertions.assertTrue(width >= 160, "the replay's file field is " + width + " px wide");
+    }
+
     /**
      * A console viewing another Touchline says so in the status bar's banner, with the server's
      * address: a long one is cut (the whole text in its tooltip) rather than making the window

@@ -94,7 +94,11 @@ public final class ReplayView implements View {
         Button open = button("replay-open", "Open", this::open);
         Button add = button("replay-add", "Add file…", this::addFiles);
         Button close = button("replay-close", "Close replay", () -> work.run(console::closeReplay));
-        HBox fileRow = row(new Label("File"), path, browse, open, add, close);
+        // the path on a row of its own: beside four buttons it shrank to nothing in the demo layout's
+        // left pane at 1280 px (the "File" label cut to "…")
+        path.setMinWidth(160);
+        HBox fileRow = row(new Label("File"), path);
+        HBox fileButtons = row(browse, open, add, close);
         files.setId("replay-files");
         files.setWrapText(true);
         files.setVisible(false);
@@ -163,7 +167,7 @@ public final class ReplayView implements View {
         hint.setStyle("-fx-opacity: 0.7;");
         Label title = new Label("Replay");
         title.setStyle("-fx-font-weight: bold;");
-        return new VBox(6, title, fileRow, message, notesBadge, problems, timeline.node(), files, position, controls, row(live, hint));
+        return new VBox(6, title, fileRow, fileButtons, message, notesBadge, problems, timeline.node(), files, position, controls, row(live, hint));
     }
 
     private Node schemaPane() {
