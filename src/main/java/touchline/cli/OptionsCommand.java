@@ -58,13 +58,21 @@ final class OptionsCommand implements Callable<Integer> {
         }
     }
 
+    /** The game states a robot reports in which it sends only its Status. */
+    private static final java.util.Set<String> PLAY_STATES = java.util.Set.of("READY", "SET", "PLAYING");
+
     private int run() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : startOnThePort()) {
             if (!remote.remote()) {
                 new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.matchMode());
             }
             long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
-            if (!await(deadline, () -> console.options().options(robot).listReceived())) {
+            // through a serving console, a robot that reports play sends no option list (and the serving
+            // console, which may have started serving in play, asks for none): the switch is asked at once and
+            // the serving console's match mode answers (held)
+            boolean askOnly = remote.remote() && !(on.isEmpty() && off.isEmpty());
+            if (!await(deadline, () -> console.options().options(robot).listReceived()
+                    || askOnly && console.robots().robot(robot).map(r -> PLAY_STATES.contains(r.gameState())).orElse(false))) {
                 err.println(console.robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
@@ -103,7 +111,7 @@ final class OptionsCommand implements Callable<Integer> {
 
     private int apply(Console console, String name, boolean enable, long deadlineNanos) throws InterruptedException {
         RobotOptions options = console.options().options(robot);
-        if (options.option(name).isEmpty()) {
+        if (options.option(name).isEmpty() && (options.listReceived() || !remote.remote())) {
             err.println("robot " + robot + " offers no option '" + name + "'");
             return 1;
         }

@@ -102,4 +102,51 @@ class OptionsThroughServeTest {
             serve.join();
         }
     }
+
+    /**
+     * A console that starts serving during play (the window's Ctrl+Shift+V in a game) never saw the
+     * robot's option list, and the robot sends none in play: `options --connect` still asks the serving
+     * console, whose match mode holds the switch, instead of waiting for a list that cannot come.
+     */
+    @Test
+    void aSwitchAskedWhileTheRobotSendsOnlyItsStatusIsHeldNotLost() throws Exception {
+        int robots = freeUdpPort();
+        int web = freeTcpPort();
+        StringWriter serveOut = new StringWriter();
+        StringWriter serveErr = new StringWriter();
+        Thread serve = new Thread(() -> {
+            CommandLine cli = new CommandLine(new Main());
+            cli.setOut(new PrintWriter(serveOut, true));
+            cli.setErr(new PrintWriter(serveErr, true));
+            cli.execute("serve", "--port", Integer.toString(web), "--robots-port", Integer.toString(robots),
+                    "--robots-bind", "127.0.0.1", "--insecure", "--seconds", "120", "--stats-every", "60");
+        }, "test-serve");
+        serve.start();
+        java.util.concurrent.ScheduledExecutorService robot = java.util.concurrent.Executors.newSingleThreadScheduledExecutor();
+        try (DatagramSocket socket = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            Await.until("serve is serving", () -> serveOut.toString().contains("ws://") || !serve.isAlive());
+            assertTrue(serve.isAlive(), serveErr.toString());
+            byte[] status = new touchline.protocol.FrameCodec().encode(touchline.protocol.Framing.LENGTH_PREFIX,
+                    touchline.proto.Fumanoid.Message.newBuilder().setRobotID(9).setExtension(touchline.proto.Fumanoid.status,
+                            touchline.proto.Fumanoid.Status.newBuilder().setTeamID(13).setGameState("PLAYING").build())
+                            .build().toByteArray());
+            // a robot in play: its Status once every 200 ms, nothing else
+            robot.scheduleAtFixedRate(() -> {
+                try {
+                    socket.send(new java.net.DatagramPacket(status, status.length, java.net.InetAddress.getLoopbackAddress(), robots));
+                } catch (java.io.IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }, 0, 200, java.util.concurrent.TimeUnit.MILLISECONDS);
+            StringWriter err = new StringWriter();
+            int code = Main.execute(new String[] {"options", "9", "--on", "demo.text",
+                    "--connect", "ws://127.0.0.1:" + web + "/", "--timeout", "10"}, new PrintWriter(err, true));
+            assertEquals(4, code, err.toString());
+            assertTrue(err.toString().contains("demo.text: held: ") && err.toString().contains("PLAYING"), err.toString());
+        } finally {
+            robot.shutdownNow();
+            serve.interrupt();
+            serve.join();
+        }
+    }
 }
