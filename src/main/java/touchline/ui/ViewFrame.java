@@ -190,6 +190,7 @@ public final class ViewFrame extends BorderPane {
         };
         l.widthProperty().addListener(follow);
         l.textProperty().addListener(follow);
+        l.fontProperty().addListener(follow); // the stylesheet's font, applied after the first layout, widens the text
         follow.invalidated(null);
     }
 
