@@ -58,9 +58,6 @@ final class OptionsCommand implements Callable<Integer> {
         }
     }
 
-    /** The game states a robot reports in which it sends only its Status. */
-    private static final java.util.Set<String> PLAY_STATES = java.util.Set.of("READY", "SET", "PLAYING");
-
     private int run() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : startOnThePort()) {
             if (!remote.remote()) {
@@ -72,7 +69,9 @@ final class OptionsCommand implements Callable<Integer> {
             // the serving console's match mode answers (held)
             boolean askOnly = remote.remote() && !(on.isEmpty() && off.isEmpty());
             if (!await(deadline, () -> console.options().options(robot).listReceived()
-                    || askOnly && console.robots().robot(robot).map(r -> PLAY_STATES.contains(r.gameState())).orElse(false))) {
+                    || askOnly && console.robots().robot(robot)
+                    .map(r -> touchline.protocol.gamecontroller.GameControlData.isPlay(
+                            touchline.protocol.gamecontroller.GameControlData.stateCode(r.gameState()))).orElse(false))) {
                 err.println(console.robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
