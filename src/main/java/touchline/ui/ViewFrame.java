@@ -162,6 +162,14 @@ public final class ViewFrame extends BorderPane {
         if (node instanceof javafx.scene.control.ListView<?> list && list.getPlaceholder() != null) {
             keepLabels(list.getPlaceholder());
         }
+        // a split pane's and a scroll pane's contents join the scene graph only with their skins: a view
+        // whose root is a split pane (the robots table above its notes) is reached from the start too
+        if (node instanceof javafx.scene.control.SplitPane split) {
+            split.getItems().forEach(ViewFrame::keepLabels);
+        }
+        if (node instanceof javafx.scene.control.ScrollPane scroll && scroll.getContent() != null) {
+            keepLabels(scroll.getContent());
+        }
         if (node instanceof javafx.scene.Parent p) {
             for (javafx.scene.Node child : p.getChildrenUnmodifiable()) {
                 keepLabels(child);

@@ -48,13 +48,8 @@ public final class RobotsView implements View {
     public RobotsView(ViewContext context) {
         this.context = context;
         table.setId("robot-table");
-        String none = "No robot seen yet: robots send keep-alives to UDP port " + context.console().port();
-        Label placeholder = new Label(none);
-        // its own tooltip: in a narrow pane the sentence is cut, and the table's placeholder is laid out
-        // (and styled) by the table's skin, out of step with the frame's check for cut labels
-        placeholder.setTooltip(new javafx.scene.control.Tooltip(none));
-        placeholder.setWrapText(true);
-        table.setPlaceholder(placeholder);
+        table.setPlaceholder(new Label("No robot seen yet: robots send keep-alives to UDP port "
+                + context.console().port()));
         TableColumn<LiveRows.Row<RobotSnapshot>, String> online = column("", r -> r.online() ? ONLINE : "○", 36);
         online.setCellFactory(c -> new TableCell<>() {
             @Override
