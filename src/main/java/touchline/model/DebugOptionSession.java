@@ -282,6 +282,10 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
                 if (!r.listReceived) {
                     continue;
                 }
+                if (!r.lastHold.isEmpty() && nothingWaits(r, now)) {
+                    r.lastHold = ""; // e.g. the options stream again after play: the note would go stale
+                    version++;
+                }
                 for (String name : r.list.keySet()) {
                     boolean wanted = r.wanted.contains(name);
                     boolean streaming = streaming(r, name, now);
@@ -306,6 +310,19 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         }
         needList.forEach(this::requestList);
         retries.forEach((id, options) -> options.forEach((name, on) -> command(id, name, on)));
+    }
+
+    /** Whether every wanted option of the robot streams and none it switched off is still being released. */
+    private boolean nothingWaits(PerRobot r, long now) {
+        if (!r.releasing.isEmpty()) {
+            return false;
+        }
+        for (String name : r.wanted) {
+            if (r.list.containsKey(name) && !streaming(r, name, now)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private boolean streaming(PerRobot r, String name, long now) {

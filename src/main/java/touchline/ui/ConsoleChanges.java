@@ -6,7 +6,7 @@ import touchline.app.Console;
  * One number that moves whenever anything a view or the status bar shows may have changed:
  * the sum of the console's change counters (every envelope in the network stores, live and
  * replayed, the robot registry, the option lists, the datagrams in and out, the GameController's
- * packets) and, while the window serves, its viewers and what they subscribed to. Each read is a handful of counter reads, so the frame pulse asks it every frame and
+ * packets, match mode's turns: play ends by the clock) and, while the window serves, its viewers and what they subscribed to. Each read is a handful of counter reads, so the frame pulse asks it every frame and
  * the idle watch a few times a second from its own thread (the counters are thread-safe).
  */
 public final class ConsoleChanges {
@@ -27,7 +27,8 @@ public final class ConsoleChanges {
         var stores = console.stores();
         return stores.live().network().version() + stores.replay().network().version() + stores.live().latest().version()
                 + stores.replay().latest().version() + console.robots().version() + console.options().version()
-                + c.datagramsIn() + c.malformedIn() + status.packetsOut() + viewers();
+                + c.datagramsIn() + c.malformedIn() + status.packetsOut() + viewers()
+                + console.matchMode().changes(); // play starts or ends by the clock, nothing else heard
     }
 
     /** Viewers come, go and subscribe without any datagram: the Viewers view shows them. */

@@ -138,6 +138,22 @@ class StatusBarUiTest {
         }
     }
 
+    /**
+     * Notes stale after play (issue 36, item 6): match mode turns on and off with nothing else
+     * heard (play ends by the clock: a source not heard for 5 s no longer counts, and the window
+     * idles after 3 s). The idle window follows it instead of keeping the last banner.
+     */
+    @Test
+    void theIdleWindowFollowsMatchModeWithNothingElseHeard() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of()));
+        FramePulse pulse = ui.window.pulse();
+        ui.await(30, () -> !pulse.running() && !bannerShown());
+        ui.console.matchMode().observeBelieved(3, "GameController at 127.0.0.1:3838");
+        ui.await(30, () -> bannerShown() && text("#status-silence").contains("PLAYING"));
+        // nothing more heard: the window idles after 3 s, the GameController's PLAYING goes stale after 5 s
+        ui.await(30, () -> !bannerShown());
+    }
+
     @Test
     void aReplayAndPausedLiveTrafficShowTheirBanner() throws Exception {
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
