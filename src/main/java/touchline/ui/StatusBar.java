@@ -25,6 +25,7 @@ public final class StatusBar extends HBox {
     private final Label rates = new Label();
     private final Tooltip ratesTip = new Tooltip();
     private final Label bad = new Label();
+    private final Tooltip badTip = new Tooltip();
     private final Label waiting = new Label();
     private final Tooltip waitingTip = new Tooltip();
     private final Tooltip silenceTip = new Tooltip();
@@ -53,13 +54,19 @@ public final class StatusBar extends HBox {
         // never wider than the window can be (a 1280-pixel laptop)
         silence.setMinWidth(SILENCE_MIN_WIDTH);
         silence.setTooltip(silenceTip);
-        // the counts, the meter and the frame rate keep their words; the rates, the message and the
+        // the meter and the frame rate keep their words; the rates, the counts, the message and the
         // platform give way on a narrow window, cut with "…" and whole in their tooltips: together the
-        // least they take stays inside a 1280-pixel window in play, or the whole window would be cut
-        rates.setMinWidth(120);
+        // least they take stays inside a 1280-pixel window with the longest texts of play. The bar itself
+        // asks the window for no width at all: at the PLAYING whistle under openbox the banner and the
+        // meter's "· debug over limit" asked for more than 1280 px and the whole window was laid out
+        // wider for seconds, every view and the referee's buttons moved sideways.
+        setMinWidth(0);
+        rates.setMinWidth(0);
         rates.setTooltip(ratesTip);
-        bad.setMinWidth(Region.USE_PREF_SIZE);
-        waiting.setMinWidth(Region.USE_PREF_SIZE);
+        bad.setId("status-malformed");
+        bad.setMinWidth(0);
+        bad.setTooltip(badTip);
+        waiting.setMinWidth(0);
         silence.setVisible(false);
         silence.setManaged(false);
         waiting.setId("status-waiting");
@@ -109,6 +116,8 @@ public final class StatusBar extends HBox {
         ratesTip.setText(rates.getText() + "\nDatagrams and bytes per second the console received (robots, team "
                 + "messages, GameController) and sent (robots, its own GameController)");
         bad.setText("malformed " + c.malformedIn());
+        badTip.setText(bad.getText() + "\nDatagrams the console received and could not read; the Robots view's "
+                + "\"Bad sources and notes\" says from where and why");
         bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
         int waitingNow = readings.waitingNow();
         waiting.setText(waitingNow == 1 ? "1 request waiting now" : waitingNow + " requests waiting now");
