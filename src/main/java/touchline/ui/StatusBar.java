@@ -21,7 +21,7 @@ public final class StatusBar extends HBox {
     private final ConsoleStatus readings;
     private final Label silence = new Label();
     /** The least the match-mode and remote banner is shrunk to, in pixels. */
-    static final double SILENCE_MIN_WIDTH = 200;
+    static final double SILENCE_MIN_WIDTH = 160;
     private final Label rates = new Label();
     private final Tooltip ratesTip = new Tooltip();
     private final Label bad = new Label();
@@ -54,9 +54,9 @@ public final class StatusBar extends HBox {
         // never wider than the window can be (a 1280-pixel laptop)
         silence.setMinWidth(SILENCE_MIN_WIDTH);
         silence.setTooltip(silenceTip);
-        // the meter and the frame rate keep their words; the rates, the counts, the message and the
-        // platform give way on a narrow window, cut with "…" and whole in their tooltips: together the
-        // least they take stays inside a 1280-pixel window with the longest texts of play. The bar itself
+        // the counts, the meter and the frame rate keep their words; the banner, the rates, the message
+        // and the platform give way on a narrow window, cut with "…" and whole in their tooltips: together
+        // the least they take stays inside a 1280-pixel window with the longest texts of play. The bar itself
         // asks the window for no width at all: at the PLAYING whistle under openbox the banner and the
         // meter's "· debug over limit" asked for more than 1280 px and the whole window was laid out
         // wider for seconds, every view and the referee's buttons moved sideways.
@@ -64,9 +64,9 @@ public final class StatusBar extends HBox {
         rates.setMinWidth(0);
         rates.setTooltip(ratesTip);
         bad.setId("status-malformed");
-        bad.setMinWidth(0);
+        bad.setMinWidth(Region.USE_PREF_SIZE);
         bad.setTooltip(badTip);
-        waiting.setMinWidth(0);
+        waiting.setMinWidth(Region.USE_PREF_SIZE);
         silence.setVisible(false);
         silence.setManaged(false);
         waiting.setId("status-waiting");

