@@ -418,12 +418,7 @@ public final class ConsoleWindow {
     }
 
     private void confirmDelete(String name) {
-        Alert a = new Alert(Alert.AlertType.CONFIRMATION, "Delete the layout \"" + name + "\"? Its file in "
-                + layouts.dir() + " is removed.", javafx.scene.control.ButtonType.OK, javafx.scene.control.ButtonType.CANCEL);
-        a.initOwner(stage);
-        a.setTitle("Delete layout");
-        a.setHeaderText(null);
-        a.getDialogPane().setMinHeight(javafx.scene.layout.Region.USE_PREF_SIZE);
-        a.showAndWait().filter(b -> b == javafx.scene.control.ButtonType.OK).ifPresent(b -> deleteLayout(name));
+        new ConfirmDialog(stage, places, "Delete layout", "Delete the layout \"" + name + "\"? Its file in "
+                + layouts.dir() + " is removed.").ask(() -> deleteLayout(name));
     }
 }
