@@ -70,7 +70,8 @@ final class RecordPanel {
             chooser.setInitialDirectory(current.getParent().toFile());
         }
         chooser.setInitialFileName(current.getFileName().toString());
-        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
+        javafx.stage.Window window = root.getScene().getWindow();
+        java.io.File f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showSaveDialog(window));
         if (f != null) {
             path.setText(f.toString());
         }

@@ -243,7 +243,8 @@ public final class ReplayView implements View {
         chooser.setTitle(title);
         chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("MCAP recordings", "*.mcap"),
                 new FileChooser.ExtensionFilter("All files", "*"));
-        List<java.io.File> f = chooser.showOpenMultipleDialog(root.getScene().getWindow());
+        javafx.stage.Window window = root.getScene().getWindow();
+        List<java.io.File> f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showOpenMultipleDialog(window));
         return f == null ? List.of() : f.stream().map(java.io.File::toPath).toList();
     }
 
@@ -363,7 +364,8 @@ public final class ReplayView implements View {
         chooser.setTitle("Load team schema (protoc descriptor set)");
         chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("Descriptor sets", "*.desc", "*.pb"),
                 new FileChooser.ExtensionFilter("All files", "*"));
-        java.io.File f = chooser.showOpenDialog(root.getScene().getWindow());
+        javafx.stage.Window window = root.getScene().getWindow();
+        java.io.File f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showOpenDialog(window));
         if (f != null) {
             loadSchema(f.toPath());
         }
