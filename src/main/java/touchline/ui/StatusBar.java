@@ -19,9 +19,17 @@ public final class StatusBar extends HBox {
 
     private final touchline.app.Console console;
     private final ConsoleStatus readings;
-    private final Label silence = new Label();
+    /** The banner asks for no more than {@link #SILENCE_MAX_PREF_WIDTH} (whole in its tooltip), so the rates beside it keep some room. */
+    private final Label silence = new Label() {
+        @Override
+        protected double computePrefWidth(double height) {
+            return Math.min(super.computePrefWidth(height), SILENCE_MAX_PREF_WIDTH);
+        }
+    };
     /** The least the match-mode and remote banner is shrunk to, in pixels. */
     static final double SILENCE_MIN_WIDTH = 160;
+    /** The most the banner asks for: the match mode's and the replay's first words. */
+    static final double SILENCE_MAX_PREF_WIDTH = 360;
     private final Label rates = new Label();
     private final Tooltip ratesTip = new Tooltip();
     private final Label bad = new Label();
