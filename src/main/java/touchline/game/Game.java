@@ -54,7 +54,7 @@ public final class Game implements RefereedGame {
             long now = clock.millis();
             state.advance(now);
             if (!action.isLegal(state)) {
-                return new Outcome(false, "illegal now: " + action.describe() + " (state " + describeLocked(now) + ")");
+                return new Outcome(false, "illegal now: " + action.describe() + " (state " + state.describe(now) + ")");
             }
             history.push(action.describe(), state.copy());
             action.apply(state, now);
@@ -96,6 +96,7 @@ public final class Game implements RefereedGame {
     }
 
     /** Descriptions of the undoable actions, most recent first. */
+    @Override
     public synchronized List<String> undoList() {
         return history.descriptions();
     }
@@ -123,25 +124,7 @@ public final class Game implements RefereedGame {
     /** One line such as {@code PLAYING 1st half, 512 s, kick-off 7, 1:0}. */
     @Override
     public synchronized String describe() {
-        return describeLocked(clock.millis());
-    }
-
-    private String describeLocked(long now) {
-        GameState s = state;
-        StringBuilder b = new StringBuilder(s.state.name());
-        if (s.secondary != SecondaryState.NORMAL) {
-            b.append('/').append(s.secondary.name());
-            if (s.secondary.isSetPlay()) {
-                b.append(" team ").append(s.setPlayTeam).append(" mode ").append(s.setPlayMode);
-            }
-        }
-        b.append(s.firstHalf ? " 1st half" : " 2nd half");
-        b.append(", ").append(s.secsRemaining(now)).append(" s left");
-        b.append(", secondary ").append(s.secondaryTime(now)).append(" s");
-        b.append(", kick-off ").append(s.isDropBall() ? "dropped ball" : String.valueOf(s.kickOffTeam));
-        b.append(", ").append(s.teams[0].number).append(' ').append(s.teams[0].score).append(':')
-                .append(s.teams[1].score).append(' ').append(s.teams[1].number);
-        return b.toString();
+        return state.describe(clock.millis());
     }
 
     private void notifyListeners() {

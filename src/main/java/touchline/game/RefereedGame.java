@@ -30,6 +30,9 @@ public interface RefereedGame {
 
     Outcome undo();
 
+    /** Descriptions of the undoable actions, most recent first. */
+    java.util.List<String> undoList();
+
     /** One line for logs and the CLI's status. */
     String describe();
 }

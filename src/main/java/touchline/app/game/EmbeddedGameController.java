@@ -13,8 +13,6 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import touchline.game.Action;
 import touchline.game.Game;
-import touchline.app.game.MatchMode;
-import touchline.game.Outcome;
 import touchline.game.RefereedGame;
 import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
@@ -37,6 +35,9 @@ import java.net.SocketException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 
 /**
@@ -52,10 +53,13 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
     private static final String OWN_SOURCE = "this console's GameController";
+    /** How long a periodic send waits for the owner's timer event (it works in memory: microseconds). */
+    private static final long TICK_WAIT_MS = 100;
 
-    private final RefereedGame referee;
     /** The HL game when one is refereed (robots' manual penalty requests apply to it), else null. */
     private final Game game;
+    /** The only thread that changes the game; everything here enqueues to it or reads its snapshot. */
+    private final GameRuntime runtime;
     private final GcConfig config;
     private final EnvelopeSink sink;
     private final MatchMode matchMode;
@@ -103,8 +107,8 @@ public final class EmbeddedGameController implements AutoCloseable {
                     + "referee it with 'touchline gc --format " + config.profile().cliName() + "'"
                     : "an HSL game is sent in the hsl20 or hsl19 format, not " + config.profile().cliName());
         }
-        this.referee = referee;
         this.game = referee instanceof Game g ? g : null;
+        this.runtime = new GameRuntime(referee);
         this.config = config;
         this.sink = sink;
         this.matchMode = matchMode;
@@ -127,10 +131,12 @@ public final class EmbeddedGameController implements AutoCloseable {
             close();
             throw e;
         }
-        referee.addListener(() -> sender.changed(referee.controlData().stopped()));
+        runtime.addListener(s -> sender.changed(s.robots().stopped()));
     }
 
+    /** Starts the game's owner, then the sender. */
     public void start() {
+        runtime.start();
         sender.start();
     }
 
@@ -166,14 +172,17 @@ public final class EmbeddedGameController implements AutoCloseable {
         return m == null ? null : m.stats();
     }
 
-    /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
-    public Game game() {
-        return game;
+    /**
+     * The owner of the game refereed here: every change goes to it as an event; views and
+     * commands read its snapshot.
+     */
+    public GameRuntime runtime() {
+        return runtime;
     }
 
-    /** The game refereed here, whatever its rules. */
-    public RefereedGame referee() {
-        return referee;
+    /** Whether the game refereed here follows the HSL rules. */
+    public boolean hsl() {
+        return game == null;
     }
 
     public GcConfig config() {
@@ -242,12 +251,14 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     /** "" or the loud warning that another GameController is sending. */
     public String rivalWarning() {
-        return rivals.warning(referee.now());
+        return rivals.warning(runtime.now());
     }
 
     /**
      * The robots' send cycle: the state to send, and after the robots' datagrams went out, the
      * true state handed to the monitors (whose thread sends it), so no monitor delays the robots.
+     * It changes nothing: a periodic cycle is the runtime's timer event and sends the snapshot
+     * the owner published after it; a send after a change sends the snapshot of that change.
      */
     private final class RobotsCycle implements GcSender.Source {
 
@@ -256,17 +267,28 @@ public final class EmbeddedGameController implements AutoCloseable {
 
         @Override
         public GameControlData next(boolean periodic) {
-            if (periodic) {
-                referee.advance();
-            }
-            GameControlData data = referee.controlData();
+            RefereeSnapshot s = periodic ? ticked() : runtime.snapshot();
+            GameControlData data = s.robots();
             if (periodic && monitors != null) {
-                truth = referee.trueData();
+                truth = s.truth();
             }
             if (matchMode != null) {
                 matchMode.observeBelieved(data.state(), OWN_SOURCE);
             }
             return data;
+        }
+
+        /** The snapshot after the timer's event; the last one when the owner does not answer in time. */
+        private RefereeSnapshot ticked() {
+            try {
+                return runtime.tick().get(TICK_WAIT_MS, TimeUnit.MILLISECONDS);
+            } catch (TimeoutException | ExecutionException e) {
+                LOG.warn("the game's owner did not run the timer in {} ms; sending its last state", TICK_WAIT_MS);
+                return runtime.snapshot();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return runtime.snapshot();
+            }
         }
 
         @Override
@@ -290,22 +312,21 @@ public final class EmbeddedGameController implements AutoCloseable {
             return;
         }
         ReturnPacket p = decoded.value();
-        if (!referee.hasTeam(p.team())) {
+        if (!runtime.snapshot().hasTeam(p.team())) {
             rejectReturn(data, from, "team " + p.team() + " is not playing in this game");
             return;
         }
         sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 p.kind(), null, data, null));
-        liveness.heard(p.team(), p.player(), referee.now());
+        liveness.heard(p.team(), p.player(), runtime.now());
         MonitorService m = monitors;
         if (m != null) {
             m.returnPacket(from, data);
         }
         Action requested = game == null ? null : manualRequests.onMessage(p.team(), p.player(), p.message());
         if (requested != null) {
-            Outcome o = game.perform(requested);
-            emit("robot " + p.team() + "/" + p.player() + " asked for " + requested.describe() + ": "
-                    + (o.applied() ? "applied" : o.message()));
+            runtime.perform(requested).thenAccept(o -> emit("robot " + p.team() + "/" + p.player() + " asked for "
+                    + requested.describe() + ": " + (o.applied() ? "applied" : o.message())));
         }
     }
 
@@ -334,15 +355,16 @@ public final class EmbeddedGameController implements AutoCloseable {
         if (error != null) {
             badPackets.count(from, error);
         }
-        boolean wasActive = rivals.active(referee.now()).containsKey(sourceKey(from));
-        rivals.heard(from, kind, decoded, referee.now());
+        long now = runtime.now();
+        boolean wasActive = rivals.active(now).containsKey(sourceKey(from));
+        rivals.heard(from, kind, decoded, now);
         sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
                 null, data, error));
         if (matchMode != null && decoded != null) {
             matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));
         }
         if (!wasActive) {
-            String warning = rivals.warning(referee.now());
+            String warning = rivals.warning(now);
             LOG.warn(warning);
             emit(warning);
         }
@@ -372,6 +394,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     @Override
     public void close() {
         sender.close();
+        runtime.close();
         MonitorService m = monitors;
         if (m != null) {
             m.close();

@@ -77,7 +77,7 @@ public final class HslGame implements RefereedGame {
         synchronized (this) {
             state.advance(clock.millis());
             if (!action.isLegal(state)) {
-                return new Outcome(false, "illegal now: " + action.describe() + " (" + describeLocked() + ")");
+                return new Outcome(false, "illegal now: " + action.describe() + " (" + state.describe() + ")");
             }
             if (action.undoable()) {
                 history.push(action.describe(), state.copy());
@@ -126,6 +126,7 @@ public final class HslGame implements RefereedGame {
         return new Outcome(true, "undid " + done.description());
     }
 
+    @Override
     public synchronized List<String> undoList() {
         return history.descriptions();
     }
@@ -161,34 +162,7 @@ public final class HslGame implements RefereedGame {
     @Override
     public synchronized String describe() {
         state.advance(clock.millis());
-        return describeLocked();
-    }
-
-    private String describeLocked() {
-        HslState s = state;
-        StringBuilder b = new StringBuilder(s.state.name());
-        if (s.phase != HslPhase.NORMAL) {
-            b.append('/').append(s.phase.name());
-        }
-        if (s.stopped) {
-            b.append(" STOPPED");
-        }
-        if (s.setPlay != null) {
-            b.append(' ').append(s.setPlay.label());
-        }
-        b.append(s.firstHalf ? " 1st half" : " 2nd half");
-        b.append(", ").append(s.secsRemaining()).append(" s left");
-        b.append(", secondary ").append(s.secondaryTime()).append(" s");
-        b.append(", kicking ").append(s.kickingTeam == HslState.NO_TEAM ? "none" : String.valueOf(s.kickingTeam));
-        HslTeam l = s.teams[0];
-        HslTeam r = s.teams[1];
-        b.append(", ").append(l.number).append(' ').append(l.score).append(':').append(r.score).append(' ')
-                .append(r.number);
-        b.append(", budget ").append(l.messageBudget).append('/').append(r.messageBudget);
-        if (s.delayed != null) {
-            b.append(", robots still see SET");
-        }
-        return b.toString();
+        return state.describe();
     }
 
     private void notifyListeners() {
