@@ -8,6 +8,7 @@ import touchline.transport.gamecontroller.BadPackets;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.RobotLiveness;
 import touchline.transport.gamecontroller.GcListener;
+import touchline.transport.gamecontroller.MonitorRegistrations;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -41,18 +42,20 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 
 /**
- * The GameController running inside the console: a {@link Game} published by a
- * {@link GcSender}, return packets received and turned into liveness and (edge-triggered)
- * manual penalties, and a watch for other GameControllers on the game-state port. Every
- * datagram in or out is published as a GAMECONTROLLER envelope; our own packets heard back on
- * a shared port are recognised by source and ignored. Bad return packets are counted per
- * source and never applied. Notable events (rival heard, first bad packet of a source, robot
- * requests) go to event listeners as text.
+ * The GameController running inside the console: a refereed game owned by its
+ * {@link GameRuntime} (thread {@value GameRuntime#THREAD}) and published by a {@link GcSender}
+ * that reads the owner's snapshots; return packets received and turned into liveness and
+ * (edge-triggered) manual penalties, enqueued to the owner; other GameControllers heard on the
+ * game-state port through its one listener ({@link GameStateWatch}: the console's, or one of its
+ * own for {@code gc}) and kept as rivals by {@link GameControllerStates}, which also tells match
+ * mode the state we send. Every datagram in or out is published as a GAMECONTROLLER envelope;
+ * our own packets heard back on a shared port are recognised by source and ignored. Bad return
+ * packets are counted per source and never applied. Notable events (rival heard, first bad
+ * packet of a source, robot requests) go to event listeners as text.
  */
 public final class EmbeddedGameController implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
-    private static final String OWN_SOURCE = "this console's GameController";
     /** How long a periodic send waits for the owner's timer event (it works in memory: microseconds). */
     private static final long TICK_WAIT_MS = 100;
 
@@ -62,18 +65,24 @@ public final class EmbeddedGameController implements AutoCloseable {
     private final GameRuntime runtime;
     private final GcConfig config;
     private final EnvelopeSink sink;
-    private final MatchMode matchMode;
+    /** The one source of GameController states for match mode; its tracker keeps our rivals. */
+    private final GameControllerStates states;
+    private final Own own = new Own();
+    /** Where rivals are heard: the console's one listener on the game-state port, or our own; null: nowhere. */
+    private GameStateWatch watch;
+    private final boolean ownsWatch;
+    /** Return packets arrive through {@link #watch} (they share its port). */
+    private boolean returnsOnWatch;
+    /** Our own return-packet listener, unless they come through the watch. */
+    private GcListener returns;
     /** Envelope time stamps (the console's wall clock). */
     private final MicrosClock stamps;
     private final ReturnPacketDecoder returnDecoder = new ReturnPacketDecoder();
-    private final KnownGameStateFormats knownFormats = new KnownGameStateFormats();
     private final RobotLiveness liveness = new RobotLiveness();
     private final BadPackets badPackets = new BadPackets();
-    private final RivalGameControllers rivals = new RivalGameControllers();
     private final ManualPenaltyRequests manualRequests = new ManualPenaltyRequests();
     private final List<Consumer<String>> eventListeners = new CopyOnWriteArrayList<>();
     private final GcSender sender;
-    private final List<GcListener> listeners = new ArrayList<>();
     private volatile MonitorService monitors;
     private final int senderPort;
 
@@ -100,6 +109,22 @@ public final class EmbeddedGameController implements AutoCloseable {
      */
     public EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, MatchMode matchMode,
                                   MicrosClock stamps) throws IOException {
+        this(referee, config, sink, null, matchMode, stamps);
+    }
+
+    /**
+     * A GameController inside a console that already listens on the game-state port: it hears its
+     * rivals (and, where they share that port, its return packets) through {@code watch}, the one
+     * listener there, and tells match mode through the watch's {@link GameControllerStates};
+     * {@code config.rivalBind()} is not opened a second time.
+     */
+    public EmbeddedGameController(RefereedGame referee, GcConfig config, GameStateWatch watch, EnvelopeSink sink,
+                                  MicrosClock stamps) throws IOException {
+        this(referee, config, sink, watch, null, stamps);
+    }
+
+    private EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, GameStateWatch shared,
+                                   MatchMode matchMode, MicrosClock stamps) throws IOException {
         boolean hslGame = !(referee instanceof Game);
         if (hslGame != config.profile().hsl()) {
             throw new IllegalArgumentException(config.profile().hsl()
@@ -111,8 +136,9 @@ public final class EmbeddedGameController implements AutoCloseable {
         this.runtime = new GameRuntime(referee);
         this.config = config;
         this.sink = sink;
-        this.matchMode = matchMode;
         this.stamps = stamps;
+        this.states = shared != null ? shared.states() : new GameControllerStates(sink, matchMode,
+                new MonitorRegistrations(), new GameControllerSources(referee::now, null), badPackets, stamps);
         List<GameStateFormat> formats = new ArrayList<>();
         formats.add(config.profile().format());
         if (config.v7Compat() && config.profile() != GcProfile.V7) {
@@ -122,10 +148,14 @@ public final class EmbeddedGameController implements AutoCloseable {
                 config.intervalMs(), config.profile().hsl(), stamps);
         senderPort = sender.localAddress().getPort();
         sender.useRealtimePriority(config.realtime());
+        this.ownsWatch = shared == null;
         try {
-            listeners.add(new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns"));
-            if (config.rivalBind() != null) {
-                listeners.add(new GcListener(config.rivalBind(), this::onGameStatePortDatagram, "gc-rivals"));
+            watch = shared != null ? shared
+                    : config.rivalBind() != null ? new GameStateWatch(config.rivalBind(), states) : null;
+            // one listener per port: returns that share the game-state port come through the watch
+            returnsOnWatch = watch != null && watch.localAddress().getPort() == config.returnBind().getPort();
+            if (!returnsOnWatch) {
+                returns = new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns");
             }
         } catch (IOException e) {
             close();
@@ -134,8 +164,9 @@ public final class EmbeddedGameController implements AutoCloseable {
         runtime.addListener(s -> sender.changed(s.robots().stopped()));
     }
 
-    /** Starts the game's owner, then the sender. */
+    /** Starts the game's owner, then the sender; from now on other GameControllers heard are rivals. */
     public void start() {
+        states.referee(own);
         runtime.start();
         sender.start();
     }
@@ -197,8 +228,9 @@ public final class EmbeddedGameController implements AutoCloseable {
         return badPackets;
     }
 
+    /** Other GameControllers heard while this one referees (the one tracker, {@link GameControllerSources#others()}). */
     public RivalGameControllers rivals() {
-        return rivals;
+        return states.sources().others();
     }
 
     public GcSender sender() {
@@ -237,12 +269,12 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     /** The bound return-packet address (useful when port 0 was configured). */
     public InetSocketAddress returnAddress() throws IOException {
-        return listeners.get(0).localAddress();
+        return returnsOnWatch ? watch.localAddress() : returns.localAddress();
     }
 
-    /** The bound rival-watch address, or null when not listening separately. */
+    /** Where rivals are heard (the game-state port's one listener), or null when nowhere. */
     public InetSocketAddress rivalAddress() throws IOException {
-        return listeners.size() > 1 ? listeners.get(1).localAddress() : null;
+        return watch == null ? null : watch.localAddress();
     }
 
     public void addEventListener(Consumer<String> onEvent) {
@@ -251,7 +283,7 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     /** "" or the loud warning that another GameController is sending. */
     public String rivalWarning() {
-        return rivals.warning(runtime.now());
+        return rivals().warning(states.sources().now());
     }
 
     /**
@@ -272,9 +304,7 @@ public final class EmbeddedGameController implements AutoCloseable {
             if (periodic && monitors != null) {
                 truth = s.truth();
             }
-            if (matchMode != null) {
-                matchMode.observeBelieved(data.state(), OWN_SOURCE);
-            }
+            states.own(data.state());
             return data;
         }
 
@@ -301,11 +331,36 @@ public final class EmbeddedGameController implements AutoCloseable {
         }
     }
 
+    /** This GameController as the one source of states knows it while it referees. */
+    private final class Own implements GameControllerStates.Referee {
+
+        @Override
+        public boolean ownPacket(InetSocketAddress from) {
+            return from.getPort() == senderPort && isLocal(from.getAddress());
+        }
+
+        @Override
+        public void rivalHeard(String warning) {
+            emit(warning);
+        }
+
+        @Override
+        public void otherDatagram(byte[] data, InetSocketAddress from) {
+            if (returnsOnWatch) {
+                onReturnPacket(data, from);
+            }
+        }
+    }
+
     private void onReturnPortDatagram(byte[] data, InetSocketAddress from) {
         if (KnownGameStateFormats.isGameState(data)) {
-            onGameStatePortDatagram(data, from);
+            states.datagram(data, from); // a rival, or our own heard back, where the ports are shared
             return;
         }
+        onReturnPacket(data, from);
+    }
+
+    private void onReturnPacket(byte[] data, InetSocketAddress from) {
         Decoded<ReturnPacket> decoded = returnDecoder.decode(data);
         if (!decoded.isOk()) {
             rejectReturn(data, from, decoded.failure() + ": " + decoded.detail());
@@ -339,37 +394,6 @@ public final class EmbeddedGameController implements AutoCloseable {
         }
     }
 
-    private void onGameStatePortDatagram(byte[] data, InetSocketAddress from) {
-        if (!KnownGameStateFormats.isGameState(data)) {
-            return; // robots' own broadcasts or team traffic on the shared port are not ours to judge
-        }
-        if (from.getPort() == senderPort && isLocal(from.getAddress())) {
-            return; // our own packet, heard back
-        }
-        Decoded<KnownGameStateFormats.Match> recognised = knownFormats.recognise(data);
-        KnownGameStateFormats.Match match = recognised.value();
-        GameStateFormat format = match == null ? null : match.format();
-        GameControlData decoded = match == null ? null : match.data();
-        String kind = format == null ? "gc.unknown" : format.kind();
-        String error = match == null ? recognised.failure() + ": " + recognised.detail() : null;
-        if (error != null) {
-            badPackets.count(from, error);
-        }
-        long now = runtime.now();
-        boolean wasActive = rivals.active(now).containsKey(sourceKey(from));
-        rivals.heard(from, kind, decoded, now);
-        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
-                null, data, error));
-        if (matchMode != null && decoded != null) {
-            matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));
-        }
-        if (!wasActive) {
-            String warning = rivals.warning(now);
-            LOG.warn(warning);
-            emit(warning);
-        }
-    }
-
     private static String sourceKey(InetSocketAddress from) {
         return from.getAddress().getHostAddress() + ":" + from.getPort();
     }
@@ -393,12 +417,18 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     @Override
     public void close() {
+        states.endRefereeing(own);
         sender.close();
         runtime.close();
         MonitorService m = monitors;
         if (m != null) {
             m.close();
         }
-        listeners.forEach(GcListener::close);
+        if (returns != null) {
+            returns.close();
+        }
+        if (ownsWatch && watch != null) {
+            watch.close();
+        }
     }
 }
