@@ -7,9 +7,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
  * One refereed game: the {@link GameState}, the clock it is read against and the undo history.
- * All access is serialised, so the UI thread, the CLI, the sender and the return-packet receiver
- * may call it concurrently. Listeners hear about every change (action, undo, or a change that
- * happened by itself in {@link #advance()}) so the sender can publish it at once.
+ * In the console its one owner is {@code app.game.GameRuntime}, which calls every method on its
+ * thread; access is serialised all the same. Listeners hear about every change (action, undo, or
+ * a change that happened by itself in {@link #advance()}) on the thread that made it.
  */
 public final class Game implements RefereedGame {
 

@@ -14,7 +14,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * One refereed HSL game: the {@link HslState}, the clock it runs on and the undo history. An
  * action during the robots' delay after a PLAYING whistle is applied to the held copy too
  * when it is legal there, and ends the delay when it is not (a goal, say), as the official
- * GameController does. All access is serialised; listeners hear about every change.
+ * GameController does. In the console its one owner is {@code app.game.GameRuntime};
+ * access is serialised all the same; listeners hear about every change.
  */
 public final class HslGame implements RefereedGame {
 
