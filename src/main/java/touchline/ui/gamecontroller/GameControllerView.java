@@ -17,7 +17,7 @@ import touchline.game.GameState;
 import touchline.game.Goal;
 import touchline.game.LeagueParams;
 import touchline.game.Outcome;
-import touchline.game.Penalise;
+import touchline.game.Penalize;
 import touchline.game.Penalty;
 import touchline.game.PlayerState;
 import touchline.game.SecondaryState;
@@ -29,7 +29,7 @@ import touchline.game.ToFinished;
 import touchline.game.ToPlaying;
 import touchline.game.ToReady;
 import touchline.game.ToSet;
-import touchline.game.Unpenalise;
+import touchline.game.Unpenalize;
 import touchline.app.game.EmbeddedGameController;
 import touchline.app.game.GameRuntime;
 import touchline.app.game.RefereeSnapshot;
@@ -151,8 +151,8 @@ public final class GameControllerView implements View {
 
     private Action togglePenalty(int side, int player) {
         TeamState t = game.snapshot().hl().teamOnSide(side);
-        return t.player(player).isPenalised() ? new Unpenalise(t.number(), player)
-                : new Penalise(t.number(), player, Penalty.PHYSICAL_CONTACT);
+        return t.player(player).isPenalised() ? new Unpenalize(t.number(), player)
+                : new Penalize(t.number(), player, Penalty.PHYSICAL_CONTACT);
     }
 
     private void key(KeyEvent e) {

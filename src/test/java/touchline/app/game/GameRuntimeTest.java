@@ -6,7 +6,7 @@ import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.game.ManualClock;
 import touchline.game.Outcome;
-import touchline.game.Penalise;
+import touchline.game.Penalize;
 import touchline.game.Penalty;
 import touchline.game.ToReady;
 import touchline.game.hsl.Competition;
@@ -59,7 +59,7 @@ class GameRuntimeTest {
                         return;
                     }
                     for (int player = 1; player <= 4; player++) {
-                        Penalise p = new Penalise(team, player, Penalty.PHYSICAL_CONTACT);
+                        Penalize p = new Penalize(team, player, Penalty.PHYSICAL_CONTACT);
                         synchronized (enqueued) { // the order of enqueueing, across both faces
                             enqueued.add(p.describe());
                             outcomes.add(owner.perform(p));
@@ -95,7 +95,7 @@ class GameRuntimeTest {
                      List.of((InetSocketAddress) robot.getLocalSocketAddress()), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT,
                      null, 10, false), e -> { }, null, new SystemClock())) {
             gc.start();
-            assertTrue(gc.runtime().perform(new Penalise(13, 1, Penalty.PHYSICAL_CONTACT)).join().applied());
+            assertTrue(gc.runtime().perform(new Penalize(13, 1, Penalty.PHYSICAL_CONTACT)).join().applied());
             clock.advance(10 * 60_000); // the penalty ends at the owner's next timer event (the sender's cycle)
             Await.until("the penalty ended by time",
                     () -> gc.runtime().snapshot().hl().team(13).player(1).penalty() == Penalty.NONE);
@@ -115,7 +115,7 @@ class GameRuntimeTest {
         owner.start();
         assertTrue(early.join().applied());
         owner.close();
-        Outcome late = owner.perform(new Penalise(13, 1, Penalty.PHYSICAL_CONTACT)).join();
+        Outcome late = owner.perform(new Penalize(13, 1, Penalty.PHYSICAL_CONTACT)).join();
         assertFalse(late.applied());
         assertEquals("the GameController is stopped", late.message());
     }
