@@ -686,7 +686,8 @@ public final class Console implements AutoCloseable {
             throw new IOException(COMMANDS_OFF);
         }
         stopGameController();
-        EmbeddedGameController gc = new EmbeddedGameController(game, gcConfig, live, matchMode, clock);
+        EmbeddedGameController gc = gcWatch != null ? new EmbeddedGameController(game, gcConfig, gcWatch, live, clock)
+                : new EmbeddedGameController(game, gcConfig, live, matchMode, clock); // one listener on 3838
         try {
             gc.start();
         } catch (RuntimeException e) {

@@ -225,15 +225,15 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), true); // as the tab does
         touchline.game.Game game = new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0,
                 console.gameClock());
-        console.startGameController(game, config);
-        game.perform(new touchline.game.ToReady());
-        game.perform(new touchline.game.ToSet());
-        game.perform(new touchline.game.ToPlaying());
+        touchline.app.game.GameRuntime owner = console.startGameController(game, config).runtime();
+        owner.perform(new touchline.game.ToReady());
+        owner.perform(new touchline.game.ToSet());
+        owner.perform(new touchline.game.ToPlaying());
         FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                 List.of(new LayoutNode.Entry("gamecontroller", ""))))));
         Thread.sleep(2500); // the robots hear PLAYING and report it; match mode shows its notice
         shoot(window, "gamecontroller");
-        game.perform(new touchline.game.ToFinished()); // robots hear FINISHED: the console may talk again
+        owner.perform(new touchline.game.ToFinished()); // robots hear FINISHED: the console may talk again
         Thread.sleep(1500);
         console.stopGameController();
     }

@@ -88,9 +88,9 @@ class GameControllerSpoofingIntegrationTest {
                 }
             });
             Await.until("option list", () -> console.options().options(8).listReceived());
-            game.perform(new ToReady());
-            game.perform(new ToSet());
-            game.perform(new ToPlaying());
+            referee.runtime().perform(new ToReady()); // enqueued: the owner applies them once started
+            referee.runtime().perform(new ToSet());
+            referee.runtime().perform(new ToPlaying());
             referee.start();
             Await.until("match mode from the GameController's PLAYING", () -> console.matchMode().playIsOn());
             assertEquals("127.0.0.1", console.gcSources().pinnedHost());

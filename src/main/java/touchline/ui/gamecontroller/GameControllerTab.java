@@ -193,8 +193,8 @@ public final class GameControllerTab implements View {
     /** Shows the referee controls of a running GameController (started here or elsewhere). */
     private void show(EmbeddedGameController gc) {
         shown = gc;
-        referee = gc.referee() instanceof HslGame h ? new HslRefereeView(new HslRefereeModel(h), gc, console)
-                : new GameControllerView(gc.game(), gc);
+        referee = gc.hsl() ? new HslRefereeView(new HslRefereeModel(gc.runtime()), gc, console)
+                : new GameControllerView(gc.runtime(), gc);
         Button stop = new Button("Stop GameController");
         stop.setId("gc-stop");
         stop.setOnAction(e -> stop());

@@ -191,7 +191,7 @@ public final class HslRefereeView implements View {
         warning.setVisible(!rival.isEmpty());
         warning.setManaged(!rival.isEmpty());
         JerseyLiveness liveness = new JerseyLiveness(console == null ? List.of() : console.robots().robots(),
-                gc == null ? null : gc.liveness(), model.game().now());
+                gc == null ? null : gc.liveness(), model.now());
         state.setText(model.stateText());
         clock.setText(model.mainClock());
         secondary.setText(model.secondaryClock());
