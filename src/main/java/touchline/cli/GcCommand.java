@@ -21,6 +21,7 @@ import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.app.SystemClock;
+import touchline.app.Referee;
 import touchline.app.game.EmbeddedGameController;
 import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.GcConfig;
@@ -204,24 +205,25 @@ public final class GcCommand implements Callable<Integer> {
 
     private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
-        MatchMode matchMode = new MatchMode(clock);
-        try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode, clock)) {
-            gc.addEventListener(event -> print("! " + event));
-            String[] last = {""};
-            game.addListener(() -> {
-                String now = stateLine(game);
-                if (!now.equals(last[0])) {
-                    last[0] = now;
-                    print("state: " + now);
+        Referee referee = new Referee(e -> { }, new MatchMode(clock), clock);
+        int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
+        try {
+            EmbeddedGameController gc = referee.start(game, config, started -> {
+                started.addEventListener(event -> print("! " + event));
+                String[] last = {""};
+                game.addListener(() -> {
+                    String now = stateLine(game);
+                    if (!now.equals(last[0])) {
+                        last[0] = now;
+                        print("state: " + now);
+                    }
+                });
+                if (profile.hsl() && monitorRequests >= 0) {
+                    started.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                            GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+                    print("monitors register on " + started.monitorRequestAddress());
                 }
             });
-            int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
-            if (profile.hsl() && monitorRequests >= 0) {
-                gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
-                        GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
-                print("monitors register on " + gc.monitorRequestAddress());
-            }
-            gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
             if (realtime) {
@@ -250,6 +252,8 @@ public final class GcCommand implements Callable<Integer> {
             // The HSL schedule does not send a change at once: send the final state before closing.
             gc.sendNow();
             Thread.sleep(100);
+        } finally {
+            referee.stop();
         }
         return 0;
     }
