@@ -21,6 +21,7 @@ import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.app.SystemClock;
+import touchline.app.Referee;
 import touchline.app.game.EmbeddedGameController;
 import touchline.app.game.GameRuntime;
 import touchline.app.game.RefereeSnapshot;
@@ -208,25 +209,25 @@ public final class GcCommand implements Callable<Integer> {
 
     private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
-        MatchMode matchMode = new MatchMode(clock);
-        try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode, clock)) {
-            gc.addEventListener(event -> print("! " + event));
-            GameRuntime owner = gc.runtime();
-            String[] last = {""};
-            owner.addListener(s -> {
-                String now = stateLine(s.description());
-                if (!now.equals(last[0])) {
-                    last[0] = now;
-                    print("state: " + now);
+        Referee referee = new Referee(e -> { }, new MatchMode(clock), clock);
+        int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
+        try {
+            EmbeddedGameController gc = referee.start(game, config, started -> {
+                started.addEventListener(event -> print("! " + event));
+                String[] last = {""};
+                started.runtime().addListener(s -> {
+                    String now = stateLine(s.description());
+                    if (!now.equals(last[0])) {
+                        last[0] = now;
+                        print("state: " + now);
+                    }
+                });
+                if (profile.hsl() && monitorRequests >= 0) {
+                    started.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                            GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+                    print("monitors register on " + started.monitorRequestAddress());
                 }
             });
-            int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
-            if (profile.hsl() && monitorRequests >= 0) {
-                gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
-                        GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
-                print("monitors register on " + gc.monitorRequestAddress());
-            }
-            gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
             if (realtime) {
@@ -234,6 +235,7 @@ public final class GcCommand implements Callable<Integer> {
                 print(why.isEmpty() ? "sender runs with real-time priority"
                         : "! no real-time priority (500 ms cadence may jitter on a busy machine): " + why);
             }
+            GameRuntime owner = gc.runtime();
             print("state: " + owner.snapshot().description());
             BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
             for (String line = in.readLine(); line != null; line = in.readLine()) {
@@ -255,6 +257,8 @@ public final class GcCommand implements Callable<Integer> {
             // The HSL schedule does not send a change at once: send the final state before closing.
             gc.sendNow();
             Thread.sleep(100);
+        } finally {
+            referee.stop();
         }
         return 0;
     }

@@ -19,9 +19,8 @@ public final class Serving implements AutoCloseable {
      * Binds and starts serving; IllegalArgumentException (a sentence for the user) for a
      * configuration that cannot be served (no token beyond loopback, a certificate that does
      * not load), the bind's own exception when the port cannot be had. {@code states}: the
-     * console's state served as JSON channels (match mode, the budget meter; the faces take them
-     * from the application core, {@code console.servedStateChannels(JsonChannel::new)}, as the
-     * server does not know the core).
+     * console's state served as JSON channels (match mode, the budget meter; the core's
+     * {@code app.LiveServing} hands them in, as the server does not know the core).
      */
     public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, java.util.List<JsonChannel> states)
             throws InterruptedException {

@@ -17,7 +17,8 @@ import touchline.app.TransportCounts;
  */
 public final class StatusBar extends HBox {
 
-    private final touchline.app.Console console;
+    private final touchline.app.LiveField field;
+    private final touchline.app.TeamBudget budget;
     private final ConsoleStatus readings;
     /** The banner asks for no more than {@link #SILENCE_MAX_PREF_WIDTH} (whole in its tooltip), so the rates beside it keep some room. */
     private final Label silence = new Label() {
@@ -49,10 +50,11 @@ public final class StatusBar extends HBox {
     private long lastBytesOut;
     private double packetsPerSecond;
 
-    public StatusBar(touchline.app.Console console) {
+    public StatusBar(ConsoleStatus readings, touchline.app.LiveField field, touchline.app.TeamBudget budget) {
         super(10);
-        this.console = console;
-        this.readings = new ConsoleStatus(console);
+        this.field = field;
+        this.budget = budget;
+        this.readings = readings;
         setId("status-bar");
         setStyle("-fx-padding: 3 8 3 8; -fx-alignment: center-left;");
         rates.setId("status-rates");
@@ -87,7 +89,7 @@ public final class StatusBar extends HBox {
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
         // the transport and priority in use: epoll + recvmmsg on Linux, NIO / normal priority as the portable fallback
-        touchline.app.RuntimeReport runtime = console.runtime();
+        touchline.app.RuntimeReport runtime = field.runtime();
         platform.setId("status-platform");
         platform.setText(runtime.portability());
         platform.setMinWidth(0);
@@ -114,7 +116,7 @@ public final class StatusBar extends HBox {
         if (nowMicros - lastMicros < 500_000) {
             return;
         }
-        TransportCounts c = console.transportCounts();
+        TransportCounts c = field.transportCounts();
         double dt = lastMicros == 0 ? 1 : (nowMicros - lastMicros) / 1e6;
         packetsPerSecond = (c.datagramsIn() - lastIn) / dt;
         long out = readings.packetsOut();
@@ -143,7 +145,7 @@ public final class StatusBar extends HBox {
         lastOut = out;
         lastBytesOut = c.bytesOut();
         lastMicros = nowMicros;
-        java.util.Optional<touchline.model.TeamMessageBudget> guard = console.teamMessageBudget();
+        java.util.Optional<touchline.model.TeamMessageBudget> guard = budget.budget();
         if (guard.isPresent()) {
             showBudget(guard.get().snapshot());
         } else {
@@ -157,7 +159,7 @@ public final class StatusBar extends HBox {
     private void showBudget(touchline.model.TeamMessageBudget.Snapshot s) {
         long total = s.left() >= 0 ? s.left() + s.used() : -1;
         double f = total > 0 ? (double) s.used() / total : 0;
-        java.util.List<touchline.model.DebugRateGuard.OverLimit> over = console.debugRateGuard()
+        java.util.List<touchline.model.DebugRateGuard.OverLimit> over = budget.debugRateGuard()
                 .map(touchline.model.DebugRateGuard::overLimit).orElse(java.util.List.of());
         boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED
                 || !over.isEmpty();
@@ -180,7 +182,7 @@ public final class StatusBar extends HBox {
 
     /** Without a budget guard: the team's traffic against the 1 Mbit/s limit of the leagues before 2026. */
     private void showTraffic() {
-        TrafficMeter.Reading r = console.traffic().read();
+        TrafficMeter.Reading r = field.traffic().read();
         double f = r.fractionOfLimit();
         meter.show(f, f > 1 ? BudgetMeter.Level.ALARM : f > 0.8 ? BudgetMeter.Level.WARN : BudgetMeter.Level.CALM,
                 String.format("team %.0f kbit/s (%.0f %%)%s", r.teamBitsPerSecond() / 1000, f * 100,

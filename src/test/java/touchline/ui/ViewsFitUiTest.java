@@ -36,7 +36,7 @@ class ViewsFitUiTest {
 
     @AfterEach
     void close() throws Exception {
-        ui.console.stopGameController();
+        ui.console.referee().stop();
         ui.close();
         if (field != null) {
             field.close();
@@ -184,7 +184,7 @@ class ViewsFitUiTest {
         try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
             nobody = s.getLocalPort(); // free again once closed: nothing listens there
         }
-        ui.console.viewRemote(new java.net.URI("ws://127.0.0.1:" + nobody + "/a/rather/long/path/of/the/server"), null);
+        ui.console.remote().view(new java.net.URI("ws://127.0.0.1:" + nobody + "/a/rather/long/path/of/the/server"), null);
         ui.await(30, () -> ui.fx(() -> ((Label) ui.window.scene().lookup("#status-silence")).getText().contains("lost")));
         long start = ui.fx(() -> ui.window.pulse().frames());
         ui.await(30, () -> ui.window.pulse().frames() > start + 5);
@@ -268,7 +268,7 @@ class ViewsFitUiTest {
                 problems.add(id + " is " + over + " px wider than its pane");
             }
             if (id.equals("gamecontroller")) {
-                ui.console.stopGameController();
+                ui.console.referee().stop();
                 field.close();
                 field = null;
             }

@@ -51,8 +51,8 @@ public final class FieldPlotView implements View {
 
     public FieldPlotView(ViewContext context) {
         this.context = context;
-        this.fields = new FieldPlot(context.console().kinds(), PlotStore.DEFAULT_POINTS, context.console().clock().nowMicros());
-        this.subscription = context.console().bus().subscribe(fields);
+        this.fields = new FieldPlot(context.field().kinds(), PlotStore.DEFAULT_POINTS, context.field().clock().nowMicros());
+        this.subscription = context.field().bus().subscribe(fields);
         this.robot = new RobotFilter(context);
         robot.setId("field-robot");
         path.setId("field-path");
@@ -131,7 +131,7 @@ public final class FieldPlotView implements View {
         }
         int id = robot.robotId();
         List<Integer> robots = id >= 0 ? List.of(id)
-                : context.console().robots().robots().stream().map(RobotSnapshot::id).distinct().toList();
+                : context.field().robots().robots().stream().map(RobotSnapshot::id).distinct().toList();
         int added = 0;
         for (int r : robots) {
             if (fields.add(r, chosen)) {
