@@ -27,7 +27,8 @@ import touchline.model.store.PlotStore;
 import touchline.model.store.TextLog;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
-import touchline.transport.EnvelopeBus;
+import touchline.transport.LiveStream;
+import touchline.transport.ReplayStream;
 import touchline.transport.MicrosClock;
 import touchline.transport.ReliableStreamHandler;
 import touchline.transport.SendGate;
@@ -65,7 +66,8 @@ public final class Console implements AutoCloseable {
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
     private final TeamSchemas teamSchemas = new TeamSchemas(kinds);
-    private final EnvelopeBus bus = new EnvelopeBus();
+    private final LiveStream bus = new LiveStream();
+    private final ReplayStream replayStream = new ReplayStream();
     private final LiveSwitch live = new LiveSwitch(bus);
     private Recorder recorder;
     private AutoCloseable recorderSubscription;
@@ -145,16 +147,14 @@ public final class Console implements AutoCloseable {
         this.options = new DebugOptionSession(udp, codec, clock, replayClock);
         this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
-        bus.subscribe(new ReportedGameState(matchMode));
+        bus.subscribe(new ReportedGameState(matchMode)); // live only: a replay never changes match mode
         setGate(() -> matchMode.hold("console request")
                 ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
         if (withModel) {
-            bus.subscribe(robots);
-            bus.subscribe(traffic);
-            bus.subscribe(options);
-            bus.subscribe(stores);
-            bus.subscribe(naoCamera);
-            bus.subscribe(naoCalls);
+            for (touchline.transport.EnvelopeSink model : List.of(robots, traffic, options, stores, naoCamera, naoCalls)) {
+                bus.subscribe(model);
+                replayStream.subscribe(model);
+            }
             robots.addPresenceListener(options);
             robots.addPresenceListener(robotWaits);
         }
@@ -395,7 +395,10 @@ public final class Console implements AutoCloseable {
         return Optional.ofNullable(remote);
     }
 
-    public EnvelopeBus bus() { return bus; }
+    /** The live stream: what the field and this console's own sending publish (never a replay). */
+    public LiveStream bus() { return bus; }
+    /** The replay stream: what an open replay plays, for the read models and the faces that show it. */
+    public ReplayStream replayStream() { return replayStream; }
     public RobotRegistry robots() { return robots; }
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
@@ -579,7 +582,7 @@ public final class Console implements AutoCloseable {
      */
     public touchline.model.store.ViewStores stores() { return stores; }
 
-    /** Starts recording every envelope (in and out, live or replayed) into an MCAP file. */
+    /** Starts recording the live stream (every envelope in and out, never a replay's) into an MCAP file. */
     public synchronized Recorder startRecording(Path file) throws IOException {
         stopRecording();
         recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
@@ -645,7 +648,7 @@ public final class Console implements AutoCloseable {
         ReplaySession session = ReplaySession.open(files, offsets, kinds);
         long start = session.startMicros();
         restartReplayedViews(start);
-        replay = new Replay(session, bus, realClock, () -> {
+        replay = new Replay(session, replayStream.publisher(), realClock, () -> {
             restartReplayedViews(start);
             robots.forgetReplayed();
         });

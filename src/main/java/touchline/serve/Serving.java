@@ -1,12 +1,13 @@
 package touchline.serve;
 
 import touchline.protocol.MessageKinds;
-import touchline.transport.EnvelopeBus;
+import touchline.transport.LiveStream;
 import touchline.transport.MicrosClock;
 
 /**
- * A console's stream served to viewers: the {@link FoxgloveServer} subscribed to the console's
- * Envelope stream, with its match mode as a channel. What {@code touchline serve} and the
+ * A console's live field served to viewers: the {@link FoxgloveServer} subscribed to the console's
+ * {@link LiveStream} (a replay, which has a stream of its own, is never served as live), with
+ * its match mode as a channel. What {@code touchline serve} and the
  * window's "Serve to viewers" both start, so the two serve exactly the same way.
  */
 public final class Serving implements AutoCloseable {
@@ -23,13 +24,14 @@ public final class Serving implements AutoCloseable {
      * from the application core, {@code console.servedStateChannels(JsonChannel::new)}, as the
      * server does not know the core).
      */
-    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeBus bus, java.util.List<JsonChannel> states)
+    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, LiveStream live,
+                   java.util.List<JsonChannel> states)
             throws InterruptedException {
         server = new FoxgloveServer(config, kinds, clock);
         for (JsonChannel s : states) {
             server.serveJson(s);
         }
-        subscription = bus.subscribe(server);
+        subscription = live.subscribe(server);
         headroom = new HeapHeadroom(HeapHeadroom.WHILE_SERVING); // more heap while serving: issue 16
     }
 

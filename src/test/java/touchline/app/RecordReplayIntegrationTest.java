@@ -52,7 +52,7 @@ class RecordReplayIntegrationTest {
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback())) {
             console.setLiveListening(false);
-            console.bus().subscribe(replayed::add);
+            console.replayStream().subscribe(replayed::add);
             Replay replay = console.openReplay(file);
             assertEquals(List.of(), replay.problems());
             replay.setSpeed(50);
