@@ -151,10 +151,19 @@ public final class Console implements AutoCloseable {
         setGate(() -> matchMode.hold("console request")
                 ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
         if (withModel) {
-            for (touchline.transport.EnvelopeSink model : List.of(robots, traffic, options, stores, naoCamera, naoCalls)) {
-                bus.subscribe(model);
-                replayStream.subscribe(model);
-            }
+            // the read models the views show: one per stream; the option session only on the live one
+            bus.subscribe(robots.live());
+            replayStream.subscribe(robots.replay());
+            bus.subscribe(traffic);
+            replayStream.subscribe(traffic);
+            bus.subscribe(options);
+            replayStream.subscribe(options.replayed());
+            bus.subscribe(stores.live());
+            replayStream.subscribe(stores.replay());
+            bus.subscribe(naoCamera.live());
+            replayStream.subscribe(naoCamera.replay());
+            bus.subscribe(naoCalls.live());
+            replayStream.subscribe(naoCalls.replay());
             robots.addPresenceListener(options);
             robots.addPresenceListener(robotWaits);
         }

@@ -150,7 +150,8 @@ final class ServeCommand implements Callable<Integer> {
             console.loadTeamSchemas(schemas.teamFiles()).forEach(r -> err.println("touchline serve: " + r));
             Serving serving;
             try {
-                serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
+                serving = new Serving(config, console.kinds(), console.clock(),
+                        replayFile != null ? console.replayStream() : console.bus(),
                         console.servedStateChannels(touchline.serve.JsonChannel::new));
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());

@@ -1,13 +1,15 @@
 package touchline.serve;
 
 import touchline.protocol.MessageKinds;
-import touchline.transport.LiveStream;
+import touchline.transport.EnvelopeSource;
 import touchline.transport.MicrosClock;
 
 /**
- * A console's live field served to viewers: the {@link FoxgloveServer} subscribed to the console's
- * {@link LiveStream} (a replay, which has a stream of its own, is never served as live), with
- * its match mode as a channel. What {@code touchline serve} and the
+ * A console's stream served to viewers: the {@link FoxgloveServer} subscribed to the stream the
+ * face names, the console's live stream ({@code console.bus()}: the window's "Serve to viewers",
+ * {@code touchline serve}) or, when a recording is served instead of the field ({@code serve
+ * --replay}), its replay stream; never both, so a replay open beside the field is not served
+ * as live. Match mode is served as a channel. What {@code touchline serve} and the
  * window's "Serve to viewers" both start, so the two serve exactly the same way.
  */
 public final class Serving implements AutoCloseable {
@@ -24,14 +26,14 @@ public final class Serving implements AutoCloseable {
      * from the application core, {@code console.servedStateChannels(JsonChannel::new)}, as the
      * server does not know the core).
      */
-    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, LiveStream live,
+    public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeSource stream,
                    java.util.List<JsonChannel> states)
             throws InterruptedException {
         server = new FoxgloveServer(config, kinds, clock);
         for (JsonChannel s : states) {
             server.serveJson(s);
         }
-        subscription = live.subscribe(server);
+        subscription = stream.subscribe(server);
         headroom = new HeapHeadroom(HeapHeadroom.WHILE_SERVING); // more heap while serving: issue 16
     }
 

@@ -10,11 +10,12 @@ import java.util.concurrent.atomic.LongAdder;
  * another type, so it cannot be handed to them. An envelope marked replayed is refused
  * (counted, logged once) rather than taken as live.
  */
-public final class LiveStream implements EnvelopeSink {
+public final class LiveStream implements EnvelopeSink, EnvelopeSource {
 
     private final EnvelopeBus bus = new EnvelopeBus();
     private final LongAdder refusedReplayed = new LongAdder();
 
+    @Override
     public AutoCloseable subscribe(EnvelopeSink sink) {
         return bus.subscribe(sink);
     }

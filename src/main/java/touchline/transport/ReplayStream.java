@@ -8,11 +8,12 @@ package touchline.transport;
  * publishes through {@link #publisher()}, which marks every envelope replayed.
  * {@code ArchitectureTest} keeps the type out of the senders, match mode and the options switch.
  */
-public final class ReplayStream {
+public final class ReplayStream implements EnvelopeSource {
 
     private final EnvelopeBus bus = new EnvelopeBus();
     private final EnvelopeSink publisher = e -> bus.accept(e.asReplayed());
 
+    @Override
     public AutoCloseable subscribe(EnvelopeSink sink) {
         return bus.subscribe(sink);
     }
