@@ -636,9 +636,10 @@ public final class Console implements AutoCloseable {
     }
 
     /**
-     * Opens a recording and plays it into the same stream as live traffic (paused at its
-     * start). Its envelopes are marked replayed: they never cause a datagram, never change
-     * match mode, and fill the model beside the live robots, never merged with them. Each
+     * Opens a recording and plays it into the replay stream (paused at its start), which the
+     * read models take beside the live stream and nothing that acts on the field takes: it
+     * never causes a datagram, never changes match mode, and its robots stand beside the live
+     * ones, never merged with them. Each
      * jump of the replay (a seek, a loop going round) starts its robots and stores afresh.
      */
     public synchronized Replay openReplay(Path file) throws RecordingException {
