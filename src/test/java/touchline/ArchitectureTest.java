@@ -207,6 +207,31 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    /**
+     * Issue 38: live and replay apart by construction. A replay has its own stream, and the
+     * type never reaches what acts on the field: no sender or transport, no match mode or
+     * referee, no recorder or live server, no options switch, budget guard or game-state
+     * listener may even name it; of the core only the composition root and the replay use case
+     * (which wire the read models to it) do. A sender takes an {@code EnvelopeSink}, which
+     * {@code ReplayStream} is not. (The live server takes an {@code EnvelopeSource} and is told
+     * which: {@code serve --replay} serves a recording instead of the field, with no option
+     * switches offered.)
+     */
+    @Test
+    void theReplayStreamNeverReachesWhatActsOnTheField() {
+        noClasses().that().resideOutsideOfPackages("touchline.app", "touchline.ui..", "touchline.cli..")
+                .and().doNotBelongToAnyOf(touchline.transport.ReplayStream.class)
+                .should().dependOnClassesThat().belongToAnyOf(touchline.transport.ReplayStream.class)
+                .check(classes);
+        noClasses().that().haveNameMatching("touchline\\.app\\.(ReportedGameState|RemoteGameState|NaoSession|NaoCamera"
+                        + "|LiveSwitch|WantedOptionsFile)(\\$.*)?")
+                .should().dependOnClassesThat().belongToAnyOf(touchline.transport.ReplayStream.class)
+                .check(classes);
+        noClasses().that().haveNameMatching("touchline\\.(ui|cli)\\..*(Record|Options|GameController|Referee|Nao).*")
+                .should().dependOnClassesThat().belongToAnyOf(touchline.transport.ReplayStream.class)
+                .check(classes);
+    }
+
     @Test
     void uiDoesNotTalkToSocketsDirectly() {
         noClasses().that().resideInAPackage("touchline.ui..")
@@ -262,6 +287,7 @@ class ArchitectureTest {
             // the Envelope stream and its values
             "touchline.transport.Envelope", "touchline.transport.Direction", "touchline.transport.Channel",
             "touchline.transport.Origin", "touchline.transport.EnvelopeBus", "touchline.transport.EnvelopeSink",
+            "touchline.transport.LiveStream", "touchline.transport.ReplayStream", "touchline.transport.EnvelopeSource",
             "touchline.transport.MicrosClock", "touchline.transport.SendResult", "touchline.transport.SendResult$Outcome",
             // configuration and descriptions handed to the core
             "touchline.transport.UdpConfig", "touchline.transport.UdpBackend", "touchline.transport.UdpBackend$Kind",

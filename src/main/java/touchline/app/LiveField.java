@@ -11,7 +11,8 @@ import touchline.model.store.ViewStores;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.Envelope;
-import touchline.transport.EnvelopeBus;
+import touchline.transport.LiveStream;
+import touchline.transport.ReplayStream;
 import touchline.transport.MicrosClock;
 import touchline.transport.ReliableSession;
 import touchline.transport.ReliableStreamHandler;
@@ -35,7 +36,8 @@ public final class LiveField {
     private final MicrosClock replayClock;
     private final MessageKinds kinds = new MessageKinds();
     private final MessageCodec codec = new MessageCodec(kinds);
-    private final EnvelopeBus bus = new EnvelopeBus();
+    private final LiveStream bus = new LiveStream();
+    private final ReplayStream replayStream = new ReplayStream();
     private final LiveSwitch live = new LiveSwitch(bus);
     private final RobotRegistry robots;
     private final TrafficMeter traffic;
@@ -74,10 +76,15 @@ public final class LiveField {
         stores = new ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS, NetworkLog.DEFAULT_CAPACITY,
                 clock.nowMicros(), replay::open);
         if (withModel) {
-            bus.subscribe(robots);
+            // the read models the views show: one per stream; the option session only on the live one
+            bus.subscribe(robots.live());
+            replayStream.subscribe(robots.replay());
             bus.subscribe(traffic);
+            replayStream.subscribe(traffic);
             bus.subscribe(options);
-            bus.subscribe(stores);
+            replayStream.subscribe(options.replayed());
+            bus.subscribe(stores.live());
+            replayStream.subscribe(stores.replay());
             robots.addPresenceListener(options);
             robots.addPresenceListener(robotWaits);
         }
@@ -117,7 +124,10 @@ public final class LiveField {
         live.accept(e);
     }
 
-    public EnvelopeBus bus() { return bus; }
+    /** The live stream: what the field and this console's own sending publish (never a replay). */
+    public LiveStream bus() { return bus; }
+    /** The replay stream: what an open replay plays, for the read models and the faces that show it. */
+    public ReplayStream replayStream() { return replayStream; }
     public RobotRegistry robots() { return robots; }
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }

@@ -34,13 +34,26 @@ public final class LiveServing {
     /**
      * Binds and starts serving (a running server is stopped first); IllegalArgumentException (a
      * sentence for the user) for a configuration that cannot be served, the bind's own exception
-     * when the port cannot be had. {@code takeOptionSwitches}: viewers may switch debug options
-     * ({@code touchline options --connect}), through match mode; never when serving a replay.
+     * when the port cannot be had. Serves the live stream: viewers may switch debug options
+     * ({@code touchline options --connect}), through match mode.
      */
-    public synchronized FoxgloveServer start(ServeConfig config, boolean takeOptionSwitches) throws InterruptedException {
+    public FoxgloveServer start(ServeConfig config) throws InterruptedException {
+        return start(config, false);
+    }
+
+    /**
+     * As {@link #start(ServeConfig)}, but serves the replay stream ({@code serve --replay}): what an
+     * open replay plays, and no option switches (a replay never acts on the field).
+     */
+    public FoxgloveServer startReplay(ServeConfig config) throws InterruptedException {
+        return start(config, true);
+    }
+
+    private synchronized FoxgloveServer start(ServeConfig config, boolean replay) throws InterruptedException {
         stop();
-        Serving s = new Serving(config, field.kinds(), field.clock(), field.bus(), stateChannels());
-        if (takeOptionSwitches) {
+        Serving s = new Serving(config, field.kinds(), field.clock(), replay ? field.replayStream() : field.bus(),
+                stateChannels());
+        if (!replay) {
             s.server().offerOptionSwitches(switches::switchAsAsked);
         }
         serving = s;

@@ -32,8 +32,10 @@ public final class Naos {
         this.camera = new NaoCameraFeed(clock, field.replayClock(), replay::open);
         this.calls = new NaoCallFeed(replay::open);
         if (field.withModel()) {
-            field.bus().subscribe(camera);
-            field.bus().subscribe(calls);
+            field.bus().subscribe(camera.live());
+            field.replayStream().subscribe(camera.replay());
+            field.bus().subscribe(calls.live());
+            field.replayStream().subscribe(calls.replay());
         }
     }
 

@@ -3,7 +3,7 @@ package touchline.app;
 import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
 import touchline.record.RecorderStats;
-import touchline.transport.EnvelopeBus;
+import touchline.transport.LiveStream;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -16,11 +16,11 @@ import java.util.Optional;
  */
 public final class Recordings {
 
-    private final EnvelopeBus bus;
+    private final LiveStream bus;
     private Recorder recorder;
     private AutoCloseable subscription;
 
-    Recordings(EnvelopeBus bus) {
+    Recordings(LiveStream bus) {
         this.bus = bus;
     }
 

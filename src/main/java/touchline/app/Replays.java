@@ -29,8 +29,10 @@ public final class Replays {
     }
 
     /**
-     * Opens a recording and plays it into the same stream as live traffic (paused at its
-     * start). Each jump of the replay (a seek, a loop going round) starts its robots and stores
+     * Opens a recording and plays it into the replay stream (paused at its start), which the
+     * read models take beside the live stream and nothing that acts on the field takes: it
+     * never causes a datagram, never changes match mode, and its robots stand beside the live
+     * ones, never merged with them. Each jump of the replay (a seek, a loop going round) starts its robots and stores
      * afresh.
      */
     public Replay open(Path file) throws RecordingException {
@@ -49,7 +51,7 @@ public final class Replays {
         ReplaySession session = ReplaySession.open(files, offsets, field.kinds());
         long start = session.startMicros();
         restartReplayedViews(start);
-        Replay replay = new Replay(session, field.bus(), realClock, () -> {
+        Replay replay = new Replay(session, field.replayStream().publisher(), realClock, () -> {
             restartReplayedViews(start);
             field.robots().forgetReplayed();
         });

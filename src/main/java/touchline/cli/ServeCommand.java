@@ -147,7 +147,7 @@ final class ServeCommand implements Callable<Integer> {
             FoxgloveServer server; // stopped first when the console closes
             try {
                 // a replay never acts on the field: viewers switch options only on a live one (`options --connect`)
-                server = console.serving().start(config, replayFile == null);
+                server = replayFile == null ? console.serving().start(config) : console.serving().startReplay(config);
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;

@@ -61,7 +61,7 @@ public final class ServeToggle implements AutoCloseable {
             config = config.withBind("0.0.0.0").withToken(AccessToken.generate(new SecureRandom()));
         }
         try {
-            FoxgloveServer server = live.start(config, true); // viewers may switch options: `options --connect`
+            FoxgloveServer server = live.start(config); // viewers may switch options: `options --connect`
             serving = true;
             said = "Serving to viewers: " + String.join("  ", server.urls());
         } catch (IllegalArgumentException e) {

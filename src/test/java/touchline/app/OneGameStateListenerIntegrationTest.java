@@ -57,39 +57,39 @@ class OneGameStateListenerIntegrationTest {
         List<Envelope> heard = new CopyOnWriteArrayList<>();
         try (Console console = new Console(config).start();
              DatagramSocket rival = new DatagramSocket(ANY_LOOPBACK_PORT)) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.IN && e.channel() == Channel.GAMECONTROLLER) {
                     heard.add(e);
                 }
             });
             // our GameController sends to the very port the console listens on, as a broadcast would
-            EmbeddedGameController gc = console.startGameController(
-                    new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, console.gameClock()),
+            EmbeddedGameController gc = console.referee().start(
+                    new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, console.referee().gameClock()),
                     new GcConfig(GcProfile.HL12, false, List.of(gameStatePort), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT,
                             gameStatePort, 50, false));
             assertEquals(gameStatePort.getPort(), gc.rivalAddress().getPort(), "rivals heard on the console's port");
-            assertSame(console.gcSources().others(), gc.rivals(), "one table of other GameControllers");
+            assertSame(console.referee().sources().others(), gc.rivals(), "one table of other GameControllers");
             Await.until("own packets sent", () -> gc.packetsSent() >= 5);
 
-            Game other = new Game(LeagueParams.hlSimulationKidSize(), 3, 1, 4, 0, console.gameClock());
+            Game other = new Game(LeagueParams.hlSimulationKidSize(), 3, 1, 4, 0, console.referee().gameClock());
             other.perform(new ToReady());
             other.perform(new ToSet());
             other.perform(new ToPlaying());
             byte[] playing = new HlGameState12().encode(other.controlData());
             rival.send(new DatagramPacket(playing, playing.length, gameStatePort));
             String key = "127.0.0.1:" + rival.getLocalPort();
-            Await.until("the rival counted", () -> gc.rivals().active(console.gameClock().millis()).containsKey(key));
+            Await.until("the rival counted", () -> gc.rivals().active(console.referee().gameClock().millis()).containsKey(key));
             assertTrue(gc.rivalWarning().contains(key), gc.rivalWarning());
-            assertTrue(console.gcSources().activeIntruders().stream().anyMatch(i -> i.source().equals(key)),
+            assertTrue(console.referee().sources().activeIntruders().stream().anyMatch(i -> i.source().equals(key)),
                     "the console's intruders are the referee's rivals");
-            Await.until("match mode hears the rival's PLAYING", () -> console.matchMode().playIsOn());
+            Await.until("match mode hears the rival's PLAYING", () -> console.referee().matchMode().playIsOn());
             Await.until("the rival's envelope", () -> heard.stream().anyMatch(e -> e.peer().getPort() == rival.getLocalPort()));
             assertEquals(1, heard.stream().filter(e -> e.peer().getPort() == rival.getLocalPort()).count(),
                     "one envelope per datagram: one listener");
             assertTrue(heard.stream().allMatch(e -> e.peer().getPort() == rival.getLocalPort()),
                     "our own packets heard back are no GameController of the field");
-            assertEquals("", console.gcSources().pinnedHost(), "our own GameController is not pinned as the field's");
-            console.stopGameController();
+            assertEquals("", console.referee().sources().pinnedHost(), "our own GameController is not pinned as the field's");
+            console.referee().stop();
         }
     }
 

@@ -52,7 +52,7 @@ class RecordReplayIntegrationTest {
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback())) {
             console.field().setLiveListening(false);
-            console.field().bus().subscribe(replayed::add);
+            console.field().replayStream().subscribe(replayed::add);
             Replay replay = console.replays().open(file);
             assertEquals(List.of(), replay.problems());
             replay.setSpeed(50);

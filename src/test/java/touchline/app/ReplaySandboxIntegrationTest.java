@@ -87,13 +87,15 @@ class ReplaySandboxIntegrationTest {
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start();
              RobotProcess robot = RobotProcess.robot(8, console.field().port()).start()) {
-            console.field().bus().subscribe(e -> {
+            touchline.transport.EnvelopeSink both = e -> {
                 if (e.replayed()) {
                     replayed.add(e);
                 } else if (e.direction() == Direction.OUT) {
                     sentLive.add(e);
                 }
-            });
+            };
+            console.field().bus().subscribe(both);
+            console.field().replayStream().subscribe(both);
             Await.until("the live robot's option list", () -> console.field().options().options(8).listReceived());
             // wanted live, and off in every option list the recording holds: a replayed list reaching
             // the option session would make it switch demo.text on again at the live robot

@@ -52,7 +52,7 @@ class DebugOptionSessionTest {
         String kind = ((touchline.protocol.MessageResult.Decoded) codec.decode(built.toByteArray())).kind();
         Envelope e = new Envelope(now[0], Direction.IN, Channel.FUMANOID, new InetSocketAddress("127.0.0.1", 4000 + robot),
                 robot, kind, built, new byte[10], null);
-        registry.accept(e);
+        registry.live().accept(e);
         session.accept(e);
     }
 

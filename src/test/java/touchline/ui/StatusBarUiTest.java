@@ -148,7 +148,7 @@ class StatusBarUiTest {
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
         FramePulse pulse = ui.window.pulse();
         ui.await(30, () -> !pulse.running() && !bannerShown());
-        ui.console.matchMode().observeBelieved(3, "GameController at 127.0.0.1:3838");
+        ui.console.referee().matchMode().observeBelieved(3, "GameController at 127.0.0.1:3838");
         ui.await(30, () -> bannerShown() && text("#status-silence").contains("PLAYING"));
         // nothing more heard: the window idles after 3 s, the GameController's PLAYING goes stale after 5 s
         ui.await(30, () -> !bannerShown());

@@ -96,7 +96,7 @@ public final class ReplayBenchmark implements Callable<Integer> {
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)));
         try {
             AtomicLong lastTime = new AtomicLong();
-            console.field().bus().subscribe(e -> lastTime.set(e.timeMicros()));
+            console.field().replayStream().subscribe(e -> lastTime.set(e.timeMicros()));
             double baseline = Double.MAX_VALUE;
             long baselineCount = 0;
             double best = Double.MAX_VALUE;

@@ -52,7 +52,13 @@ public final class FieldPlotView implements View {
     public FieldPlotView(ViewContext context) {
         this.context = context;
         this.fields = new FieldPlot(context.field().kinds(), PlotStore.DEFAULT_POINTS, context.field().clock().nowMicros());
-        this.subscription = context.field().bus().subscribe(fields);
+        // both streams, as before they were two: a replayed robot shares the live one's series (user guide)
+        AutoCloseable live = context.field().bus().subscribe(fields);
+        AutoCloseable replayed = context.field().replayStream().subscribe(fields);
+        this.subscription = () -> {
+            live.close();
+            replayed.close();
+        };
         this.robot = new RobotFilter(context);
         robot.setId("field-robot");
         path.setId("field-path");
