@@ -2,10 +2,10 @@ package touchline.ui;
 
 import javafx.scene.control.ListView;
 import javafx.scene.control.TextField;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.model.store.StoreEnvelopes;
+import touchline.testing.UiTest;
 import touchline.ui.views.DebugConsoleView;
 import touchline.ui.views.TextView;
 
@@ -19,7 +19,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * The views that follow a log (debug console, text view) show each new line once, newest at
  * the bottom, and a search starts again from what the log holds.
  */
-@Tag("ui")
+@UiTest
 class FollowingViewsUiTest {
 
     private static final int ROBOT = 51;

@@ -10,7 +10,6 @@ import javafx.scene.control.TextField;
 import javafx.stage.Stage;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.testfx.api.FxRobot;
@@ -21,6 +20,7 @@ import touchline.app.ConsoleConfig;
 import touchline.record.PlayerState;
 import touchline.record.Recording;
 import touchline.record.TimelineEvent;
+import touchline.testing.UiTest;
 import touchline.transport.UdpConfig;
 import touchline.ui.ConsoleWindow;
 import touchline.ui.Shell;
@@ -45,7 +45,7 @@ import static touchline.testing.FxStep.fx;
  * seeking by timeline and by event lands where it should, a broken file is reported and the
  * console carries on, recording writes a file.
  */
-@Tag("ui")
+@UiTest
 class ReplayViewTest {
 
     static final Path SAMPLE = Path.of("samples/demo-team.mcap").toAbsolutePath();
