@@ -155,6 +155,13 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    /** The benchmarks use no harness: none is on the class path the product is built and tested with. */
+    @Test
+    void noBenchmarkHarnessOnTheClassPath() {
+        org.junit.jupiter.api.Assertions.assertThrows(ClassNotFoundException.class,
+                () -> Class.forName("org.openjdk.jmh.annotations.Benchmark"), "JMH is on the class path");
+    }
+
     @Test
     void noMainMethodOrExitOutsideTheLaunchers() {
         noClasses().that().doNotHaveFullyQualifiedName("touchline.cli.Main")

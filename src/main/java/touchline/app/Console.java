@@ -139,9 +139,8 @@ public final class Console implements AutoCloseable {
         this.naoCalls = new NaoCallFeed(() -> replay != null);
         this.robotWaits = new RobotWaits(clock);
         this.traffic = new TrafficMeter(modelClock);
-        this.reliable = new ReliableStreamHandler(live, clock);
-        this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
-        reliable.useAuth(udp.segmentAuth());
+        this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock);
+        this.reliable = udp.reliable();
         this.options = new DebugOptionSession(udp, codec, clock, replayClock);
         this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);

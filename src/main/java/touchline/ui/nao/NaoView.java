@@ -18,6 +18,7 @@ import javafx.scene.layout.VBox;
 import touchline.app.Console;
 import touchline.app.NaoFrame;
 import touchline.app.NaoViewModel;
+import touchline.protocol.nao.NaoModules;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
@@ -105,7 +106,7 @@ public final class NaoView implements View {
             }
         }
 
-        module.getItems().setAll(NaoViewModel.MODULES);
+        module.getItems().setAll(NaoModules.ALL);
         module.setEditable(true);
         module.setValue("ALMotion");
         Button discover = new Button("Methods");
