@@ -101,7 +101,6 @@ public final class Console implements AutoCloseable {
     public static final String COMMANDS_OFF = "viewing a remote Touchline: commands are off";
     private volatile WantedOptionsFile wantedFile;
     /** What the match-mode gate adds for debug requests, which are asked again after play; a NAO call is not. */
-    private static final String SENT_LATER = "; goes out when play stops";
     private volatile SendGate gate = SendGate.open();
     private final List<NaoSession> naos = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final List<NaoCamera> naoCameras = new java.util.concurrent.CopyOnWriteArrayList<>();
@@ -146,7 +145,7 @@ public final class Console implements AutoCloseable {
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
         bus.subscribe(new ReportedGameState(matchMode));
         setGate(() -> matchMode.hold("console request")
-                ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
+                ? Optional.of(touchline.transport.Hold.untilPlayStops("match mode, " + matchMode.play())) : Optional.empty());
         if (withModel) {
             bus.subscribe(robots);
             bus.subscribe(traffic);
@@ -376,7 +375,7 @@ public final class Console implements AutoCloseable {
         if (remote != null) {
             remote.close();
         }
-        setGate(() -> Optional.of(COMMANDS_OFF));
+        setGate(() -> Optional.of(touchline.transport.Hold.always(COMMANDS_OFF)));
         stopGameController();
         // the remote field's GameController drives this console's match mode (shown; nothing is sent anyway)
         remote = new touchline.transport.remote.RemoteStream(url, tls, codec, new RemoteGameState(matchMode, live),
@@ -513,13 +512,11 @@ public final class Console implements AutoCloseable {
      */
     public NaoSession connectNao(String host, int rpcPort, int camPort, touchline.transport.nao.NaoClientKeys keys,
                                  touchline.transport.nao.NaoLinkConfig naoConfig) {
-        // held NAO commands are dropped, never sent when play stops: say so instead of the debug requests' promise
-        SendGate naoGate = () -> gate.holdReason().map(r -> r.endsWith(SENT_LATER)
-                ? r.substring(0, r.length() - SENT_LATER.length()) + "; not sent" : r);
-        NaoSession session = new NaoSession(host, rpcPort, camPort, naoConfig, keys, live, naoGate, clock, realClock,
+        // held NAO commands are dropped, never sent when play stops: NaoLink says so (Hold.dropped)
+        NaoSession session = new NaoSession(host, rpcPort, camPort, naoConfig, keys, live, () -> gate.hold(), clock, realClock,
                 naos::remove);
         naos.add(session);
-        return session;
+        return session.start();
     }
 
     /**
@@ -532,7 +529,7 @@ public final class Console implements AutoCloseable {
     public NaoCamera connectNaoCamera(String host, int camPort, touchline.transport.nao.NaoClientKeys keys) {
         NaoCamera camera = new NaoCamera(host, camPort, live, keys, clock, realClock, naoCameras::remove);
         naoCameras.add(camera);
-        return camera;
+        return camera.start();
     }
 
     /**
@@ -798,11 +795,22 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        List<java.util.concurrent.CompletableFuture<Void>> naoThreads = new java.util.ArrayList<>();
         for (NaoSession nao : naos) {
             nao.close();
+            naoThreads.add(nao.stopped());
         }
         for (NaoCamera camera : naoCameras) {
             camera.close();
+            naoThreads.add(camera.stopped().toCompletableFuture());
+        }
+        try { // their last envelopes (calls ended as lost) reach the recording, closed below
+            java.util.concurrent.CompletableFuture.allOf(naoThreads.toArray(java.util.concurrent.CompletableFuture[]::new))
+                    .get(3, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            org.slf4j.LoggerFactory.getLogger(Console.class).warn("NAO links still stopping: {}", e.toString());
         }
         if (remote != null) {
             remote.close();

@@ -84,7 +84,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         backend = UdpBackend.onThisMachine(config.transport());
         // the model's work runs beside the event loop (DecodeStage); with a team key the tag and
         // counter checks too, in arrival order, the event loop decoding as without one
-        stage = new DecodeStage(sink);
+        stage = new DecodeStage(sink).start();
         boolean epoll = backend.epoll();
         boolean mmsg = backend.recvmmsg();
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
@@ -217,10 +217,10 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
 
     /** Sends to an explicit address (robots not yet seen, scripts); still gated by match mode. */
     public SendResult sendTo(InetSocketAddress target, Framing framing, int robotId, Fumanoid.Message message) {
-        Optional<String> hold = gate.holdReason();
+        Optional<Hold> hold = gate.hold();
         if (hold.isPresent()) {
             counters.countHeld();
-            return SendResult.held(hold.get());
+            return SendResult.held(hold.get().queued());
         }
         byte[] datagram;
         try {

@@ -195,7 +195,7 @@ class UdpTransportTest {
     void gateHoldsCommandsBack() throws Exception {
         send(status(4, Framing.LEGACY));
         next();
-        transport.setGate(() -> Optional.of("match mode: PLAYING"));
+        transport.setGate(() -> Optional.of(Hold.always("match mode: PLAYING")));
         SendResult r = transport.send(4, new MessageCodec(new MessageKinds()).optionListRequest());
         assertEquals(SendResult.Outcome.HELD, r.outcome());
         assertEquals("match mode: PLAYING", r.reason());

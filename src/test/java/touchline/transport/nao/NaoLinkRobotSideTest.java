@@ -35,7 +35,7 @@ class NaoLinkRobotSideTest {
     }
 
     private NaoLink online(RobotSideProcess sim) throws Exception {
-        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         return link;
     }
@@ -137,7 +137,7 @@ class NaoLinkRobotSideTest {
     @Test
     void cameraConfigureAndFetch() throws Exception {
         try (RobotSideProcess sim = new RobotSideProcess(0, 0);
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             camera.configure(new CameraSettings(2, 11, 30));
             try (AutoCloseable viewer = camera.subscribe()) {
                 assertTrue(Poll.until(() -> camera.framesReceived() >= 5), "" + camera.lastError());
