@@ -292,14 +292,20 @@ class FollowingViewsUiTest {
         }
     }
 
+    /** The lines the text view shows (FX thread). */
+    @SuppressWarnings("unchecked")
+    private static List<String> shownLines(TextView view) {
+        return List.copyOf(((ListView<String>) view.node().lookup("#option-text")).getItems());
+    }
+
     private static void onlyItsOption(ConsoleWindowFixture ui) throws Exception {
         ui.fxRun(() -> ui.window.open("text", new ViewSource(ROBOT, "mine")));
         TextView view = ui.view(TextView.class);
         publish(ui, "mine", "one");
         publish(ui, "other", "not this");
         publish(ui, "mine", "two");
-        ui.await(10, () -> ui.fx(view::shownLines).size() == 2);
-        List<String> shown = ui.fx(view::shownLines);
+        ui.await(10, () -> ui.fx(() -> shownLines(view)).size() == 2);
+        List<String> shown = ui.fx(() -> shownLines(view));
         assertTrue(shown.get(0).endsWith("one") && shown.get(1).endsWith("two"), shown.toString());
     }
 }

@@ -66,7 +66,7 @@ public final class NaoView implements View {
         this(context.console());
     }
 
-    /** For tests and embedding: connects through {@code console}. */
+    /** The view over {@code console}'s NAOs (the window's, or a test's console). */
     public NaoView(Console console) {
         this.model = new NaoViewModel(console);
         host.setPrefColumnCount(10);
@@ -164,11 +164,6 @@ public final class NaoView implements View {
     @Override
     public Node node() {
         return root;
-    }
-
-    /** What this view shows and does (for tests). */
-    NaoViewModel model() {
-        return model;
     }
 
     private void callSelected() {
