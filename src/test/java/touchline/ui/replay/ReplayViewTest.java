@@ -351,8 +351,8 @@ class ReplayViewTest {
             }
         }
         openText(SAMPLE + "; " + robotLog);
-        await(20, () -> view.filesText().contains("robot2.mcap +0.800 s"));
-        String text = fx(view::filesText);
+        await(20, () -> filesText().contains("robot2.mcap +0.800 s"));
+        String text = fx(this::filesText);
         assertTrue(text.startsWith("demo-team.mcap reference clock"), text);
         assertTrue(text.matches("(?s).*robot2\\.mcap \\+0\\.800 s, \\d+ GC packets matched, agree within 1 ms.*"), text);
         try (Recording sample = Recording.open(SAMPLE)) {
@@ -361,7 +361,7 @@ class ReplayViewTest {
 
         // a given offset wins over the packets
         openText(SAMPLE + "; " + robotLog + "=+0.5");
-        await(20, () -> view.filesText().contains("robot2.mcap +0.500 s (given)"));
+        await(20, () -> filesText().contains("robot2.mcap +0.500 s (given)"));
     }
 
     private void clickTimeline(long micros) throws Exception {
@@ -403,6 +403,12 @@ class ReplayViewTest {
 
     private PlayerState state() throws Exception {
         return console.replay().orElseThrow().state();
+    }
+
+    /** The per-file alignment lines under the timeline as shown (FX thread), "" while hidden. */
+    private String filesText() {
+        javafx.scene.control.Label files = (javafx.scene.control.Label) view.node().lookup("#replay-files");
+        return files.isVisible() ? files.getText() : "";
     }
 
     /** Never shorter than {@link touchline.testing.Await#FLOOR_MILLIS}: a loaded machine must not fail a wait. */
