@@ -159,10 +159,10 @@ class ArchitectureTest {
      * Constructors the threading rule (docs/architecture.md, "Threads") still waits for, each to
      * leave this list with the work of issue 38 that rewrites it — never to grow: the
      * GameController's listeners (item 2: one runtime owns the game and its one listener on
-     * 3838), the replay's pump and the recorder's file thread (item 3: live and replay streams).
+     * 3838) and the recorder's file thread (item 3: live and replay streams).
      */
     private static final java.util.Set<String> STARTING_IN_CONSTRUCTOR_FOR_NOW = java.util.Set.of(
-            "touchline.transport.gamecontroller.GcListener", "touchline.app.Replay", "touchline.record.BackgroundFiles");
+            "touchline.transport.gamecontroller.GcListener", "touchline.record.BackgroundFiles");
 
     /**
      * Nothing starts a thread in a constructor: making an object starts nothing, its owner (the

@@ -644,7 +644,7 @@ public final class Console implements AutoCloseable {
         replay = new Replay(session, bus, realClock, () -> {
             restartReplayedViews(start);
             robots.forgetReplayed();
-        });
+        }).start();
         return replay;
     }
 
