@@ -1,6 +1,7 @@
 package touchline.app;
 
 import touchline.app.game.MatchMode;
+import touchline.transport.Hold;
 import touchline.transport.SendGate;
 
 import java.util.Optional;
@@ -12,9 +13,6 @@ import java.util.Optional;
  */
 final class FieldGate {
 
-    /** What the match-mode gate adds for debug requests, which are asked again after play; a NAO call is not. */
-    private static final String SENT_LATER = "; goes out when play stops";
-
     private final LiveField field;
     private volatile SendGate gate = SendGate.open();
     private volatile boolean commandsOff;
@@ -22,7 +20,7 @@ final class FieldGate {
     FieldGate(LiveField field, MatchMode matchMode) {
         this.field = field;
         set(() -> matchMode.hold("console request")
-                ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
+                ? Optional.of(Hold.untilPlayStops("match mode, " + matchMode.play())) : Optional.empty());
     }
 
     private void set(SendGate gate) {
@@ -34,7 +32,7 @@ final class FieldGate {
     /** Viewing a remote Touchline: nothing goes to robots from now on. */
     void shut() {
         commandsOff = true;
-        set(() -> Optional.of(RemoteView.COMMANDS_OFF));
+        set(() -> Optional.of(Hold.always(RemoteView.COMMANDS_OFF)));
     }
 
     /** True once the console views a remote Touchline. */
@@ -42,9 +40,8 @@ final class FieldGate {
         return commandsOff;
     }
 
-    /** The gate for NAO calls: held NAO commands are dropped, never sent when play stops, and say so. */
+    /** The gate for NAO calls: held NAO commands are dropped, never sent when play stops (NaoLink says so: {@link Hold#dropped()}). */
     SendGate forNao() {
-        return () -> gate.holdReason().map(r -> r.endsWith(SENT_LATER)
-                ? r.substring(0, r.length() - SENT_LATER.length()) + "; not sent" : r);
+        return () -> gate.hold();
     }
 }

@@ -69,9 +69,8 @@ public final class LiveField {
         robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         robotWaits = new RobotWaits(clock);
         traffic = new TrafficMeter(modelClock);
-        reliable = new ReliableStreamHandler(live, clock);
-        udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
-        reliable.useAuth(udp.segmentAuth());
+        udp = new UdpTransport(config.udp(), config.security(), codec, live, clock);
+        reliable = udp.reliable();
         options = new DebugOptionSession(udp, codec, clock, replayClock);
         stores = new ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS, NetworkLog.DEFAULT_CAPACITY,
                 clock.nowMicros(), replay::open);

@@ -38,6 +38,12 @@ public final class NaoCamera implements AutoCloseable {
         this.onClose = onClose;
     }
 
+    /** Starts the camera's thread (the console does, once it has made it). */
+    NaoCamera start() {
+        stream.start();
+        return this;
+    }
+
     /** Starts ({@code true}) or stops fetching frames. */
     public synchronized void watch(boolean on) {
         if (on && watching == null) {
@@ -71,10 +77,15 @@ public final class NaoCamera implements AutoCloseable {
         return error == null ? "" : error;
     }
 
+    /** Stops fetching and returns at once; {@link #stopped()} completes when the camera's thread has ended. */
     @Override
     public void close() {
         watch(false);
         stream.close();
         onClose.accept(this);
+    }
+
+    java.util.concurrent.CompletionStage<Void> stopped() {
+        return stream.stopped();
     }
 }

@@ -32,8 +32,6 @@ import java.util.concurrent.CompletableFuture;
  */
 public final class NaoViewModel implements AutoCloseable {
 
-    public static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
-            "ALBattery", "ALVideoDevice", "Robot");
     /** How fast W A S D Q E walk: the share of the NAO's top speed. */
     static final float WALK_SPEED = 0.6f;
     static final String NOT_CONNECTED = "not connected";

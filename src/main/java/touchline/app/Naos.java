@@ -51,7 +51,7 @@ public final class Naos {
         NaoSession session = new NaoSession(host, rpcPort, camPort, naoConfig, keys, field.live(), gate.forNao(), clock,
                 realClock, sessions::remove);
         sessions.add(session);
-        return session;
+        return session.start();
     }
 
     /**
@@ -64,7 +64,7 @@ public final class Naos {
     public NaoCamera connectCamera(String host, int camPort, NaoClientKeys keys) {
         NaoCamera c = new NaoCamera(host, camPort, field.live(), keys, clock, realClock, cameras::remove);
         cameras.add(c);
-        return c;
+        return c.start();
     }
 
     /**
@@ -95,12 +95,24 @@ public final class Naos {
         calls.restartReplay();
     }
 
+    /** Closes every NAO link and camera, and waits (at most 3 s) for their threads' last envelopes. */
     void close() {
+        List<java.util.concurrent.CompletableFuture<Void>> threads = new java.util.ArrayList<>();
         for (NaoSession nao : sessions) {
             nao.close();
+            threads.add(nao.stopped());
         }
         for (NaoCamera c : cameras) {
             c.close();
+            threads.add(c.stopped().toCompletableFuture());
+        }
+        try { // their last envelopes (calls ended as lost) reach the recording, closed after this
+            java.util.concurrent.CompletableFuture.allOf(threads.toArray(java.util.concurrent.CompletableFuture[]::new))
+                    .get(3, java.util.concurrent.TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            org.slf4j.LoggerFactory.getLogger(Naos.class).warn("NAO links still stopping: {}", e.toString());
         }
     }
 }

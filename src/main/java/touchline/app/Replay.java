@@ -35,7 +35,12 @@ public final class Replay implements AutoCloseable {
         remember();
         this.pump = new Thread(this::loop, "touchline-replay");
         pump.setDaemon(true);
+    }
+
+    /** Starts the pump thread (the console does, once it has made the replay). */
+    Replay start() {
         pump.start();
+        return this;
     }
 
     private void loop() {

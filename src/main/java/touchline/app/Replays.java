@@ -54,7 +54,7 @@ public final class Replays {
         Replay replay = new Replay(session, field.replayStream().publisher(), realClock, () -> {
             restartReplayedViews(start);
             field.robots().forgetReplayed();
-        });
+        }).start();
         slot.set(replay);
         return replay;
     }

@@ -12,6 +12,7 @@ import touchline.app.NaoCamera;
 import touchline.app.NaoFrame;
 import touchline.app.NaoSession;
 import touchline.app.game.MatchMode;
+import touchline.protocol.nao.NaoModules;
 import touchline.protocol.nao.ParamSyntax;
 import touchline.transport.HostPort;
 import touchline.transport.nao.CallOutcome;
@@ -52,8 +53,6 @@ public final class NaoCommand implements Runnable {
     static final int RPC_PORT = 5555;
     static final int HELD_BACK = 3;
     static final int CAM_PORT = 5556;
-    static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
-            "ALBattery", "ALVideoDevice");
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -223,7 +222,7 @@ public final class NaoCommand implements Runnable {
                 }
                 int failures = 0;
                 boolean held = false;
-                for (String module : modules.isEmpty() ? MODULES : modules) {
+                for (String module : modules.isEmpty() ? NaoModules.NAOQI : modules) {
                     CallOutcome outcome = link.call(NaoCall.of(module, "getMethodList")).get();
                     if (outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
                         out().println(module + ": " + String.join(" ", names.stream().map(String::valueOf).toList()));

@@ -248,8 +248,7 @@ public final class ConsoleWindow {
 
     /** F1: the help of the view that has the keyboard (every view's when none has). */
     public Stage helpForFocusedView() {
-        javafx.scene.Node focused = stage == null || stage.getScene() == null ? null : stage.getScene().getFocusOwner();
-        return helpFor(focused, stage);
+        return helpFor(stage.getScene().getFocusOwner(), stage); // a menu item of the shown window: both exist
     }
 
     private Stage helpFor(javafx.scene.Node focused, javafx.stage.Window owner) {

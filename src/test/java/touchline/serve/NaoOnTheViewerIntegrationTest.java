@@ -60,8 +60,8 @@ class NaoOnTheViewerIntegrationTest {
     private static Nao nao(Console console) throws Exception {
         RobotProcess sim = sim();
         int[] ports = simPorts(sim);
-        NaoLink link = new NaoLink("127.0.0.1", ports[0], NaoLinkConfig.defaults(), console.field().bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", ports[1], console.field().bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        NaoLink link = new NaoLink("127.0.0.1", ports[0], NaoLinkConfig.defaults(), console.field().bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
+        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", ports[1], console.field().bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         camera.configure(new CameraSettings(1, 11, 30));
         return new Nao(sim, link, camera, camera.subscribe());
     }

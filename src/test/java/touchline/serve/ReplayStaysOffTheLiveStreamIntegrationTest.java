@@ -94,33 +94,33 @@ class ReplayStaysOffTheLiveStreamIntegrationTest {
         Path recorded = dir.resolve("live.mcap");
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                      .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-             Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.kinds(), console.clock(),
-                     console.bus(), console.servedStateChannels(JsonChannel::new));
+             Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.field().kinds(), console.field().clock(),
+                     console.field().bus(), console.serving().stateChannels());
              FoxgloveTestClient viewer = new FoxgloveTestClient(serving.server().port());
              DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
-            console.startRecording(recorded);
+            console.recordings().start(recorded);
             // subscribed after the recorder: what this sees, the recorder was handed before
             List<Integer> batteries = new java.util.concurrent.CopyOnWriteArrayList<>();
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 Fumanoid.Status s = e.extension(Fumanoid.status);
                 if (s != null) {
                     batteries.add(s.getBatteryPercent());
                 }
             });
-            sendLive(robot, console.port(), 80);
+            sendLive(robot, console.field().port(), 80);
             JSONObject status = viewer.awaitChannel("/robot/" + LIVE_ROBOT + "/status");
             viewer.subscribe(1, status.getInt("id"));
 
-            Replay replay = console.openReplay(oldMatch);
+            Replay replay = console.replays().open(oldMatch);
             assertEquals(100, replay.runFor(Long.MAX_VALUE), "the whole old match played");
-            assertTrue(console.robots().robot(REPLAYED_ROBOT, Origin.REPLAY).isPresent(), "the views have the replay");
+            assertTrue(console.field().robots().robot(REPLAYED_ROBOT, Origin.REPLAY).isPresent(), "the views have the replay");
 
             // the live field goes on beside the replay, recorded and served
-            sendLive(robot, console.port(), 79);
+            sendLive(robot, console.field().port(), 79);
             Await.until("the live status after the replay reaches the viewer", () -> viewer.dataOf(1).stream()
                     .anyMatch(d -> battery(status, d.payload()) == 79));
             Await.until("and the recorder", () -> batteries.contains(79));
-            console.stopRecording();
+            console.recordings().stop();
 
             List<JSONObject> advertised = viewer.texts().stream().filter(o -> o.optString("op").equals("advertise"))
                     .flatMap(o -> o.getJSONArray("channels").toList().stream().map(c -> new JSONObject((Map<?, ?>) c)))

@@ -4,15 +4,13 @@ import javafx.scene.control.Label;
 import javafx.scene.text.Text;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.model.RuleProfile;
+import touchline.testing.UiTest;
 
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
-import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -23,17 +21,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * reads whole in a 1280-pixel window in play, and an oversized message at once.
  * Team messages are real datagrams on loopback; the GameController is the console's own.
  */
-@Tag("ui")
+@UiTest
 class BudgetMeterUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
     private DatagramSocket field;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         ui.laptopSize();
     }
@@ -41,7 +36,6 @@ class BudgetMeterUiTest {
     @AfterEach
     void close() throws Exception {
         ui.console.referee().stop();
-        ui.close();
         field.close();
     }
 

@@ -2,19 +2,16 @@ package touchline.ui;
 
 import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.model.RobotSnapshot;
+import touchline.testing.UiTest;
 import touchline.ui.views.LiveRows;
 import touchline.testing.RobotProcess;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.views.PlotView;
 import touchline.ui.views.RegionOverlayView;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
@@ -25,23 +22,11 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The real console window (headless) against the real simulated robot. */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class ConsoleUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private static void assumeRobot() {
         touchline.testing.Requirement.robotSide("touchline-robot");
@@ -168,7 +153,7 @@ class ConsoleUiTest {
 
     @Test
     void aLayoutWithAMissingViewOrRobotStillOpens() throws Exception {
-        java.nio.file.Files.writeString(layouts.resolve("old.layout"), """
+        java.nio.file.Files.writeString(ui.layoutDir().resolve("old.layout"), """
                 touchline-layout 1
                 window
                  branch vertical 0.5

@@ -2,10 +2,10 @@ package touchline.ui;
 
 import javafx.scene.control.ListView;
 import javafx.scene.control.TextField;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.model.store.StoreEnvelopes;
+import touchline.testing.UiTest;
 import touchline.ui.views.DebugConsoleView;
 import touchline.ui.views.TextView;
 
@@ -19,7 +19,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * The views that follow a log (debug console, text view) show each new line once, newest at
  * the bottom, and a search starts again from what the log holds.
  */
-@Tag("ui")
+@UiTest
 class FollowingViewsUiTest {
 
     private static final int ROBOT = 51;
@@ -292,14 +292,20 @@ class FollowingViewsUiTest {
         }
     }
 
+    /** The lines the text view shows (FX thread). */
+    @SuppressWarnings("unchecked")
+    private static List<String> shownLines(TextView view) {
+        return List.copyOf(((ListView<String>) view.node().lookup("#option-text")).getItems());
+    }
+
     private static void onlyItsOption(ConsoleWindowFixture ui) throws Exception {
         ui.fxRun(() -> ui.window.open("text", new ViewSource(ROBOT, "mine")));
         TextView view = ui.view(TextView.class);
         publish(ui, "mine", "one");
         publish(ui, "other", "not this");
         publish(ui, "mine", "two");
-        ui.await(10, () -> ui.fx(view::shownLines).size() == 2);
-        List<String> shown = ui.fx(view::shownLines);
+        ui.await(10, () -> ui.fx(() -> shownLines(view)).size() == 2);
+        List<String> shown = ui.fx(() -> shownLines(view));
         assertTrue(shown.get(0).endsWith("one") && shown.get(1).endsWith("two"), shown.toString());
     }
 }

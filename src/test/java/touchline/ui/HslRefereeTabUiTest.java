@@ -7,13 +7,12 @@ import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.HslGameState19;
 import touchline.protocol.gamecontroller.HslGameState20;
 import touchline.protocol.gamecontroller.HslPenalty;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 
 import java.net.DatagramPacket;
@@ -21,7 +20,6 @@ import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
 import java.net.SocketTimeoutException;
 import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
@@ -37,11 +35,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * Space stop/resume), a penalty is called and then given to a robot, a goal counts, a second
  * caution sends off, an illegal key says why in the tab, and the setup is remembered.
  */
-@Tag("ui")
+@UiTest
 class HslRefereeTabUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
     private DatagramSocket field;
     private final AtomicReference<GameControlData> heard = new AtomicReference<>();
@@ -50,7 +46,6 @@ class HslRefereeTabUiTest {
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         field.setSoTimeout(200);
         listening = new Thread(this::listen, "test-field");
@@ -61,7 +56,6 @@ class HslRefereeTabUiTest {
     @AfterEach
     void close() throws Exception {
         listening.interrupt();
-        ui.close();
         field.close();
         listening.join(5000);
     }
@@ -272,7 +266,7 @@ class HslRefereeTabUiTest {
         key(KeyCode.P); // no whistle in READY
         ui.await(30, () -> text(tab, "#gc-message").startsWith("illegal now: "));
 
-        ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
+        ui.await(30, () -> Files.readString(ui.layoutDir().resolve("gamecontroller.properties"))
                 .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
     }
 

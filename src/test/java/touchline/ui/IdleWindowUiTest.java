@@ -2,11 +2,11 @@ package touchline.ui;
 
 import javafx.animation.AnimationTimer;
 import javafx.stage.Stage;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.model.store.StoreEnvelopes;
 import touchline.proto.Fumanoid;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutCodec;
 import touchline.ui.layout.LayoutNode;
@@ -28,7 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * window does no frame work. Also the Plot fields view's series kept with the layout, and F1 in
  * a window other than the main one.
  */
-@Tag("ui")
+@UiTest
 class IdleWindowUiTest {
 
     private static final int ROBOT = 61;

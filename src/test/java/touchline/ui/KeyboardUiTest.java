@@ -10,16 +10,13 @@ import javafx.scene.input.KeyCode;
 import javafx.scene.layout.BorderStroke;
 import javafx.stage.Stage;
 import javafx.stage.Window;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 
@@ -34,23 +31,11 @@ import static org.junit.jupiter.api.Assertions.*;
  * network console keeps the selected row in view while the oldest rows go, starts Down at its newest row and shows ASCII
  * beside the hex.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class KeyboardUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     /** The first control each view under test shows: a restored view joins the scene a pulse later. */
     private static final java.util.Map<String, String> FIRST_CONTROL = java.util.Map.of(

@@ -7,14 +7,10 @@ import javafx.scene.control.MenuBar;
 import javafx.scene.control.MenuItem;
 import javafx.stage.Stage;
 import javafx.stage.Window;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutStore;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 
@@ -22,22 +18,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The Layout menu: saved layouts can be renamed and deleted, and the name dialog shows its buttons whole. */
-@Tag("ui")
+@UiTest
 class LayoutMenuUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private Menu menu(String id) throws Exception {
         return ui.fx(() -> {
@@ -65,7 +49,7 @@ class LayoutMenuUiTest {
                 throw new java.io.UncheckedIOException(e);
             }
         });
-        LayoutStore store = new LayoutStore(layouts);
+        LayoutStore store = new LayoutStore(ui.layoutDir());
         assertTrue(listed("menu-rename-layout").containsAll(List.of("\"match\"…", "\"practice\"…")), listed("menu-rename-layout").toString());
         assertTrue(listed("menu-delete-layout").containsAll(List.of("\"match\"…", "\"practice\"…")));
 

@@ -6,18 +6,15 @@ import javafx.scene.control.ListView;
 import javafx.scene.control.TableView;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.control.skin.VirtualFlow;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -32,23 +29,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * and the oldest go, and the console says it holds it; Pause in the Debug console freezes the
  * lines that were on screen.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class LogViewsUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private void only(String viewId, String control) throws Exception {
         ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry(viewId, ""))))));

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.PythonMcap;
 import touchline.testing.Requirement;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 
 import java.nio.file.Path;
 
@@ -23,7 +24,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * the window, and the file is read by the independent Python {@code mcap} reader through its
  * summary and indexes (footer, statistics, every index entry checked).
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 @Tag("interop")
 class RecordingEndsUiTest {
@@ -37,7 +38,6 @@ class RecordingEndsUiTest {
     void open() throws Exception {
         Requirement.robotSide("touchline-robot");
         PythonMcap.require("mcap");
-        ui = new ConsoleWindowFixture(dir.resolve("layouts"));
         ui.fxRun(() -> ui.window.open("replay", ViewSource.NONE));
         robot = RobotProcess.robot(5, ui.port()).start();
     }
@@ -46,9 +46,6 @@ class RecordingEndsUiTest {
     void close() throws Exception {
         if (robot != null) {
             robot.close();
-        }
-        if (ui != null) {
-            ui.close();
         }
     }
 

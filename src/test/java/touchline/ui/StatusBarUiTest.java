@@ -4,12 +4,10 @@ import javafx.scene.Node;
 import javafx.scene.control.Label;
 import javafx.scene.control.TreeItem;
 import javafx.scene.control.TreeView;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.ui.views.OptionsView;
 
 import java.net.DatagramSocket;
@@ -28,25 +26,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * waiting now (the running total only in the tooltip), GameController packets in the out rate,
  * and status lines in words.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class StatusBarUiTest {
 
     private static final int ROBOT = 6;
     private static final String OPTION = "demo.plotter";
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private String text(String id) throws Exception {
         return ui.fx(() -> ((Label) ui.window.status().lookup(id)).getText());

@@ -1,9 +1,9 @@
 package touchline.ui;
 
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.app.ProductVersion;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutCodec;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.layout.LayoutStore;
@@ -24,7 +24,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * the window's place, and the configuration directory stays where 0.1.0 kept it. The window
  * names this version in its title and says the transport and priority in use.
  */
-@Tag("ui")
+@UiTest
 class UpgradeUiTest {
 
     private static final Path PREVIOUS = Path.of("src/test/resources/layouts/0.1.0");

@@ -6,12 +6,10 @@ import javafx.scene.control.ButtonBase;
 import javafx.scene.control.Label;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -21,23 +19,19 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
  * Every view alone in a 1280×720 window: the menu and the status bar stay whole and in the
  * window, no button is cut to "…", and every table header reads in full.
  */
-@Tag("ui")
+@UiTest
 class ViewsFitUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         ui.laptopSize();
     }
 
     @AfterEach
     void close() throws Exception {
         ui.console.referee().stop();
-        ui.close();
         if (field != null) {
             field.close();
         }

@@ -187,11 +187,6 @@ public final class GameControllerView implements View {
         return root;
     }
 
-    /** The clock line as shown (for tests). */
-    public String clockText() {
-        return clock.getText();
-    }
-
     /** Robot {@code player}'s line on {@code side} as shown (for tests). */
     public String robotText(int side, int player) {
         return robotLabels.get(side).get(player - 1).getText();

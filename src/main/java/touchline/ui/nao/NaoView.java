@@ -18,6 +18,7 @@ import javafx.scene.layout.VBox;
 import touchline.app.Naos;
 import touchline.app.NaoFrame;
 import touchline.app.NaoViewModel;
+import touchline.protocol.nao.NaoModules;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
@@ -65,7 +66,7 @@ public final class NaoView implements View {
         this(context.naos());
     }
 
-    /** For tests and embedding: connects through {@code naos}. */
+    /** The view over {@code naos} (the window's, or a test's console's). */
     public NaoView(Naos naos) {
         this.model = new NaoViewModel(naos);
         host.setPrefColumnCount(10);
@@ -105,7 +106,7 @@ public final class NaoView implements View {
             }
         }
 
-        module.getItems().setAll(NaoViewModel.MODULES);
+        module.getItems().setAll(NaoModules.ALL);
         module.setEditable(true);
         module.setValue("ALMotion");
         Button discover = new Button("Methods");
@@ -163,11 +164,6 @@ public final class NaoView implements View {
     @Override
     public Node node() {
         return root;
-    }
-
-    /** What this view shows and does (for tests). */
-    NaoViewModel model() {
-        return model;
     }
 
     private void callSelected() {

@@ -490,11 +490,6 @@ public final class ReplayView implements View {
         return timeline.events();
     }
 
-    /** The per-file alignment lines under the timeline (FX thread; for tests). */
-    String filesText() {
-        return files.isVisible() ? files.getText() : "";
-    }
-
     TimelineCanvas timeline() {
         return timeline;
     }

@@ -4,11 +4,11 @@ import javafx.scene.Scene;
 import javafx.scene.control.Button;
 import javafx.scene.control.TextField;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.UiTest;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.UdpConfig;
@@ -27,7 +27,7 @@ import static touchline.testing.FxStep.fx;
  * The GameController tab on a headless stage against a real UDP receiver standing in for a
  * robot: starting sends HL v12 packets, Play is sent at once and switches match mode on.
  */
-@Tag("ui")
+@UiTest
 class GameControllerTabTest {
 
     @BeforeAll

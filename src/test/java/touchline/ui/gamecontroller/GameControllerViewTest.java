@@ -45,7 +45,7 @@ class GameControllerViewTest {
             new Scene((javafx.scene.Parent) v.node());
             return v;
         });
-        assertTrue(fx(view::clockText).startsWith("INITIAL"));
+        assertTrue(fx(() -> clockText(view)).startsWith("INITIAL"));
         click(view, "gc-ready");
         assertEquals(PlayState.READY, game.snapshot().state());
         fx(() -> {
@@ -57,7 +57,7 @@ class GameControllerViewTest {
         click(view, "gc-play");
         click(view, "gc-goal-1");
         assertEquals(1, game.snapshot().team(7).score());
-        assertTrue(fx(view::clockText).contains("13 0:1 7"), fx(view::clockText));
+        assertTrue(fx(() -> clockText(view)).contains("13 0:1 7"), fx(() -> clockText(view)));
         click(view, "gc-play"); // illegal in READY: refused, shown, nothing changes
         assertEquals(PlayState.READY, game.snapshot().state());
         click(view, "gc-robot-0-2");
@@ -74,5 +74,10 @@ class GameControllerViewTest {
         assertEquals(Penalty.PHYSICAL_CONTACT, game.snapshot().team(13).player(2).penalty());
         assertTrue(fx(() -> view.robotText(1, 5)).contains("substitute"));
         owner.close();
+    }
+
+    /** The clock line as the tab shows it (FX thread). */
+    private static String clockText(GameControllerView view) {
+        return ((javafx.scene.control.Label) view.node().lookup("#gc-clock")).getText();
     }
 }

@@ -5,11 +5,11 @@ import javafx.scene.control.ButtonBase;
 import javafx.scene.control.Label;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.image.ImageView;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.UiTest;
 import touchline.transport.Origin;
 import touchline.transport.UdpConfig;
 import touchline.ui.FrameContext;
@@ -25,7 +25,7 @@ import static touchline.testing.FxStep.fx;
  * that arrives as an envelope is drawn though no camera was opened here, and the view's
  * commands are refused with the remote view's words.
  */
-@Tag("ui")
+@UiTest
 class NaoViewRemoteFramesUiTest {
 
     @Test

@@ -12,6 +12,7 @@ import org.testfx.api.FxToolkit;
 import org.testfx.util.WaitForAsyncUtils;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.UiTest;
 import touchline.transport.UdpConfig;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
@@ -32,7 +33,7 @@ import static touchline.testing.FxStep.fx;
  * The NAO tab headless (Monocle) against the in-test robot and camera stand-ins, connected
  * through an (unstarted: no GameController heard, so match mode is off) application core.
  */
-@org.junit.jupiter.api.Tag("ui")
+@UiTest
 class NaoViewTest {
 
     @SuppressWarnings("unchecked")

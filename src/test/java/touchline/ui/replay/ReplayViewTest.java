@@ -10,7 +10,6 @@ import javafx.scene.control.TextField;
 import javafx.stage.Stage;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.testfx.api.FxRobot;
@@ -21,6 +20,7 @@ import touchline.app.ConsoleConfig;
 import touchline.record.PlayerState;
 import touchline.record.Recording;
 import touchline.record.TimelineEvent;
+import touchline.testing.UiTest;
 import touchline.transport.UdpConfig;
 import touchline.ui.ConsoleWindow;
 import touchline.ui.Shell;
@@ -45,7 +45,7 @@ import static touchline.testing.FxStep.fx;
  * seeking by timeline and by event lands where it should, a broken file is reported and the
  * console carries on, recording writes a file.
  */
-@Tag("ui")
+@UiTest
 class ReplayViewTest {
 
     static final Path SAMPLE = Path.of("samples/demo-team.mcap").toAbsolutePath();
@@ -361,8 +361,8 @@ class ReplayViewTest {
             }
         }
         openText(SAMPLE + "; " + robotLog);
-        await(20, () -> view.filesText().contains("robot2.mcap +0.800 s"));
-        String text = fx(view::filesText);
+        await(20, () -> filesText().contains("robot2.mcap +0.800 s"));
+        String text = fx(this::filesText);
         assertTrue(text.startsWith("demo-team.mcap reference clock"), text);
         assertTrue(text.matches("(?s).*robot2\\.mcap \\+0\\.800 s, \\d+ GC packets matched, agree within 1 ms.*"), text);
         try (Recording sample = Recording.open(SAMPLE)) {
@@ -371,7 +371,7 @@ class ReplayViewTest {
 
         // a given offset wins over the packets
         openText(SAMPLE + "; " + robotLog + "=+0.5");
-        await(20, () -> view.filesText().contains("robot2.mcap +0.500 s (given)"));
+        await(20, () -> filesText().contains("robot2.mcap +0.500 s (given)"));
     }
 
     private void clickTimeline(long micros) throws Exception {
@@ -413,6 +413,12 @@ class ReplayViewTest {
 
     private PlayerState state() throws Exception {
         return console.replays().current().orElseThrow().state();
+    }
+
+    /** The per-file alignment lines under the timeline as shown (FX thread), "" while hidden. */
+    private String filesText() {
+        javafx.scene.control.Label files = (javafx.scene.control.Label) view.node().lookup("#replay-files");
+        return files.isVisible() ? files.getText() : "";
     }
 
     /** Never shorter than {@link touchline.testing.Await#FLOOR_MILLIS}: a loaded machine must not fail a wait. */
