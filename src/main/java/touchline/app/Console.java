@@ -145,14 +145,14 @@ public final class Console implements AutoCloseable {
         this.options = new DebugOptionSession(udp, codec, clock, replayClock);
         this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
-        bus.subscribe(new ReportedGameState(matchMode));
+        // a match digest's Status and items reach what shows robots as if streamed (MatchDigestUnpacker)
+        touchline.protocol.MatchDigestParts digestParts = new touchline.protocol.MatchDigestParts(codec.kinds());
+        bus.subscribe(new touchline.model.MatchDigestUnpacker(digestParts, List.of(new ReportedGameState(matchMode))));
         setGate(() -> matchMode.hold("console request")
                 ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
         if (withModel) {
-            bus.subscribe(robots);
+            bus.subscribe(new touchline.model.MatchDigestUnpacker(digestParts, List.of(robots, options, stores)));
             bus.subscribe(traffic);
-            bus.subscribe(options);
-            bus.subscribe(stores);
             bus.subscribe(naoCamera);
             bus.subscribe(naoCalls);
             robots.addPresenceListener(options);
