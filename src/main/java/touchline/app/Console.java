@@ -93,6 +93,8 @@ public final class Console implements AutoCloseable {
     private AutoCloseable budgetSubscription;
     private TeamMessageBudget budget;
     private DebugRateGuard debugRate;
+    /** The league's debug rule measured for every robot heard (issue 40); the guarded profile's once a team is guarded. */
+    private final touchline.model.MatchDebugRule matchRule;
     private AutoCloseable debugRateSubscription;
     private final touchline.model.store.ViewStores stores;
     private volatile touchline.transport.remote.RemoteStream remote;
@@ -139,6 +141,7 @@ public final class Console implements AutoCloseable {
         this.naoCalls = new NaoCallFeed(() -> replay != null);
         this.robotWaits = new RobotWaits(clock);
         this.traffic = new TrafficMeter(modelClock);
+        this.matchRule = new touchline.model.MatchDebugRule(clock, touchline.model.MatchDebugRule.Limits.HSL_2026);
         this.reliable = new ReliableStreamHandler(live, clock);
         this.udp = new UdpTransport(config.udp(), config.security(), codec, live, clock, reliable);
         reliable.useAuth(udp.segmentAuth());
@@ -153,6 +156,7 @@ public final class Console implements AutoCloseable {
         if (withModel) {
             bus.subscribe(new touchline.model.MatchDigestUnpacker(digestParts, List.of(robots, options, stores)));
             bus.subscribe(traffic);
+            bus.subscribe(matchRule);
             bus.subscribe(naoCamera);
             bus.subscribe(naoCalls);
             robots.addPresenceListener(options);
@@ -739,6 +743,7 @@ public final class Console implements AutoCloseable {
         budget = new TeamMessageBudget(modelClock, profile, team);
         budgetSubscription = bus.subscribe(budget);
         debugRate = new DebugRateGuard(clock, profile);
+        matchRule.use(touchline.model.MatchDebugRule.Limits.of(profile));
         debugRateSubscription = bus.subscribe(debugRate);
         teamMessages = new TeamMessageListener(bind, e -> {
             teamDatagramsIn.incrementAndGet();
@@ -760,6 +765,11 @@ public final class Console implements AutoCloseable {
         } catch (IOException e) {
             return -1;
         }
+    }
+
+    /** The debug rule measured for every robot heard: per robot in play, datagrams per period, the biggest, warnings. */
+    public touchline.model.MatchDebugRule matchRule() {
+        return matchRule;
     }
 
     /** Robots over the profile's debug-packet limit during play, if the guard was started. */
