@@ -17,7 +17,6 @@ import touchline.transport.gamecontroller.MonitorRegistrations;
 import touchline.transport.gamecontroller.GcConfig;
 import java.net.InetSocketAddress;
 import touchline.model.RobotRegistry;
-import touchline.model.DebugRateGuard;
 import touchline.model.RuleProfile;
 import touchline.model.TeamMessageBudget;
 import touchline.model.TrafficMeter;
@@ -92,10 +91,8 @@ public final class Console implements AutoCloseable {
     private final java.util.concurrent.atomic.AtomicLong teamBytesIn = new java.util.concurrent.atomic.AtomicLong();
     private AutoCloseable budgetSubscription;
     private TeamMessageBudget budget;
-    private DebugRateGuard debugRate;
     /** The league's debug rule measured for every robot heard (issue 40); the guarded profile's once a team is guarded. */
     private final touchline.model.MatchDebugRule matchRule;
-    private AutoCloseable debugRateSubscription;
     private final touchline.model.store.ViewStores stores;
     private volatile touchline.transport.remote.RemoteStream remote;
 
@@ -742,9 +739,7 @@ public final class Console implements AutoCloseable {
         stopGuardingTeamMessages();
         budget = new TeamMessageBudget(modelClock, profile, team);
         budgetSubscription = bus.subscribe(budget);
-        debugRate = new DebugRateGuard(clock, profile);
         matchRule.use(touchline.model.MatchDebugRule.Limits.of(profile));
-        debugRateSubscription = bus.subscribe(debugRate);
         teamMessages = new TeamMessageListener(bind, e -> {
             teamDatagramsIn.incrementAndGet();
             teamBytesIn.addAndGet(e.size());
@@ -772,11 +767,6 @@ public final class Console implements AutoCloseable {
         return matchRule;
     }
 
-    /** Robots over the profile's debug-packet limit during play, if the guard was started. */
-    public synchronized Optional<DebugRateGuard> debugRateGuard() {
-        return Optional.ofNullable(debugRate);
-    }
-
     /** The budget guard's meter as JSON, for serving ({@code /team/budget}); its state is null without a guard. */
     public TeamBudgetJson teamBudgetJson() {
         return new TeamBudgetJson(this::teamMessageBudget);
@@ -792,19 +782,15 @@ public final class Console implements AutoCloseable {
             teamMessages.close();
             teamMessages = null;
         }
-        for (AutoCloseable subscription : new AutoCloseable[]{budgetSubscription, debugRateSubscription}) {
-            try {
-                if (subscription != null) {
-                    subscription.close();
-                }
-            } catch (Exception e) {
-                throw new IllegalStateException(e);
+        try {
+            if (budgetSubscription != null) {
+                budgetSubscription.close();
             }
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
         }
         budgetSubscription = null;
-        debugRateSubscription = null;
         budget = null;
-        debugRate = null;
     }
 
     @Override
