@@ -61,6 +61,8 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         final Set<String> wanted = new LinkedHashSet<>();
         /** the options the user chose for the match digest, first = rank 1 */
         final List<String> match = new ArrayList<>();
+        /** the user chose (an empty choice too): only then is the robot's digest this console's to set */
+        boolean matchChosen;
         /** switched off by the user here, data still coming: off commands sent so far */
         final Map<String, Integer> releasing = new HashMap<>();
         /** when each option's data last came; updated in place (no boxed time per message) */
@@ -184,6 +186,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         synchronized (this) {
             PerRobot r = robot(robotId);
             r.match.clear();
+            r.matchChosen = true;
             for (String o : options) {
                 if (!r.match.contains(o)) {
                     r.match.add(o);
@@ -204,16 +207,16 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     public synchronized Map<Integer, List<String>> allMatchItems() {
         Map<Integer, List<String>> out = new java.util.TreeMap<>();
         robots.forEach((id, r) -> {
-            if (!r.match.isEmpty()) {
+            if (r.matchChosen) {
                 out.put(id, List.copyOf(r.match));
             }
         });
         return out;
     }
 
-    /** The rank the user wants for {@code name}: 1 = first, 0 = not in the digest. */
-    private static int wantedRank(PerRobot r, String name) {
-        return r.match.indexOf(name) + 1;
+    /** The rank the user wants for {@code name}: 1 = first, 0 = not in the digest; the robot's own without a choice here. */
+    private static int wantedRank(PerRobot r, Fumanoid.DebugOption o) {
+        return r.matchChosen ? r.match.indexOf(o.getName()) + 1 : o.getMatchRank();
     }
 
     /**
@@ -226,11 +229,15 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         long now = clock.nowMicros();
         synchronized (this) {
             PerRobot r = robot(robotId);
+            if (!r.matchChosen) {
+                // another console's choice (or the robot's own) is never touched
+                return new SendResult(SendResult.Outcome.SENT, "no match items chosen here");
+            }
             if (!r.online || !r.listReceived) {
                 return SendResult.held("the option list of robot " + robotId + " has not come yet; sent when it does");
             }
             for (Fumanoid.DebugOption o : r.list.values()) {
-                int rank = wantedRank(r, o.getName());
+                int rank = wantedRank(r, o);
                 long last = r.lastRank.getOrDefault(o.getName(), Long.MIN_VALUE / 2);
                 if (o.getMatchRank() != rank && (force || now - last >= COMMAND_RETRY_MICROS)) {
                     boolean enable = o.getEnabled() || r.wanted.contains(o.getName());
@@ -450,7 +457,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         List<OptionState> states = new ArrayList<>();
         for (Fumanoid.DebugOption o : r.list.values()) {
             states.add(new OptionState(o.getName(), o.getDescription(), o.getKind(), r.wanted.contains(o.getName()),
-                    o.getEnabled(), streaming(r, o.getName(), now), wantedRank(r, o.getName()), o.getMatchRank()));
+                    o.getEnabled(), streaming(r, o.getName(), now), wantedRank(r, o), o.getMatchRank()));
         }
         return new RobotOptions(robotId, r.listReceived, r.listRequests, states, r.lastHold);
     }
