@@ -279,6 +279,10 @@ public final class Console implements AutoCloseable {
             options.tick();
             matchMode.refresh(); // a claim of play expires with time: held requests go out then
             robotWaits.tick();
+            WantedOptionsFile f = wantedFile;
+            if (f != null) {
+                f.keepMatch(options.allWanted(), options.allMatchItems()); // chosen in the options view or by a command
+            }
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }
@@ -291,7 +295,7 @@ public final class Console implements AutoCloseable {
         SendResult result = options.setWanted(robotId, option, on);
         WantedOptionsFile f = wantedFile;
         if (f != null) {
-            f.write(options.allWanted());
+            f.write(options.allWanted(), options.allMatchItems());
         }
         return result;
     }
@@ -308,7 +312,7 @@ public final class Console implements AutoCloseable {
         SendResult result = options.switchOff(robotId, option);
         WantedOptionsFile f = wantedFile;
         if (f != null) {
-            f.write(options.allWanted());
+            f.write(options.allWanted(), options.allMatchItems());
         }
         return result;
     }
@@ -353,6 +357,7 @@ public final class Console implements AutoCloseable {
         }
         WantedOptionsFile f = new WantedOptionsFile(file);
         options.restoreWanted(f.read());
+        options.restoreMatchItems(f.readMatch());
         wantedFile = f;
     }
 

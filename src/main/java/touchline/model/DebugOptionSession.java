@@ -197,6 +197,28 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         return placeMatchItems(robotId, true);
     }
 
+    /** The match items of an earlier run (per robot ID), chosen again: each robot gets them when its list arrives. */
+    public void restoreMatchItems(Map<Integer, List<String>> items) {
+        List<Integer> now = new ArrayList<>();
+        synchronized (this) {
+            items.forEach((id, names) -> {
+                PerRobot r = robots.get(id);
+                if (r == null) {
+                    r = robot(id);
+                    r.online = false; // not seen yet: asked for its list when it appears
+                }
+                r.match.clear();
+                r.match.addAll(names);
+                r.matchChosen = true;
+                if (r.online && r.listReceived) {
+                    now.add(id);
+                }
+            });
+            version++;
+        }
+        now.forEach(id -> placeMatchItems(id, true));
+    }
+
     /** The robot's chosen match items in order (live robots). */
     public synchronized List<String> matchItems(int robotId) {
         PerRobot r = robots.get(robotId);

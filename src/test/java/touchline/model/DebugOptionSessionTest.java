@@ -103,6 +103,17 @@ class DebugOptionSessionTest {
     }
 
     @Test
+    void matchItemsOfAnEarlierRunGoToTheRobotWhenItsListArrives() {
+        session.restoreMatchItems(java.util.Map.of(5, List.of("b")));
+        advance(DebugOptionSession.COMMAND_RETRY_MICROS);
+        assertEquals(List.of(), sent, "a robot not seen yet is not asked");
+        keepAlive(5);
+        list(5, "a", "b");
+        assertTrue(sent.contains("5:off b #1"), sent.toString());
+        assertEquals(List.of("b"), session.matchItems(5));
+    }
+
+    @Test
     void aRobotsMatchItemsChosenElsewhereAreLeftAsTheyAre() {
         keepAlive(4);
         listWithRanks(4, new String[]{"a", "b"}, new int[]{0, 1});
