@@ -8,9 +8,9 @@ import touchline.transport.nao.NaoEnvelopeChannel;
 
 /**
  * One NAO camera server opened through the application core ({@link NaoSession#camera()},
- * or {@link Console#connectNaoCamera} for the camera alone): it fetches frames only while
+ * or {@link Naos#connectCamera} for the camera alone): it fetches frames only while
  * {@link #watch watched}, and every frame enters the console's Envelope stream, where the
- * faces read it ({@link Console#naoCamera()}) — the same way as frames that come from a remote
+ * faces read it ({@link Naos#camera()}) — the same way as frames that come from a remote
  * Touchline or a replay. Fetching frames sends the robot no command: it is not held by match
  * mode. The faces never hold the camera stream itself.
  */

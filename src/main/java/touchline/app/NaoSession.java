@@ -20,10 +20,10 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
 
 /**
- * One NAO driven through the application core ({@link Console#connectNao}): its RPC link, its
+ * One NAO driven through the application core ({@link Naos#connect}): its RPC link, its
  * high-level moves and, when a camera port is given, its camera stream, all publishing into
  * the console's Envelope stream (so the recorder and the views see the NAO's traffic; the
- * camera's frames are read from there, {@link Console#naoCamera()}). Every
+ * camera's frames are read from there, {@link Naos#camera()}). Every
  * call and every move passes the console's send gate first — match mode during play, and
  * "commands are off" while the console views a remote Touchline — and then ends with a
  * {@link CallOutcome} that says in words what became of it: {@link CallOutcome.HeldBack}
@@ -98,7 +98,7 @@ public final class NaoSession implements AutoCloseable {
                 + (problem.isEmpty() ? "" : " — " + problem);
     }
 
-    /** The camera, when the session was opened with a camera port; its frames are {@link Console#naoCamera()}'s. */
+    /** The camera, when the session was opened with a camera port; its frames are {@link Naos#camera()}'s. */
     public Optional<NaoCamera> camera() {
         return Optional.ofNullable(camera);
     }

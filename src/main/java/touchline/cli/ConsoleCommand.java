@@ -57,9 +57,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             throw StartFailure.badInput(e.getMessage() + " (30 is the standard; 10 is plenty to watch a game on battery).");
         }
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
-            budget.guard(console, udp.bind);
-            StartMarks marks = new StartMarks(System.err, console.clock());
-            console.robots().addPresenceListener(marks);
+            budget.guard(console.teamBudget(), udp.bind);
+            StartMarks marks = new StartMarks(System.err, console.field().clock());
+            console.field().robots().addPresenceListener(marks);
             String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
                     System.getProperty("os.name", ""));
             if (noDisplay != null) {
@@ -71,7 +71,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
                 throw StartFailure.noDisplay("JavaFX could not open it (" + e.getMessage() + ")");
             }
             // Ctrl+C or SIGTERM while the window is open: the recording is finished before the JVM exits
-            Thread hook = new Thread(() -> console.finishRecording(FINISH_RECORDING_MILLIS), "touchline-console-stop");
+            Thread hook = new Thread(() -> console.recordings().finish(FINISH_RECORDING_MILLIS), "touchline-console-stop");
             Runtime.getRuntime().addShutdownHook(hook);
             CountDownLatch closed = new CountDownLatch(1);
             UiSettings settings = new UiSettings(layouts != null ? Path.of(layouts) : LayoutStore.defaultDir(), !light, demo, cap);
@@ -86,7 +86,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             });
             closed.await();
             javafx.application.Platform.exit();
-            console.finishRecording(FINISH_RECORDING_MILLIS);
+            console.recordings().finish(FINISH_RECORDING_MILLIS);
             try {
                 Runtime.getRuntime().removeShutdownHook(hook);
             } catch (IllegalStateException shuttingDown) {

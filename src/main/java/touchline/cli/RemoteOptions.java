@@ -44,7 +44,7 @@ final class RemoteOptions {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)));
         try {
             console.start();
-            console.viewRemote(url, trustCert == null ? null : RemoteTrust.trusting(trustCert));
+            console.remote().view(url, trustCert == null ? null : RemoteTrust.trusting(trustCert));
             return console;
         } catch (IOException | IllegalArgumentException e) {
             console.close();

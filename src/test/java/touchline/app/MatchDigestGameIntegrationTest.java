@@ -1,5 +1,6 @@
 package touchline.app;
 
+import touchline.app.game.EmbeddedGameController;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.game.hsl.Competition;
@@ -50,8 +51,9 @@ class MatchDigestGameIntegrationTest {
         }
     }
 
-    private static void perform(HslGame game, String command) {
-        assertTrue(game.perform(new HslActionSyntax().parse(command).action()).applied(), command);
+    /** Through the referee's one owner thread, as every face does; returns once applied. */
+    private static void perform(EmbeddedGameController gc, String command) {
+        assertTrue(gc.runtime().perform(new HslActionSyntax().parse(command).action()).join().applied(), command);
     }
 
     /** The robot's whole datagrams (not a digest's parts) since {@code fromMicros}. */
@@ -75,29 +77,29 @@ class MatchDigestGameIntegrationTest {
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, 14,
                 new TeamColour[]{TeamColour.RED, TeamColour.BLACK}, new SystemClock());
         try (Console console = new Console(config).start();
-             RobotProcess chosen = RobotProcess.robot(2, console.port(), "--gc-return-rate", "0").start();
-             RobotProcess twice = RobotProcess.robot(3, console.port(), "--gc-return-rate", "0", "--match-sends", "2").start();
-             RobotProcess big = RobotProcess.robot(4, console.port(), "--gc-return-rate", "0").start();
-             RobotProcess plain = RobotProcess.robot(5, console.port(), "--gc-return-rate", "0").start()) {
+             RobotProcess chosen = RobotProcess.robot(2, console.field().port(), "--gc-return-rate", "0").start();
+             RobotProcess twice = RobotProcess.robot(3, console.field().port(), "--gc-return-rate", "0", "--match-sends", "2").start();
+             RobotProcess big = RobotProcess.robot(4, console.field().port(), "--gc-return-rate", "0").start();
+             RobotProcess plain = RobotProcess.robot(5, console.field().port(), "--gc-return-rate", "0").start()) {
             // the test's profile: one a second, 700 bytes, one fragment
-            console.matchRule().use(new MatchDebugRule.Limits(PERIOD_MICROS, 700, 1));
+            console.field().matchRule().use(new MatchDebugRule.Limits(PERIOD_MICROS, 700, 1));
             for (int id = 2; id <= 5; id++) {
                 int robot = id;
-                Await.until("option list of robot " + robot, () -> console.options().options(robot).listReceived());
+                Await.until("option list of robot " + robot, () -> console.field().options().options(robot).listReceived());
             }
-            console.options().setWanted(2, "demo.text", true);
-            console.options().setMatchItems(2, List.of("demo.plotter", "demo.field"));
-            console.options().setMatchItems(3, List.of("demo.plotter"));
-            console.options().setMatchItems(4, List.of("demo.image", "demo.plotter", "havimo.region", "havimo.grid",
+            console.field().options().setWanted(2, "demo.text", true);
+            console.field().options().setMatchItems(2, List.of("demo.plotter", "demo.field"));
+            console.field().options().setMatchItems(3, List.of("demo.plotter"));
+            console.field().options().setMatchItems(4, List.of("demo.image", "demo.plotter", "havimo.region", "havimo.grid",
                     "demo.table", "demo.field"));
             Await.until("robot 2 confirms its match items", () -> rankOnRobot(console, 2, "demo.plotter") == 1
                     && rankOnRobot(console, 2, "demo.field") == 2);
             Await.until("robots 3 and 4 confirm theirs", () -> rankOnRobot(console, 3, "demo.plotter") == 1
                     && rankOnRobot(console, 4, "demo.field") == 6);
-            assertTrue(console.options().options(2).option("demo.plotter").orElseThrow().matchConfirmed());
+            assertTrue(console.field().options().options(2).option("demo.plotter").orElseThrow().matchConfirmed());
             Await.until("demo.text streams before the game", () -> streaming(console, 2, "demo.text"));
 
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.IN && e.channel() == Channel.FUMANOID && e.robotId() >= 2) {
                     heard.add(e);
                 }
@@ -107,11 +109,11 @@ class MatchDigestGameIntegrationTest {
                 robots.add(new InetSocketAddress(InetAddress.getLoopbackAddress(), r.port()));
             }
             robots.add(new InetSocketAddress(InetAddress.getLoopbackAddress(), gcPort));
-            perform(game, "kickoff 13");
-            perform(game, "set");
-            perform(game, "play");
-            console.startGameController(game, new GcConfig(GcProfile.HSL20, false, robots, ANY_LOOPBACK_PORT,
-                    ANY_LOOPBACK_PORT, null, 500, false));
+            EmbeddedGameController gc = console.referee().start(game, new GcConfig(GcProfile.HSL20, false, robots,
+                    ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 500, false));
+            perform(gc, "kickoff 13");
+            perform(gc, "set");
+            perform(gc, "play");
 
             Await.until("robot 2 sends digests", () -> digests(heard, 2) >= 1);
             long inPlay = heard.stream().filter(e -> e.robotId() == 2 && e.kind().equals("matchDigest"))
@@ -145,19 +147,19 @@ class MatchDigestGameIntegrationTest {
             assertTrue(plotPointsAfter - plotPointsBefore >= 1, "the plot moved");
             assertTrue(plotPointsAfter - plotPointsBefore <= digestsAfter - digestsBefore + 1,
                     (plotPointsAfter - plotPointsBefore) + " plot points for " + (digestsAfter - digestsBefore) + " digests");
-            long fieldTime = console.stores().latest().get(2, "demo.field").orElseThrow().timeMicros();
+            long fieldTime = console.field().stores().latest().get(2, "demo.field").orElseThrow().timeMicros();
             assertTrue(fieldTime >= inPlay, "the field shows the digest's objects");
             assertFalse(streaming(console, 2, "demo.text"), "option data is not streamed during play");
-            assertTrue(List.of("READY", "SET", "PLAYING").contains(console.robots().robot(2).orElseThrow().gameState()),
+            assertTrue(List.of("READY", "SET", "PLAYING").contains(console.field().robots().robot(2).orElseThrow().gameState()),
                     "the digest's Status reaches the Robots table");
-            MatchDebugRule.Reading ok = console.matchRule().reading(2);
+            MatchDebugRule.Reading ok = console.field().matchRule().reading(2);
             assertTrue(ok.inPlay() && ok.warnings().isEmpty(), ok.describe());
             assertEquals(1, ok.fragments());
 
             // robot 3 sends two a period, robot 4 an over-size digest: both flagged
-            Await.until("robot 3 flagged", () -> console.matchRule().reading(3).warnings().stream()
+            Await.until("robot 3 flagged", () -> console.field().matchRule().reading(3).warnings().stream()
                     .anyMatch(w -> w.startsWith("too often")));
-            Await.until("robot 4 flagged", () -> console.matchRule().reading(4).warnings().stream()
+            Await.until("robot 4 flagged", () -> console.field().matchRule().reading(4).warnings().stream()
                     .anyMatch(w -> w.startsWith("too big")));
             Envelope bigDigest = heard.stream().filter(e -> e.robotId() == 4 && e.kind().equals("matchDigest"))
                     .reduce((a, b) -> b).orElseThrow();
@@ -167,25 +169,25 @@ class MatchDigestGameIntegrationTest {
             List<Envelope> five = datagrams(heard, 5, inPlay + PERIOD_MICROS);
             assertFalse(five.isEmpty());
             assertTrue(five.stream().allMatch(e -> e.kind().equals("status")), "robot 5 sends its Status alone");
-            assertTrue(console.matchRule().reading(5).warnings().isEmpty(), console.matchRule().reading(5).describe());
+            assertTrue(console.field().matchRule().reading(5).warnings().isEmpty(), console.field().matchRule().reading(5).describe());
 
             // after the game the robots stream again
-            perform(game, "finish");
+            perform(gc, "finish");
             Await.until("demo.text streams again after the game", () -> streaming(console, 2, "demo.text"));
-            Await.until("robot 2 out of play", () -> !console.matchRule().reading(2).inPlay());
+            Await.until("robot 2 out of play", () -> !console.field().matchRule().reading(2).inPlay());
         }
     }
 
     private static int rankOnRobot(Console console, int robot, String option) {
-        return console.options().options(robot).option(option).map(OptionState::matchRankOnRobot).orElse(-1);
+        return console.field().options().options(robot).option(option).map(OptionState::matchRankOnRobot).orElse(-1);
     }
 
     private static boolean streaming(Console console, int robot, String option) {
-        return console.options().options(robot).option(option).map(OptionState::streaming).orElse(false);
+        return console.field().options().options(robot).option(option).map(OptionState::streaming).orElse(false);
     }
 
     private static long plotPoints(Console console, int robot) {
-        var snapshot = console.stores().plots().snapshot(robot, "demo.plotter");
+        var snapshot = console.field().stores().plots().snapshot(robot, "demo.plotter");
         return snapshot.series().isEmpty() ? 0 : snapshot.series().get(0).count();
     }
 }

@@ -23,7 +23,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 class OptionsMatchCommandTest {
 
     private static int rank(Console c, String option) {
-        return c.options().options(8).option(option).map(OptionState::matchRankOnRobot).orElse(-1);
+        return c.field().options().options(8).option(option).map(OptionState::matchRankOnRobot).orElse(-1);
     }
 
     @Test
@@ -32,7 +32,7 @@ class OptionsMatchCommandTest {
         try (LoopbackField field = new LoopbackField(); Console watcher = field.join();
              RobotProcess robot = RobotProcess.robot(8, field.port()).start()) {
             field.robotAt(robot.port());
-            Await.until("the watcher has the list", () -> watcher.options().options(8).listReceived());
+            Await.until("the watcher has the list", () -> watcher.field().options().options(8).listReceived());
             int port;
             try (DatagramSocket free = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
                 port = free.getLocalPort();

@@ -46,11 +46,11 @@ class BadInputUiTest {
     }
 
     private long now() {
-        return ui.console.clock().nowMicros();
+        return ui.console.field().clock().nowMicros();
     }
 
     private void publish(Envelope e) {
-        ui.console.bus().accept(e);
+        ui.console.field().bus().accept(e);
     }
 
     private String status(View view) throws Exception {

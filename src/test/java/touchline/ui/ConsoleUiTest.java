@@ -121,8 +121,8 @@ class ConsoleUiTest {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
             ui.selectOption(3, "demo.plotter");
             ui.robot.type(KeyCode.SPACE);
-            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().wanted());
-            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().streaming());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.plotter").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.plotter").orElseThrow().streaming());
             ui.robot.doubleClickOn(ui.fx(() -> ui.optionCell(3, "demo.plotter")));
             ui.await(10, () -> ui.view(PlotView.class) != null);
             PlotView plot = ui.view(PlotView.class);
@@ -133,7 +133,7 @@ class ConsoleUiTest {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
             ui.selectOption(3, "havimo.region");
             ui.robot.type(KeyCode.SPACE);
-            ui.await(10, () -> ui.console.options().options(3).option("havimo.region").orElseThrow().streaming());
+            ui.await(10, () -> ui.console.field().options().options(3).option("havimo.region").orElseThrow().streaming());
             ui.robot.type(KeyCode.ENTER);
             ui.await(10, () -> ui.view(RegionOverlayView.class) != null);
             RegionOverlayView overlay = ui.view(RegionOverlayView.class);

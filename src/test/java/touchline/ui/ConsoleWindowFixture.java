@@ -67,7 +67,7 @@ final class ConsoleWindowFixture implements AutoCloseable {
     }
 
     int port() {
-        return console.port();
+        return console.field().port();
     }
 
     <T> T fx(Callable<T> step) throws Exception {

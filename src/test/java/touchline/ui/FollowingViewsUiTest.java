@@ -30,7 +30,7 @@ class FollowingViewsUiTest {
     private ConsoleWindowFixture window() throws Exception {
         ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts);
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
-        ui.console.bus().accept(StoreEnvelopes.status(ui.console.clock().nowMicros(), ROBOT));
+        ui.console.field().bus().accept(StoreEnvelopes.status(ui.console.field().clock().nowMicros(), ROBOT));
         return ui;
     }
 
@@ -74,7 +74,7 @@ class FollowingViewsUiTest {
     }
 
     private static void publish(ConsoleWindowFixture ui, String option, String text) {
-        ui.console.bus().accept(StoreEnvelopes.text(ui.console.clock().nowMicros(), ROBOT, option, text));
+        ui.console.field().bus().accept(StoreEnvelopes.text(ui.console.field().clock().nowMicros(), ROBOT, option, text));
     }
 
     @Test

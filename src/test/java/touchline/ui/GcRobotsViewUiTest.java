@@ -40,7 +40,7 @@ class GcRobotsViewUiTest {
             ui = new ConsoleWindowFixture(layouts, ConsoleWindowFixture.loopback().withGcMonitor(
                     new InetSocketAddress(InetAddress.getLoopbackAddress(), gameController.getLocalPort()), 0));
             ui.fxRun(() -> ui.window.open("gc-robots", ViewSource.NONE));
-            InetSocketAddress forward = ui.console.gcMonitor().forwardAddress();
+            InetSocketAddress forward = ui.console.referee().monitor().forwardAddress();
             byte[] packet = new ForwardedReturnPacket(new byte[]{10, 0, 5, 12},
                     new ReturnPacket.V4(3, 5, 1, 1500f, -200f, 0.5f, 2.0f, 300f, 40f)).encode();
             gameController.send(new DatagramPacket(packet, packet.length, forward));

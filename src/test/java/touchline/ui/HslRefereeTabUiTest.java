@@ -302,7 +302,7 @@ class HslRefereeTabUiTest {
         gc.start(field, "hsl20", false);
         ui.await(30, () -> ((Parent) tab).lookupAll(".label").stream().anyMatch(n -> n instanceof Label l
                 && l.getText().equals("cannot start: a team's field players wear the other goalkeeper's colour")));
-        assertTrue(ui.console.gameController().isEmpty());
+        assertTrue(ui.console.referee().gameController().isEmpty());
         ui.fxRun(() -> ((javafx.scene.control.ComboBox<touchline.protocol.gamecontroller.TeamColour>) tab
                 .lookup("#gc-colour-b")).setValue(touchline.protocol.gamecontroller.TeamColour.BLUE));
         gc.start(field, "hsl20");
@@ -382,10 +382,10 @@ class HslRefereeTabUiTest {
         String far = "the remote console's GameController at 2001:db8:85a3:0:0:8a2e:370:7334%enp0s31f6:3838";
         // observed again on every look, so the claim never goes stale however slow the machine
         ui.await(30, () -> {
-            ui.console.matchMode().observe(GameControlData.STATE_PLAYING, far);
+            ui.console.referee().matchMode().observe(GameControlData.STATE_PLAYING, far);
             return text(tab, "#match-notice").contains(far);
         });
-        ui.console.matchMode().observe(GameControlData.STATE_PLAYING, far);
+        ui.console.referee().matchMode().observe(GameControlData.STATE_PLAYING, far);
         List<javafx.geometry.Bounds> after = laidOutPlaces(tab);
         assertEquals(widthBefore, ui.fx(() -> tab.getLayoutBounds().getWidth()), "the tab kept its width");
         assertEquals(before, after, "nothing moves when the notice grows");

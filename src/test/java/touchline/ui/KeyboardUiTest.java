@@ -166,11 +166,11 @@ class KeyboardUiTest {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE)); // back
             ui.await(10, () -> ui.window.scene().getFocusOwner() instanceof TreeView<?>);
             ui.robot.type(KeyCode.SPACE);
-            ui.await(10, () -> ui.console.options().options(3).option("demo.text").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.text").orElseThrow().wanted());
 
             ui.await(10, () -> ui.optionCell(3, "demo.plotter") != null);
             ui.robot.clickOn(ui.fx(() -> ui.optionCell(3, "demo.plotter").lookup(".option-box")));
-            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.plotter").orElseThrow().wanted());
             ui.await(10, () -> ((javafx.scene.control.CheckBox) ui.optionCell(3, "demo.plotter").lookup(".option-box"))
                     .isSelected());
         }
@@ -182,8 +182,8 @@ class KeyboardUiTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(4, ui.port(), "--rate", "50").start()) {
             only("debug-console");
-            ui.await(15, () -> ui.console.options().options(4).listReceived());
-            ui.console.setOption(4, "demo.text", true);
+            ui.await(15, () -> ui.console.field().options().options(4).listReceived());
+            ui.console.optionSwitches().set(4, "demo.text", true);
             ui.await(10, () -> counted("") > 5); // "N lines"
 
             ui.fxRun(() -> ui.robot.lookup("#debug-search").queryTextInputControl().setText("BALL AT"));
@@ -214,8 +214,8 @@ class KeyboardUiTest {
     @SuppressWarnings("unchecked")
     private TableView<Envelope> networkTableWithText(int robotId) throws Exception {
         only("network");
-        ui.await(15, () -> ui.console.options().options(robotId).listReceived());
-        ui.console.setOption(robotId, "demo.text", true);
+        ui.await(15, () -> ui.console.field().options().options(robotId).listReceived());
+        ui.console.optionSwitches().set(robotId, "demo.text", true);
         return ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
     }
 

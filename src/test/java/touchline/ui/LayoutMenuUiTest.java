@@ -122,4 +122,36 @@ class LayoutMenuUiTest {
         });
         ui.await(30, () -> ui.window.layouts().names().contains("after the dialog") && !stage.isShowing());
     }
+
+    /**
+     * Deleting a layout asks first, in a dialog that is not modal (a modal one takes a maximised
+     * window out of its maximised state under a window manager, issue 36 item 7): Cancel keeps the
+     * layout, OK deletes it.
+     */
+    @Test
+    void deletingALayoutAsksInADialogThatIsNotModal() throws Exception {
+        ui.fxRun(() -> {
+            try {
+                ui.window.saveLayout("match");
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        });
+        for (javafx.scene.control.ButtonType answer : List.of(javafx.scene.control.ButtonType.CANCEL,
+                javafx.scene.control.ButtonType.OK)) {
+            Menu deletes = menu("menu-delete-layout");
+            MenuItem delete = ui.fx(() -> deletes.getItems().get(0));
+            ui.fxRun(() -> javafx.application.Platform.runLater(delete::fire)); // a modal one would wait here
+            ui.await(30, () -> dialog("Delete layout").isPresent());
+            Stage stage = ui.fx(() -> dialog("Delete layout").orElseThrow());
+            assertEquals(javafx.stage.Modality.NONE, ui.fx(stage::getModality));
+            assertTrue(ui.fx(() -> ((javafx.scene.control.DialogPane) stage.getScene().getRoot()).getContentText())
+                    .startsWith("Delete the layout \"match\"?"));
+            ui.fxRun(() -> ((Button) ((javafx.scene.control.DialogPane) stage.getScene().getRoot()).lookupButton(answer)).fire());
+            ui.await(30, () -> !stage.isShowing());
+            boolean kept = answer == javafx.scene.control.ButtonType.CANCEL;
+            ui.await(30, () -> ui.window.layouts().names().contains("match") == kept);
+        }
+        assertEquals("layout \"match\" deleted", said());
+    }
 }

@@ -58,8 +58,8 @@ class LogViewsUiTest {
     /** View {@code viewId} alone, once its {@code control} is in the scene, and the robot's demo text switched on. */
     private void onlyWithText(String viewId, String control, int robotId) throws Exception {
         only(viewId, control);
-        ui.await(15, () -> ui.console.options().options(robotId).listReceived());
-        ui.console.setOption(robotId, "demo.text", true);
+        ui.await(15, () -> ui.console.field().options().options(robotId).listReceived());
+        ui.console.optionSwitches().set(robotId, "demo.text", true);
     }
 
     @ParameterizedTest
@@ -69,7 +69,7 @@ class LogViewsUiTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(7, ui.port(), "--rate", "20").start()) {
             only(viewId, filterId);
-            ui.await(30, () -> ui.console.robots().robots().stream().anyMatch(r -> r.id() == 7));
+            ui.await(30, () -> ui.console.field().robots().robots().stream().anyMatch(r -> r.id() == 7));
             ui.await(30, () -> ui.robot.lookup(filterId).queryAs(ComboBox.class).getItems().contains("robot 7"));
             ComboBox<String> filter = ui.fx(() -> ui.robot.lookup(filterId).queryAs(ComboBox.class));
             ui.fxRun(() -> filter.getSelectionModel().select("robot 7"));

@@ -60,9 +60,9 @@ class RecordingEndsUiTest {
         ui.await(10, () -> counters().startsWith("Recording:"));
         // the robot's own traffic (status, replies to the console's requests) reaches the file
         try {
-            ui.await(15, () -> ui.console.recording().map(s -> s.written() >= 3).orElse(false));
+            ui.await(15, () -> ui.console.recordings().current().map(s -> s.written() >= 3).orElse(false));
         } catch (java.util.concurrent.TimeoutException e) {
-            throw new AssertionError("the robot's traffic did not reach the recording: " + ui.console.recording()
+            throw new AssertionError("the robot's traffic did not reach the recording: " + ui.console.recordings().current()
                     + ", robot alive " + robot.isAlive() + ", its output: " + robot.stdout(), e);
         }
         return file;
@@ -92,7 +92,7 @@ class RecordingEndsUiTest {
         Path file = startRecordingFromTheWindow();
         // what the window's close button does: the stage hides, and the app's way out follows
         ui.fxRun(() -> ui.window.scene().getWindow().hide());
-        assertTrue(ui.console.recording().isEmpty(), "the recording ended with the window");
+        assertTrue(ui.console.recordings().current().isEmpty(), "the recording ended with the window");
         assertFinished(file);
     }
 

@@ -206,7 +206,7 @@ class ViewFaultUiTest {
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
              touchline.transport.nao.NaoLink link = new touchline.transport.nao.NaoLink("127.0.0.1", nao.port(),
                      touchline.transport.nao.NaoLinkConfig.defaults(),
-                     new touchline.transport.nao.NaoEnvelopeChannel(ui.console.bus()), null,
+                     new touchline.transport.nao.NaoEnvelopeChannel(ui.console.field().bus()), null,
                      new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             touchline.testing.Await.until("the NAO online", () -> link.state() == touchline.transport.nao.ConnectionState.ONLINE);
             link.call("ALMotion", "ping").get(30, java.util.concurrent.TimeUnit.SECONDS);

@@ -15,7 +15,7 @@ import javafx.scene.input.KeyEvent;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
-import touchline.app.Console;
+import touchline.app.Naos;
 import touchline.app.NaoFrame;
 import touchline.app.NaoViewModel;
 import touchline.ui.FrameContext;
@@ -62,12 +62,12 @@ public final class NaoView implements View {
     private long shownFrame;
 
     public NaoView(ViewContext context, ViewSource source) {
-        this(context.console());
+        this(context.naos());
     }
 
-    /** For tests and embedding: connects through {@code console}. */
-    public NaoView(Console console) {
-        this.model = new NaoViewModel(console);
+    /** For tests and embedding: connects through {@code naos}. */
+    public NaoView(Naos naos) {
+        this.model = new NaoViewModel(naos);
         host.setPrefColumnCount(10);
         rpcPort.setPrefColumnCount(5);
         camPort.setPrefColumnCount(5);

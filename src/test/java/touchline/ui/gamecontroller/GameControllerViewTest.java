@@ -8,6 +8,7 @@ import javafx.scene.input.KeyEvent;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
+import touchline.app.game.GameRuntime;
 import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.game.ManualClock;
@@ -37,8 +38,10 @@ class GameControllerViewTest {
     void buttonsAndKeysRefereeAGame() throws Exception {
         ManualClock clock = new ManualClock(0);
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock);
+        GameRuntime owner = new GameRuntime(game);
+        owner.start();
         GameControllerView view = fx(() -> {
-            GameControllerView v = new GameControllerView(game, null);
+            GameControllerView v = new GameControllerView(owner, null);
             new Scene((javafx.scene.Parent) v.node());
             return v;
         });
@@ -70,5 +73,6 @@ class GameControllerViewTest {
         click(view, "gc-undo");
         assertEquals(Penalty.PHYSICAL_CONTACT, game.snapshot().team(13).player(2).penalty());
         assertTrue(fx(() -> view.robotText(1, 5)).contains("substitute"));
+        owner.close();
     }
 }

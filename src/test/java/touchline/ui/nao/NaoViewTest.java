@@ -44,8 +44,8 @@ class NaoViewTest {
         try (FakeNaoRobot robot = new FakeNaoRobot(0); FakeNaoCamera camera = new FakeNaoCamera();
              Console console = new Console(ConsoleConfig.defaults()
                      .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)))) {
-            console.bus().subscribe(envelopes::add);
-            NaoView view = fx(() -> new NaoView(console));
+            console.field().bus().subscribe(envelopes::add);
+            NaoView view = fx(() -> new NaoView(console.naos()));
             Node root = view.node();
             fx(() -> {
                 ((TextField) root.lookup("#nao-rpc-port")).setText(Integer.toString(robot.port()));
