@@ -22,7 +22,9 @@ import java.util.zip.CRC32;
  * every chunk is readable on its own after a crash. A chunk is written to the file when it
  * reaches {@code chunkBytes} or, through {@link #flushIfOlderThan}, when it is older than the
  * caller's limit, so a killed process loses at most that much. Not thread-safe: one writer
- * thread owns it.
+ * thread owns it. Over 400 lines because the chunk being filled, its message indexes and the
+ * summary are written from one set of running offsets, counts and time bounds; split apart, they
+ * would share that state through accessors and the byte layout would be harder to follow.
  */
 public final class McapWriter implements Closeable {
 
