@@ -35,6 +35,9 @@ import java.util.Set;
  * The options chosen "in the game" (the match digest, docs/protocol.md) are reconciled the
  * same way: each option's place is sent until the robot's list confirms it, through the same
  * gate, so a choice never reaches a robot during play.
+ * Over 400 lines because the wanted options, the ones being released and the match places are
+ * one record per robot, reconciled against the same option list by the same tick under one lock;
+ * split apart, each part would need the others' view of that list and a second lock over it.
  */
 public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
