@@ -1,6 +1,7 @@
 package touchline.transport;
 
 import com.google.protobuf.Message;
+import touchline.protocol.ros2.RosMessage;
 import touchline.security.Authenticity;
 
 import java.net.InetSocketAddress;
@@ -24,10 +25,13 @@ import java.util.Objects;
  * @param origin       live traffic, or a recording played back (which must never act on the live field)
  * @param authenticity whether a robot's datagram carried a right tag of the team key (docs/security.md);
  *                     {@code NOT_CHECKED} for everything that is not a robot's datagram
+ * @param ros          the message decoded by its channel's ROS 2 definition or as JSON (a bridge's channel,
+ *                     a ROS 2 bag's), or null: protobuf stays in {@code message}, and an envelope carries
+ *                     at most one of the two
  */
 public record Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
                        int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
-                       Authenticity authenticity) {
+                       Authenticity authenticity, RosMessage ros) {
 
     public static final int NO_ROBOT = -1;
 
@@ -38,6 +42,13 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         Objects.requireNonNull(raw, "raw");
         Objects.requireNonNull(origin, "origin");
         Objects.requireNonNull(authenticity, "authenticity");
+    }
+
+    /** An envelope without a decoded ROS 2 or JSON message (every channel but a bridge's or a bag's). */
+    public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                    int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
+                    Authenticity authenticity) {
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, authenticity, null);
     }
 
     /** An envelope whose authenticity was not checked (outbound, GameController, NAO, older recordings). */
@@ -56,7 +67,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
     public Envelope asReplayed() {
         return origin == Origin.REPLAY ? this
                 : new Envelope(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.REPLAY,
-                        authenticity);
+                        authenticity, ros);
     }
 
     /** True when a recording played this envelope back: it must never cause a datagram or change match mode. */
