@@ -98,6 +98,7 @@ final class EnvelopeLayout {
                 case LINK_EVENT -> new String[]{"/link", ""};
                 case TEAM_MESSAGE -> new String[]{"/team", ""};
                 case FOREIGN -> new String[]{"/foreign", ""};
+                case BRIDGE -> new String[]{"/bridge/" + robot, ""};
             };
             String name = kind.replaceAll("[^A-Za-z0-9_#.\\-]", "_");
             String topic = parts[0] + dir + parts[1];
