@@ -5,6 +5,7 @@ import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
 import touchline.protocol.MessageKinds;
+import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
@@ -37,7 +38,8 @@ public final class FieldPlot implements EnvelopeSink {
     private final MessageKinds kinds;
     private final int pointsPerSeries;
     private final long originMicros;
-    private final Map<String, Descriptor> seenKinds = new TreeMap<>();
+    /** The numeric paths of each kind seen; empty for a kind with none. */
+    private final Map<String, List<String>> seenKinds = new TreeMap<>();
     private final List<Series> series = new CopyOnWriteArrayList<>();
     private final Map<Series, SeriesRing> rings = new java.util.HashMap<>();
     private long version;
@@ -51,7 +53,12 @@ public final class FieldPlot implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m) || e.robotId() < 0) {
+        if (e.direction() != Direction.IN || e.robotId() < 0) {
+            return;
+        }
+        Fumanoid.Message m = e.message() instanceof Fumanoid.Message f ? f : null;
+        boolean foreign = e.ros() != null || (m == null && e.message() != null && e.channel() == Channel.BRIDGE);
+        if (m == null && !foreign) {
             return;
         }
         String kind = e.kind();
@@ -60,7 +67,7 @@ public final class FieldPlot implements EnvelopeSink {
             known = seenKinds.containsKey(kind);
         }
         if (!known) {
-            learn(kind);
+            learn(kind, e);
         }
         if (series.isEmpty()) {
             return;
@@ -70,13 +77,18 @@ public final class FieldPlot implements EnvelopeSink {
             if (s.robotId() != e.robotId() || !s.kind().equals(kind)) {
                 continue;
             }
-            if (data == null) {
-                data = dataOf(kind, m);
+            double v;
+            if (e.ros() != null) {
+                v = e.ros().number(s.path());
+            } else {
                 if (data == null) {
-                    return;
+                    data = m == null ? e.message() : dataOf(kind, m);
+                    if (data == null) {
+                        return;
+                    }
                 }
+                v = NumericFields.value(data, s.path());
             }
-            double v = NumericFields.value(data, s.path());
             if (Double.isFinite(v)) {
                 synchronized (this) {
                     SeriesRing ring = rings.get(s);
@@ -89,12 +101,21 @@ public final class FieldPlot implements EnvelopeSink {
         }
     }
 
-    private void learn(String kind) {
-        FieldDescriptor ext = kinds.byName(kind).orElse(null);
-        Descriptor type = ext != null && ext.getJavaType() == FieldDescriptor.JavaType.MESSAGE && !ext.isRepeated()
-                ? ext.getMessageType() : null;
+    /** The numeric paths of a kind, from its first message: a ROS 2 or JSON message's own, else its protobuf type's. */
+    private void learn(String kind, Envelope e) {
+        List<String> paths;
+        if (e.ros() != null) {
+            paths = e.ros().numericPaths();
+        } else if (e.channel() == Channel.BRIDGE) {
+            paths = NumericFields.paths(e.message().getDescriptorForType());
+        } else {
+            FieldDescriptor ext = kinds.byName(kind).orElse(null);
+            Descriptor type = ext != null && ext.getJavaType() == FieldDescriptor.JavaType.MESSAGE && !ext.isRepeated()
+                    ? ext.getMessageType() : null;
+            paths = type == null ? List.of() : NumericFields.paths(type);
+        }
         synchronized (this) {
-            seenKinds.put(kind, type);
+            seenKinds.put(kind, paths);
             kindsVersion++;
         }
     }
@@ -108,13 +129,11 @@ public final class FieldPlot implements EnvelopeSink {
     public synchronized List<String> paths(String needle) {
         String n = needle == null ? "" : needle.trim().toLowerCase(Locale.ROOT);
         List<String> out = new ArrayList<>();
-        seenKinds.forEach((kind, type) -> {
-            if (type != null) {
-                for (String p : NumericFields.paths(type)) {
-                    String full = kind + ":" + p;
-                    if (full.toLowerCase(Locale.ROOT).contains(n)) {
-                        out.add(full);
-                    }
+        seenKinds.forEach((kind, paths) -> {
+            for (String p : paths) {
+                String full = kind + ":" + p;
+                if (full.toLowerCase(Locale.ROOT).contains(n)) {
+                    out.add(full);
                 }
             }
         });
@@ -134,8 +153,8 @@ public final class FieldPlot implements EnvelopeSink {
         }
         Series s = new Series(robotId, kindAndPath.substring(0, colon), kindAndPath.substring(colon + 1));
         synchronized (this) {
-            Descriptor type = seenKinds.get(s.kind());
-            if (type == null || !NumericFields.paths(type).contains(s.path()) || rings.containsKey(s)) {
+            List<String> paths = seenKinds.get(s.kind());
+            if (paths == null || !paths.contains(s.path()) || rings.containsKey(s)) {
                 return false;
             }
             rings.put(s, new SeriesRing(pointsPerSeries));
