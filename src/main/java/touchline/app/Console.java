@@ -108,6 +108,7 @@ public final class Console implements AutoCloseable {
     private final NaoCameraFeed naoCamera;
     private final NaoCallFeed naoCalls;
     private final RobotWaits robotWaits;
+    private final touchline.app.bridges.RosBridges bridges;
 
     public Console(ConsoleConfig config) {
         this(config, new SystemClock());
@@ -146,6 +147,9 @@ public final class Console implements AutoCloseable {
         this.stores = new touchline.model.store.ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS,
                 NetworkLog.DEFAULT_CAPACITY, clock.nowMicros(), () -> replay != null);
         bus.subscribe(new ReportedGameState(matchMode));
+        this.bridges = new touchline.app.bridges.RosBridges(live, robots, stores, matchMode, clock,
+                () -> gate.holdReason(), COMMANDS_OFF);
+        bus.subscribe(bridges);
         setGate(() -> matchMode.hold("console request")
                 ? Optional.of("match mode, " + matchMode.play() + SENT_LATER) : Optional.empty());
         if (withModel) {
@@ -278,6 +282,7 @@ public final class Console implements AutoCloseable {
             options.tick();
             matchMode.refresh(); // a claim of play expires with time: held requests go out then
             robotWaits.tick();
+            bridges.tick();
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }
@@ -396,6 +401,8 @@ public final class Console implements AutoCloseable {
     }
 
     public EnvelopeBus bus() { return bus; }
+    /** The team's ROS 2 robots behind their Foxglove bridges (issue 39). */
+    public touchline.app.bridges.RosBridges bridges() { return bridges; }
     public RobotRegistry robots() { return robots; }
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
@@ -799,6 +806,7 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        bridges.close();
         for (NaoSession nao : naos) {
             nao.close();
         }

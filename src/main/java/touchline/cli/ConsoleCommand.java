@@ -57,6 +57,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             throw StartFailure.badInput(e.getMessage() + " (30 is the standard; 10 is plenty to watch a game on battery).");
         }
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
+            remote.connectBridges(console);
             budget.guard(console, udp.bind);
             StartMarks marks = new StartMarks(System.err, console.clock());
             console.robots().addPresenceListener(marks);

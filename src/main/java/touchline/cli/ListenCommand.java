@@ -52,6 +52,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                     }
                 });
             }
+            remote.connectBridges(console);
             if (!remote.remote()) {
                 udp.start(console);
                 new FirstListenLines(spec.commandLine().getErr(), "listen").follow(console.matchMode());
@@ -71,6 +72,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                     lastRemote[0] = d;
                     System.err.println(d);
                 });
+                console.bridges().statuses().forEach(b -> System.err.println("bridge " + b.describe()));
                 synchronized (out) {
                     table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
                     monitorTable.print(out, console.monitorReport(console.clock().nowMicros() / 1000));

@@ -75,7 +75,7 @@ final class OptionsCommand implements Callable<Integer> {
                 err.println(console.robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
-                        + remote.connect + " (" + console.remoteStatus().map(Object::toString).orElse("") + ")"
+                        + String.join(" ", remote.connect) + " (" + console.remoteStatus().map(Object::toString).orElse("") + ")"
                         : "robot " + robot + " was not seen within " + timeoutSeconds + " s (is it sending to port "
                         + console.port() + "?)");
                 return 2;
