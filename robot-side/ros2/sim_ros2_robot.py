@@ -15,12 +15,12 @@ so a test sees through the bridge that a parameter set or a publish arrived.
     python3 sim_ros2_robot.py --port 8765 --name booster-1 [--rate 20] [--seconds 0]
 
 Prints "listening on port N" once it serves (port 0 takes a free one). Stops after --seconds
-(0: never) or when its standard input closes.
+(0: never) or on SIGTERM/SIGINT.
 """
 import argparse
 import json
 import math
-import sys
+import signal
 import threading
 import time
 
@@ -125,7 +125,7 @@ def main():
     print("listening on port %d" % server.port, flush=True)
 
     stop = threading.Event()
-    threading.Thread(target=lambda: (sys.stdin.read(), stop.set()), daemon=True).start()
+    signal.signal(signal.SIGTERM, lambda *a: stop.set())
     start = time.time()
     n = 0
     while not stop.is_set() and (args.seconds <= 0 or time.time() - start < args.seconds):
