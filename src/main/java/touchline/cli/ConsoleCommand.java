@@ -56,6 +56,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw StartFailure.badInput(e.getMessage() + " (30 is the standard; 10 is plenty to watch a game on battery).");
         }
+        remote.check();
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
             remote.connectBridges(console);
             budget.guard(console, udp.bind);

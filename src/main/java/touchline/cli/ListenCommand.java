@@ -44,6 +44,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
         MonitorTable monitorTable = new MonitorTable();
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
+        remote.check();
         try (Console console = remote.remote() ? remote.startViewing() : new Console(udp.config())) {
             if (!quiet) {
                 console.bus().subscribe((Envelope e) -> {

@@ -40,6 +40,22 @@ final class RemoteOptions {
     Path trustCert;
 
     private Boolean viewing;
+    private TeamFile teamRead;
+
+    /** Checks every URL, the certificate and the team file before anything starts: one sentence for the user when bad. */
+    void check() throws StartFailure {
+        for (String c : connect) {
+            address(c);
+        }
+        tls();
+        if (team != null) {
+            try {
+                teamRead = TeamFile.read(team);
+            } catch (IOException e) {
+                throw StartFailure.badInput(e.getMessage());
+            }
+        }
+    }
 
     /** Whether the console views another Touchline (one bare URL whose server is a Touchline). */
     boolean remote() throws InterruptedException {
@@ -92,11 +108,10 @@ final class RemoteOptions {
         }
         SSLContext tls = tls();
         if (team != null) {
-            try {
-                console.bridges().connect(TeamFile.read(team), tls);
-            } catch (IOException e) {
-                throw StartFailure.badInput(e.getMessage());
+            if (teamRead == null) {
+                check();
             }
+            console.bridges().connect(teamRead, tls);
         }
         for (String c : connect) {
             console.bridges().connect(address(c), tls);
