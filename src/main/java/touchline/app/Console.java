@@ -589,7 +589,7 @@ public final class Console implements AutoCloseable {
     /** Starts recording every envelope (in and out, live or replayed) into an MCAP file. */
     public synchronized Recorder startRecording(Path file) throws IOException {
         stopRecording();
-        recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
+        recorder = new Recorder(file, EnvelopeWriter.Options.defaults().withBridgedSchemas(bridges::schemaOf));
         recorderSubscription = bus.subscribe(recorder);
         return recorder;
     }

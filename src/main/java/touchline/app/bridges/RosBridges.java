@@ -105,6 +105,11 @@ public final class RosBridges implements EnvelopeSink, AutoCloseable {
         return bridges.stream().filter(b -> b.robotId() == robotId).findFirst();
     }
 
+    /** Robot {@code robotId}'s channel {@code topic}'s own encoding and schema, or null: what a recording keeps. */
+    public touchline.transport.remote.BridgedSchema schemaOf(int robotId, String topic) {
+        return bridge(robotId).map(b -> b.schema(topic)).orElse(null);
+    }
+
     /** Robot {@code robotId}'s parameters as last reported (empty for no such bridge). */
     public List<Bridge.Parameter> parameters(int robotId) {
         return bridge(robotId).map(Bridge::parameters).orElse(List.of());

@@ -50,6 +50,7 @@ public final class Bridge implements AutoCloseable {
     private final int robotId;
     private final SendGate gate;
     private final RemoteStream stream;
+    private final BridgeChannels channels;
     private final Map<String, Parameter> parameters = new TreeMap<>();
     private final Map<String, Held> held = new java.util.LinkedHashMap<>();
     private final Map<String, Integer> clientChannels = new TreeMap<>();
@@ -71,7 +72,8 @@ public final class Bridge implements AutoCloseable {
         this.gate = gate;
         InetSocketAddress peer = InetSocketAddress.createUnresolved(uri.getHost() == null ? "?" : uri.getHost(),
                 uri.getPort() < 0 ? 8765 : uri.getPort());
-        this.stream = new RemoteStream(uri, tls, new BridgeChannels(robotId, peer, clock), new Replies(), sink,
+        this.channels = new BridgeChannels(robotId, peer, clock);
+        this.stream = new RemoteStream(uri, tls, channels, new Replies(), sink,
                 maxBackoff, RemoteStream.MAX_MESSAGE_BYTES, Duration.ofDays(1), RemoteStream.HANDSHAKE);
     }
 
@@ -93,6 +95,11 @@ public final class Bridge implements AutoCloseable {
         RemoteStatus s = stream.status();
         return new BridgeStatus(name, robotId, s, stream.serverName(), stream.subprotocol(), stream.losses(),
                 lastCommand);
+    }
+
+    /** The encoding and schema the server advertised for {@code topic}, or null (for the recorder). */
+    public BridgedSchema schema(String topic) {
+        return channels.schema(topic);
     }
 
     /** Whether the server offers {@code capability} ({@code parameters}, {@code clientPublish}, {@code services}). */

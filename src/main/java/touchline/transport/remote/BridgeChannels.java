@@ -23,6 +23,7 @@ final class BridgeChannels implements ChannelReader {
     private final InetSocketAddress peer;
     private final MicrosClock clock;
     private final ChannelDecoders decoders = new ChannelDecoders();
+    private final java.util.Map<String, BridgedSchema> schemas = new java.util.concurrent.ConcurrentHashMap<>();
 
     BridgeChannels(int robotId, InetSocketAddress peer, MicrosClock clock) {
         this.robotId = robotId;
@@ -49,14 +50,25 @@ final class BridgeChannels implements ChannelReader {
                     + MAX_SCHEMA_CHARS);
         }
         if (encoding.equals("protobuf")) {
-            return new BridgedChannel(id, topic, RemoteChannel.schema(schema, schemaName), robotId, peer, clock);
+            BridgedChannel bridged = new BridgedChannel(id, topic, RemoteChannel.schema(schema, schemaName), robotId, peer,
+                    clock);
+            schemas.put(topic, new BridgedSchema(encoding, schemaName, schemaEncoding,
+                    java.util.Base64.getDecoder().decode(schema)));
+            return bridged;
         }
         ChannelDecoding d = decoders.decoding(topic, encoding, schemaName, schemaEncoding,
                 schema.getBytes(StandardCharsets.UTF_8));
         if (d instanceof ChannelDecoding.Ready r) {
+            schemas.put(topic, new BridgedSchema(encoding, schemaName, schemaEncoding,
+                    schema.getBytes(StandardCharsets.UTF_8)));
             return new BridgedChannel(id, topic, encoding, r.decoder(), robotId, peer, clock);
         }
         ChannelDecoding.Unsupported u = (ChannelDecoding.Unsupported) d;
         throw new IllegalArgumentException(u.encoding() + ": " + u.reason());
+    }
+
+    /** The schema the server advertised for {@code topic}, or null. */
+    BridgedSchema schema(String topic) {
+        return schemas.get(topic);
     }
 }

@@ -103,6 +103,38 @@ class RosBridgesIntegrationTest {
         }
     }
 
+    private static final String READ_ROS2 = """
+            import sys
+            from mcap_ros2.reader import read_ros2_messages
+            seen = {}
+            topics = ["/bridge/1001/pose", "/bridge/1001/rosout", "/bridge/1001/joint_states"]
+            for m in read_ros2_messages(sys.argv[1], topics=topics):
+                if m.schema.encoding == "ros2msg" and m.channel.topic not in seen:
+                    seen[m.channel.topic] = m
+            pose = seen["/bridge/1001/pose"].ros_msg
+            log = seen["/bridge/1001/rosout"].ros_msg
+            print(sorted(seen), seen["/bridge/1001/pose"].channel.message_encoding, pose.header.frame_id,
+                  round(pose.pose.orientation.x, 3), log.name)
+            """;
+
+    @Test
+    void aRecordingKeepsTheBridgedChannelsInTheirOwnEncodingSoMcapRos2ReadsThemDecoded(
+            @org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        touchline.testing.PythonMcap.require("mcap_ros2.reader");
+        java.nio.file.Path file = dir.resolve("bridged.mcap");
+        try (Console console = console(0);
+             SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1")) {
+            console.startRecording(file);
+            int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
+            Await.until("a pose, a log line and joints heard", () -> console.robots().robot(id)
+                    .map(RobotSnapshot::packets).orElse(0L) > 60);
+            console.stopRecording();
+        }
+        String out = touchline.testing.PythonMcap.run(READ_ROS2, file);
+        assertEquals("['/bridge/1001/joint_states', '/bridge/1001/pose', '/bridge/1001/rosout'] cdr field 0.0 "
+                + "booster-1/behavior", out.trim());
+    }
+
     @Test
     void aParameterSetAndAPublishAreHeldDuringPlayingWithTheWordsOfADebugOptionAndGoOutAfter() throws Exception {
         int gcPort = freeLoopbackPort();
