@@ -35,12 +35,11 @@ OUT=target/package
 BIN="${TOUCHLINE_ROBOTSIDE_BIN:-$ROOT/robot-side/build/bin}"
 mkdir -p "$OUT"
 
-# The product's jars: runtime scope, without the benchmark harness (jmh and its dependencies are on the
-# compile class path for src/bench only). -Djavafx.platform picks the JavaFX classifier jars.
+# The product's jars: runtime scope. -Djavafx.platform picks the JavaFX classifier jars.
 copy_jars() { # dir javafx-platform
   rm -rf "$1"; mkdir -p "$1"
   mvn -q -B -ntp ${TOUCHLINE_MVN_OFFLINE:+-o} dependency:copy-dependencies -DincludeScope=runtime \
-    -DoutputDirectory="$1" -DexcludeArtifactIds=jmh-core,jopt-simple,commons-math3 -Djavafx.platform="$2"
+    -DoutputDirectory="$1" -Djavafx.platform="$2"
   # the console's own jar, from target/classes (the package test runs before Maven's package phase)
   jar --create --file "$1/touchline-$VERSION.jar" -C target/classes .
 }

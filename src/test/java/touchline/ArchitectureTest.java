@@ -46,7 +46,8 @@ class ArchitectureTest {
                 .layer("Faces").definedBy("touchline.ui..", "touchline.cli..")
                 .whereLayer("Faces").mayNotBeAccessedByAnyLayer()
                 .whereLayer("App").mayOnlyBeAccessedByLayers("Faces")
-                .whereLayer("Serve").mayOnlyBeAccessedByLayers("Faces")
+                // the live server is a runtime under the core, like the recorder: app.LiveServing starts it
+                .whereLayer("Serve").mayOnlyBeAccessedByLayers("App", "Faces")
                 .whereLayer("Record").mayOnlyBeAccessedByLayers("App", "Serve", "Faces")
                 .whereLayer("Model").mayOnlyBeAccessedByLayers("App", "Faces")
                 .whereLayer("Transport").mayOnlyBeAccessedByLayers("Model", "Record", "App", "Serve", "Faces")
@@ -155,6 +156,60 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    /**
+     * Constructors the threading rule (docs/architecture.md, "Threads") still waits for, each to
+     * leave this list with the work of issue 38 that rewrites it — never to grow: the
+     * GameController's listeners (item 2: one runtime owns the game and its one listener on
+     * 3838) and the recorder's file thread (item 3: live and replay streams).
+     */
+    private static final java.util.Set<String> STARTING_IN_CONSTRUCTOR_FOR_NOW = java.util.Set.of(
+            "touchline.transport.gamecontroller.GcListener", "touchline.record.BackgroundFiles");
+
+    /**
+     * Nothing starts a thread in a constructor: making an object starts nothing, its owner (the
+     * composition root, {@code Console}) calls its {@code start()}. A constructor calls no
+     * {@code Thread.start}, no {@code start()} of any kind, and hands no task to an executor (a lambda
+     * it makes, run later, may).
+     */
+    @Test
+    void noConstructorStartsAThread() {
+        com.tngtech.archunit.lang.syntax.ArchRuleDefinition.constructors()
+                .that(com.tngtech.archunit.base.DescribedPredicate.describe("not yet under the rule",
+                        (com.tngtech.archunit.core.domain.JavaConstructor c) ->
+                                !STARTING_IN_CONSTRUCTOR_FOR_NOW.contains(c.getOwner().getName())))
+                .should(new com.tngtech.archunit.lang.ArchCondition<com.tngtech.archunit.core.domain.JavaConstructor>(
+                        "start no thread") {
+                    @Override
+                    public void check(com.tngtech.archunit.core.domain.JavaConstructor constructor,
+                                      com.tngtech.archunit.lang.ConditionEvents events) {
+                        for (var call : constructor.getMethodCallsFromSelf()) {
+                            if (!call.isDeclaredInLambda() && startsAThread(call.getTargetOwner(), call.getName())) {
+                                events.add(com.tngtech.archunit.lang.SimpleConditionEvent.violated(constructor,
+                                        constructor.getFullName() + " calls " + call.getTarget().getFullName()
+                                                + " in " + call.getSourceCodeLocation()));
+                            }
+                        }
+                    }
+                })
+                .allowEmptyShould(false)
+                .check(classes);
+    }
+
+    private static boolean startsAThread(com.tngtech.archunit.core.domain.JavaClass owner, String method) {
+        if (method.equals("start") && (owner.getName().startsWith("java.lang.Thread") || owner.getPackageName().startsWith("touchline"))) {
+            return true;
+        }
+        return owner.isAssignableTo(java.util.concurrent.Executor.class)
+                && (method.equals("execute") || method.equals("submit") || method.startsWith("schedule") || method.startsWith("invoke"));
+    }
+
+    /** The benchmarks use no harness: none is on the class path the product is built and tested with. */
+    @Test
+    void noBenchmarkHarnessOnTheClassPath() {
+        org.junit.jupiter.api.Assertions.assertThrows(ClassNotFoundException.class,
+                () -> Class.forName("org.openjdk.jmh.annotations.Benchmark"), "JMH is on the class path");
+    }
+
     @Test
     void noMainMethodOrExitOutsideTheLaunchers() {
         noClasses().that().doNotHaveFullyQualifiedName("touchline.cli.Main")
@@ -206,6 +261,31 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    /**
+     * Issue 38: live and replay apart by construction. A replay has its own stream, and the
+     * type never reaches what acts on the field: no sender or transport, no match mode or
+     * referee, no recorder or live server, no options switch, budget guard or game-state
+     * listener may even name it; of the core only the composition root and the replay use case
+     * (which wire the read models to it) do. A sender takes an {@code EnvelopeSink}, which
+     * {@code ReplayStream} is not. (The live server takes an {@code EnvelopeSource} and is told
+     * which: {@code serve --replay} serves a recording instead of the field, with no option
+     * switches offered.)
+     */
+    @Test
+    void theReplayStreamNeverReachesWhatActsOnTheField() {
+        noClasses().that().resideOutsideOfPackages("touchline.app", "touchline.ui..", "touchline.cli..")
+                .and().doNotBelongToAnyOf(touchline.transport.ReplayStream.class)
+                .should().dependOnClassesThat().belongToAnyOf(touchline.transport.ReplayStream.class)
+                .check(classes);
+        noClasses().that().haveNameMatching("touchline\\.app\\.(ReportedGameState|RemoteGameState|NaoSession|NaoCamera"
+                        + "|LiveSwitch|WantedOptionsFile)(\\$.*)?")
+                .should().dependOnClassesThat().belongToAnyOf(touchline.transport.ReplayStream.class)
+                .check(classes);
+        noClasses().that().haveNameMatching("touchline\\.(ui|cli)\\..*(Record|Options|GameController|Referee|Nao).*")
+                .should().dependOnClassesThat().belongToAnyOf(touchline.transport.ReplayStream.class)
+                .check(classes);
+    }
+
     @Test
     void uiDoesNotTalkToSocketsDirectly() {
         noClasses().that().resideInAPackage("touchline.ui..")
@@ -223,22 +303,52 @@ class ArchitectureTest {
     }
 
     /**
+     * The places that compose: they make the {@code app.Console} (the composition root) and hand
+     * its services on. The window's entry point and the window itself; each CLI command that runs a
+     * console, since every command is its own process's entry point with its own configuration
+     * (the port, keys, a remote URL), and the two option mixins that start one for them.
+     */
+    static final java.util.Set<String> COMPOSERS = java.util.Set.of(
+            "touchline.ui.TouchlineApp", "touchline.ui.ConsoleWindow",
+            "touchline.cli.ConsoleCommand", "touchline.cli.ScreenshotsCommand", "touchline.cli.ListenCommand",
+            "touchline.cli.OptionsCommand", "touchline.cli.StreamCommand", "touchline.cli.NaoCommand",
+            "touchline.cli.RecordCommand", "touchline.cli.ServeCommand", "touchline.cli.UdpOptions",
+            "touchline.cli.RemoteOptions");
+
+    /**
+     * A view or command takes the one or two use-case services it needs ({@code LiveField},
+     * {@code Referee}, {@code Replays}, ...), never the composition root: only the composers
+     * above know {@code Console}.
+     */
+    @Test
+    void facesTakeServicesNotTheConsole() {
+        noClasses().that().resideInAnyPackage("touchline.ui..", "touchline.cli..", "touchline.serve..")
+                .and(com.tngtech.archunit.base.DescribedPredicate.describe("not a composer",
+                        (com.tngtech.archunit.core.domain.JavaClass c) -> !COMPOSERS.contains(
+                                c.getEnclosingClass().map(com.tngtech.archunit.core.domain.JavaClass::getName)
+                                        .orElse(c.getName()))))
+                .should().dependOnClassesThat().haveFullyQualifiedName("touchline.app.Console")
+                .check(classes);
+    }
+
+    /**
      * What the faces (ui, cli) and the live server may take from the transport: the stream's
      * values and configuration, never a socket owner. Everything else they do through the
-     * application core's use cases ({@code Console.port()}, {@code transportCounts()},
+     * application core's use cases ({@code LiveField.port()}, {@code transportCounts()},
      * {@code openStream()}, ...). docs/architecture.md lists the same.
      */
     static final java.util.Set<String> TRANSPORT_VALUES_FOR_FACES = java.util.Set.of(
             // the Envelope stream and its values
             "touchline.transport.Envelope", "touchline.transport.Direction", "touchline.transport.Channel",
             "touchline.transport.Origin", "touchline.transport.EnvelopeBus", "touchline.transport.EnvelopeSink",
+            "touchline.transport.LiveStream", "touchline.transport.ReplayStream", "touchline.transport.EnvelopeSource",
             "touchline.transport.MicrosClock", "touchline.transport.SendResult", "touchline.transport.SendResult$Outcome",
             // configuration and descriptions handed to the core
             "touchline.transport.UdpConfig", "touchline.transport.UdpBackend", "touchline.transport.UdpBackend$Kind",
             "touchline.transport.PeerText", "touchline.transport.HostPort",
             // the one reader of the game state an envelope carries (pure; the live server's /gc/state)
             "touchline.transport.GameStateReader",
-            // a reliable stream the core opened (Console.openStream)
+            // a reliable stream the core opened (LiveField.openStream)
             "touchline.transport.ReliableSession",
             // the GameController's configuration and the tallies its views read (liveness, bad packets, monitors)
             "touchline.transport.gamecontroller.GcConfig", "touchline.transport.gamecontroller.GcProfile",

@@ -206,33 +206,33 @@ final class IngestBenchCommand implements Callable<Integer> {
         }
         try (Console console = transportOnly ? new Console(config, new touchline.app.SystemClock(), false)
                 : new Console(config)) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (!e.isMalformed() && e.direction() == touchline.transport.Direction.IN) {
                     decoded.increment();
                 }
             });
             java.nio.file.Path file = record ? java.nio.file.Files.createTempFile("touchline-ingest", ".mcap") : null;
             if (record) {
-                console.startRecording(file);
+                console.recordings().start(file);
             }
             console.start();
             if (!transportShown) {
                 transportShown = true;
-                System.out.println("console's transport: " + console.transportDescription());
+                System.out.println("console's transport: " + console.field().transportDescription());
             }
             try {
                 if (pacedRate == 0 && !flood) {
                     DrainMeter meter = withTags ? new DrainMeter(this::taggedDatagram, batch) : new DrainMeter(datagrams, batch);
-                    IngestResult result = meter.measure(console.port(), secs, decoded,
-                            () -> console.setReading(false), () -> console.setReading(true));
+                    IngestResult result = meter.measure(console.field().port(), secs, decoded,
+                            () -> console.field().setReading(false), () -> console.field().setReading(true));
                     printThreads(withTags ? "pipeline with tags" : "pipeline", meter);
                     return result;
                 }
-                return drive(console.port(), secs, pacedRate, decoded);
+                return drive(console.field().port(), secs, pacedRate, decoded);
             } finally {
                 if (record) {
-                    console.recording().ifPresent(s -> System.out.printf("  recorded %,d, dropped %,d%n", s.written(), s.dropped()));
-                    console.stopRecording();
+                    console.recordings().current().ifPresent(s -> System.out.printf("  recorded %,d, dropped %,d%n", s.written(), s.dropped()));
+                    console.recordings().stop();
                     java.nio.file.Files.deleteIfExists(file);
                 }
             }

@@ -72,7 +72,7 @@ final class SubscriberCostBench implements Callable<Integer> {
             System.out.printf("over %d rounds: decode median %.0f ns (fastest %.0f), model subscribers median %.0f ns"
                             + " (fastest %.0f) per envelope, CPU time of this thread; %d subscriber failures%n", rounds,
                     IngestBenchCommand.median(decode), Collections.min(decode), IngestBenchCommand.median(model), Collections.min(model),
-                    console.bus().subscriberFailures());
+                    console.field().bus().subscriberFailures());
         }
         return 0;
     }
@@ -96,7 +96,7 @@ final class SubscriberCostBench implements Callable<Integer> {
             }
             long t1 = mx.getCurrentThreadCpuTime();
             for (Envelope e : batch) {
-                console.bus().accept(e);
+                console.field().bus().accept(e);
             }
             long t2 = mx.getCurrentThreadCpuTime();
             decodeNanos += t1 - t0;

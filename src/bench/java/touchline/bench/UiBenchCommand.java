@@ -116,7 +116,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
         }
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-             SimulatedTeam team = SimulatedTeam.start(robots, console.port(), List.of("--rate", Integer.toString(rate)))) {
+             SimulatedTeam team = SimulatedTeam.start(robots, console.field().port(), List.of("--rate", Integer.toString(rate)))) {
             FxThread.startToolkit();
             ConsoleWindow window = FxThread.call(() -> new ConsoleWindow(console,
                     new UiSettings(tempDir(), true, false)).show(new Stage()));
@@ -126,9 +126,9 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
                 return 1;
             }
             int switched = 0;
-            for (RobotSnapshot r : console.robots().robots()) {
-                for (OptionState o : console.options().options(r.id()).options()) {
-                    console.setOption(r.id(), o.name(), true);
+            for (RobotSnapshot r : console.field().robots().robots()) {
+                for (OptionState o : console.field().options().options(r.id()).options()) {
+                    console.optionSwitches().set(r.id(), o.name(), true);
                     switched++;
                 }
             }
@@ -154,7 +154,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             open.viewNanos().forEach((id, ns) -> System.out.printf(Locale.ROOT, "  %-14s %.3f ms%n", id,
                     ns / 1e6 / Math.max(1, open.frames())));
             if (gcProbe != null) {
-                String rt = console.gameController().map(g -> g.sender().realtimeOutcome()).orElse("stopped");
+                String rt = console.referee().gameController().map(g -> g.sender().realtimeOutcome()).orElse("stopped");
                 System.out.println();
                 System.out.println("GameController inside the console, views open (sender real-time priority: "
                         + (rt.isEmpty() ? "yes" : rt) + "): " + gcProbe.summary());
@@ -172,12 +172,12 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
      */
     /** The server the window's Serve to viewers starts (ui.ServeToggle): the stream, match mode and the budget. */
     private static touchline.serve.Serving serving(Console console) throws InterruptedException {
-        return new touchline.serve.Serving(touchline.serve.ServeConfig.defaults().withPort(0), console.kinds(),
-                console.clock(), console.bus(), console.servedStateChannels(touchline.serve.JsonChannel::new));
+        return new touchline.serve.Serving(touchline.serve.ServeConfig.defaults().withPort(0), console.field().kinds(),
+                console.field().clock(), console.field().bus(), console.serving().stateChannels());
     }
 
     private List<Phase> servedPhases(Console console, ConsoleWindow window) throws Exception {
-        touchline.transport.MicrosClock clock = console.clock();
+        touchline.transport.MicrosClock clock = console.field().clock();
         Phase on;
         if (viewersApart) {
             try (touchline.serve.Serving serving = serving(console)) {
@@ -240,7 +240,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
         GcIntervalProbe probe = new GcIntervalProbe("gc-probe", GcConfig.INTERVAL_MS, realtime);
         GcConfig config = new GcConfig(GcProfile.HL12, false, List.of(probe.address()), null,
                 new InetSocketAddress("127.0.0.1", 0), null, GcConfig.INTERVAL_MS, realtime);
-        console.startGameController(new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock()), config);
+        console.referee().start(new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock()), config);
         return probe;
     }
 
@@ -265,8 +265,8 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
     }
 
     private boolean allListsIn(Console console) {
-        List<RobotSnapshot> seen = console.robots().robots();
-        return seen.size() >= robots && seen.stream().allMatch(r -> console.options().options(r.id()).listReceived());
+        List<RobotSnapshot> seen = console.field().robots().robots();
+        return seen.size() >= robots && seen.stream().allMatch(r -> console.field().options().options(r.id()).listReceived());
     }
 
     /** Every view kind on screen at once (robot 1), the other robots' overlays and plots in tabs. */
@@ -302,7 +302,7 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
         });
         long startFrames = window.pulse().frames();
         long startPulls = window.pulse().workFrames();
-        long startIn = console.transportCounts().datagramsIn();
+        long startIn = console.field().transportCounts().datagramsIn();
         long start = System.nanoTime();
         double fpsSum = 0;
         double fpsMin = Double.MAX_VALUE;
@@ -326,11 +326,11 @@ public final class UiBenchCommand implements java.util.concurrent.Callable<Integ
             if (s % 10 == 0) {
                 System.out.printf(Locale.ROOT, "  %4d s  %5.1f fps  p99 %6.1f ms  heap %6.1f MB  in %6.0f pkt/s%n", s, fps,
                         window.pulse().latency().quantileMillis(0.99), used,
-                        (console.transportCounts().datagramsIn() - startIn) / ((System.nanoTime() - start) / 1e9));
+                        (console.field().transportCounts().datagramsIn() - startIn) / ((System.nanoTime() - start) / 1e9));
             }
         }
         double elapsed = (System.nanoTime() - start) / 1e9;
-        double pps = (console.transportCounts().datagramsIn() - startIn) / elapsed;
+        double pps = (console.field().transportCounts().datagramsIn() - startIn) / elapsed;
         Map<String, Long> nanos = FxThread.call(() -> window.pulse().takeRefreshNanos());
         long frames = window.pulse().frames() - startFrames;
         double pulls = (window.pulse().workFrames() - startPulls) / elapsed;

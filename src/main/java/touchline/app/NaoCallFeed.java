@@ -17,10 +17,11 @@ import java.util.function.BooleanSupplier;
  * NAO link, as {@link NaoCameraFeed} takes the frames: so a console viewing a remote Touchline,
  * or replaying a recording, can say what the NAO there was asked and answered. A call whose
  * reply never came (timed out, lost on the first console) stays "sent, no reply yet": no
- * envelope tells its end. Replayed calls are kept apart from live ones and shown while a
- * replay is open. Written by whichever thread publishes, read by the faces at their own rate.
+ * envelope tells its end. One slot per stream: {@link #live()} subscribed to the live stream,
+ * {@link #replay()} to the replay stream, whose calls are shown while a replay is open.
+ * Written by whichever thread publishes, read by the faces at their own rate.
  */
-public final class NaoCallFeed implements EnvelopeSink {
+public final class NaoCallFeed {
 
     public static final String NO_REPLY_YET = "sent, no reply yet";
 
@@ -37,17 +38,14 @@ public final class NaoCallFeed implements EnvelopeSink {
         this.replaying = replaying;
     }
 
-    @Override
-    public void accept(Envelope e) {
-        if (e.channel() != Channel.NAO_RPC) {
-            return;
-        }
-        Slot slot = e.replayed() ? replayed : live;
-        if (e.direction() == Direction.OUT) {
-            slot.say(e.kind() + ": " + NO_REPLY_YET, sequence.incrementAndGet());
-        } else if (e.direction() == Direction.IN) {
-            slot.say(reply(e), sequence.incrementAndGet());
-        }
+    /** The live stream's calls: subscribe this to the live stream. */
+    EnvelopeSink live() {
+        return live;
+    }
+
+    /** The replay's calls: subscribe this to the replay stream. */
+    EnvelopeSink replay() {
+        return replayed;
     }
 
     /** The newest call and its outcome ("ALTextToSpeech.getVolume: 80"), "" before the first call. */
@@ -90,10 +88,22 @@ public final class NaoCallFeed implements EnvelopeSink {
         }
     }
 
-    /** The newest line of one origin (live or replayed). */
-    private static final class Slot {
+    /** The newest line of one stream (live or replayed). */
+    private final class Slot implements EnvelopeSink {
         private volatile String line = "";
         private volatile long version;
+
+        @Override
+        public void accept(Envelope e) {
+            if (e.channel() != Channel.NAO_RPC) {
+                return;
+            }
+            if (e.direction() == Direction.OUT) {
+                say(e.kind() + ": " + NO_REPLY_YET, sequence.incrementAndGet());
+            } else if (e.direction() == Direction.IN) {
+                say(reply(e), sequence.incrementAndGet());
+            }
+        }
 
         synchronized void say(String what, long at) {
             line = what;

@@ -8,9 +8,9 @@ import touchline.transport.nao.NaoEnvelopeChannel;
 
 /**
  * One NAO camera server opened through the application core ({@link NaoSession#camera()},
- * or {@link Console#connectNaoCamera} for the camera alone): it fetches frames only while
+ * or {@link Naos#connectCamera} for the camera alone): it fetches frames only while
  * {@link #watch watched}, and every frame enters the console's Envelope stream, where the
- * faces read it ({@link Console#naoCamera()}) — the same way as frames that come from a remote
+ * faces read it ({@link Naos#camera()}) — the same way as frames that come from a remote
  * Touchline or a replay. Fetching frames sends the robot no command: it is not held by match
  * mode. The faces never hold the camera stream itself.
  */
@@ -36,6 +36,12 @@ public final class NaoCamera implements AutoCloseable {
               touchline.transport.MonotonicClock monotonic, java.util.function.Consumer<NaoCamera> onClose) {
         this.stream = new NaoCameraStream(host, port, sink, keys, wall, monotonic);
         this.onClose = onClose;
+    }
+
+    /** Starts the camera's thread (the console does, once it has made it). */
+    NaoCamera start() {
+        stream.start();
+        return this;
     }
 
     /** Starts ({@code true}) or stops fetching frames. */
@@ -71,10 +77,15 @@ public final class NaoCamera implements AutoCloseable {
         return error == null ? "" : error;
     }
 
+    /** Stops fetching and returns at once; {@link #stopped()} completes when the camera's thread has ended. */
     @Override
     public void close() {
         watch(false);
         stream.close();
         onClose.accept(this);
+    }
+
+    java.util.concurrent.CompletionStage<Void> stopped() {
+        return stream.stopped();
     }
 }

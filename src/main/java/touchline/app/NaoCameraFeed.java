@@ -16,11 +16,11 @@ import java.util.function.BooleanSupplier;
  * The NAO cameras' newest frame, taken from the console's Envelope stream ({@link
  * Channel#NAO_CAMERA}, the frames a camera stream publishes) rather than from a camera stream:
  * so it holds frames fetched here, frames a remote Touchline sent as envelopes, and replayed
- * ones alike. Replayed frames are kept apart from live ones and shown while a replay is open,
- * as the view stores do. Written by whichever thread publishes, read by the faces at their own
+ * ones alike. One slot per stream, as the view stores have: {@link #live()} subscribed to the
+ * live stream, {@link #replay()} to the replay stream, whose frames are shown while a replay is open. Written by whichever thread publishes, read by the faces at their own
  * rate; it keeps one frame and the receive figures of the last {@value #WINDOW}.
  */
-public final class NaoCameraFeed implements EnvelopeSink {
+public final class NaoCameraFeed {
 
     static final int WINDOW = 30;
     /** A rate whose newest frame is older than this is no rate any more: 0 fps. */
@@ -43,11 +43,14 @@ public final class NaoCameraFeed implements EnvelopeSink {
         this.replaying = replaying;
     }
 
-    @Override
-    public void accept(Envelope e) {
-        if (e.channel() == Channel.NAO_CAMERA && e.direction() == Direction.IN) {
-            (e.replayed() ? replayed : live).take(e);
-        }
+    /** The live stream's frames: subscribe this to the live stream. */
+    EnvelopeSink live() {
+        return live;
+    }
+
+    /** The replay's frames: subscribe this to the replay stream. */
+    EnvelopeSink replay() {
+        return replayed;
     }
 
     /** The newest frame shown (the replay's while one is open), if any arrived. */
@@ -79,8 +82,8 @@ public final class NaoCameraFeed implements EnvelopeSink {
         return replaying.getAsBoolean() ? replayed : live;
     }
 
-    /** The frames of one origin (live or replayed). */
-    private static final class Slot {
+    /** The frames of one stream (live or replayed). */
+    private static final class Slot implements EnvelopeSink {
         private final MicrosClock clock;
         private final java.util.concurrent.atomic.AtomicLong sequence;
         private final long[] arrivals = new long[WINDOW];
@@ -94,7 +97,14 @@ public final class NaoCameraFeed implements EnvelopeSink {
             this.sequence = sequence;
         }
 
-        void take(Envelope e) {
+        @Override
+        public void accept(Envelope e) {
+            if (e.channel() == Channel.NAO_CAMERA && e.direction() == Direction.IN) {
+                take(e);
+            }
+        }
+
+        private void take(Envelope e) {
             if (e.kind().equals("malformed") || e.error() != null) {
                 said("unreadable camera reply" + (e.error() == null ? "" : ": " + e.error()));
                 return;

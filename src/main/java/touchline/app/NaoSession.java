@@ -20,10 +20,10 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
 
 /**
- * One NAO driven through the application core ({@link Console#connectNao}): its RPC link, its
+ * One NAO driven through the application core ({@link Naos#connect}): its RPC link, its
  * high-level moves and, when a camera port is given, its camera stream, all publishing into
  * the console's Envelope stream (so the recorder and the views see the NAO's traffic; the
- * camera's frames are read from there, {@link Console#naoCamera()}). Every
+ * camera's frames are read from there, {@link Naos#camera()}). Every
  * call and every move passes the console's send gate first — match mode during play, and
  * "commands are off" while the console views a remote Touchline — and then ends with a
  * {@link CallOutcome} that says in words what became of it: {@link CallOutcome.HeldBack}
@@ -40,6 +40,7 @@ public final class NaoSession implements AutoCloseable {
     private final NaoMoves moves;
     private final NaoCamera camera;
     private final Consumer<NaoSession> onClose;
+    private final CompletableFuture<Void> stopped;
 
     /**
      * @param camPort the camera server's port, or 0 for no camera
@@ -53,10 +54,21 @@ public final class NaoSession implements AutoCloseable {
         this.rpcPort = rpcPort;
         this.onClose = onClose;
         this.channel = new NaoEnvelopeChannel(sink);
-        this.link = new NaoLink(host, rpcPort, config, channel, keys, clock, monotonic);
+        this.link = new NaoLink(host, rpcPort, config, channel, keys, clock, monotonic).queueEveryCall();
         link.setSendGate(gate);
         this.moves = new NaoMoves(link);
         this.camera = camPort > 0 ? new NaoCamera(host, camPort, channel, keys, clock, monotonic) : null;
+        this.stopped = CompletableFuture.allOf(link.stopped().toCompletableFuture(),
+                camera == null ? CompletableFuture.completedFuture(null) : camera.stopped().toCompletableFuture());
+    }
+
+    /** Starts the link's thread (and the camera's): the console does, once it has made the session. */
+    NaoSession start() {
+        link.start();
+        if (camera != null) {
+            camera.start();
+        }
+        return this;
     }
 
     public String host() {
@@ -98,7 +110,7 @@ public final class NaoSession implements AutoCloseable {
                 + (problem.isEmpty() ? "" : " — " + problem);
     }
 
-    /** The camera, when the session was opened with a camera port; its frames are {@link Console#naoCamera()}'s. */
+    /** The camera, when the session was opened with a camera port; its frames are {@link Naos#camera()}'s. */
     public Optional<NaoCamera> camera() {
         return Optional.ofNullable(camera);
     }
@@ -138,14 +150,23 @@ public final class NaoSession implements AutoCloseable {
         return moves.say(text);
     }
 
-    /** Closes the camera, the link and their pipeline; pending calls end as lost. */
+    /**
+     * Closes the camera, the link and their pipeline, and returns at once (the window's thread
+     * calls it): the link's thread ends the pending calls as lost, and once it and the camera's
+     * have stopped the pipeline closes and {@link #stopped()} completes.
+     */
     @Override
     public void close() {
         if (camera != null) {
             camera.close();
         }
         link.close();
-        channel.close();
+        stopped.thenRun(channel::close);
         onClose.accept(this);
+    }
+
+    /** Completes once the session's threads have stopped after {@link #close()}. */
+    public CompletableFuture<Void> stopped() {
+        return stopped.thenApply(v -> v);
     }
 }

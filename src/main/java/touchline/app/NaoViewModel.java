@@ -21,24 +21,22 @@ import java.util.concurrent.CompletableFuture;
 /**
  * What the window's NAO view shows and does, without JavaFX: the view binds its fields and
  * buttons to this and draws what it says once per frame. It connects through the core
- * ({@link Console#connectNao}), so every call and move passes the console's gate; it parses
+ * ({@link Naos#connect}), so every call and move passes the console's gate; it parses
  * the typed parameters ({@link ParamSyntax}); it keeps the held walk keys, the newest
  * outcome in words ({@link #result()}), the discovered methods and the camera's wishes.
  * The camera frame it offers ({@link #frame()}) is the console's stream's newest, so the same
  * view draws a NAO connected here, a remote Touchline's NAO and a replay. On a console that
- * views a remote Touchline every command is refused with {@link Console#COMMANDS_OFF}, as the
+ * views a remote Touchline every command is refused with {@link RemoteView#COMMANDS_OFF}, as the
  * other views' commands are. Results arrive on the link's threads and are read by the view on
  * its own: they are volatile.
  */
 public final class NaoViewModel implements AutoCloseable {
 
-    public static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
-            "ALBattery", "ALVideoDevice", "Robot");
     /** How fast W A S D Q E walk: the share of the NAO's top speed. */
     static final float WALK_SPEED = 0.6f;
     static final String NOT_CONNECTED = "not connected";
 
-    private final Console console;
+    private final Naos naos;
     private final Set<Character> heldKeys = new HashSet<>(); // guarded by itself
     private volatile NaoSession session;
     private volatile String result = "";
@@ -49,8 +47,8 @@ public final class NaoViewModel implements AutoCloseable {
     private volatile boolean cameraWanted;
     private volatile int resolution = CameraSettings.DEFAULT.resolution();
 
-    public NaoViewModel(Console console) {
-        this.console = console;
+    public NaoViewModel(Naos naos) {
+        this.naos = naos;
     }
 
     // ---------------------------------------------------------------- connection
@@ -62,8 +60,8 @@ public final class NaoViewModel implements AutoCloseable {
      * remote Touchline.
      */
     public boolean connect(String host, String rpcPort, String camPort, String keyDir, boolean insecure) {
-        if (console.remote().isPresent()) {
-            tell(Console.COMMANDS_OFF);
+        if (naos.commandsOff()) {
+            tell(RemoteView.COMMANDS_OFF);
             return false;
         }
         int rpc;
@@ -83,7 +81,7 @@ public final class NaoViewModel implements AutoCloseable {
             return false;
         }
         disconnect();
-        NaoSession s = console.connectNao(host.strip(), rpc, cam, keys, NaoLinkConfig.defaults());
+        NaoSession s = naos.connect(host.strip(), rpc, cam, keys, NaoLinkConfig.defaults());
         s.camera().ifPresent(c -> {
             CameraSettings was = c.settings();
             c.configure(new CameraSettings(resolution, was.colorSpace(), was.fps()));
@@ -111,7 +109,7 @@ public final class NaoViewModel implements AutoCloseable {
         if (s != null) {
             return s.describe();
         }
-        return console.remote().isPresent() ? "viewing a remote Touchline: its NAO's camera is shown here" : NOT_CONNECTED;
+        return naos.commandsOff() ? "viewing a remote Touchline: its NAO's camera is shown here" : NOT_CONNECTED;
     }
 
     // ---------------------------------------------------------------- calls and moves
@@ -122,8 +120,8 @@ public final class NaoViewModel implements AutoCloseable {
      * count too ({@link NaoCallFeed}): the newer of theirs and this view's own is shown.
      */
     public String result() {
-        NaoCallFeed calls = console.naoCalls();
-        if (console.remote().isPresent() || calls.showsReplay()) {
+        NaoCallFeed calls = naos.calls();
+        if (naos.commandsOff() || calls.showsReplay()) {
             String line = calls.line();
             if (calls.version() > toldAt && !line.isEmpty()) {
                 return line;
@@ -158,8 +156,8 @@ public final class NaoViewModel implements AutoCloseable {
      * ParamSyntax}: {@code HeadYaw, 0.5} or {@code [HeadYaw, HeadPitch], [0.1, 0.2], 0.3}).
      */
     public void call(String module, String method, String params) {
-        if (console.remote().isPresent()) {
-            tell(Console.COMMANDS_OFF);
+        if (naos.commandsOff()) {
+            tell(RemoteView.COMMANDS_OFF);
             return;
         }
         if (method == null) {
@@ -242,12 +240,12 @@ public final class NaoViewModel implements AutoCloseable {
 
     /** The newest camera frame in the console's stream: fetched here, a remote Touchline's, or replayed. */
     public Optional<NaoFrame> frame() {
-        return console.naoCamera().latest();
+        return naos.camera().latest();
     }
 
     /** "14.8 fps, 23011 B/frame", and what is wrong with the camera if something is. */
     public String cameraFigures() {
-        NaoCameraFeed feed = console.naoCamera();
+        NaoCameraFeed feed = naos.camera();
         String problem = camera().map(NaoCamera::problem).filter(p -> !p.isEmpty()).orElse(feed.problem());
         return String.format(java.util.Locale.ROOT, "%.1f fps, %.0f B/frame%s", feed.framesPerSecond(),
                 feed.bytesPerFrame(), problem.isEmpty() ? "" : "  " + problem);
@@ -267,8 +265,8 @@ public final class NaoViewModel implements AutoCloseable {
 
     /** Why no command goes out from here: a remote view, or no NAO connected. */
     private Optional<String> refused() {
-        if (console.remote().isPresent()) {
-            return Optional.of(Console.COMMANDS_OFF);
+        if (naos.commandsOff()) {
+            return Optional.of(RemoteView.COMMANDS_OFF);
         }
         return session == null ? Optional.of(NOT_CONNECTED) : Optional.empty();
     }
@@ -286,7 +284,7 @@ public final class NaoViewModel implements AutoCloseable {
 
     /** This view's own outcome becomes the newest. */
     private void tell(String what) {
-        toldAt = console.naoCalls().version();
+        toldAt = naos.calls().version();
         result = what;
     }
 

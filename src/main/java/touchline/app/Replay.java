@@ -11,8 +11,8 @@ import java.util.List;
 import java.util.Optional;
 
 /**
- * A recording playing into the console's Envelope stream, so every view shows it as it showed
- * live traffic, marked as replayed so it never acts on the live field. A daemon thread pumps the player; the controls are the player's and may be
+ * A recording playing into the console's replay stream, so every view shows it as it showed
+ * live traffic, while nothing that acts on the live field hears it. A daemon thread pumps the player; the controls are the player's and may be
  * called from any thread (the UI's timeline calls them from the FX thread).
  */
 public final class Replay implements AutoCloseable {
@@ -35,7 +35,12 @@ public final class Replay implements AutoCloseable {
         remember();
         this.pump = new Thread(this::loop, "touchline-replay");
         pump.setDaemon(true);
+    }
+
+    /** Starts the pump thread (the console does, once it has made the replay). */
+    Replay start() {
         pump.start();
+        return this;
     }
 
     private void loop() {

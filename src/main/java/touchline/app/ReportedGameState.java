@@ -12,7 +12,8 @@ import touchline.transport.EnvelopeSink;
  * Feeds match mode with the game state each robot reports in its keep-alive (what it last
  * heard from the referee's GameController), so the console stays silent during play even when
  * it cannot hear the GameController itself (the port watch covers the case where it can).
- * Replayed robots are not on the field: what they reported never changes match mode.
+ * Subscribed to the live stream only: replayed robots are not on the field, and what they
+ * reported never changes match mode.
  */
 final class ReportedGameState implements EnvelopeSink {
 
@@ -24,7 +25,7 @@ final class ReportedGameState implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        Fumanoid.Status status = e.direction() == Direction.IN && !e.replayed() ? e.extension(Fumanoid.status) : null;
+        Fumanoid.Status status = e.direction() == Direction.IN ? e.extension(Fumanoid.status) : null;
         if (status != null) {
             int state = GameControlData.stateCode(status.getGameState());
             // the five states every league's robots report; SPL's STANDBY never reached match mode

@@ -8,7 +8,7 @@ import java.util.Optional;
 import java.util.function.Supplier;
 
 /**
- * Waiting for a live robot ({@link Console#waitForRobot}) without polling: the robot registry
+ * Waiting for a live robot ({@link LiveField#waitForRobot}) without polling: the robot registry
  * signals each robot that comes online (a presence listener), the console's tick signals that
  * its clock moved on, and a waiter looks again only then, with its deadline on the console's
  * clock (a fake clock in tests decides when the wait ends).

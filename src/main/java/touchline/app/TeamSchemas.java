@@ -17,7 +17,8 @@ import java.util.Map;
  * built onto the compiled FUmanoids types and their {@code Message} extensions handed to the
  * console's {@link MessageKinds}, which then decodes them by name. Remembers what was loaded
  * and what was refused, for the view to list. The console owns one
- * ({@link Console#loadTeamSchemas(Path)}): the replay view asks it, never the kinds.
+ * ({@link Console#teamSchemas()}), the one way to load them: the replay view, {@code record --proto}
+ * and {@code serve --proto} ask it, never the kinds.
  */
 public final class TeamSchemas {
 
@@ -58,6 +59,11 @@ public final class TeamSchemas {
             }
         }
         return new Outcome(file, extensions, refusals);
+    }
+
+    /** The team's own files loaded so far (beyond the compiled-in ones), for a recording to embed. */
+    public synchronized List<FileDescriptor> teamFiles() {
+        return schemas.teamFiles();
     }
 
     private static String typeName(FieldDescriptor ext) {

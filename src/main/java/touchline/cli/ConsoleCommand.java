@@ -58,10 +58,10 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
         }
         remote.check();
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
-            remote.connectBridges(console);
-            budget.guard(console, udp.bind);
-            StartMarks marks = new StartMarks(System.err, console.clock());
-            console.robots().addPresenceListener(marks);
+            remote.connectBridges(console.bridges());
+            budget.guard(console.teamBudget(), udp.bind);
+            StartMarks marks = new StartMarks(System.err, console.field().clock());
+            console.field().robots().addPresenceListener(marks);
             String noDisplay = missingDisplay(System.getenv(), System.getProperty("glass.platform", ""),
                     System.getProperty("os.name", ""));
             if (noDisplay != null) {
@@ -73,7 +73,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
                 throw StartFailure.noDisplay("JavaFX could not open it (" + e.getMessage() + ")");
             }
             // Ctrl+C or SIGTERM while the window is open: the recording is finished before the JVM exits
-            Thread hook = new Thread(() -> console.finishRecording(FINISH_RECORDING_MILLIS), "touchline-console-stop");
+            Thread hook = new Thread(() -> console.recordings().finish(FINISH_RECORDING_MILLIS), "touchline-console-stop");
             Runtime.getRuntime().addShutdownHook(hook);
             CountDownLatch closed = new CountDownLatch(1);
             UiSettings settings = new UiSettings(layouts != null ? Path.of(layouts) : LayoutStore.defaultDir(), !light, demo, cap);
@@ -88,7 +88,7 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
             });
             closed.await();
             javafx.application.Platform.exit();
-            console.finishRecording(FINISH_RECORDING_MILLIS);
+            console.recordings().finish(FINISH_RECORDING_MILLIS);
             try {
                 Runtime.getRuntime().removeShutdownHook(hook);
             } catch (IllegalStateException shuttingDown) {

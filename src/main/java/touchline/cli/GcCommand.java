@@ -21,7 +21,10 @@ import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.protocol.gamecontroller.TeamInfo;
 import touchline.app.SystemClock;
+import touchline.app.Referee;
 import touchline.app.game.EmbeddedGameController;
+import touchline.app.game.GameRuntime;
+import touchline.app.game.RefereeSnapshot;
 import touchline.transport.HostPort;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
@@ -175,9 +178,10 @@ public final class GcCommand implements Callable<Integer> {
                     clock);
             HslActionSyntax syntax = new HslActionSyntax();
             referee = game;
-            handler = line -> {
+            handler = (line, owner) -> {
                 HslActionSyntax.Parsed parsed = syntax.parse(line);
-                return parsed.error() != null ? "error: " + parsed.error() : outcome(game.perform(parsed.action()));
+                return parsed.error() != null ? "error: " + parsed.error()
+                        : outcome(GameRuntime.outcome(owner.perform(parsed.action())));
             };
         } else {
             LeagueParams params = LeagueParams.hlSimulationKidSize().withTeamSizeAndHalf(
@@ -185,17 +189,18 @@ public final class GcCommand implements Callable<Integer> {
             Game game = new Game(params, teamA, a[0].ordinal(), teamB, b[0].ordinal(), clock);
             ActionSyntax syntax = new ActionSyntax();
             referee = game;
-            handler = line -> {
-                ActionSyntax.Parsed parsed = syntax.parse(line, game.snapshot());
-                return parsed.error() != null ? "error: " + parsed.error() : outcome(game.perform(parsed.action()));
+            handler = (line, owner) -> {
+                ActionSyntax.Parsed parsed = syntax.parse(line, owner.snapshot().hl());
+                return parsed.error() != null ? "error: " + parsed.error()
+                        : outcome(GameRuntime.outcome(owner.perform(parsed.action())));
             };
         }
         return referee(profile, referee, handler);
     }
 
-    /** What a line of stdin does to the game; returns the line to print. */
+    /** What a line of stdin does to the game (through its owner); returns the line to print. */
     private interface LineHandler {
-        String handle(String line);
+        String handle(String line, GameRuntime owner);
     }
 
     private static String outcome(Outcome o) {
@@ -204,24 +209,25 @@ public final class GcCommand implements Callable<Integer> {
 
     private int referee(GcProfile profile, RefereedGame game, LineHandler handler) throws Exception {
         GcConfig config = config(profile);
-        MatchMode matchMode = new MatchMode(clock);
-        try (EmbeddedGameController gc = new EmbeddedGameController(game, config, e -> { }, matchMode, clock)) {
-            gc.addEventListener(event -> print("! " + event));
-            String[] last = {""};
-            game.addListener(() -> {
-                String now = stateLine(game);
-                if (!now.equals(last[0])) {
-                    last[0] = now;
-                    print("state: " + now);
+        Referee referee = new Referee(e -> { }, new MatchMode(clock), clock);
+        int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
+        try {
+            EmbeddedGameController gc = referee.start(game, config, started -> {
+                started.addEventListener(event -> print("! " + event));
+                String[] last = {""};
+                started.runtime().addListener(s -> {
+                    String now = stateLine(s.description());
+                    if (!now.equals(last[0])) {
+                        last[0] = now;
+                        print("state: " + now);
+                    }
+                });
+                if (profile.hsl() && monitorRequests >= 0) {
+                    started.serveMonitors(new InetSocketAddress(bind, monitorRequests),
+                            GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
+                    print("monitors register on " + started.monitorRequestAddress());
                 }
             });
-            int monitorRequests = monitorPort != null ? monitorPort : MonitorRequest.PORT;
-            if (profile.hsl() && monitorRequests >= 0) {
-                gc.serveMonitors(new InetSocketAddress(bind, monitorRequests),
-                        GcProfile.GAME_STATE_PORT, ForwardedReturnPacket.PORT);
-                print("monitors register on " + gc.monitorRequestAddress());
-            }
-            gc.start();
             print("GameController " + profile.cliName() + " sending to " + config.destinations() + ", returns on "
                     + gc.returnAddress() + (gc.rivalAddress() == null ? "" : ", watching " + gc.rivalAddress()));
             if (realtime) {
@@ -229,7 +235,8 @@ public final class GcCommand implements Callable<Integer> {
                 print(why.isEmpty() ? "sender runs with real-time priority"
                         : "! no real-time priority (500 ms cadence may jitter on a busy machine): " + why);
             }
-            print("state: " + game.describe());
+            GameRuntime owner = gc.runtime();
+            print("state: " + owner.snapshot().description());
             BufferedReader in = new BufferedReader(new InputStreamReader(input, StandardCharsets.UTF_8));
             for (String line = in.readLine(); line != null; line = in.readLine()) {
                 String cmd = line.trim();
@@ -240,16 +247,18 @@ public final class GcCommand implements Callable<Integer> {
                     break;
                 }
                 if (cmd.equals("undo")) {
-                    print(game.undo().message());
+                    print(GameRuntime.outcome(owner.undo()).message());
                 } else if (cmd.equals("status")) {
                     status(gc);
                 } else {
-                    print(handler.handle(cmd));
+                    print(handler.handle(cmd, owner));
                 }
             }
             // The HSL schedule does not send a change at once: send the final state before closing.
             gc.sendNow();
             Thread.sleep(100);
+        } finally {
+            referee.stop();
         }
         return 0;
     }
@@ -268,18 +277,17 @@ public final class GcCommand implements Callable<Integer> {
         return null;
     }
 
-    private static String stateLine(RefereedGame game) {
+    private static String stateLine(String d) {
         // Without timers: a change of the game, not of the clock.
-        String d = game.describe();
         return d.replaceAll(", -?\\d+ s left, secondary -?\\d+ s", "");
     }
 
     private void status(EmbeddedGameController gc) {
-        RefereedGame game = gc.referee();
-        print("status: " + game.describe());
+        RefereeSnapshot game = gc.runtime().snapshot();
+        print("status: " + game.description());
         print("packets sent: " + gc.packetsSent() + ", send errors: " + gc.sendErrors());
-        long now = game.now();
-        GameControlData data = game.trueData();
+        long now = gc.runtime().now();
+        GameControlData data = game.truth();
         for (var e : gc.liveness().all(now).entrySet()) {
             RobotLiveness.RobotKey k = e.getKey();
             TeamInfo team = data.team(k.team());

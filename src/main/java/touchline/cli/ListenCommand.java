@@ -47,20 +47,20 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
         remote.check();
         try (Console console = remote.remote() ? remote.startViewing() : new Console(udp.config())) {
             if (!quiet) {
-                console.bus().subscribe((Envelope e) -> {
+                console.field().bus().subscribe((Envelope e) -> {
                     synchronized (out) {
                         out.println(lines.format(e));
                     }
                 });
             }
-            remote.connectBridges(console);
+            remote.connectBridges(console.bridges());
             if (!remote.remote()) {
                 udp.start(console);
-                new FirstListenLines(spec.commandLine().getErr(), "listen").follow(console.matchMode());
+                new FirstListenLines(spec.commandLine().getErr(), "listen").follow(console.referee().matchMode());
             }
-            var guard = budget.guard(console, udp.bind);
-            System.err.println(console.remoteStatus().map(r -> r.describe()).orElse("listening on UDP port "
-                    + console.port() + " (transport: " + console.transportDescription() + ")")
+            var guard = budget.guard(console.teamBudget(), udp.bind);
+            System.err.println(console.remote().status().map(r -> r.describe()).orElse("listening on UDP port "
+                    + console.field().port() + " (transport: " + console.field().transportDescription() + ")")
                     + guard.map(g -> ", team " + g.team() + "'s messages under " + g.profile().name()).orElse(""));
             String[] lastRemote = {""};
             long deadline = seconds > 0 ? System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
@@ -69,27 +69,27 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                         TimeUnit.NANOSECONDS)) {
                     break;
                 }
-                console.remoteStatus().map(r -> r.describe()).filter(d -> !d.equals(lastRemote[0])).ifPresent(d -> {
+                console.remote().status().map(r -> r.describe()).filter(d -> !d.equals(lastRemote[0])).ifPresent(d -> {
                     lastRemote[0] = d;
                     System.err.println(d);
                 });
                 console.bridges().statuses().forEach(b -> System.err.println("bridge " + b.describe()));
                 synchronized (out) {
-                    table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
-                    monitorTable.print(out, console.monitorReport(console.clock().nowMicros() / 1000));
-                    out.println(console.gcSources().describe());
-                    String gcWarning = console.gcSources().warning();
+                    table.print(out, console.field().robots().robots(), console.field().robots().sources(), console.field().robots().notes());
+                    monitorTable.print(out, console.referee().monitorReport(console.field().clock().nowMicros() / 1000));
+                    out.println(console.referee().sources().describe());
+                    String gcWarning = console.referee().sources().warning();
                     if (!gcWarning.isEmpty()) {
                         out.println(gcWarning);
                     }
                     guard.ifPresent(g -> out.println(g.snapshot().describe()));
-                    console.debugRateGuard().ifPresent(d -> d.overLimit().forEach(o -> out.println(
+                    console.teamBudget().debugRateGuard().ifPresent(d -> d.overLimit().forEach(o -> out.println(
                             "OVER THE DEBUG LIMIT (" + d.limit().describe() + "/s during play): " + o.describe())));
                     out.flush();
                 }
             }
             synchronized (out) {
-                table.print(out, console.robots().robots(), console.robots().sources(), console.robots().notes());
+                table.print(out, console.field().robots().robots(), console.field().robots().sources(), console.field().robots().notes());
                 out.flush();
             }
         }

@@ -5,11 +5,14 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import touchline.app.Console;
+import touchline.app.Naos;
+import touchline.app.Referee;
 import touchline.app.ConsoleConfig;
 import touchline.app.NaoCamera;
 import touchline.app.NaoFrame;
 import touchline.app.NaoSession;
 import touchline.app.game.MatchMode;
+import touchline.protocol.nao.NaoModules;
 import touchline.protocol.nao.ParamSyntax;
 import touchline.transport.HostPort;
 import touchline.transport.nao.CallOutcome;
@@ -50,8 +53,6 @@ public final class NaoCommand implements Runnable {
     static final int RPC_PORT = 5555;
     static final int HELD_BACK = 3;
     static final int CAM_PORT = 5556;
-    static final List<String> MODULES = List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory",
-            "ALBattery", "ALVideoDevice");
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -95,7 +96,7 @@ public final class NaoCommand implements Runnable {
             ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(0))
                     .withGameControllerPort(gcPort).withGcAddress(gcAddress);
             Console console = new Console(config).start();
-            new FirstListenLines(err(), "nao").follow(console.matchMode());
+            new FirstListenLines(err(), "nao").follow(console.referee().matchMode());
             return console;
         }
 
@@ -125,11 +126,11 @@ public final class NaoCommand implements Runnable {
         }
 
         /**
-         * A session on {@code console}, online, once the console has listened for a GameController;
+         * A session through {@code naos}, online, once {@code referee} has listened for a GameController;
          * null (after printing why) when the address or the keys are unusable or the robot did not
          * come online in time.
          */
-        NaoSession connect(Console console, String target, int defaultPort) throws InterruptedException {
+        NaoSession connect(Naos naos, Referee referee, String target, int defaultPort) throws InterruptedException {
             HostPort t;
             try {
                 t = HostPort.parse(target, defaultPort);
@@ -144,7 +145,7 @@ public final class NaoCommand implements Runnable {
                 err().println(e.getMessage());
                 return null;
             }
-            NaoSession link = console.connectNao(t.host(), t.port(), 0, keys, loadConfig());
+            NaoSession link = naos.connect(t.host(), t.port(), 0, keys, loadConfig());
             long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(connectTimeoutMs);
             while (link.state() != ConnectionState.ONLINE && link.state() != ConnectionState.REFUSED
                     && System.nanoTime() < end) {
@@ -165,7 +166,7 @@ public final class NaoCommand implements Runnable {
             }
             // A console that just opened the GameController port listens for one first (match mode):
             // the call waits for that (at least --listen), or for play to be heard, instead of being held for it.
-            console.awaitFirstListen(listenMs, java.time.Duration.ofMillis(Math.max(listenMs, MatchMode.LISTEN_FIRST_MS) + 1000));
+            referee.awaitFirstListen(listenMs, java.time.Duration.ofMillis(Math.max(listenMs, MatchMode.LISTEN_FIRST_MS) + 1000));
             return link;
         }
     }
@@ -195,7 +196,7 @@ public final class NaoCommand implements Runnable {
                 err().println(e.getMessage());
                 return 2;
             }
-            try (Console console = startConsole(); NaoSession link = connect(console, target, RPC_PORT)) {
+            try (Console console = startConsole(); NaoSession link = connect(console.naos(), console.referee(), target, RPC_PORT)) {
                 if (link == null) {
                     return 1;
                 }
@@ -215,13 +216,13 @@ public final class NaoCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            try (Console console = startConsole(); NaoSession link = connect(console, target, RPC_PORT)) {
+            try (Console console = startConsole(); NaoSession link = connect(console.naos(), console.referee(), target, RPC_PORT)) {
                 if (link == null) {
                     return 1;
                 }
                 int failures = 0;
                 boolean held = false;
-                for (String module : modules.isEmpty() ? MODULES : modules) {
+                for (String module : modules.isEmpty() ? NaoModules.NAOQI : modules) {
                     CallOutcome outcome = link.call(NaoCall.of(module, "getMethodList")).get();
                     if (outcome instanceof CallOutcome.Value v && v.value() instanceof List<?> names) {
                         out().println(module + ": " + String.join(" ", names.stream().map(String::valueOf).toList()));
@@ -277,20 +278,20 @@ public final class NaoCommand implements Runnable {
             ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withListenPort(0))
                     .withGameControllerPort(0);
             try (Console console = new Console(config).start();
-                 NaoCamera camera = console.connectNaoCamera(t.host(), t.port(), keys)) {
+                 NaoCamera camera = console.naos().connectCamera(t.host(), t.port(), keys)) {
                 camera.configure(settings);
                 camera.watch(true);
                 long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-                while (console.naoCamera().latest().isEmpty() && System.nanoTime() < end) {
+                while (console.naos().camera().latest().isEmpty() && System.nanoTime() < end) {
                     Thread.sleep(10);
                 }
                 camera.watch(false);
-                if (console.naoCamera().latest().isEmpty()) {
+                if (console.naos().camera().latest().isEmpty()) {
                     spec.commandLine().getErr().println("no frame from " + t.host() + ":" + t.port() + " within "
                             + timeoutMs + " ms" + (camera.problem().isEmpty() ? "" : ": " + camera.problem()));
                     return 1;
                 }
-                NaoFrame frame = console.naoCamera().latest().get();
+                NaoFrame frame = console.naos().camera().latest().get();
                 Files.write(save, frame.jpeg());
                 spec.commandLine().getOut().println("saved " + save + ": " + frame.width() + "x" + frame.height()
                         + ", " + frame.jpeg().length + " bytes");

@@ -5,6 +5,7 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import touchline.app.Console;
+import touchline.app.OptionSwitches;
 import touchline.model.OptionState;
 import touchline.model.RobotOptions;
 import touchline.transport.SendResult;
@@ -61,45 +62,45 @@ final class OptionsCommand implements Callable<Integer> {
     private int run() throws Exception {
         try (Console console = remote.remote() ? remote.startViewing() : startOnThePort()) {
             if (!remote.remote()) {
-                new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.matchMode());
+                new FirstListenLines(spec.commandLine().getErr(), "options").follow(console.referee().matchMode());
             }
             long deadline = System.nanoTime() + timeoutSeconds * 1_000_000_000L;
             // through a serving console, a robot that reports play sends no option list (and the serving
             // console, which may have started serving in play, asks for none): the switch is asked at once and
             // the serving console's match mode answers (held)
             boolean askOnly = remote.remote() && !(on.isEmpty() && off.isEmpty());
-            if (!await(deadline, () -> console.options().options(robot).listReceived()
-                    || askOnly && console.robots().robot(robot)
+            if (!await(deadline, () -> console.field().options().options(robot).listReceived()
+                    || askOnly && console.field().robots().robot(robot)
                     .map(r -> touchline.protocol.gamecontroller.GameControlData.isPlay(
                             touchline.protocol.gamecontroller.GameControlData.stateCode(r.gameState()))).orElse(false))) {
-                err.println(console.robots().robot(robot).isPresent()
+                err.println(console.field().robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
-                        + String.join(" ", remote.connect) + " (" + console.remoteStatus().map(Object::toString).orElse("") + ")"
+                        + String.join(" ", remote.connect) + " (" + console.remote().status().map(Object::toString).orElse("") + ")"
                         : "robot " + robot + " was not seen within " + timeoutSeconds + " s (is it sending to port "
-                        + console.port() + "?)");
+                        + console.field().port() + "?)");
                 return 2;
             }
             // a console that just opened the GameController port listens for one first (match mode):
             // the requests wait for that, or for play to be heard, instead of being held for it
             if (!remote.remote()) { // through a serving console: its match mode decides
-                console.awaitFirstListen(0, java.time.Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
+                console.referee().awaitFirstListen(0, java.time.Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
             }
             int status = 0;
             for (String name : on) {
-                status |= apply(console, name, true, deadline);
+                status |= apply(console.optionSwitches(), name, true, deadline);
             }
             for (String name : off) {
-                status |= apply(console, name, false, deadline);
+                status |= apply(console.optionSwitches(), name, false, deadline);
             }
             if (status != 0) {
                 return status;
             }
             boolean confirmed = await(deadline, () -> {
-                RobotOptions o = console.options().options(robot);
+                RobotOptions o = console.field().options().options(robot);
                 return on.stream().allMatch(n -> o.option(n).map(OptionState::streaming).orElse(false));
             });
-            print(console, console.options().options(robot));
+            print(console.optionSwitches(), console.field().options().options(robot));
             if (!confirmed) {
                 err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
                 return 3;
@@ -108,15 +109,15 @@ final class OptionsCommand implements Callable<Integer> {
         }
     }
 
-    private int apply(Console console, String name, boolean enable, long deadlineNanos) throws InterruptedException {
-        RobotOptions options = console.options().options(robot);
+    private int apply(OptionSwitches switches, String name, boolean enable, long deadlineNanos) throws InterruptedException {
+        RobotOptions options = switches.options().options(robot);
         if (options.option(name).isEmpty() && (options.listReceived() || !remote.remote())) {
             err.println("robot " + robot + " offers no option '" + name + "'");
             return 1;
         }
         // --off names the option: switched off whoever switched it on (a new console wants nothing)
-        SendResult r = remote.remote() ? askServer(console, name, enable, deadlineNanos)
-                : console.switchOptionAsAsked(robot, name, enable);
+        SendResult r = remote.remote() ? askServer(switches, name, enable, deadlineNanos)
+                : switches.switchAsAsked(robot, name, enable);
         if (!r.isSent()) {
             err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
             return 4;
@@ -138,10 +139,10 @@ final class OptionsCommand implements Callable<Integer> {
         }
     }
 
-    private SendResult askServer(Console console, String name, boolean enable, long deadlineNanos)
+    private SendResult askServer(OptionSwitches switches, String name, boolean enable, long deadlineNanos)
             throws InterruptedException {
         try {
-            return console.switchOptionRemotely(robot, name, enable)
+            return switches.switchRemotely(robot, name, enable)
                     .get(Math.max(1, deadlineNanos - System.nanoTime()), java.util.concurrent.TimeUnit.NANOSECONDS);
         } catch (java.util.concurrent.TimeoutException e) {
             return SendResult.failed("no answer from " + remote.connect + " within " + timeoutSeconds + " s");
@@ -160,10 +161,10 @@ final class OptionsCommand implements Callable<Integer> {
         return condition.getAsBoolean();
     }
 
-    private void print(Console console, RobotOptions options) {
+    private void print(OptionSwitches switches, RobotOptions options) {
         System.out.printf("robot %d: %d options%n", options.robotId(), options.options().size());
         for (OptionState o : options.options()) {
-            System.out.printf("  [%s] %-16s %-20s %s%s%n", console.optionShownOn(o) ? "x" : " ", o.name(), o.kindName(),
+            System.out.printf("  [%s] %-16s %-20s %s%s%n", switches.shownOn(o) ? "x" : " ", o.name(), o.kindName(),
                     o.description(), o.streaming() ? "  (streaming)" : "");
         }
     }

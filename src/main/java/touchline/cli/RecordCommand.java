@@ -3,24 +3,24 @@ package touchline.cli;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import com.google.protobuf.Descriptors.FileDescriptor;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.app.LiveField;
 import touchline.record.ChunkCompression;
-import touchline.record.EnvelopeSource;
 import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
 import touchline.record.RecorderStats;
 import touchline.record.RecordingException;
-import touchline.record.SchemaSet;
 
 import java.io.PrintWriter;
+import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.List;
 import java.util.concurrent.Callable;
-import java.util.function.BiFunction;
+import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
@@ -69,21 +69,21 @@ public final class RecordCommand implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
-    private final BiFunction<ConsoleConfig, List<FileDescriptor>, EnvelopeSource> sources;
+    private final Function<ConsoleConfig, Console> consoles;
+    private final Consumer<LiveField> started;
 
     /** Records what the application core ({@link Console}: UDP transport and model) sees. */
     public RecordCommand() {
-        this((config, teamFiles) -> sink -> {
-            Console console = new Console(config);
-            console.loadTeamSchemas(teamFiles);
-            console.bus().subscribe(sink);
-            return console.start();
-        });
+        this(Console::new, field -> { });
     }
 
-    /** {@code sources} gives the live traffic for a configuration and the team's own types (tests pass a fake). */
-    public RecordCommand(BiFunction<ConsoleConfig, List<FileDescriptor>, EnvelopeSource> sources) {
-        this.sources = sources;
+    /**
+     * {@code consoles} makes the console for a configuration (tests: one without a model);
+     * {@code started} is told once it records and listens (tests feed it envelopes there).
+     */
+    RecordCommand(Function<ConsoleConfig, Console> consoles, Consumer<LiveField> started) {
+        this.consoles = consoles;
+        this.started = started;
     }
 
     @Override
@@ -95,19 +95,28 @@ public final class RecordCommand implements Callable<Integer> {
                 : Path.of("touchline-" + LocalDateTime.ofInstant(new touchline.app.SystemClock().instant(), java.time.ZoneId.systemDefault()).format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".mcap");
         EnvelopeWriter.Options options = EnvelopeWriter.Options.defaults().withCompression(compression)
                 .withSplit(splitMegabytes * 1_000_000L, splitMinutes * 60_000_000L).withCameraRate(cameraFps);
-        List<FileDescriptor> teamFiles = List.of();
-        if (proto != null) {
-            try {
-                SchemaSet schemas = new SchemaSet();
-                schemas.load(proto);
-                teamFiles = schemas.teamFiles();
-                options = options.withTeamFiles(teamFiles);
-            } catch (RecordingException e) {
-                err.println("touchline record: " + e.getMessage());
-                return 2;
-            }
+        Console console;
+        try {
+            console = consoles.apply(udp.config());
+        } catch (Exception e) {
+            err.println("touchline record: cannot listen on port " + udp.port + ": " + e.getMessage());
+            return 1;
         }
-        Recorder recorder = new Recorder(file, options);
+        Recorder recorder;
+        try {
+            if (proto != null) {
+                console.teamSchemas().load(proto);
+                options = options.withTeamFiles(console.teamSchemas().teamFiles());
+            }
+            recorder = console.recordings().start(file, options);
+        } catch (RecordingException e) {
+            console.close();
+            err.println("touchline record: " + e.getMessage());
+            return 2;
+        } catch (IOException | RuntimeException e) {
+            console.close();
+            throw e;
+        }
         CountDownLatch stop = new CountDownLatch(1);
         CountDownLatch finished = new CountDownLatch(1);
         // The JVM exits as soon as its shutdown hooks return, killing the thread that writes
@@ -122,23 +131,23 @@ public final class RecordCommand implements Callable<Integer> {
         }, "touchline-record-stop");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
-            return record(file, options, teamFiles, recorder, stop, hook, stdout, err);
+            return record(file, console, recorder, stop, hook, stdout, err);
         } finally {
             finished.countDown();
         }
     }
 
-    private int record(Path file, EnvelopeWriter.Options options, List<FileDescriptor> teamFiles, Recorder recorder,
-                       CountDownLatch stop, Thread hook, PrintWriter stdout, PrintWriter err) throws Exception {
-        AutoCloseable source;
+    private int record(Path file, Console console, Recorder recorder, CountDownLatch stop, Thread hook,
+                       PrintWriter stdout, PrintWriter err) throws Exception {
         try {
-            source = sources.apply(udp.config(), teamFiles).start(recorder);
+            console.start();
         } catch (Exception e) {
-            recorder.close();
+            console.close();
             err.println("touchline record: cannot listen on port " + udp.port + ": " + e.getMessage());
             return 1;
         }
-        int port = source instanceof Console c ? c.port() : udp.port;
+        started.accept(console.field());
+        int port = console.field().port();
         stdout.println("recording UDP port " + port + " to " + file.toAbsolutePath() + " (Ctrl+C to stop)");
         stdout.flush();
         long deadline = seconds > 0 ? System.nanoTime() + seconds * 1_000_000_000L : Long.MAX_VALUE;
@@ -151,11 +160,7 @@ public final class RecordCommand implements Callable<Integer> {
                 break;
             }
         }
-        try {
-            source.close();
-        } finally {
-            recorder.close();
-        }
+        console.close(); // the recording is finished (summary, footer) before the console stops listening
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {

@@ -4,6 +4,7 @@ import picocli.CommandLine.Option;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.app.bridges.BridgeAddress;
+import touchline.app.bridges.RosBridges;
 import touchline.app.bridges.ServerKind;
 import touchline.app.bridges.TeamFile;
 import touchline.transport.UdpConfig;
@@ -93,7 +94,7 @@ final class RemoteOptions {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)));
         try {
             console.start();
-            console.viewRemote(a.url(), tls());
+            console.remote().view(a.url(), tls());
             return console;
         } catch (IllegalArgumentException e) {
             console.close();
@@ -102,7 +103,7 @@ final class RemoteOptions {
     }
 
     /** Connects the console to every bridge named (not when it views a Touchline); a bad URL or team file stops the start. */
-    void connectBridges(Console console) throws InterruptedException, StartFailure {
+    void connectBridges(RosBridges bridges) throws InterruptedException, StartFailure {
         if (remote()) {
             return;
         }
@@ -111,10 +112,10 @@ final class RemoteOptions {
             if (teamRead == null) {
                 check();
             }
-            console.bridges().connect(teamRead, tls);
+            bridges.connect(teamRead, tls);
         }
         for (String c : connect) {
-            console.bridges().connect(address(c), tls);
+            bridges.connect(address(c), tls);
         }
     }
 }

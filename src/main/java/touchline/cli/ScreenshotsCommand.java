@@ -62,23 +62,23 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         Files.createDirectories(out);
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-             SimulatedTeam team = SimulatedTeam.start(3, console.port(), List.of())) {
+             SimulatedTeam team = SimulatedTeam.start(3, console.field().port(), List.of())) {
             FxThread.startToolkit();
             Path layouts = Files.createTempDirectory("touchline-layouts");
             ConsoleWindow window = FxThread.call(() -> new ConsoleWindow(console,
                     new UiSettings(layouts, !light, true)).show(new Stage()));
-            if (!FxThread.await(() -> console.robots().robots().size() >= 3
-                    && console.options().options(1).listReceived(), 20_000)) {
+            if (!FxThread.await(() -> console.field().robots().robots().size() >= 3
+                    && console.field().options().options(1).listReceived(), 20_000)) {
                 System.err.println("the simulated robots did not show up");
                 return 1;
             }
             for (String option : SHOTS.values()) {
                 if (!option.isEmpty()) {
-                    console.setOption(1, option, true);
+                    console.optionSwitches().set(1, option, true);
                 }
             }
             FxThread.await(() -> SHOTS.values().stream().filter(o -> !o.isEmpty()).allMatch(o ->
-                    console.options().options(1).option(o).map(OptionState::streaming).orElse(false)), 10_000);
+                    console.field().options().options(1).option(o).map(OptionState::streaming).orElse(false)), 10_000);
             Thread.sleep(3000); // let plots and logs fill
             if (only != null) {
                 shootOnly(window);
@@ -89,8 +89,8 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
             for (Map.Entry<String, String> s : SHOTS.entrySet()) {
                 shootView(window, s.getKey(), s.getValue());
             }
-            shootNao(console, window);
-            shootGameController(console, window);
+            shootNao(console.field(), window);
+            shootGameController(console.field(), console.referee(), window);
             FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                     List.of(new LayoutNode.Entry("robots", ""))))));
             FxThread.run(() -> window.quickOpen());
@@ -166,7 +166,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
     }
 
     /** Connects the NAO tab to a simulated NAO (touchline-nao-sim), discovers methods, shows the camera. */
-    private void shootNao(Console console, ConsoleWindow window) throws Exception {
+    private void shootNao(touchline.app.LiveField field, ConsoleWindow window) throws Exception {
         RobotSideBinaries binaries = new RobotSideBinaries();
         if (binaries.missing("touchline-nao-sim").isPresent()) {
             System.err.println("no NAO screenshot: " + binaries.missing("touchline-nao-sim").get());
@@ -176,7 +176,7 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
         // the NAO tab as every user sees it: the link encrypted with CURVE keys (made for the shot)
         java.nio.file.Path keys = Files.createTempDirectory("touchline-shot-keys");
         new touchline.security.KeyDir(keys).create(true, new java.security.SecureRandom(),
-                java.time.Instant.EPOCH.plus(console.clock().nowMicros(), java.time.temporal.ChronoUnit.MICROS));
+                java.time.Instant.EPOCH.plus(field.clock().nowMicros(), java.time.temporal.ChronoUnit.MICROS));
         Process nao = new ProcessBuilder(sim.toString(), "--rpc-port", "0", "--cam-port", "0", "--curve-secret",
                 keys.resolve("nao-server.secret").toString(), "--curve-clients", keys.resolve("console.public").toString())
                 .redirectErrorStream(true).start();
@@ -215,8 +215,8 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
     }
 
     /** Referees the simulated team for a moment (the robots follow) and shows the GameController tab. */
-    private void shootGameController(Console console, ConsoleWindow window) throws Exception {
-        List<java.net.InetSocketAddress> robots = console.robots().robots().stream()
+    private void shootGameController(touchline.app.LiveField field, touchline.app.Referee referee, ConsoleWindow window) throws Exception {
+        List<java.net.InetSocketAddress> robots = field.robots().robots().stream()
                 .map(touchline.model.RobotSnapshot::address).filter(java.util.Objects::nonNull).toList();
         touchline.transport.gamecontroller.GcConfig defaults = touchline.transport.gamecontroller.GcConfig.defaults(
                 touchline.transport.gamecontroller.GcProfile.HL12);
@@ -224,18 +224,18 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
                 touchline.transport.gamecontroller.GcProfile.HL12, false, robots, null,
                 new java.net.InetSocketAddress("127.0.0.1", 0), null, defaults.intervalMs(), true); // as the tab does
         touchline.game.Game game = new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0,
-                console.gameClock());
-        console.startGameController(game, config);
-        game.perform(new touchline.game.ToReady());
-        game.perform(new touchline.game.ToSet());
-        game.perform(new touchline.game.ToPlaying());
+                referee.gameClock());
+        touchline.app.game.GameRuntime owner = referee.start(game, config).runtime();
+        owner.perform(new touchline.game.ToReady());
+        owner.perform(new touchline.game.ToSet());
+        owner.perform(new touchline.game.ToPlaying());
         FxThread.run(() -> window.shell().restore(List.of(new LayoutNode.Leaf(0,
                 List.of(new LayoutNode.Entry("gamecontroller", ""))))));
         Thread.sleep(2500); // the robots hear PLAYING and report it; match mode shows its notice
         shoot(window, "gamecontroller");
-        game.perform(new touchline.game.ToFinished()); // robots hear FINISHED: the console may talk again
+        owner.perform(new touchline.game.ToFinished()); // robots hear FINISHED: the console may talk again
         Thread.sleep(1500);
-        console.stopGameController();
+        referee.stop();
     }
 
     /** Shows a keep-alive decoded and as hex in the network console's detail panes. */

@@ -6,13 +6,11 @@ import picocli.CommandLine.Option;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.record.RecordingException;
-import touchline.record.SchemaSet;
 import touchline.serve.AccessToken;
 import touchline.serve.AllowedOrigins;
 import touchline.serve.FoxgloveServer;
 import touchline.serve.ServeConfig;
 import touchline.serve.ServeStats;
-import touchline.serve.Serving;
 import touchline.serve.ViewerInfo;
 import touchline.transport.UdpConfig;
 
@@ -123,15 +121,6 @@ final class ServeCommand implements Callable<Integer> {
         if (tlsCert != null) {
             config = config.withTls(tlsCert, tlsKey);
         }
-        SchemaSet schemas = new SchemaSet();
-        if (proto != null) {
-            try {
-                schemas.load(proto);
-            } catch (RecordingException e) {
-                err.println("touchline serve: " + e.getMessage());
-                return 2;
-            }
-        }
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
         ConsoleConfig consoleConfig;
@@ -147,11 +136,18 @@ final class ServeCommand implements Callable<Integer> {
             return e.exitCode();
         }
         try (Console console = new Console(consoleConfig)) {
-            console.loadTeamSchemas(schemas.teamFiles()).forEach(r -> err.println("touchline serve: " + r));
-            Serving serving;
+            if (proto != null) {
+                try {
+                    console.teamSchemas().load(proto).refusals().forEach(r -> err.println("touchline serve: " + r));
+                } catch (RecordingException e) {
+                    err.println("touchline serve: " + e.getMessage());
+                    return 2;
+                }
+            }
+            FoxgloveServer server; // stopped first when the console closes
             try {
-                serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
-                        console.servedStateChannels(touchline.serve.JsonChannel::new));
+                // a replay never acts on the field: viewers switch options only on a live one (`options --connect`)
+                server = replayFile == null ? console.serving().start(config) : console.serving().startReplay(config);
             } catch (IllegalArgumentException e) {
                 err.println("touchline serve: " + e.getMessage());
                 return 2;
@@ -162,52 +158,46 @@ final class ServeCommand implements Callable<Integer> {
                 err.println("touchline serve: cannot serve on " + bind + ":" + port + ": " + e.getMessage());
                 return 1;
             }
-            FoxgloveServer server = serving.server();
-            if (replayFile == null) { // a replay never acts on the field
-                server.offerOptionSwitches(console::switchOptionAsAsked); // `touchline options --connect`
+            try {
+                console.start();
+            } catch (Exception e) { // Netty rethrows the native bind error undeclared
+                if (StartFailure.addressInUse(e)) {
+                    return say(err, StartFailure.portInUse("UDP", robotsPort, "robots", robotsBind, "--robots-port"));
+                }
+                throw e;
             }
-            try (serving) {
+            new FirstListenLines(err, "serve").follow(console.referee().matchMode());
+            if (replayFile != null) {
+                console.field().setLiveListening(false);
                 try {
-                    console.start();
-                } catch (Exception e) { // Netty rethrows the native bind error undeclared
-                    if (StartFailure.addressInUse(e)) {
-                        return say(err, StartFailure.portInUse("UDP", robotsPort, "robots", robotsBind, "--robots-port"));
-                    }
-                    throw e;
+                    var replay = console.replays().open(replayFile);
+                    replay.setSpeed(speed);
+                    replay.play();
+                    replay.problems().forEach(p -> err.println("touchline serve: " + replayFile + ": " + p));
+                } catch (RecordingException e) {
+                    err.println("touchline serve: " + e.getMessage());
+                    return 2;
                 }
-                new FirstListenLines(err, "serve").follow(console.matchMode());
-                if (replayFile != null) {
-                    console.setLiveListening(false);
-                    try {
-                        var replay = console.openReplay(replayFile);
-                        replay.setSpeed(speed);
-                        replay.play();
-                        replay.problems().forEach(p -> err.println("touchline serve: " + replayFile + ": " + p));
-                    } catch (RecordingException e) {
-                        err.println("touchline serve: " + e.getMessage());
-                        return 2;
-                    }
-                    out.println("serving the recording " + replayFile.toAbsolutePath() + " at speed " + speed);
-                } else {
-                    if (record != null) {
-                        console.startRecording(record);
-                    }
-                    try {
-                        budget.guard(console, robotsBind); // served as /team/budget with --team
-                    } catch (StartFailure e) {
-                        err.println("touchline serve: " + e.getMessage());
-                        return e.exitCode();
-                    }
-                    out.println("hearing robots on UDP port " + console.port()
-                            + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
+                out.println("serving the recording " + replayFile.toAbsolutePath() + " at speed " + speed);
+            } else {
+                if (record != null) {
+                    console.recordings().start(record);
                 }
-                out.println("serving Foxglove WebSocket (Foxglove/Lichtblick: Open connection → Foxglove WebSocket):");
-                for (String url : server.urls()) {
-                    out.println("  " + url);
+                try {
+                    budget.guard(console.teamBudget(), robotsBind); // served as /team/budget with --team
+                } catch (StartFailure e) {
+                    err.println("touchline serve: " + e.getMessage());
+                    return e.exitCode();
                 }
-                out.flush();
-                watch(server, stop, out);
+                out.println("hearing robots on UDP port " + console.field().port()
+                        + (record == null ? "" : ", recording to " + record.toAbsolutePath()));
             }
+            out.println("serving Foxglove WebSocket (Foxglove/Lichtblick: Open connection → Foxglove WebSocket):");
+            for (String url : server.urls()) {
+                out.println("  " + url);
+            }
+            out.flush();
+            watch(server, stop, out);
         }
         return 0;
     }

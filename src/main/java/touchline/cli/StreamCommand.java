@@ -39,12 +39,12 @@ final class StreamCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         try (Console console = udp.startConsole()) {
-            Optional<RobotSnapshot> seen = console.waitForRobot(robot, java.time.Duration.ofSeconds(timeoutSeconds));
+            Optional<RobotSnapshot> seen = console.field().waitForRobot(robot, java.time.Duration.ofSeconds(timeoutSeconds));
             if (seen.isEmpty()) {
                 System.err.println("robot " + robot + " was not seen within " + timeoutSeconds + " s");
                 return 2;
             }
-            ReliableSession session = console.openStream(seen.get().address());
+            ReliableSession session = console.field().openStream(seen.get().address());
             session.onReceive(p -> {
                 System.out.write(p, 0, p.length);
                 System.out.flush();

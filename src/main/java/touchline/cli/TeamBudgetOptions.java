@@ -1,7 +1,7 @@
 package touchline.cli;
 
 import picocli.CommandLine.Option;
-import touchline.app.Console;
+import touchline.app.TeamBudget;
 import touchline.model.RuleProfile;
 import touchline.model.RuleProfileException;
 import touchline.model.TeamMessageBudget;
@@ -25,8 +25,8 @@ final class TeamBudgetOptions {
             description = "port the team's messages arrive on (default 10000 + team)")
     int teamPort;
 
-    /** Starts the guard on {@code console} when a team is given; a profile that cannot be read ends the command. */
-    Optional<TeamMessageBudget> guard(Console console, String bind) throws StartFailure {
+    /** Starts {@code guard} when a team is given; a profile that cannot be read ends the command. */
+    Optional<TeamMessageBudget> guard(TeamBudget guard, String bind) throws StartFailure {
         if (team <= 0) {
             return Optional.empty();
         }
@@ -36,9 +36,9 @@ final class TeamBudgetOptions {
         } catch (RuleProfileException e) {
             throw StartFailure.badInput(e.getMessage());
         }
-        int port = teamPort > 0 ? teamPort : console.defaultTeamMessagePort(team);
+        int port = teamPort > 0 ? teamPort : guard.defaultPort(team);
         try {
-            return Optional.of(console.guardTeamMessages(rules, team, new InetSocketAddress(bind, port)));
+            return Optional.of(guard.guard(rules, team, new InetSocketAddress(bind, port)));
         } catch (IOException e) {
             throw StartFailure.teamPortInUse(bind, port);
         }

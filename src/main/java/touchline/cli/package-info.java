@@ -4,6 +4,8 @@
  * {@code KeysCommand}, {@code ConsoleCommand} which opens the window, ...), their shared options ({@code
  * UdpOptions}, {@code KeyChoice}, {@code TeamBudgetOptions}) and one text line per envelope ({@code
  * EnvelopeLine}). A command that cannot start says why in one sentence ({@code StartFailure}).
+ * A command that runs a console makes it (it is its process's entry point) and hands its helpers the services
+ * they need; {@code gc} uses a {@code Referee} without a console.
  * <p>
  * May depend on: every layer below, and ui for the commands that open the window; nothing uses it.
  */

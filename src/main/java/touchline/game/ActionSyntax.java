@@ -60,7 +60,7 @@ public final class ActionSyntax {
                 case "goal" -> args(w, 1, new Goal(num(w[1])));
                 case "kickoff" -> args(w, 1, new SetKickOff(num(w[1])));
                 case "penalty", "penalise", "penalize" -> penalty(w);
-                case "unpenalise", "unpenalize" -> args(w, 2, new Unpenalise(num(w[1]), num(w[2])));
+                case "unpenalise", "unpenalize" -> args(w, 2, new Unpenalize(num(w[1]), num(w[2])));
                 case "card" -> card(w);
                 case "substitute" -> args(w, 3, new Substitute(num(w[1]), num(w[2]), num(w[3])));
                 case "goalkeeper" -> args(w, 2, new SetGoalkeeper(num(w[1]), num(w[2])));
@@ -101,7 +101,7 @@ public final class ActionSyntax {
         if (p == null || p == Penalty.NONE || p == Penalty.SUBSTITUTE) {
             return Parsed.error("unknown penalty '" + w[3] + "'");
         }
-        return args(w, 3, new Penalise(num(w[1]), num(w[2]), p));
+        return args(w, 3, new Penalize(num(w[1]), num(w[2]), p));
     }
 
     private static Parsed card(String[] w) {

@@ -3,23 +3,20 @@ package touchline.game;
 import touchline.protocol.gamecontroller.GameControlData;
 
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
- * One refereed game: the {@link GameState}, the clock it is read against and the undo history.
- * All access is serialised, so the UI thread, the CLI, the sender and the return-packet receiver
- * may call it concurrently. Listeners hear about every change (action, undo, or a change that
- * happened by itself in {@link #advance()}) so the sender can publish it at once.
+ * One refereed game under the Humanoid League (or SPL) rules: the one {@link RefereeEngine} with
+ * the {@link HlLeague}'s way of running time, over a {@link GameState}.
+ * In the console its one owner is {@code app.game.GameRuntime}, which calls every method on its
+ * thread; access is serialised all the same. Listeners hear about every change (action, undo, or
+ * a change that happened by itself in {@link #advance()}) on the thread that made it.
  */
 public final class Game implements RefereedGame {
 
     /** How many actions can be undone. */
-    public static final int UNDO_DEPTH = 50;
+    public static final int UNDO_DEPTH = RefereeEngine.UNDO_DEPTH;
 
-    private final GameClock clock;
-    private final UndoHistory<GameState> history = new UndoHistory<>(UNDO_DEPTH);
-    private final List<Runnable> listeners = new CopyOnWriteArrayList<>();
-    private GameState state;
+    private final RefereeEngine<GameState> engine;
 
     /**
      * @param params  league rules
@@ -33,120 +30,66 @@ public final class Game implements RefereedGame {
         if (teamA == teamB) {
             throw new IllegalArgumentException("the two teams need different numbers");
         }
-        this.clock = clock;
-        this.state = new GameState(params, teamA, colourA, teamB, colourB, clock.millis());
+        this.engine = new RefereeEngine<>(new HlLeague(),
+                new GameState(params, teamA, colourA, teamB, colourB, clock.millis()), clock);
     }
 
     @Override
     public void addListener(Runnable onChange) {
-        listeners.add(onChange);
+        engine.addListener(onChange);
     }
 
     @Override
     public long now() {
-        return clock.millis();
+        return engine.now();
     }
 
     /** Lets time-driven changes happen (then checks legality), applies the action, notifies. */
     public Outcome perform(Action action) {
-        Outcome outcome;
-        synchronized (this) {
-            long now = clock.millis();
-            state.advance(now);
-            if (!action.isLegal(state)) {
-                return new Outcome(false, "illegal now: " + action.describe() + " (state " + describeLocked(now) + ")");
-            }
-            history.push(action.describe(), state.copy());
-            action.apply(state, now);
-            state.syncClock(now);
-            outcome = new Outcome(true, action.describe());
-        }
-        notifyListeners();
-        return outcome;
+        return engine.perform(action);
     }
 
     /** Applies changes that happen as time passes (penalties ending, half-time switch). */
     @Override
     public boolean advance() {
-        boolean changed;
-        synchronized (this) {
-            long now = clock.millis();
-            changed = state.advance(now);
-            state.syncClock(now);
-        }
-        if (changed) {
-            notifyListeners();
-        }
-        return changed;
+        return engine.advance();
     }
 
     /** Reverts the last applied action (timers keep running as if it had never happened). */
     @Override
     public Outcome undo() {
-        UndoHistory.Done<GameState> done;
-        synchronized (this) {
-            done = history.pop();
-            if (done == null) {
-                return new Outcome(false, "nothing to undo");
-            }
-            state = done.before();
-        }
-        notifyListeners();
-        return new Outcome(true, "undid " + done.description());
+        return engine.undo();
     }
 
     /** Descriptions of the undoable actions, most recent first. */
-    public synchronized List<String> undoList() {
-        return history.descriptions();
+    @Override
+    public List<String> undoList() {
+        return engine.undoList();
     }
 
-    public synchronized boolean isLegal(Action action) {
-        return action.isLegal(state);
+    public boolean isLegal(Action action) {
+        return engine.read((s, now) -> action.isLegal(s));
     }
 
     @Override
-    public synchronized boolean hasTeam(int number) {
-        return state.team(number) != null;
+    public boolean hasTeam(int number) {
+        return engine.read((s, now) -> s.team(number) != null);
     }
 
     /** A copy of the current state, safe to read on any thread. */
-    public synchronized GameState snapshot() {
-        return state.copy();
+    public GameState snapshot() {
+        return engine.read((s, now) -> s.copy());
     }
 
     /** The packet content right now (packetNumber 0). */
     @Override
-    public synchronized GameControlData controlData() {
-        return state.toControlData(clock.millis());
+    public GameControlData controlData() {
+        return engine.read(GameState::toControlData);
     }
 
     /** One line such as {@code PLAYING 1st half, 512 s, kick-off 7, 1:0}. */
     @Override
-    public synchronized String describe() {
-        return describeLocked(clock.millis());
-    }
-
-    private String describeLocked(long now) {
-        GameState s = state;
-        StringBuilder b = new StringBuilder(s.state.name());
-        if (s.secondary != SecondaryState.NORMAL) {
-            b.append('/').append(s.secondary.name());
-            if (s.secondary.isSetPlay()) {
-                b.append(" team ").append(s.setPlayTeam).append(" mode ").append(s.setPlayMode);
-            }
-        }
-        b.append(s.firstHalf ? " 1st half" : " 2nd half");
-        b.append(", ").append(s.secsRemaining(now)).append(" s left");
-        b.append(", secondary ").append(s.secondaryTime(now)).append(" s");
-        b.append(", kick-off ").append(s.isDropBall() ? "dropped ball" : String.valueOf(s.kickOffTeam));
-        b.append(", ").append(s.teams[0].number).append(' ').append(s.teams[0].score).append(':')
-                .append(s.teams[1].score).append(' ').append(s.teams[1].number);
-        return b.toString();
-    }
-
-    private void notifyListeners() {
-        for (Runnable r : listeners) {
-            r.run();
-        }
+    public String describe() {
+        return engine.read(GameState::describe);
     }
 }

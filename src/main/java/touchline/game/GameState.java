@@ -269,4 +269,23 @@ public final class GameState {
                 kickOffTeam, secondary.code(), setPlayTeam(), setPlayMode(), 0, 0xFFFF, secsRemaining(nowMs),
                 secondaryTime(nowMs), wireTeams);
     }
+
+    /** One line such as {@code PLAYING 1st half, 512 s left, ..., kick-off 7, 13 1:0 7} at {@code now}. */
+    public String describe(long now) {
+        GameState s = this;
+        StringBuilder b = new StringBuilder(s.state.name());
+        if (s.secondary != SecondaryState.NORMAL) {
+            b.append('/').append(s.secondary.name());
+            if (s.secondary.isSetPlay()) {
+                b.append(" team ").append(s.setPlayTeam).append(" mode ").append(s.setPlayMode);
+            }
+        }
+        b.append(s.firstHalf ? " 1st half" : " 2nd half");
+        b.append(", ").append(s.secsRemaining(now)).append(" s left");
+        b.append(", secondary ").append(s.secondaryTime(now)).append(" s");
+        b.append(", kick-off ").append(s.isDropBall() ? "dropped ball" : String.valueOf(s.kickOffTeam));
+        b.append(", ").append(s.teams[0].number).append(' ').append(s.teams[0].score).append(':')
+                .append(s.teams[1].score).append(' ').append(s.teams[1].number);
+        return b.toString();
+    }
 }

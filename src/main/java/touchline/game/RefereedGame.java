@@ -5,7 +5,9 @@ import touchline.protocol.gamecontroller.GameControlData;
 /**
  * What the embedded GameController's sender and receivers need of a refereed game, whatever
  * league's rules it follows ({@link Game} for the Humanoid League, {@code hsl.HslGame} for the
- * 2026 Humanoid Soccer League). Implementations serialise access themselves.
+ * 2026 Humanoid Soccer League). In the console one thread owns it ({@code app.game.GameRuntime}):
+ * only that thread changes it; the others read the snapshots the owner publishes.
+ * Implementations still serialise access, so a test or a tool may read one directly.
  */
 public interface RefereedGame {
 
@@ -29,6 +31,9 @@ public interface RefereedGame {
     boolean hasTeam(int number);
 
     Outcome undo();
+
+    /** Descriptions of the undoable actions, most recent first. */
+    java.util.List<String> undoList();
 
     /** One line for logs and the CLI's status. */
     String describe();

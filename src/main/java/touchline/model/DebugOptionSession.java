@@ -28,9 +28,10 @@ import java.util.Set;
  * its user wanted and then switched off ({@link #RELEASE_ATTEMPTS} tries while data still
  * comes). An option streaming for another console of the team (or switched on on the robot)
  * is never touched, so two consoles of one team do not switch each other's options off.
- * Replayed robots' option lists and data are kept apart and only shown: nothing a replay
- * plays ever makes this session send (a replayed robot is not on the field, and a live robot
- * with its number must not hear about it).
+ * It subscribes to the live stream only: a replay's option lists and data are shown by
+ * {@link #replayed()}, a {@link ShownOptions} on the replay stream, so nothing a replay plays
+ * ever makes this session send (a replayed robot is not on the field, and a live robot with
+ * its number must not hear about it).
  */
 public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
@@ -44,9 +45,8 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
     private final MessageCodec codec;
     private final touchline.protocol.DebugData debugData;
     private final MicrosClock clock;
-    private final MicrosClock replayClock;
+    private final ShownOptions replayed;
     private final Map<Integer, PerRobot> robots = new HashMap<>();
-    private final Map<Integer, PerRobot> replayed = new HashMap<>();
     private final Utf8Names names = new Utf8Names();
     private long version;
 
@@ -92,16 +92,17 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         this.codec = codec;
         this.debugData = new touchline.protocol.DebugData(codec.kinds());
         this.clock = clock;
-        this.replayClock = replayClock;
+        this.replayed = new ShownOptions(codec.kinds(), replayClock);
+    }
+
+    /** The replayed robots' options, only shown: subscribe it to the replay stream. */
+    public ShownOptions replayed() {
+        return replayed;
     }
 
     @Override
     public void accept(Envelope e) {
         if (e.direction() != Direction.IN || e.robotId() < 0 || !(e.message() instanceof Fumanoid.Message m)) {
-            return;
-        }
-        if (e.replayed()) {
-            showReplayed(e, m);
             return;
         }
         Fumanoid.DebugOptionList list = e.extension(Fumanoid.debugOptionList);
@@ -117,27 +118,9 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         }
     }
 
-    /** Keeps a replayed robot's option list and data times to show them; never sends anything. */
-    private void showReplayed(Envelope e, Fumanoid.Message m) {
-        Fumanoid.DebugOptionList list = e.extension(Fumanoid.debugOptionList);
-        String option = list == null ? optionNameOf(e, m) : null;
-        synchronized (this) {
-            PerRobot r = replayed.computeIfAbsent(e.robotId(), k -> new PerRobot());
-            if (list != null) {
-                r.list.clear();
-                list.getOptionsList().forEach(o -> r.list.put(o.getName(), o));
-                r.listReceived = true;
-                version++;
-            } else if (option != null) {
-                r.dataCame(option, e.timeMicros());
-            }
-        }
-    }
-
     /** Forgets what replayed robots showed (the replay closed); live robots are untouched. */
-    public synchronized void forgetReplayed() {
-        replayed.clear();
-        version++;
+    public void forgetReplayed() {
+        replayed.forget();
     }
 
     /** The {@code option} field every data message carries (teams' own types too, by convention). */
@@ -282,6 +265,10 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
                 if (!r.listReceived) {
                     continue;
                 }
+                if (!r.lastHold.isEmpty() && nothingWaits(r, now)) {
+                    r.lastHold = ""; // e.g. the options stream again after play: the note would go stale
+                    version++;
+                }
                 for (String name : r.list.keySet()) {
                     boolean wanted = r.wanted.contains(name);
                     boolean streaming = streaming(r, name, now);
@@ -306,6 +293,19 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         }
         needList.forEach(this::requestList);
         retries.forEach((id, options) -> options.forEach((name, on) -> command(id, name, on)));
+    }
+
+    /** Whether every wanted option of the robot streams and none it switched off is still being released. */
+    private boolean nothingWaits(PerRobot r, long now) {
+        if (!r.releasing.isEmpty()) {
+            return false;
+        }
+        for (String name : r.wanted) {
+            if (r.list.containsKey(name) && !streaming(r, name, now)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private boolean streaming(PerRobot r, String name, long now) {
@@ -350,11 +350,14 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
     /** A live or replayed robot's options (a replayed robot's are only shown: nobody can switch them). */
     public synchronized RobotOptions options(int robotId, Origin origin) {
-        PerRobot r = (origin == Origin.REPLAY ? replayed : robots).get(robotId);
+        if (origin == Origin.REPLAY) {
+            return replayed.options(robotId);
+        }
+        PerRobot r = robots.get(robotId);
         if (r == null) {
             return new RobotOptions(robotId, false, 0, List.of(), "");
         }
-        long now = origin == Origin.REPLAY ? replayClock.nowMicros() : clock.nowMicros();
+        long now = clock.nowMicros();
         List<OptionState> states = new ArrayList<>();
         for (Fumanoid.DebugOption o : r.list.values()) {
             states.add(new OptionState(o.getName(), o.getDescription(), o.getKind(), r.wanted.contains(o.getName()),
@@ -368,7 +371,12 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         return r == null ? Set.of() : Set.copyOf(r.wanted);
     }
 
-    public synchronized long version() {
-        return version;
+    /** Grows with every change of the live robots' options or the replayed ones' lists. */
+    public long version() {
+        long own;
+        synchronized (this) {
+            own = version;
+        }
+        return own + replayed.version();
     }
 }

@@ -18,6 +18,7 @@ import java.util.TreeMap;
  * profile allows (HSL 2026: one a second per robot; the lab's 200 ms keep-alive is five times
  * that). A robot is in play while its own status says READY, SET or PLAYING; its rate is
  * measured over the last ten seconds, so a single early or late packet does not flag it.
+ * Subscribed to the live stream only: a replay's packets are last match's.
  */
 public final class DebugRateGuard implements EnvelopeSink {
 
@@ -46,7 +47,7 @@ public final class DebugRateGuard implements EnvelopeSink {
 
     @Override
     public synchronized void accept(Envelope e) {
-        if (e.replayed() || e.channel() != Channel.FUMANOID || e.direction() != Direction.IN
+        if (e.channel() != Channel.FUMANOID || e.direction() != Direction.IN
                 || e.robotId() == Envelope.NO_ROBOT || e.isMalformed()) {
             return;
         }

@@ -18,13 +18,13 @@ import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
  * Every robot ever seen (one packet is enough), online while its keep-alives arrive, with
- * per-robot counters; and every sender address with its malformed datagrams. Fed by the
- * Envelope stream on the network thread, read by views and commands from any thread.
- * Live and replayed robots are kept apart: robot 3 of a recording is not robot 3 on the
- * field, is online by the replay's clock, and never tells the presence listeners (which
- * talk to live robots) anything.
+ * per-robot counters; and every sender address with its malformed datagrams. One side per
+ * stream: {@link #live()} is subscribed to the live stream, {@link #replay()} to the replay
+ * stream, each fed on its stream's thread; views and commands read both from any thread.
+ * So robot 3 of a recording is not robot 3 on the field: it is online by the replay's clock,
+ * and never tells the presence listeners (which talk to live robots) anything.
  */
-public final class RobotRegistry implements touchline.transport.EnvelopeSink {
+public final class RobotRegistry {
 
     /**
      * Keep-alives come every 200 ms in the lab but only once a second during a game (the HSL
@@ -38,10 +38,10 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
     private final MicrosClock clock;
     private final MicrosClock replayClock;
     private final long offlineAfterMicros;
-    private final Map<Integer, Robot> robots = new TreeMap<>();
-    private final Map<Integer, Robot> replayed = new TreeMap<>();
-    private final Map<InetSocketAddress, Source> sources = new LinkedHashMap<>();
-    private final Map<InetSocketAddress, Source> replayedSources = new LinkedHashMap<>();
+    private final Side live;
+    private final Side replay;
+    private final Map<Integer, Robot> robots;
+    private final Map<Integer, Robot> replayed;
     private final List<RobotPresence> presence = new CopyOnWriteArrayList<>();
     private final List<String> notes = new ArrayList<>();
     private long version;
@@ -67,64 +67,88 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
         this.clock = clock;
         this.replayClock = replayClock;
         this.offlineAfterMicros = offlineAfterMicros;
+        this.live = new Side(true);
+        this.replay = new Side(false);
+        this.robots = live.robots;
+        this.replayed = replay.robots;
+    }
+
+    /** The live robots' side: subscribe it to the live stream. */
+    public touchline.transport.EnvelopeSink live() {
+        return live;
+    }
+
+    /** The replayed robots' side: subscribe it to the replay stream. */
+    public touchline.transport.EnvelopeSink replay() {
+        return replay;
     }
 
     public void addPresenceListener(RobotPresence listener) {
         presence.add(listener);
     }
 
-    @Override
-    public void accept(Envelope e) {
-        if (e.direction() != Direction.IN) {
-            return;
+    /** The robots and senders of one stream; the registry's lock guards both sides. */
+    private final class Side implements touchline.transport.EnvelopeSink {
+        final Map<Integer, Robot> robots = new TreeMap<>();
+        final Map<InetSocketAddress, Source> sources = new LinkedHashMap<>();
+        /** Only live robots coming online are told to the presence listeners. */
+        private final boolean tellsPresence;
+
+        Side(boolean tellsPresence) {
+            this.tellsPresence = tellsPresence;
         }
-        int cameOnline = Envelope.NO_ROBOT;
-        boolean first = false;
-        synchronized (this) {
-            Source source = null;
-            if (e.peer() != null) {
-                source = (e.replayed() ? replayedSources : sources).computeIfAbsent(e.peer(), a -> new Source());
-                source.packets++;
-                source.lastSeen = e.timeMicros();
+
+        @Override
+        public void accept(Envelope e) {
+            if (e.direction() != Direction.IN) {
+                return;
             }
-            if (e.isMalformed() && source != null) {
-                source.malformed++;
-                source.lastError = e.error();
-                attributeMalformed(e.peer(), e.replayed() ? replayed : robots);
+            int cameOnline = Envelope.NO_ROBOT;
+            boolean first = false;
+            synchronized (RobotRegistry.this) {
+                Source source = null;
+                if (e.peer() != null) {
+                    source = sources.computeIfAbsent(e.peer(), a -> new Source());
+                    source.packets++;
+                    source.lastSeen = e.timeMicros();
+                }
+                if (e.isMalformed() && source != null) {
+                    source.malformed++;
+                    source.lastError = e.error();
+                    attributeMalformed(e.peer(), robots);
+                }
+                if (e.authenticity() == Authenticity.FORGED && e.robotId() >= 0 && e.robotId() <= 255) {
+                    // shown on the robot it claims to be (ids beyond one byte are no robot's), never taken as its data
+                    Robot claimed = robots.computeIfAbsent(e.robotId(), id -> new Robot(id, e.origin(), e.timeMicros()));
+                    if (claimed.forgery(e)) {
+                        note(claimed.forged + " forged datagram(s) claiming robot " + e.robotId() + "; last from "
+                                + claimed.lastForgery);
+                    }
+                }
+                if (e.robotId() >= 0 && !e.isMalformed()) {
+                    Robot robot = robots.get(e.robotId());
+                    if (robot == null) {
+                        robot = new Robot(e.robotId(), e.origin(), e.timeMicros());
+                        robots.put(e.robotId(), robot);
+                        first = true;
+                    }
+                    robot.bridged |= e.channel() == touchline.transport.Channel.BRIDGE;
+                    String note = robot.take(e, rosReadings);
+                    if (note != null) {
+                        note(note);
+                    }
+                    if (!robot.online) {
+                        robot.online = true;
+                        // a bridged robot is no UDP robot: nothing is asked of it when it comes online
+                        cameOnline = tellsPresence && !robot.bridged ? robot.id : Envelope.NO_ROBOT;
+                    }
+                }
+                version++;
             }
-            if (e.authenticity() == Authenticity.FORGED && e.robotId() >= 0 && e.robotId() <= 255) {
-                // shown on the robot it claims to be (ids beyond one byte are no robot's), never taken as its data
-                Map<Integer, Robot> of = e.replayed() ? replayed : robots;
-                Robot claimed = of.computeIfAbsent(e.robotId(), id -> new Robot(id, e.origin(), e.timeMicros()));
-                if (claimed.forgery(e)) {
-                    note(claimed.forged + " forged datagram(s) claiming robot " + e.robotId() + "; last from "
-                            + claimed.lastForgery);
+            if (cameOnline != Envelope.NO_ROBOT) {
+                for (RobotPresence p : presence) {
+                    p.cameOnline(cameOnline, first);
                 }
-            }
-            if (e.robotId() >= 0 && !e.isMalformed()) {
-                Map<Integer, Robot> of = e.replayed() ? replayed : robots;
-                Robot robot = of.get(e.robotId());
-                if (robot == null) {
-                    robot = new Robot(e.robotId(), e.origin(), e.timeMicros());
-                    of.put(e.robotId(), robot);
-                    first = true;
-                }
-                robot.bridged |= e.channel() == touchline.transport.Channel.BRIDGE;
-                String note = robot.take(e, rosReadings);
-                if (note != null) {
-                    note(note);
-                }
-                if (!robot.online) {
-                    robot.online = true;
-                    // a bridged robot is no UDP robot: nothing is asked of it when it comes online
-                    cameOnline = e.replayed() || robot.bridged ? Envelope.NO_ROBOT : robot.id;
-                }
-            }
-            version++;
-        }
-        if (cameOnline != Envelope.NO_ROBOT) {
-            for (RobotPresence p : presence) {
-                p.cameOnline(cameOnline, first);
             }
         }
     }
@@ -222,18 +246,18 @@ public final class RobotRegistry implements touchline.transport.EnvelopeSink {
      * afresh, with the next envelope the replay plays. Live robots are untouched.
      */
     public synchronized void forgetReplayed() {
-        if (!replayed.isEmpty() || !replayedSources.isEmpty()) {
+        if (!replayed.isEmpty() || !replay.sources.isEmpty()) {
             replayed.clear();
-            replayedSources.clear();
+            replay.sources.clear();
             version++;
         }
     }
 
     public synchronized List<SourceSnapshot> sources() {
         List<SourceSnapshot> out = new ArrayList<>();
-        sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen,
+        live.sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen,
                 Origin.LIVE)));
-        replayedSources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError,
+        replay.sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError,
                 s.lastSeen, Origin.REPLAY)));
         out.sort(Comparator.comparing(SourceSnapshot::origin).thenComparing(s -> s.address().toString()));
         return out;

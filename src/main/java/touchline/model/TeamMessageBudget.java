@@ -25,7 +25,8 @@ import java.util.Map;
  * GameController's own count when a 2026 GameController is heard, measures the rate over the
  * last minute and forecasts when the budget runs out compared with the time left in the game,
  * warning before it does. A message over the profile's size limit is flagged at once with its
- * sender: under the 2026 rules one such message resets the team's score to 0.
+ * sender: under the 2026 rules one such message resets the team's score to 0. Subscribed to
+ * the live stream only: a replay's messages are last match's, never this game's budget.
  */
 public final class TeamMessageBudget implements EnvelopeSink {
 
@@ -145,9 +146,6 @@ public final class TeamMessageBudget implements EnvelopeSink {
 
     @Override
     public synchronized void accept(Envelope e) {
-        if (e.replayed()) {
-            return; // a replay's messages are last match's, never this game's budget
-        }
         // IN: the field's GameController; OUT: this console's own, when it referees the game
         if (e.channel() == Channel.GAMECONTROLLER && e.error() == null) {
             hearGameController(e.raw());

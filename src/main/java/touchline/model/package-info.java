@@ -1,7 +1,8 @@
 /**
  * State the views and commands read, with bounded memory and safe to read from any thread while the network
  * writes: every robot seen ({@code RobotRegistry}, {@code RobotSnapshot}, {@code RobotAuth}), the debug-option
- * protocol per robot ({@code DebugOptionSession}, {@code OptionState}), the team's traffic against the league's
+ * protocol per robot ({@code DebugOptionSession}, {@code OptionState}; a replay's option lists, only shown:
+ * {@code ShownOptions}), the team's traffic against the league's
  * limit ({@code TrafficMeter}), the league's rules as measured ({@code RuleProfile}, {@code DebugRateGuard}) and
  * the team-message budget guard ({@code TeamMessageBudget}); what a ROS 2 robot's messages say of it, by type and by
  * the user's mapping ({@code RosReadings}, {@code RosMapping}). Each is an {@code EnvelopeSink} subscribed to the

@@ -5,6 +5,7 @@ import touchline.protocol.Framing;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.transport.Origin;
 
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
@@ -13,8 +14,8 @@ import java.util.Map;
 
 /**
  * How an {@link Envelope} maps onto MCAP channels and message bytes, both ways. Everything
- * that is the same for many envelopes (direction, wire channel, peer, robot, kind, framing)
- * lives in the MCAP channel's metadata, one channel per distinct combination; the message
+ * that is the same for many envelopes (direction, wire channel, peer, robot, kind, framing,
+ * origin) lives in the MCAP channel's metadata, one channel per distinct combination; the message
  * holds only what varies:
  * <ul>
  * <li>{@link #PAYLOAD}: a well-framed FUmanoids datagram. The data is the protobuf
@@ -46,10 +47,12 @@ final class EnvelopeLayout {
     static final String KEY_KIND = "touchline.kind";
     static final String KEY_LAYOUT = "touchline.layout";
     static final String KEY_FRAMING = "touchline.framing";
+    /** live, remote or replay ({@link Origin}); a file without it (before issue 38) holds live envelopes. */
+    static final String KEY_ORIGIN = "touchline.origin";
 
     /** The per-channel facts of an envelope: the key its MCAP channel is found by. */
     record Key(Direction direction, Channel channel, InetSocketAddress peer, int robotId, String kind,
-               String layout, Framing framing) {
+               String layout, Framing framing, Origin origin) {
 
         // Written out rather than the record's generated ones: this runs for every recorded
         // envelope, and the generated equals cost more than writing the message (cheap,
@@ -57,14 +60,14 @@ final class EnvelopeLayout {
         @Override
         public boolean equals(Object o) {
             return o instanceof Key k && robotId == k.robotId && direction == k.direction && channel == k.channel
-                    && framing == k.framing && kind.equals(k.kind) && layout.equals(k.layout)
+                    && framing == k.framing && origin == k.origin && kind.equals(k.kind) && layout.equals(k.layout)
                     && java.util.Objects.equals(peer, k.peer);
         }
 
         @Override
         public int hashCode() {
             int h = robotId * 31 + kind.hashCode();
-            h = h * 31 + channel.ordinal() * 4 + direction.ordinal();
+            h = h * 31 + (channel.ordinal() * 4 + direction.ordinal()) * 4 + origin.ordinal();
             h = h * 31 + (peer == null ? 0 : peer.getPort());
             return h * 31 + layout.hashCode();
         }
@@ -82,6 +85,7 @@ final class EnvelopeLayout {
             if (framing != null) {
                 m.put(KEY_FRAMING, framing.name());
             }
+            m.put(KEY_ORIGIN, origin.name().toLowerCase(java.util.Locale.ROOT));
             return m;
         }
 
@@ -136,7 +140,17 @@ final class EnvelopeLayout {
             }
             return new Key(Direction.valueOf(m.get(KEY_DIRECTION)), Channel.valueOf(m.get(KEY_CHANNEL)),
                     parsePeer(m.get(KEY_PEER)), Integer.parseInt(m.get(KEY_ROBOT)), m.get(KEY_KIND),
-                    m.getOrDefault(KEY_LAYOUT, RAW), framing == null ? null : Framing.valueOf(framing));
+                    m.getOrDefault(KEY_LAYOUT, RAW), framing == null ? null : Framing.valueOf(framing),
+                    origin(m.getOrDefault(KEY_ORIGIN, "live")));
+        }
+
+        private static Origin origin(String word) {
+            for (Origin o : Origin.values()) {
+                if (o.name().toLowerCase(java.util.Locale.ROOT).equals(word)) {
+                    return o;
+                }
+            }
+            throw new IllegalArgumentException(KEY_ORIGIN + " is \"" + word + "\", not live, remote or replay");
         }
     }
 
@@ -192,7 +206,7 @@ final class EnvelopeLayout {
     }
 
     private static Key key(Envelope e, String layout, Framing framing) {
-        return new Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(), layout, framing);
+        return new Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(), layout, framing, e.origin());
     }
 
     static byte[] malformedData(String error, byte[] raw) {

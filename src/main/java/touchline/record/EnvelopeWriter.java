@@ -89,8 +89,8 @@ public final class EnvelopeWriter implements Closeable {
 
         private static int code(Envelope e, String layout, Framing framing) {
             int l = layout == EnvelopeLayout.PAYLOAD ? 1 : layout == EnvelopeLayout.MALFORMED ? 2 : 3;
-            return ((e.direction().ordinal() * 16 + e.channel().ordinal()) * 4 + l) * 4
-                    + (framing == null ? 0 : framing.ordinal() + 1);
+            return (((e.direction().ordinal() * 16 + e.channel().ordinal()) * 4 + l) * 4
+                    + (framing == null ? 0 : framing.ordinal() + 1)) * 4 + e.origin().ordinal();
         }
 
         private static int slot(Envelope e) {
@@ -197,7 +197,7 @@ public final class EnvelopeWriter implements Closeable {
         ChannelState channel = recent.find(e, kindOfLayout, framing);
         if (channel == null) {
             EnvelopeLayout.Key key = new EnvelopeLayout.Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(),
-                    kindOfLayout, framing);
+                    kindOfLayout, framing, e.origin());
             channel = channels.get(key);
             if (channel == null) {
                 BridgedSchema own = e.channel() == touchline.transport.Channel.BRIDGE && kindOfLayout == EnvelopeLayout.RAW

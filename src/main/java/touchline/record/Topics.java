@@ -12,17 +12,17 @@ public final class Topics {
     /** The MCAP topic {@code e} is recorded under. */
     public String of(Envelope e) {
         return new EnvelopeLayout.Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(),
-                EnvelopeLayout.layoutOf(e), null).topic();
+                EnvelopeLayout.layoutOf(e), null, e.origin()).topic();
     }
 
     /**
      * The facts the recording keeps in its channel's metadata ({@code touchline.direction},
      * {@code .channel}, {@code .peer}, {@code .robot}, {@code .kind}, {@code .layout},
-     * {@code .framing}): what another Touchline needs to rebuild {@code e} from its payload.
+     * {@code .framing}, {@code .origin}): what another Touchline needs to rebuild {@code e} from its payload.
      */
     public java.util.Map<String, String> metadata(Envelope e) {
         String layout = EnvelopeLayout.layoutOf(e);
         return new EnvelopeLayout.Key(e.direction(), e.channel(), e.peer(), e.robotId(), e.kind(), layout,
-                layout.equals(EnvelopeLayout.PAYLOAD) ? EnvelopeLayout.exactFraming(e.raw()) : null).metadata();
+                layout.equals(EnvelopeLayout.PAYLOAD) ? EnvelopeLayout.exactFraming(e.raw()) : null, e.origin()).metadata();
     }
 }

@@ -7,6 +7,7 @@
  * only ({@code OptionSwitch}: {@code touchline options --connect}), and the figures for the operator ({@code
  * ServeStats}, {@code ViewerInfo}).
  * <p>
- * May depend on: record, transport, security and protocol; not model. Only the faces use it.
+ * May depend on: record, transport, security and protocol; not model or app. The core ({@code app.LiveServing})
+ * starts it; the faces use its configuration and figures.
  */
 package touchline.serve;

@@ -46,7 +46,12 @@ final class DecodeStage implements AutoCloseable {
         this.sink = sink;
         this.thread = new Thread(this::run, "touchline-decode");
         thread.setDaemon(true);
+    }
+
+    /** Starts the publishing thread (from the thread whose CPUs it should share: {@link CoreSplit}). */
+    DecodeStage start() {
         thread.start();
+        return this;
     }
 
     /** This thread's kernel id (waits until the thread has started), empty where there is none. */

@@ -4,8 +4,8 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
- * The one stream of envelopes: live transports and the replay player publish into it, the
- * model, recorder and CLI subscribe. A subscriber that throws is reported once per failure
+ * A fan-out of envelopes to subscribers, the inside of the console's two streams
+ * ({@link LiveStream}, {@link ReplayStream}); a bare one serves tests and benchmarks. A subscriber that throws is reported once per failure
  * and does not stop delivery to the others.
  */
 public final class EnvelopeBus implements EnvelopeSink {

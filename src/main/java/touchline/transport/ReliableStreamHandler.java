@@ -130,7 +130,7 @@ public final class ReliableStreamHandler extends ChannelInboundHandlerAdapter {
 
     private void write(InetSocketAddress peer, byte[] datagram) {
         ChannelHandlerContext c = ctx;
-        if (c == null || gate.holdReason().isPresent()) {
+        if (c == null || gate.hold().isPresent()) {
             return; // held: the stop-and-wait machine retransmits once the gate opens
         }
         if (!c.executor().inEventLoop()) {

@@ -2,7 +2,6 @@ package touchline.transport;
 
 import io.netty.bootstrap.Bootstrap;
 import io.netty.buffer.Unpooled;
-import io.netty.channel.ChannelHandler;
 import io.netty.channel.ChannelInitializer;
 import io.netty.channel.ChannelOption;
 import io.netty.channel.EventLoopGroup;
@@ -40,7 +39,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     private final PeerTable peers;
     private final TrafficCounters counters = new TrafficCounters();
     private volatile SendGate gate = SendGate.open();
-    private final ChannelHandler[] extraInbound;
+    private final ReliableStreamHandler reliable;
     private final LinkSecurity security;
     private final InboundVerifier verifier;
     private DecodeStage stage;
@@ -50,21 +49,17 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
     /** What {@link CoreSplit} did at start (or why not), for the description; empty when nothing to say. */
     private volatile String cores = "";
 
-    /**
-     * @param extraInbound handlers placed before the FUmanoids decoder (e.g. the reliable stream),
-     *                     receiving {@link ReceivedDatagram}s
-     */
-    public UdpTransport(UdpConfig config, MessageCodec messages, EnvelopeSink sink, MicrosClock clock,
-                        ChannelHandler... extraInbound) {
-        this(config, LinkSecurity.off(), messages, sink, clock, extraInbound);
+    public UdpTransport(UdpConfig config, MessageCodec messages, EnvelopeSink sink, MicrosClock clock) {
+        this(config, LinkSecurity.off(), messages, sink, clock);
     }
 
     /**
      * @param security the team key: with one, every datagram to a robot is tagged here (the one
-     *                 send path) and every robot datagram checked before it is decoded further
+     *                 send path) and every robot datagram checked before it is decoded further; the
+     *                 reliable streams' segments ({@link #reliable()}) under the same key
      */
     public UdpTransport(UdpConfig config, LinkSecurity security, MessageCodec messages, EnvelopeSink sink,
-                        MicrosClock clock, ChannelHandler... extraInbound) {
+                        MicrosClock clock) {
         this.security = security;
         this.verifier = security.verifier();
         this.config = config;
@@ -72,7 +67,16 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         this.sink = sink;
         this.clock = clock;
         this.peers = new PeerTable(config.robotPort());
-        this.extraInbound = extraInbound;
+        this.reliable = new ReliableStreamHandler(sink, clock);
+        reliable.useAuth(segmentAuth());
+    }
+
+    /**
+     * The reliable streams that share the robots' port (the pipeline's {@code reliable} stage,
+     * before the FUmanoids decoder); with a team key their segments are tagged and checked.
+     */
+    public ReliableStreamHandler reliable() {
+        return reliable;
     }
 
     public UdpTransport start() throws InterruptedException {
@@ -80,7 +84,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
         backend = UdpBackend.onThisMachine(config.transport());
         // the model's work runs beside the event loop (DecodeStage); with a team key the tag and
         // counter checks too, in arrival order, the event loop decoding as without one
-        stage = new DecodeStage(sink);
+        stage = new DecodeStage(sink).start();
         boolean epoll = backend.epoll();
         boolean mmsg = backend.recvmmsg();
         group = new MultiThreadIoEventLoopGroup(1, epoll ? io.netty.channel.epoll.EpollIoHandler.newFactory()
@@ -99,9 +103,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
                     @Override
                     protected void initChannel(DatagramChannel ch) {
                         ch.pipeline().addLast("intake", new DatagramIntake(counters, clock));
-                        for (int i = 0; i < extraInbound.length; i++) {
-                            ch.pipeline().addLast("extra" + i, extraInbound[i]);
-                        }
+                        ch.pipeline().addLast("reliable", reliable);
                         ch.pipeline().addLast("decode", new FumanoidDecoder(frames, messages, peers, counters, sink, verifier, stage));
                     }
                 });
@@ -215,10 +217,10 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
 
     /** Sends to an explicit address (robots not yet seen, scripts); still gated by match mode. */
     public SendResult sendTo(InetSocketAddress target, Framing framing, int robotId, Fumanoid.Message message) {
-        Optional<String> hold = gate.holdReason();
+        Optional<Hold> hold = gate.hold();
         if (hold.isPresent()) {
             counters.countHeld();
-            return SendResult.held(hold.get());
+            return SendResult.held(hold.get().queued());
         }
         byte[] datagram;
         try {
@@ -296,7 +298,7 @@ public final class UdpTransport implements RobotCommands, AutoCloseable {
      * forged, dropped and counted. With a key the check runs on the publishing thread
      * ({@link DecodeStage}), in arrival order with the robots' datagrams whose counter it shares.
      */
-    public ReliableStreamHandler.SegmentAuth segmentAuth() {
+    private ReliableStreamHandler.SegmentAuth segmentAuth() {
         return new ReliableStreamHandler.SegmentAuth() {
             @Override
             public byte[] seal(InetSocketAddress peer, byte[] segment) {

@@ -1,6 +1,9 @@
 package touchline.ui;
 
-import touchline.app.Console;
+import touchline.app.LiveField;
+import touchline.app.Referee;
+import touchline.app.RemoteView;
+import touchline.app.Replays;
 import touchline.app.Replay;
 import touchline.model.OptionState;
 import touchline.model.RobotSnapshot;
@@ -16,35 +19,41 @@ import java.util.Optional;
  */
 public final class ConsoleStatus {
 
-    private final Console console;
+    private final LiveField field;
+    private final Referee referee;
+    private final Replays replays;
+    private final RemoteView remote;
     private EmbeddedGameController countedSender;
     private long earlierSendersPackets;
 
-    public ConsoleStatus(Console console) {
-        this.console = console;
+    public ConsoleStatus(LiveField field, Referee referee, Replays replays, RemoteView remote) {
+        this.field = field;
+        this.referee = referee;
+        this.replays = replays;
+        this.remote = remote;
     }
 
     /** Why the console does not send or does not listen, in words; "" when it does both. */
     public String silence() {
         StringBuilder s = new StringBuilder();
-        console.remoteStatus().ifPresent(r -> s.append(r.describe()).append("; ")
+        remote.status().ifPresent(r -> s.append(r.describe()).append("; ")
                 .append(touchline.app.Console.COMMANDS_OFF));
-        String play = console.matchMode().play();
+        String play = referee.matchMode().play();
         if (!play.isEmpty()) {
-            append(s, console.matchMode().isOverridden()
+            append(s, referee.matchMode().isOverridden()
                     ? "MATCH MODE OVERRIDDEN: " + play + ", the console sends anyway"
                     : "Silent: match mode, " + play);
         }
-        String gc = console.gcSources().warning();
+        String gc = referee.sources().warning();
         if (!gc.isEmpty()) {
             append(s, gc);
         }
-        Optional<Replay> replay = console.replay();
+        Optional<Replay> replay = replays.current();
         if (replay.isPresent()) {
             append(s, "Replay: views show the recording" + (replay.get().state().playing() ? " (playing)" : " (paused)")
                     + "; nothing is sent for replayed robots");
         }
-        if (!console.liveListening()) {
+        if (!field.liveListening()) {
             append(s, "Live traffic paused: robots on the field are not shown");
         }
         return s.toString();
@@ -62,12 +71,12 @@ public final class ConsoleStatus {
      * when play stops. 0 while the console may send (they are on their way).
      */
     public int waitingNow() {
-        if (console.matchMode().mayConsoleSend()) {
+        if (referee.matchMode().mayConsoleSend()) {
             return 0;
         }
         int waiting = 0;
-        for (RobotSnapshot r : console.robots().robots()) {
-            for (OptionState o : console.options().options(r.id()).options()) {
+        for (RobotSnapshot r : field.robots().robots()) {
+            for (OptionState o : field.options().options(r.id()).options()) {
                 if (o.wanted() != o.enabledOnRobot()) {
                     waiting++;
                 }
@@ -78,13 +87,13 @@ public final class ConsoleStatus {
 
     /** Every request match mode held back since the console started, retries included. */
     public long heldTotal() {
-        return console.matchMode().heldCount();
+        return referee.matchMode().heldCount();
     }
 
     /** Datagrams sent so far: robots (UDP transport) and GameController packets; never goes down. */
     public long packetsOut() {
-        TransportCounts c = console.transportCounts();
-        EmbeddedGameController sender = console.gameController().orElse(null);
+        TransportCounts c = field.transportCounts();
+        EmbeddedGameController sender = referee.gameController().orElse(null);
         if (sender != countedSender) {
             if (countedSender != null) {
                 earlierSendersPackets += countedSender.packetsSent();

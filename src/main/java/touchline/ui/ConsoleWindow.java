@@ -33,7 +33,6 @@ import java.util.Set;
  */
 public final class ConsoleWindow {
 
-    private final Console console;
     private final UiSettings settings;
     private final ViewRegistry registry = new ViewRegistry();
     private final Shell shell;
@@ -55,23 +54,25 @@ public final class ConsoleWindow {
     private Stage stage;
     private boolean dark;
 
+    /** Composes the window over {@code console}'s services; the views get them, never the console. */
     public ConsoleWindow(Console console, UiSettings settings) {
-        this.console = console;
         this.settings = settings;
         this.layouts = new LayoutStore(settings.layoutDir());
         this.places = settings.windowPlaces();
         this.dark = settings.dark();
         this.help = new HelpWindow(places);
         // the wanted debug options belong to the user: kept beside the layouts, wanted again now
-        console.rememberWantedOptions(settings.layoutDir().resolve("wanted-options.properties"));
+        console.optionSwitches().rememberWanted(settings.layoutDir().resolve("wanted-options.properties"));
         Shell[] holder = new Shell[1];
-        this.serving = new ServeToggle(console);
-        this.context = new ViewContext(console, console.stores(), registry, (spec, src) -> holder[0].open(spec, src),
-                settings.layoutDir(), serving);
+        this.serving = new ServeToggle(console.serving());
+        this.context = new ViewContext(console.field(), console.optionSwitches(), console.referee(), console.naos(),
+                console.recordings(), console.replays(), console.teamSchemas(), console.teamBudget(), console.remote(),
+                console.bridges(), registry, (spec, src) -> holder[0].open(spec, src), settings.layoutDir(), serving);
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
-        this.status = new StatusBar(console);
-        this.pulse = new FramePulse(shell, status, console.clock(), this::demoStep, new ConsoleChanges(console, serving)::read,
+        this.status = new StatusBar(context.status(), context.field(), context.budget());
+        this.pulse = new FramePulse(shell, status, context.field().clock(), this::demoStep,
+                new ConsoleChanges(context.field(), context.referee().matchMode(), context.status(), serving)::read,
                 settings.frameCap());
         shell.onChange(pulse::input);
         MenuBar bar = menus();
@@ -108,8 +109,8 @@ public final class ConsoleWindow {
         EveryWindow<javafx.scene.input.KeyEvent> f1 = new EveryWindow<>(javafx.scene.input.KeyEvent.KEY_PRESSED,
                 this::helpKey);
         places.keep(stage, "main", 1400, 900);
-        stage.setTitle(console.remoteStatus().map(r -> console.runtime().version().title() + " — viewing " + r.url())
-                .orElse(console.runtime().version().title() + " — UDP port " + console.port()));
+        stage.setTitle(context.remote().status().map(r -> context.field().runtime().version().title() + " — viewing " + r.url())
+                .orElse(context.field().runtime().version().title() + " — UDP port " + context.field().port()));
         Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
         boolean[] restored = new boolean[1];
         Runnable restore = () -> {
@@ -131,7 +132,7 @@ public final class ConsoleWindow {
             serving.close();
             // closing the window ends a recording as its Stop button does: the file is finished
             // (summary, footer) before the process can exit, however the window was closed
-            console.finishRecording(FINISH_RECORDING_MILLIS);
+            context.recordings().finish(FINISH_RECORDING_MILLIS);
         });
         // light on the laptop: a minimised window does no frame work; a touched one wakes up
         stage.iconifiedProperty().addListener((o, was, minimised) -> pulse.iconified(minimised));
@@ -247,8 +248,7 @@ public final class ConsoleWindow {
 
     /** F1: the help of the view that has the keyboard (every view's when none has). */
     public Stage helpForFocusedView() {
-        javafx.scene.Node focused = stage == null || stage.getScene() == null ? null : stage.getScene().getFocusOwner();
-        return helpFor(focused, stage);
+        return helpFor(stage.getScene().getFocusOwner(), stage); // a menu item of the shown window: both exist
     }
 
     private Stage helpFor(javafx.scene.Node focused, javafx.stage.Window owner) {
@@ -301,10 +301,10 @@ public final class ConsoleWindow {
         if (!settings.demo() || pulse.frames() % 15 != 0) {
             return;
         }
-        for (RobotSnapshot r : console.robots().robots()) {
-            for (OptionState o : console.options().options(r.id()).options()) {
+        for (RobotSnapshot r : context.field().robots().robots()) {
+            for (OptionState o : context.field().options().options(r.id()).options()) {
                 if (DemoLayout.DEMO_OPTIONS.contains(o.name()) && demoSwitched.add(r.id() + "/" + o.name())) {
-                    console.setOption(r.id(), o.name(), true);
+                    context.switches().set(r.id(), o.name(), true);
                 }
             }
         }
@@ -369,7 +369,7 @@ public final class ConsoleWindow {
         MenuItem aboutTouchline = new MenuItem("_About Touchline…");
         aboutTouchline.setId("help-about");
         aboutTouchline.setOnAction(e -> {
-            touchline.app.RuntimeReport report = console.runtime();
+            touchline.app.RuntimeReport report = context.field().runtime();
             Alert a = new Alert(Alert.AlertType.INFORMATION);
             a.initOwner(stage);
             a.setTitle("About Touchline");
@@ -418,12 +418,7 @@ public final class ConsoleWindow {
     }
 
     private void confirmDelete(String name) {
-        Alert a = new Alert(Alert.AlertType.CONFIRMATION, "Delete the layout \"" + name + "\"? Its file in "
-                + layouts.dir() + " is removed.", javafx.scene.control.ButtonType.OK, javafx.scene.control.ButtonType.CANCEL);
-        a.initOwner(stage);
-        a.setTitle("Delete layout");
-        a.setHeaderText(null);
-        a.getDialogPane().setMinHeight(javafx.scene.layout.Region.USE_PREF_SIZE);
-        a.showAndWait().filter(b -> b == javafx.scene.control.ButtonType.OK).ifPresent(b -> deleteLayout(name));
+        new ConfirmDialog(stage, places, "Delete layout", "Delete the layout \"" + name + "\"? Its file in "
+                + layouts.dir() + " is removed.").ask(() -> deleteLayout(name));
     }
 }

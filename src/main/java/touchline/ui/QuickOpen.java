@@ -54,9 +54,9 @@ public final class QuickOpen {
                 out.add(new Choice(s.title() + " — " + s.help(), s, ViewSource.NONE));
             }
         }
-        for (RobotSnapshot r : context.console().robots().robots()) {
+        for (RobotSnapshot r : context.field().robots().robots()) {
             String robot = "robot " + r.id() + (r.replayed() ? " (replay)" : "");
-            for (OptionState o : context.console().options().options(r.id(), r.origin()).options()) {
+            for (OptionState o : context.field().options().options(r.id(), r.origin()).options()) {
                 context.registry().forKind(o.kind()).ifPresent(spec -> out.add(new Choice(
                         spec.title() + ": " + robot + " · " + o.name(), spec, new ViewSource(r.id(), o.name()))));
             }

@@ -1,30 +1,29 @@
 package touchline.ui;
 
-import touchline.app.Console;
+import touchline.app.LiveServing;
 import touchline.serve.AccessToken;
 import touchline.serve.FoxgloveServer;
 import touchline.serve.ServeConfig;
-import touchline.serve.Serving;
 
 import java.security.SecureRandom;
 import java.util.Optional;
 
 /**
- * The window's "Serve to viewers": starts and stops serving the console's stream with the same
- * {@link Serving} as {@code touchline serve}, on this machine only or (with a generated token)
+ * The window's "Serve to viewers": starts and stops serving the console's stream through the
+ * same {@link LiveServing} as {@code touchline serve}, on this machine only or (with a generated token)
  * to other machines. One per window; the menu, its shortcut and the Viewers view share it.
  * Errors (a port in use) are sentences, never exceptions.
  */
 public final class ServeToggle implements AutoCloseable {
 
-    private final Console console;
-    private Serving serving;
+    private final LiveServing live;
+    private boolean serving;
     private int port = ServeConfig.DEFAULT_PORT;
     private boolean beyondThisMachine;
     private String said = "Not serving.";
 
-    public ServeToggle(Console console) {
-        this.console = console;
+    public ServeToggle(LiveServing live) {
+        this.live = live;
     }
 
     public synchronized void setPort(int port) {
@@ -45,16 +44,16 @@ public final class ServeToggle implements AutoCloseable {
     }
 
     public synchronized boolean serving() {
-        return serving != null;
+        return serving;
     }
 
     /** Starts when stopped, stops when serving; returns the sentence to show. */
     public synchronized String toggle() {
-        return serving != null ? stop() : start();
+        return serving ? stop() : start();
     }
 
     public synchronized String start() {
-        if (serving != null) {
+        if (serving) {
             return said;
         }
         ServeConfig config = ServeConfig.defaults().withPort(port);
@@ -62,10 +61,9 @@ public final class ServeToggle implements AutoCloseable {
             config = config.withBind("0.0.0.0").withToken(AccessToken.generate(new SecureRandom()));
         }
         try {
-            serving = new Serving(config, console.kinds(), console.clock(), console.bus(),
-                    console.servedStateChannels(touchline.serve.JsonChannel::new));
-            serving.server().offerOptionSwitches(console::switchOptionAsAsked); // `touchline options --connect`
-            said = "Serving to viewers: " + String.join("  ", serving.server().urls());
+            FoxgloveServer server = live.start(config); // viewers may switch options: `options --connect`
+            serving = true;
+            said = "Serving to viewers: " + String.join("  ", server.urls());
         } catch (IllegalArgumentException e) {
             said = "Cannot serve: " + e.getMessage();
         } catch (InterruptedException e) {
@@ -78,9 +76,9 @@ public final class ServeToggle implements AutoCloseable {
     }
 
     public synchronized String stop() {
-        if (serving != null) {
-            serving.close();
-            serving = null;
+        if (serving) {
+            live.stop();
+            serving = false;
             said = "Stopped serving; the viewers were disconnected.";
         }
         return said;
@@ -92,7 +90,7 @@ public final class ServeToggle implements AutoCloseable {
     }
 
     public synchronized Optional<FoxgloveServer> server() {
-        return Optional.ofNullable(serving).map(Serving::server);
+        return serving ? live.server() : Optional.empty();
     }
 
     @Override

@@ -57,7 +57,7 @@ public final class SourceBar extends HBox {
 
     /** The status line as it should read now; it changes at most twice a second ({@link PacedText}). */
     public void status(String text) {
-        show(paced.offer(text, context.console().clock().nowMicros()));
+        show(paced.offer(text, context.field().clock().nowMicros()));
     }
 
     private void show(String text) {
@@ -72,9 +72,9 @@ public final class SourceBar extends HBox {
      * come with the option lists, whose version is read at once).
      */
     public void refresh() {
-        long ov = context.console().options().version();
-        long rv = context.console().robots().version();
-        long now = context.console().clock().nowMicros();
+        long ov = context.field().options().version();
+        long rv = context.field().robots().version();
+        long now = context.field().clock().nowMicros();
         show(paced.due(now));
         if (ov == seenOptionsVersion && (rv == seenRobotsVersion || now - readMicros < REREAD_MICROS)) {
             return;
@@ -83,8 +83,8 @@ public final class SourceBar extends HBox {
         seenOptionsVersion = ov;
         seenRobotsVersion = rv;
         List<ViewSource> found = new ArrayList<>();
-        for (RobotSnapshot r : context.console().robots().robots()) {
-            RobotOptions ro = context.console().options().options(r.id(), r.origin());
+        for (RobotSnapshot r : context.field().robots().robots()) {
+            RobotOptions ro = context.field().options().options(r.id(), r.origin());
             for (OptionState o : ro.options()) {
                 if (kinds.contains(o.kind()) && !found.contains(new ViewSource(r.id(), o.name()))) {
                     found.add(new ViewSource(r.id(), o.name()));

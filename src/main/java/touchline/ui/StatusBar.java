@@ -17,14 +17,24 @@ import touchline.app.TransportCounts;
  */
 public final class StatusBar extends HBox {
 
-    private final touchline.app.Console console;
+    private final touchline.app.LiveField field;
+    private final touchline.app.TeamBudget budget;
     private final ConsoleStatus readings;
-    private final Label silence = new Label();
+    /** The banner asks for no more than {@link #SILENCE_MAX_PREF_WIDTH} (whole in its tooltip), so the rates beside it keep some room. */
+    private final Label silence = new Label() {
+        @Override
+        protected double computePrefWidth(double height) {
+            return Math.min(super.computePrefWidth(height), SILENCE_MAX_PREF_WIDTH);
+        }
+    };
     /** The least the match-mode and remote banner is shrunk to, in pixels. */
-    static final double SILENCE_MIN_WIDTH = 200;
+    static final double SILENCE_MIN_WIDTH = 160;
+    /** The most the banner asks for: the match mode's and the replay's first words. */
+    static final double SILENCE_MAX_PREF_WIDTH = 360;
     private final Label rates = new Label();
     private final Tooltip ratesTip = new Tooltip();
     private final Label bad = new Label();
+    private final Tooltip badTip = new Tooltip();
     private final Label waiting = new Label();
     private final Tooltip waitingTip = new Tooltip();
     private final Tooltip silenceTip = new Tooltip();
@@ -40,10 +50,11 @@ public final class StatusBar extends HBox {
     private long lastBytesOut;
     private double packetsPerSecond;
 
-    public StatusBar(touchline.app.Console console) {
+    public StatusBar(ConsoleStatus readings, touchline.app.LiveField field, touchline.app.TeamBudget budget) {
         super(10);
-        this.console = console;
-        this.readings = new ConsoleStatus(console);
+        this.field = field;
+        this.budget = budget;
+        this.readings = readings;
         setId("status-bar");
         setStyle("-fx-padding: 3 8 3 8; -fx-alignment: center-left;");
         rates.setId("status-rates");
@@ -53,12 +64,18 @@ public final class StatusBar extends HBox {
         // never wider than the window can be (a 1280-pixel laptop)
         silence.setMinWidth(SILENCE_MIN_WIDTH);
         silence.setTooltip(silenceTip);
-        // the counts, the meter and the frame rate keep their words; the rates, the message and the
-        // platform give way on a narrow window, cut with "…" and whole in their tooltips: together the
-        // least they take stays inside a 1280-pixel window in play, or the whole window would be cut
-        rates.setMinWidth(120);
+        // the counts, the meter and the frame rate keep their words; the banner, the rates, the message
+        // and the platform give way on a narrow window, cut with "…" and whole in their tooltips: together
+        // the least they take stays inside a 1280-pixel window with the longest texts of play. The bar itself
+        // asks the window for no width at all: at the PLAYING whistle under openbox the banner and the
+        // meter's "· debug over limit" asked for more than 1280 px and the whole window was laid out
+        // wider for seconds, every view and the referee's buttons moved sideways.
+        setMinWidth(0);
+        rates.setMinWidth(0);
         rates.setTooltip(ratesTip);
+        bad.setId("status-malformed");
         bad.setMinWidth(Region.USE_PREF_SIZE);
+        bad.setTooltip(badTip);
         waiting.setMinWidth(Region.USE_PREF_SIZE);
         silence.setVisible(false);
         silence.setManaged(false);
@@ -72,7 +89,7 @@ public final class StatusBar extends HBox {
         Region grow = new Region();
         HBox.setHgrow(grow, Priority.ALWAYS);
         // the transport and priority in use: epoll + recvmmsg on Linux, NIO / normal priority as the portable fallback
-        touchline.app.RuntimeReport runtime = console.runtime();
+        touchline.app.RuntimeReport runtime = field.runtime();
         platform.setId("status-platform");
         platform.setText(runtime.portability());
         platform.setMinWidth(0);
@@ -99,7 +116,7 @@ public final class StatusBar extends HBox {
         if (nowMicros - lastMicros < 500_000) {
             return;
         }
-        TransportCounts c = console.transportCounts();
+        TransportCounts c = field.transportCounts();
         double dt = lastMicros == 0 ? 1 : (nowMicros - lastMicros) / 1e6;
         packetsPerSecond = (c.datagramsIn() - lastIn) / dt;
         long out = readings.packetsOut();
@@ -109,6 +126,8 @@ public final class StatusBar extends HBox {
         ratesTip.setText(rates.getText() + "\nDatagrams and bytes per second the console received (robots, team "
                 + "messages, GameController) and sent (robots, its own GameController)");
         bad.setText("malformed " + c.malformedIn());
+        badTip.setText(bad.getText() + "\nDatagrams the console received and could not read; the Robots view's "
+                + "\"Bad sources and notes\" says from where and why");
         bad.setStyle(c.malformedIn() > 0 ? "-fx-text-fill: #cf222e;" : "");
         int waitingNow = readings.waitingNow();
         waiting.setText(waitingNow == 1 ? "1 request waiting now" : waitingNow + " requests waiting now");
@@ -126,7 +145,7 @@ public final class StatusBar extends HBox {
         lastOut = out;
         lastBytesOut = c.bytesOut();
         lastMicros = nowMicros;
-        java.util.Optional<touchline.model.TeamMessageBudget> guard = console.teamMessageBudget();
+        java.util.Optional<touchline.model.TeamMessageBudget> guard = budget.budget();
         if (guard.isPresent()) {
             showBudget(guard.get().snapshot());
         } else {
@@ -140,7 +159,7 @@ public final class StatusBar extends HBox {
     private void showBudget(touchline.model.TeamMessageBudget.Snapshot s) {
         long total = s.left() >= 0 ? s.left() + s.used() : -1;
         double f = total > 0 ? (double) s.used() / total : 0;
-        java.util.List<touchline.model.DebugRateGuard.OverLimit> over = console.debugRateGuard()
+        java.util.List<touchline.model.DebugRateGuard.OverLimit> over = budget.debugRateGuard()
                 .map(touchline.model.DebugRateGuard::overLimit).orElse(java.util.List.of());
         boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED
                 || !over.isEmpty();
@@ -163,7 +182,7 @@ public final class StatusBar extends HBox {
 
     /** Without a budget guard: the team's traffic against the 1 Mbit/s limit of the leagues before 2026. */
     private void showTraffic() {
-        TrafficMeter.Reading r = console.traffic().read();
+        TrafficMeter.Reading r = field.traffic().read();
         double f = r.fractionOfLimit();
         meter.show(f, f > 1 ? BudgetMeter.Level.ALARM : f > 0.8 ? BudgetMeter.Level.WARN : BudgetMeter.Level.CALM,
                 String.format("team %.0f kbit/s (%.0f %%)%s", r.teamBitsPerSecond() / 1000, f * 100,

@@ -60,7 +60,7 @@ class BootReplayIntegrationTest {
                 .withSecurity(LinkSecurity.with(keys.teamKey(), new CounterSource(System::currentTimeMillis,
                         keys.counterStore()), new RobotBoots(keys.bootStore())));
         Console console = new Console(config);
-        console.bus().subscribe(seen::add);
+        console.field().bus().subscribe(seen::add);
         return console.start();
     }
 
@@ -70,17 +70,17 @@ class BootReplayIntegrationTest {
     }
 
     private static boolean verifiedAndListed(Console console) {
-        return console.options().options(3).listReceived()
-                && console.robots().robot(3).map(r -> r.auth().state() == Authenticity.VERIFIED).orElse(false);
+        return console.field().options().options(3).listReceived()
+                && console.field().robots().robot(3).map(r -> r.auth().state() == Authenticity.VERIFIED).orElse(false);
     }
 
     private static boolean enabledOnRobot(Console console, String option) {
-        return console.options().options(3).options().stream()
+        return console.field().options().options(3).options().stream()
                 .anyMatch(o -> o.name().equals(option) && o.enabledOnRobot());
     }
 
     private static Fumanoid.AuthCounters atRobot(Console console) {
-        Fumanoid.AuthCounters c = console.robots().robot(3).map(r -> r.auth().atRobot()).orElse(null);
+        Fumanoid.AuthCounters c = console.field().robots().robot(3).map(r -> r.auth().atRobot()).orElse(null);
         return c == null ? Fumanoid.AuthCounters.getDefaultInstance() : c;
     }
 
@@ -99,28 +99,28 @@ class BootReplayIntegrationTest {
             }
         }
         try (Console console = console(keys);
-             RobotProcess robot = robot3(keys, console.port()).start();
+             RobotProcess robot = robot3(keys, console.field().port()).start();
              DatagramChannel attacker = DatagramChannel.open().bind(new InetSocketAddress("127.0.0.1", 0))) {
             Await.until("robot 3 verified with its option list", () -> verifiedAndListed(console));
-            InetSocketAddress consoleAddress = new InetSocketAddress("127.0.0.1", console.port());
+            InetSocketAddress consoleAddress = new InetSocketAddress("127.0.0.1", console.field().port());
             for (int round = 0; round < 3; round++) {
                 for (byte[] d : capture) {
                     attacker.send(ByteBuffer.wrap(d), consoleAddress);
                 }
             }
             Await.until("every replayed datagram refused",
-                    () -> console.robots().robot(3).map(r -> r.auth().forged() >= 3L * capture.size()).orElse(false));
-            RobotSnapshot r = console.robots().robot(3).orElseThrow();
+                    () -> console.field().robots().robot(3).map(r -> r.auth().forged() >= 3L * capture.size()).orElse(false));
+            RobotSnapshot r = console.field().robots().robot(3).orElseThrow();
             assertTrue(r.auth().lastForgery().contains("earlier boot"), r.auth().lastForgery());
             long verifiedBefore = r.auth().verified();
-            Await.until("the robot's current datagrams still verified", () -> console.robots().robot(3)
+            Await.until("the robot's current datagrams still verified", () -> console.field().robots().robot(3)
                     .map(x -> x.auth().verified() > verifiedBefore + 2).orElse(false));
-            r = console.robots().robot(3).orElseThrow();
+            r = console.field().robots().robot(3).orElseThrow();
             assertTrue(r.online(), "robot 3 stays online");
             assertEquals(Authenticity.VERIFIED, r.auth().state());
 
             // commands still reach the real robot, and nothing reaches the stranger
-            assertTrue(console.setOption(3, "demo.text", true).isSent());
+            assertTrue(console.optionSwitches().set(3, "demo.text", true).isSent());
             Await.until("demo.text on at the robot", () -> enabledOnRobot(console, "demo.text"));
             assertTrue(seen.stream().filter(e -> e.direction() == Direction.OUT && e.robotId() == 3)
                     .allMatch(e -> e.peer().getPort() == robot.port()), "every command went to the robot's port");
@@ -135,24 +135,24 @@ class BootReplayIntegrationTest {
         try (Console console = console(keys);
              DatagramChannel attacker = DatagramChannel.open()) {
             byte[] capture;
-            try (RobotProcess earlier = robot3(keys, console.port()).start()) {
+            try (RobotProcess earlier = robot3(keys, console.field().port()).start()) {
                 Await.until("robot 3 verified with its option list", () -> verifiedAndListed(console));
-                assertTrue(console.setOption(3, "demo.plotter", true).isSent());
+                assertTrue(console.optionSwitches().set(3, "demo.plotter", true).isSent());
                 Await.until("demo.plotter on", () -> enabledOnRobot(console, "demo.plotter"));
                 capture = seen.stream().filter(e -> e.direction() == Direction.OUT
                         && e.kind().equals("debugOptionRequest")).reduce((a, b) -> b).orElseThrow().raw();
-                assertTrue(console.setOption(3, "demo.plotter", false).isSent());
+                assertTrue(console.optionSwitches().set(3, "demo.plotter", false).isSent());
                 Await.until("demo.plotter off", () -> !enabledOnRobot(console, "demo.plotter"));
             }
-            int bootBefore = console.robots().robot(3).orElseThrow().auth().atRobot().getBootId();
-            try (RobotProcess rebooted = robot3(keys, console.port()).start()) {
+            int bootBefore = console.field().robots().robot(3).orElseThrow().auth().atRobot().getBootId();
+            try (RobotProcess rebooted = robot3(keys, console.field().port()).start()) {
                 Await.until("the robot's next boot verified", () -> verifiedAndListed(console)
                         && atRobot(console).getBootId() != bootBefore);
                 attacker.send(ByteBuffer.wrap(capture), new InetSocketAddress("127.0.0.1", rebooted.port()));
                 Await.until("the robot refused the capture", () -> atRobot(console).getBadTag() >= 1);
                 // the robot handles datagrams in order: once a real request's answer is back, the
                 // capture would already have acted. It did not.
-                assertTrue(console.setOption(3, "demo.table", true).isSent());
+                assertTrue(console.optionSwitches().set(3, "demo.table", true).isSent());
                 Await.until("demo.table on", () -> enabledOnRobot(console, "demo.table"));
                 assertFalse(enabledOnRobot(console, "demo.plotter"), "the capture of the earlier boot switched nothing");
                 assertTrue(Integer.compareUnsigned(atRobot(console).getBootId(), bootBefore) > 0,

@@ -57,17 +57,17 @@ class ConsoleUseCasesTest {
     @Test
     void aOneShotCommandWaitsOutTheFirstListenForAGameController() throws Exception {
         try (Console quiet = new Console(loopback()).start()) {
-            quiet.awaitFirstListen(60_000, Duration.ofSeconds(60));
-            assertFalse(quiet.matchMode().listeningFirst(), "no GameController port: nothing to wait for");
+            quiet.referee().awaitFirstListen(60_000, Duration.ofSeconds(60));
+            assertFalse(quiet.referee().matchMode().listeningFirst(), "no GameController port: nothing to wait for");
         }
         ConsoleConfig withGc = loopback().withGameControllerPort(freePort());
         try (Console console = new Console(withGc).start()) {
-            long opened = console.clock().nowMicros();
-            console.awaitFirstListen(900, Duration.ofSeconds(60));
-            assertFalse(console.matchMode().listeningFirst(), "the first listen is over");
-            assertTrue(console.clock().nowMicros() - opened >= 900_000 - 50_000,
+            long opened = console.field().clock().nowMicros();
+            console.referee().awaitFirstListen(900, Duration.ofSeconds(60));
+            assertFalse(console.referee().matchMode().listeningFirst(), "the first listen is over");
+            assertTrue(console.field().clock().nowMicros() - opened >= 900_000 - 50_000,
                     "listened at least the time asked (from when the port opened, just before " + opened + ")");
-            assertFalse(console.matchMode().playIsOn());
+            assertFalse(console.referee().matchMode().playIsOn());
         }
     }
 
@@ -75,24 +75,24 @@ class ConsoleUseCasesTest {
     void waitsForARobotHeardOnThePortItNamesAndCountsItsDatagram() throws Exception {
         try (Console console = new Console(loopback()).start();
              DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
-            assertEquals(console.udp().localPort(), console.port());
-            assertEquals(0, console.transportCounts().datagramsIn());
-            sendStatus(robot, 6, console.port());
-            var seen = console.waitForRobot(6, Duration.ofSeconds(10));
+            assertEquals(console.field().udp().localPort(), console.field().port());
+            assertEquals(0, console.field().transportCounts().datagramsIn());
+            sendStatus(robot, 6, console.field().port());
+            var seen = console.field().waitForRobot(6, Duration.ofSeconds(10));
             assertTrue(seen.isPresent(), "robot 6 was heard");
             assertEquals(robot.getLocalPort(), seen.get().address().getPort());
-            assertEquals(1, console.transportCounts().datagramsIn());
-            assertFalse(console.transportDescription().isBlank());
+            assertEquals(1, console.field().transportCounts().datagramsIn());
+            assertFalse(console.field().transportDescription().isBlank());
 
-            ReliableSession stream = console.openStream(seen.get().address());
-            assertSame(stream, console.openStream(seen.get().address()), "one session per peer");
+            ReliableSession stream = console.field().openStream(seen.get().address());
+            assertSame(stream, console.field().openStream(seen.get().address()), "one session per peer");
             stream.offer(new byte[]{1, 2, 3});
             robot.setSoTimeout(10_000);
             boolean segment = false;
             for (int i = 0; i < 5 && !segment; i++) { // the option-list request to a new robot may come first
                 DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
                 robot.receive(p);
-                assertEquals(console.port(), p.getPort(), "sent from the console's socket");
+                assertEquals(console.field().port(), p.getPort(), "sent from the console's socket");
                 byte[] got = java.util.Arrays.copyOf(p.getData(), p.getLength());
                 segment = got.length > 3 && java.util.Arrays.equals(new byte[]{1, 2, 3},
                         java.util.Arrays.copyOfRange(got, got.length - 3, got.length));
@@ -108,7 +108,7 @@ class ConsoleUseCasesTest {
         MicrosClock clock = () -> micros.getAndAdd(1_000_000L);
         try (Console console = new Console(loopback(), clock).start()) {
             long before = micros.get();
-            assertTrue(console.waitForRobot(9, Duration.ofSeconds(5)).isEmpty());
+            assertTrue(console.field().waitForRobot(9, Duration.ofSeconds(5)).isEmpty());
             assertTrue(micros.get() - before >= 5_000_000L, "it waited the timeout by the console's clock");
         }
     }
@@ -118,9 +118,9 @@ class ConsoleUseCasesTest {
         AtomicLong micros = new AtomicLong(1_000_000_000L); // stands still
         try (Console console = new Console(loopback(), micros::get).start();
              DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
-            sendStatus(robot, 6, console.port());
-            touchline.testing.Await.until("robot 6 in the registry", () -> console.robots().robot(6).isPresent());
-            var seen = console.waitForRobot(6, Duration.ZERO);
+            sendStatus(robot, 6, console.field().port());
+            touchline.testing.Await.until("robot 6 in the registry", () -> console.field().robots().robot(6).isPresent());
+            var seen = console.field().waitForRobot(6, Duration.ZERO);
             assertTrue(seen.isPresent(), "a robot heard before the wait is there");
             assertEquals(robot.getLocalPort(), seen.get().address().getPort());
         }
@@ -134,8 +134,8 @@ class ConsoleUseCasesTest {
         try (Console console = new Console(loopback(), micros::get).start();
              DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             Future<Optional<touchline.model.RobotSnapshot>> seen =
-                    waiter.submit(() -> console.waitForRobot(7, Duration.ofHours(1)));
-            sendStatus(robot, 7, console.port());
+                    waiter.submit(() -> console.field().waitForRobot(7, Duration.ofHours(1)));
+            sendStatus(robot, 7, console.field().port());
             var got = seen.get(30, TimeUnit.SECONDS);
             assertTrue(got.isPresent(), "robot 7 was heard");
             assertEquals(robot.getLocalPort(), got.get().address().getPort());
@@ -158,7 +158,7 @@ class ConsoleUseCasesTest {
         ExecutorService waiter = Executors.newSingleThreadExecutor(r -> new Thread(r, "robot-waiter"));
         try (Console console = new Console(loopback(), clock).start()) {
             Future<Optional<touchline.model.RobotSnapshot>> seen =
-                    waiter.submit(() -> console.waitForRobot(9, Duration.ofSeconds(5)));
+                    waiter.submit(() -> console.field().waitForRobot(9, Duration.ofSeconds(5)));
             assertTrue(deadlineTaken.await(30, TimeUnit.SECONDS), "the wait began");
             micros.addAndGet(5_000_000L); // now at the deadline, by the console's clock only
             assertTrue(seen.get(30, TimeUnit.SECONDS).isEmpty(), "no robot 9; the wait ended at the deadline");

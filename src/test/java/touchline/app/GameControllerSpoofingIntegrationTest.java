@@ -75,41 +75,41 @@ class GameControllerSpoofingIntegrationTest {
         InetSocketAddress consoleGcPort = new InetSocketAddress(InetAddress.getLoopbackAddress(), gcPort);
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.field().port()).start();
              EmbeddedGameController referee = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,
                      List.of(consoleGcPort), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null, new touchline.app.SystemClock());
              DatagramSocket forger = new DatagramSocket(new InetSocketAddress("127.0.0.2", 0));
              DatagramSocket sameAddressForger = new DatagramSocket(ANY_LOOPBACK_PORT)) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT) {
                     out.add(e);
                 } else if (e.channel() == Channel.GAMECONTROLLER) {
                     gcHeard.add(e);
                 }
             });
-            Await.until("option list", () -> console.options().options(8).listReceived());
-            game.perform(new ToReady());
-            game.perform(new ToSet());
-            game.perform(new ToPlaying());
+            Await.until("option list", () -> console.field().options().options(8).listReceived());
+            referee.runtime().perform(new ToReady()); // enqueued: the owner applies them once started
+            referee.runtime().perform(new ToSet());
+            referee.runtime().perform(new ToPlaying());
             referee.start();
-            Await.until("match mode from the GameController's PLAYING", () -> console.matchMode().playIsOn());
-            assertEquals("127.0.0.1", console.gcSources().pinnedHost());
+            Await.until("match mode from the GameController's PLAYING", () -> console.referee().matchMode().playIsOn());
+            assertEquals("127.0.0.1", console.referee().sources().pinnedHost());
 
             int forged = 10;
             for (int i = 0; i < forged; i++) {
                 byte[] finished = forgedFinished(i);
                 forger.send(new DatagramPacket(finished, finished.length, consoleGcPort));
             }
-            Await.until("the forger's packets counted", () -> console.gcSources().activeIntruders().stream()
+            Await.until("the forger's packets counted", () -> console.referee().sources().activeIntruders().stream()
                     .anyMatch(in -> in.packets() == forged));
             byte[] finished = forgedFinished(200);
             sameAddressForger.send(new DatagramPacket(finished, finished.length, consoleGcPort));
-            Await.until("the packet number going back flagged", () -> console.gcSources().suspicious() > 0);
+            Await.until("the packet number going back flagged", () -> console.referee().sources().suspicious() > 0);
 
-            assertTrue(console.matchMode().playIsOn(), "a forged FINISHED never ends match mode");
-            GameControllerSources.Intruder intruder = console.gcSources().activeIntruders().get(0);
+            assertTrue(console.referee().matchMode().playIsOn(), "a forged FINISHED never ends match mode");
+            GameControllerSources.Intruder intruder = console.referee().sources().activeIntruders().get(0);
             assertTrue(intruder.source().startsWith("127.0.0.2:"), intruder.source());
-            String status = new touchline.ui.ConsoleStatus(console).silence();
+            String status = new touchline.ui.ConsoleStatus(console.field(), console.referee(), console.replays(), console.remote()).silence();
             assertTrue(status.contains("another source is sending game states: " + intruder.source() + " ("
                     + forged + " packets, last FINISHED)"), status);
             assertTrue(status.contains("Silent: match mode"), status);
@@ -117,15 +117,15 @@ class GameControllerSpoofingIntegrationTest {
                     .allMatch(e -> e.error() != null && e.error().contains("not believed")));
 
             out.clear();
-            SendResult held = console.setOption(8, "demo.text", true);
+            SendResult held = console.optionSwitches().set(8, "demo.text", true);
             assertEquals(SendResult.Outcome.HELD, held.outcome());
-            long before = console.matchMode().heldCount();
+            long before = console.referee().matchMode().heldCount();
             for (int i = 0; i < 3; i++) { // FINISHED keeps coming while the option session retries
                 byte[] more = forgedFinished(forged + i);
                 forger.send(new DatagramPacket(more, more.length, consoleGcPort));
             }
-            Await.until("a retry held back", () -> console.matchMode().heldCount() > before);
-            assertTrue(console.matchMode().playIsOn());
+            Await.until("a retry held back", () -> console.referee().matchMode().heldCount() > before);
+            assertTrue(console.referee().matchMode().playIsOn());
             assertEquals(List.of(), out, "nothing leaves the console for a robot during play");
         }
     }

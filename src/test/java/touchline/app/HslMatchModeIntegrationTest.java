@@ -52,33 +52,33 @@ class HslMatchModeIntegrationTest {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))
                 .withGameControllerPort(gcPort);
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.field().port()).start();
              DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT) {
                     out.add(e);
                 } else if (e.channel() == Channel.GAMECONTROLLER) {
                     heard.add(e);
                 }
             });
-            Await.until("option list", () -> console.options().options(8).listReceived());
-            assertTrue(console.matchMode().mayConsoleSend());
+            Await.until("option list", () -> console.field().options().options(8).listReceived());
+            assertTrue(console.referee().matchMode().mayConsoleSend());
 
             byte[] playing = golden("07-playing-after-delay.bin");
             assertEquals(158, playing.length);
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
-            Await.until("match mode from the v20 datagram", () -> console.matchMode().playIsOn());
+            Await.until("match mode from the v20 datagram", () -> console.referee().matchMode().playIsOn());
             // counted from here: until the datagram was believed the console could still ask for
             // the robot's option list (it did once, beside a loaded machine)
             out.clear();
             assertEquals("gc.hsl20", heard.get(0).kind());
-            assertTrue(console.matchMode().notice().contains("PLAYING"), console.matchMode().notice());
+            assertTrue(console.referee().matchMode().notice().contains("PLAYING"), console.referee().matchMode().notice());
 
-            SendResult held = console.setOption(8, "demo.text", true);
+            SendResult held = console.optionSwitches().set(8, "demo.text", true);
             assertEquals(SendResult.Outcome.HELD, held.outcome());
-            long before = console.matchMode().heldCount();
+            long before = console.referee().matchMode().heldCount();
             // the option session retries on its own: wait for a retry to be held, then nothing may have left
-            Await.until("a retry held back", () -> console.matchMode().heldCount() > before);
+            Await.until("a retry held back", () -> console.referee().matchMode().heldCount() > before);
             assertEquals(List.of(), out, "nothing leaves the console for a robot during play");
         }
     }
@@ -102,7 +102,7 @@ class HslMatchModeIntegrationTest {
                 // during the robots' fake SET the monitor copy already says PLAYING
                 byte[] trueData = golden("05-playing-delayed.monitor.bin");
                 gc.send(new DatagramPacket(trueData, trueData.length, InetAddress.getLoopbackAddress(), gcPort));
-                Await.until("match mode from the true data", () -> console.matchMode().playIsOn());
+                Await.until("match mode from the true data", () -> console.referee().matchMode().playIsOn());
 
                 byte[] robot = golden("return/r01-team5-player1-upright.bin");
                 byte[] forwarded = new byte[36];
@@ -110,8 +110,8 @@ class HslMatchModeIntegrationTest {
                 forwarded[3] = 7;
                 System.arraycopy(robot, 0, forwarded, 4, 32);
                 gc.send(new DatagramPacket(forwarded, 36, InetAddress.getLoopbackAddress(), forwardPort));
-                Await.until("robot 5/1 seen through the GameController", () -> !console.gcMonitor().robots().isEmpty());
-                assertEquals("10.0.0.7", console.gcMonitor().robots().values().iterator().next().robotHost());
+                Await.until("robot 5/1 seen through the GameController", () -> !console.referee().monitor().robots().isEmpty());
+                assertEquals("10.0.0.7", console.referee().monitor().robots().values().iterator().next().robotHost());
             }
         }
     }

@@ -51,7 +51,7 @@ class LossyGameControllerStartIntegrationTest {
         try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
              RobotProcess robot = RobotProcess.robot(8, consolePort).start();
              Console console = new Console(config)) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT) {
                     out.add(e);
                 }
@@ -73,17 +73,17 @@ class LossyGameControllerStartIntegrationTest {
             // watched from the start to the PLAYING heard: the console never may talk in between
             AtomicBoolean mayTalk = new AtomicBoolean();
             Await.until("PLAYING heard", 5000, () -> {
-                if (console.matchMode().mayConsoleSend()) {
+                if (console.referee().matchMode().mayConsoleSend()) {
                     mayTalk.set(true);
                 }
-                return console.matchMode().playIsOn();
+                return console.referee().matchMode().playIsOn();
             });
             assertFalse(mayTalk.get(), "the console could talk to robots before it heard the lossy GameController");
-            Await.until("the robot seen", 5000, () -> console.robots().robot(8).isPresent());
-            long before = console.matchMode().heldCount();
-            Await.until("the option list request held back", 5000, () -> console.matchMode().heldCount() > before);
+            Await.until("the robot seen", 5000, () -> console.field().robots().robot(8).isPresent());
+            long before = console.referee().matchMode().heldCount();
+            Await.until("the option list request held back", 5000, () -> console.referee().matchMode().heldCount() > before);
             assertEquals(List.of(), out, "nothing to the robot");
-            assertTrue(console.matchMode().notice().contains("PLAYING"), console.matchMode().notice());
+            assertTrue(console.referee().matchMode().notice().contains("PLAYING"), console.referee().matchMode().notice());
         } finally {
             field.shutdownNow();
         }

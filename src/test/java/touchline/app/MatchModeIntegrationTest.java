@@ -40,33 +40,33 @@ class MatchModeIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.field().port()).start();
              DatagramSocket gc = new DatagramSocket()) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT) {
                     out.add(e);
                 }
             });
-            Await.until("option list", () -> console.options().options(8).listReceived());
+            Await.until("option list", () -> console.field().options().options(8).listReceived());
 
             byte[] playing = golden("04-playing.bin");
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), robot.port()));
-            Await.until("the robot reports PLAYING", () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
-            assertTrue(console.matchMode().playIsOn());
+            Await.until("the robot reports PLAYING", () -> console.field().robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
+            assertTrue(console.referee().matchMode().playIsOn());
 
             out.clear();
-            SendResult held = console.setOption(8, "demo.text", true);
+            SendResult held = console.optionSwitches().set(8, "demo.text", true);
             assertEquals(SendResult.Outcome.HELD, held.outcome());
             assertTrue(held.reason().contains("PLAYING"), held.reason());
             Thread.sleep(1500); // long enough for the option session to retry once: it must stay silent
             assertEquals(List.of(), out, "nothing but GameController packets leaves the console during play");
-            assertTrue(console.matchMode().heldCount() >= 2);
+            assertTrue(console.referee().matchMode().heldCount() >= 2);
 
             byte[] initial = golden("00-initial.bin");
             gc.send(new DatagramPacket(initial, initial.length, InetAddress.getLoopbackAddress(), robot.port()));
-            Await.until("the robot reports INITIAL", () -> console.robots().robot(8).orElseThrow().gameState().equals("INITIAL"));
+            Await.until("the robot reports INITIAL", () -> console.field().robots().robot(8).orElseThrow().gameState().equals("INITIAL"));
             Await.until("the held request went out and data streams", () ->
-                    console.options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false));
+                    console.field().options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false));
             assertTrue(out.stream().anyMatch(e -> e.message() instanceof Fumanoid.Message m
                     && m.hasExtension(Fumanoid.debugOptionRequest)));
         }

@@ -22,6 +22,11 @@ class NaoCallFeedTest {
     private final AtomicBoolean replaying = new AtomicBoolean();
     private final NaoCallFeed feed = new NaoCallFeed(replaying::get);
 
+    /** As the console's two streams hand it on: a replayed envelope to the replay's slot, any other to the live one. */
+    private void publish(Envelope e) {
+        (e.replayed() ? feed.replay() : feed.live()).accept(e);
+    }
+
     private static Envelope call(String module, String method, Origin origin) {
         HAWActorRPCRequest r = HAWActorRPCRequest.newBuilder().setModule(module).setMethod(method).build();
         return new Envelope(1, Direction.OUT, Channel.NAO_RPC, NAO, Envelope.NO_ROBOT, module + "." + method, r,
@@ -37,37 +42,37 @@ class NaoCallFeedTest {
     void saysTheNewestCallAndThenItsValueErrorOrDone() {
         assertEquals("", feed.line());
         assertEquals(0, feed.version());
-        feed.accept(call("ALTextToSpeech", "getVolume", Origin.REMOTE));
+        publish(call("ALTextToSpeech", "getVolume", Origin.REMOTE));
         assertEquals("ALTextToSpeech.getVolume: " + NaoCallFeed.NO_REPLY_YET, feed.line());
         long sent = feed.version();
-        feed.accept(reply("ALTextToSpeech.getVolume", HAWActorRPCResponse.newBuilder()
+        publish(reply("ALTextToSpeech.getVolume", HAWActorRPCResponse.newBuilder()
                 .setReturnval(new MixedValueCodec().encode(80L)).build(), Origin.REMOTE));
         assertEquals("ALTextToSpeech.getVolume: 80", feed.line());
         assertTrue(feed.version() > sent);
 
-        feed.accept(reply("ALMotion.fly", HAWActorRPCResponse.newBuilder().setError("no method fly").build(),
+        publish(reply("ALMotion.fly", HAWActorRPCResponse.newBuilder().setError("no method fly").build(),
                 Origin.REMOTE));
         assertEquals("ALMotion.fly: error: no method fly", feed.line());
-        feed.accept(reply("ALMotion.wakeUp", HAWActorRPCResponse.getDefaultInstance(), Origin.LIVE));
+        publish(reply("ALMotion.wakeUp", HAWActorRPCResponse.getDefaultInstance(), Origin.LIVE));
         assertEquals("ALMotion.wakeUp: done", feed.line());
     }
 
     @Test
     void anUnreadableOrStrayReplyIsSaidAsSuch() {
-        feed.accept(new Envelope(1, Direction.IN, Channel.NAO_RPC, NAO, Envelope.NO_ROBOT, "malformed", null,
+        publish(new Envelope(1, Direction.IN, Channel.NAO_RPC, NAO, Envelope.NO_ROBOT, "malformed", null,
                 new byte[]{1, 2}, "expected [8-byte id][empty][reply], got 1 frames", Origin.REMOTE));
         assertEquals("unreadable NAO reply: expected [8-byte id][empty][reply], got 1 frames", feed.line());
-        feed.accept(new Envelope(2, Direction.IN, Channel.NAO_RPC, NAO, Envelope.NO_ROBOT, "ALMotion.rest", null,
+        publish(new Envelope(2, Direction.IN, Channel.NAO_RPC, NAO, Envelope.NO_ROBOT, "ALMotion.rest", null,
                 new byte[]{(byte) 0xff}, null, Origin.REMOTE));
         assertTrue(feed.line().startsWith("ALMotion.rest: unreadable reply"), feed.line());
-        feed.accept(reply("stray", HAWActorRPCResponse.getDefaultInstance(), Origin.REMOTE));
+        publish(reply("stray", HAWActorRPCResponse.getDefaultInstance(), Origin.REMOTE));
         assertEquals("a reply to no waiting call: done", feed.line());
     }
 
     @Test
     void ignoresWhatIsNoNaoCall() {
         HAWActorRPCResponse r = HAWActorRPCResponse.getDefaultInstance();
-        feed.accept(new Envelope(1, Direction.IN, Channel.NAO_CAMERA, NAO, Envelope.NO_ROBOT, "frame", r,
+        publish(new Envelope(1, Direction.IN, Channel.NAO_CAMERA, NAO, Envelope.NO_ROBOT, "frame", r,
                 r.toByteArray(), null, Origin.REMOTE));
         assertEquals("", feed.line());
         assertEquals(0, feed.version());
@@ -75,8 +80,8 @@ class NaoCallFeedTest {
 
     @Test
     void replayedCallsAreShownWhileAReplayIsOpenAndGoWithIt() {
-        feed.accept(reply("ALMotion.wakeUp", HAWActorRPCResponse.getDefaultInstance(), Origin.LIVE));
-        feed.accept(call("ALRobotPosture", "goToPosture", Origin.REPLAY));
+        publish(reply("ALMotion.wakeUp", HAWActorRPCResponse.getDefaultInstance(), Origin.LIVE));
+        publish(call("ALRobotPosture", "goToPosture", Origin.REPLAY));
         assertEquals("ALMotion.wakeUp: done", feed.line(), "no replay open: the live calls");
         replaying.set(true);
         assertTrue(feed.showsReplay());

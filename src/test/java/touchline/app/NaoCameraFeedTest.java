@@ -24,13 +24,18 @@ class NaoCameraFeedTest {
     private final AtomicBoolean replaying = new AtomicBoolean();
     private final NaoCameraFeed feed = new NaoCameraFeed(now::get, replayPosition::get, replaying::get);
 
+    /** As the console's two streams hand it on: a replayed envelope to the replay's slot, any other to the live one. */
+    private void publish(Envelope e) {
+        (e.replayed() ? feed.replay() : feed.live()).accept(e);
+    }
+
     @Test
     void keepsTheNewestFrameWithItsSizeTimeAndSource() throws IOException {
         assertTrue(feed.latest().isEmpty());
         byte[] first = jpeg(160, 120);
         byte[] second = jpeg(320, 240);
-        feed.accept(frame(first, 10, Origin.LIVE));
-        feed.accept(frame(second, 20, Origin.REMOTE)); // a remote Touchline's frame counts as the field's
+        publish(frame(first, 10, Origin.LIVE));
+        publish(frame(second, 20, Origin.REMOTE)); // a remote Touchline's frame counts as the field's
         NaoFrame f = feed.latest().orElseThrow();
         assertArrayEquals(second, f.jpeg());
         assertEquals(320, f.width());
@@ -43,12 +48,12 @@ class NaoCameraFeedTest {
     @Test
     void ignoresWhatIsNoCameraFrame() throws IOException {
         CamResponse configured = CamResponse.getDefaultInstance();
-        feed.accept(new Envelope(1, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "configured",
+        publish(new Envelope(1, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "configured",
                 configured, configured.toByteArray(), null));
         Envelope out = frame(jpeg(8, 8), 2, Origin.LIVE);
-        feed.accept(new Envelope(2, Direction.OUT, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "frame",
+        publish(new Envelope(2, Direction.OUT, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "frame",
                 out.message(), out.raw(), null));
-        feed.accept(new Envelope(3, Direction.IN, Channel.NAO_RPC, CAMERA, Envelope.NO_ROBOT, "frame",
+        publish(new Envelope(3, Direction.IN, Channel.NAO_RPC, CAMERA, Envelope.NO_ROBOT, "frame",
                 out.message(), out.raw(), null));
         assertTrue(feed.latest().isEmpty());
         assertEquals("", feed.problem());
@@ -57,13 +62,13 @@ class NaoCameraFeedTest {
     @Test
     void saysTheServersErrorAndAnUnreadableReplyUntilFramesFlowAgain() throws IOException {
         CamResponse error = CamResponse.newBuilder().setError("no camera").build();
-        feed.accept(new Envelope(1, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "error", error,
+        publish(new Envelope(1, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "error", error,
                 error.toByteArray(), null));
         assertEquals("camera server: no camera", feed.problem());
-        feed.accept(new Envelope(2, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "malformed", null,
+        publish(new Envelope(2, Direction.IN, Channel.NAO_CAMERA, CAMERA, Envelope.NO_ROBOT, "malformed", null,
                 new byte[]{(byte) 0xff, 1}, "truncated"));
         assertEquals("unreadable camera reply: truncated", feed.problem());
-        feed.accept(frame(jpeg(8, 8), 3, Origin.LIVE));
+        publish(frame(jpeg(8, 8), 3, Origin.LIVE));
         assertEquals("", feed.problem());
     }
 
@@ -72,7 +77,7 @@ class NaoCameraFeedTest {
         byte[] jpeg = jpeg(16, 16);
         assertEquals(0, feed.framesPerSecond());
         for (int i = 0; i < 11; i++) {
-            feed.accept(frame(jpeg, i, Origin.LIVE));
+            publish(frame(jpeg, i, Origin.LIVE));
             now.addAndGet(100_000); // 10 a second by this console's clock, whatever the envelopes' times
         }
         assertEquals(10.0, feed.framesPerSecond(), 0.5);
@@ -85,8 +90,8 @@ class NaoCameraFeedTest {
     void showsTheReplaysFramesWhileOneIsOpenAndKeepsTheLiveOnesApart() throws IOException {
         byte[] live = jpeg(160, 120);
         byte[] replayed = jpeg(320, 240);
-        feed.accept(frame(live, 10, Origin.LIVE));
-        feed.accept(frame(replayed, 5, Origin.LIVE).asReplayed());
+        publish(frame(live, 10, Origin.LIVE));
+        publish(frame(replayed, 5, Origin.LIVE).asReplayed());
         assertArrayEquals(live, feed.latest().orElseThrow().jpeg());
         long liveSequence = feed.latest().orElseThrow().sequence();
         replaying.set(true);

@@ -54,19 +54,19 @@ class NaoSessionMatchModeIntegrationTest {
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
              Console console = new Console(config).start();
              DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() == Direction.OUT && e.channel() == Channel.NAO_RPC) {
                     naoOut.add(e);
                 }
             });
-            NaoSession nao = console.connectNao("127.0.0.1", sim.port(), 0, null, NaoLinkConfig.defaults());
-            assertEquals(List.of(nao), console.naoSessions());
+            NaoSession nao = console.naos().connect("127.0.0.1", sim.port(), 0, null, NaoLinkConfig.defaults());
+            assertEquals(List.of(nao), console.naos().sessions());
             Await.until("the NAO online", () -> nao.state() == ConnectionState.ONLINE);
-            Await.until("the console heard no GameController at its start", () -> console.matchMode().mayConsoleSend());
+            Await.until("the console heard no GameController at its start", () -> console.referee().matchMode().mayConsoleSend());
 
             byte[] playing = HslMatchModeIntegrationTest.golden("07-playing-after-delay.bin");
             gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), gcPort));
-            Await.until("match mode from the v20 datagram", () -> console.matchMode().playIsOn());
+            Await.until("match mode from the v20 datagram", () -> console.referee().matchMode().playIsOn());
 
             CallOutcome insert = get(nao.call(NaoCall.of("ALMemory", "insertData", "Touchline/held", 1)));
             assertInstanceOf(CallOutcome.HeldBack.class, insert);
@@ -81,7 +81,7 @@ class NaoSessionMatchModeIntegrationTest {
 
             byte[] finished = HslMatchModeIntegrationTest.golden("53-finished.bin");
             gc.send(new DatagramPacket(finished, finished.length, InetAddress.getLoopbackAddress(), gcPort));
-            Await.until("play over (FINISHED and the play memory)", () -> console.matchMode().mayConsoleSend());
+            Await.until("play over (FINISHED and the play memory)", () -> console.referee().matchMode().mayConsoleSend());
 
             assertInstanceOf(CallOutcome.Failed.class, get(nao.call(NaoCall.of("ALMemory", "getData", "Touchline/held"))),
                     "the held insertData never ran on the robot");
@@ -92,7 +92,7 @@ class NaoSessionMatchModeIntegrationTest {
                     "the move's request is on the console's stream (recorder, views)");
 
             nao.close();
-            assertEquals(List.of(), console.naoSessions());
+            assertEquals(List.of(), console.naos().sessions());
         }
     }
 }

@@ -27,7 +27,7 @@ class NaoViewModelTest {
     @Test
     void connectsDiscoversCallsAndShowsTheFramesOfTheConsolesStream() throws Exception {
         try (FakeNaoRobot robot = new FakeNaoRobot(0); FakeNaoCamera camera = new FakeNaoCamera();
-             Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+             Console console = console(); NaoViewModel nao = new NaoViewModel(console.naos())) {
             nao.setResolution(1);
             nao.showCamera(true);
             assertTrue(nao.connect("127.0.0.1", " " + robot.port(), Integer.toString(camera.port()), "unused", true),
@@ -45,13 +45,13 @@ class NaoViewModelTest {
             nao.disconnect();
             assertFalse(nao.connected());
             assertEquals("not connected", nao.state());
-            assertTrue(console.naoSessions().isEmpty(), "the console forgot the session");
+            assertTrue(console.naos().sessions().isEmpty(), "the console forgot the session");
         }
     }
 
     @Test
     void withNothingConnectedItSaysSoAndTellsABadParameterFirst() throws Exception {
-        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console.naos())) {
             nao.stand();
             assertEquals("not connected", nao.result());
             nao.call("ALMotion", null, "");
@@ -69,11 +69,11 @@ class NaoViewModelTest {
 
     @Test
     void onAViewerEveryCommandIsRefusedAndTheRemoteFramesAreShown() throws Exception {
-        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
-            console.viewRemote(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console.naos())) {
+            console.remote().view(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
             assertFalse(nao.connect("127.0.0.1", "5555", "5556", "unused", true));
             assertEquals(Console.COMMANDS_OFF, nao.result());
-            assertTrue(console.naoSessions().isEmpty());
+            assertTrue(console.naos().sessions().isEmpty());
             nao.call("ALMotion", "wakeUp", "");
             assertEquals(Console.COMMANDS_OFF, nao.result());
             nao.say("hi");
@@ -83,26 +83,26 @@ class NaoViewModelTest {
             assertTrue(nao.state().startsWith("viewing a remote Touchline"), nao.state());
 
             byte[] jpeg = touchline.testing.NaoCameraEnvelopes.jpeg(160, 120);
-            console.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, 42, Origin.REMOTE));
+            console.field().bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, 42, Origin.REMOTE));
             assertArrayEquals(jpeg, nao.frame().orElseThrow().jpeg());
         }
     }
 
     @Test
     void onAViewerTheRemoteConsolesNaoCallsAndTheirOutcomesAreTheResultLine() throws Exception {
-        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
-            console.viewRemote(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console.naos())) {
+            console.remote().view(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
             assertEquals("", nao.result());
             touchline.proto.Nao.HAWActorRPCResponse volume = touchline.proto.Nao.HAWActorRPCResponse.newBuilder()
                     .setReturnval(new touchline.protocol.nao.MixedValueCodec().encode(80L)).build();
-            console.bus().accept(new touchline.transport.Envelope(1, touchline.transport.Direction.IN,
+            console.field().bus().accept(new touchline.transport.Envelope(1, touchline.transport.Direction.IN,
                     touchline.transport.Channel.NAO_RPC, touchline.testing.NaoCameraEnvelopes.CAMERA,
                     touchline.transport.Envelope.NO_ROBOT, "ALTextToSpeech.getVolume", volume, volume.toByteArray(),
                     null, Origin.REMOTE));
             assertEquals("ALTextToSpeech.getVolume: 80", nao.result());
             nao.stand();
             assertEquals(Console.COMMANDS_OFF, nao.result(), "the view's own refusal is newer");
-            console.bus().accept(new touchline.transport.Envelope(2, touchline.transport.Direction.IN,
+            console.field().bus().accept(new touchline.transport.Envelope(2, touchline.transport.Direction.IN,
                     touchline.transport.Channel.NAO_RPC, touchline.testing.NaoCameraEnvelopes.CAMERA,
                     touchline.transport.Envelope.NO_ROBOT, "ALMotion.wakeUp",
                     touchline.proto.Nao.HAWActorRPCResponse.getDefaultInstance(), new byte[0], null, Origin.REMOTE));
@@ -115,21 +115,21 @@ class NaoViewModelTest {
         Path file = dir.resolve("nao.mcap");
         byte[] last = touchline.testing.NaoCameraEnvelopes.jpeg(320, 240);
         try (Console recording = console()) {
-            recording.startRecording(file);
-            long t = recording.clock().nowMicros();
-            recording.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(
+            recording.recordings().start(file);
+            long t = recording.field().clock().nowMicros();
+            recording.field().bus().accept(touchline.testing.NaoCameraEnvelopes.frame(
                     touchline.testing.NaoCameraEnvelopes.jpeg(160, 120), t, Origin.LIVE));
-            recording.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(last, t + 66_000, Origin.LIVE));
-            recording.stopRecording();
+            recording.field().bus().accept(touchline.testing.NaoCameraEnvelopes.frame(last, t + 66_000, Origin.LIVE));
+            recording.recordings().stop();
         }
-        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
-            Replay replay = console.openReplay(file);
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console.naos())) {
+            Replay replay = console.replays().open(file);
             assertTrue(nao.frame().isEmpty(), "nothing played yet");
             assertEquals(2, replay.runFor(100));
             NaoFrame shown = nao.frame().orElseThrow();
             assertArrayEquals(last, shown.jpeg(), "the recording's newest frame");
             assertEquals(240, shown.height());
-            console.closeReplay();
+            console.replays().close();
             assertTrue(nao.frame().isEmpty(), "the replay's frames went with it; no live NAO");
         }
     }
@@ -140,19 +140,19 @@ class NaoViewModelTest {
         touchline.proto.Nao.HAWActorRPCResponse error = touchline.proto.Nao.HAWActorRPCResponse.newBuilder()
                 .setError("ALMotion has no method fly").build();
         try (Console recording = console()) {
-            recording.startRecording(file);
-            recording.bus().accept(new touchline.transport.Envelope(recording.clock().nowMicros(),
+            recording.recordings().start(file);
+            recording.field().bus().accept(new touchline.transport.Envelope(recording.field().clock().nowMicros(),
                     touchline.transport.Direction.IN, touchline.transport.Channel.NAO_RPC,
                     touchline.testing.NaoCameraEnvelopes.CAMERA, touchline.transport.Envelope.NO_ROBOT, "ALMotion.fly",
                     error, error.toByteArray(), null, Origin.LIVE));
-            recording.stopRecording();
+            recording.recordings().stop();
         }
-        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console)) {
-            Replay replay = console.openReplay(file);
+        try (Console console = console(); NaoViewModel nao = new NaoViewModel(console.naos())) {
+            Replay replay = console.replays().open(file);
             assertEquals("", nao.result(), "nothing played yet");
             assertEquals(1, replay.runFor(100));
             assertEquals("ALMotion.fly: error: ALMotion has no method fly", nao.result());
-            console.closeReplay();
+            console.replays().close();
             assertEquals("", nao.result(), "the replay's calls went with it");
         }
     }

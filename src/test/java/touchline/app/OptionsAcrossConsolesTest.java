@@ -36,7 +36,7 @@ class OptionsAcrossConsolesTest {
     }
 
     private static boolean streaming(Console c, String option) {
-        return c.options().options(ROBOT).option(option).map(o -> o.streaming()).orElse(false);
+        return c.field().options().options(ROBOT).option(option).map(o -> o.streaming()).orElse(false);
     }
 
     private static long offRequests(List<Envelope> out, String option) {
@@ -52,19 +52,19 @@ class OptionsAcrossConsolesTest {
         Path fileA = dirA.resolve("wanted-options.properties");
         try (LoopbackField field = new LoopbackField()) {
             try (Console a = field.join()) {
-            a.rememberWantedOptions(fileA);
+            a.optionSwitches().rememberWanted(fileA);
             try (RobotProcess robot = RobotProcess.robot(ROBOT, field.port()).start()) {
                 field.robotAt(robot.port());
-                Await.until("console A has the option list", () -> a.options().options(ROBOT).listReceived());
-                assertTrue(a.setOption(ROBOT, "demo.text", true).isSent());
+                Await.until("console A has the option list", () -> a.field().options().options(ROBOT).listReceived());
+                assertTrue(a.optionSwitches().set(ROBOT, "demo.text", true).isSent());
                 Await.until("demo.text streams to A", () -> streaming(a, "demo.text"));
 
                 List<Envelope> fromB = new CopyOnWriteArrayList<>();
                 try (Console b = field.join()) {
-                    b.rememberWantedOptions(dirB.resolve("wanted-options.properties"));
-                    b.bus().subscribe(fromB::add);
-                    Await.until("console B has the option list", () -> b.options().options(ROBOT).listReceived());
-                    assertTrue(b.setOption(ROBOT, "demo.plotter", true).isSent());
+                    b.optionSwitches().rememberWanted(dirB.resolve("wanted-options.properties"));
+                    b.field().bus().subscribe(fromB::add);
+                    Await.until("console B has the option list", () -> b.field().options().options(ROBOT).listReceived());
+                    assertTrue(b.optionSwitches().set(ROBOT, "demo.plotter", true).isSent());
                     Await.until("demo.plotter streams to B", () -> streaming(b, "demo.plotter"));
                     Await.until("B sees A's demo.text streaming too", () -> streaming(b, "demo.text"));
                     // B's reconciliation has run many times by now (every 100 ms)
@@ -73,23 +73,23 @@ class OptionsAcrossConsolesTest {
                     assertEquals(0, offRequests(fromB, "demo.text"), "B never switched off A's option");
                     assertTrue(streaming(a, "demo.text"), "A's option is still on");
 
-                    assertTrue(b.setOption(ROBOT, "demo.plotter", false).isSent());
+                    assertTrue(b.optionSwitches().set(ROBOT, "demo.plotter", false).isSent());
                     Await.until("demo.plotter stops for A", () -> !streaming(a, "demo.plotter"));
                     assertTrue(streaming(a, "demo.text"), "B switching its option off left A's on");
-                    assertFalse(b.setOption(ROBOT, "demo.text", false).isSent(), "B may not switch off A's option");
-                    field.forget(b.port());
+                    assertFalse(b.optionSwitches().set(ROBOT, "demo.text", false).isSent(), "B may not switch off A's option");
+                    field.forget(b.field().port());
                 }
                 assertTrue(streaming(a, "demo.text"), "closing B switched nothing off");
 
                 // A and the robot stop; the robot starts afresh, so nothing is on when A comes back
-                field.forget(a.port());
+                field.forget(a.field().port());
             }
             }
             try (RobotProcess robot = RobotProcess.robot(ROBOT, field.port()).start();
                  Console again = field.join()) {
                 field.robotAt(robot.port());
-                again.rememberWantedOptions(fileA);
-                assertEquals(Set.of("demo.text"), again.options().wanted(ROBOT), "restored before the robot is seen");
+                again.optionSwitches().rememberWanted(fileA);
+                assertEquals(Set.of("demo.text"), again.field().options().wanted(ROBOT), "restored before the robot is seen");
                 Await.until("demo.text streams again to the restarted A without a click", () -> streaming(again, "demo.text"));
             }
         }

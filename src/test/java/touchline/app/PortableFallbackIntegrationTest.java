@@ -66,20 +66,20 @@ class PortableFallbackIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1")
                 .withListenPort(0).withTransport("nio"));
         try (Console console = new Console(config).start()) {
-            assertEquals(UdpBackend.Kind.NIO, console.udp().backend().kind());
-            RuntimeReport report = console.runtime();
+            assertEquals(UdpBackend.Kind.NIO, console.field().udp().backend().kind());
+            RuntimeReport report = console.field().runtime();
             assertEquals("NIO · normal priority", report.portability(), "the status bar says both fallbacks");
             assertTrue(report.lines().stream().anyMatch(l -> l.equals("UDP transport: NIO (asked for)")
                     || l.startsWith("UDP transport: NIO (asked for); ")), report.lines().toString());
             assertTrue(report.lines().contains("GameController sender: normal priority (switched off "
                     + "(-Dtouchline.realtime=off))"), report.lines().toString());
 
-            console.bus().subscribe(seen::add);
-            try (RobotProcess r = RobotProcess.robot(9, console.port()).start()) {
-                Await.until("robot 9 appears over NIO", () -> console.robots().robot(9).map(RobotSnapshot::online).orElse(false));
-                assertEquals(13, console.robots().robot(9).orElseThrow().teamId());
-                Await.until("option list", () -> console.options().options(9).listReceived());
-                assertTrue(console.setOption(9, "demo.text", true).isSent(), "the request went out over NIO");
+            console.field().bus().subscribe(seen::add);
+            try (RobotProcess r = RobotProcess.robot(9, console.field().port()).start()) {
+                Await.until("robot 9 appears over NIO", () -> console.field().robots().robot(9).map(RobotSnapshot::online).orElse(false));
+                assertEquals(13, console.field().robots().robot(9).orElseThrow().teamId());
+                Await.until("option list", () -> console.field().options().options(9).listReceived());
+                assertTrue(console.optionSwitches().set(9, "demo.text", true).isSent(), "the request went out over NIO");
                 Await.until("demo.text streams", () -> seen.stream().anyMatch(e -> e.direction() == Direction.IN
                         && e.robotId() == 9 && e.message() instanceof Fumanoid.Message m
                         && m.hasExtension(Fumanoid.debugText)

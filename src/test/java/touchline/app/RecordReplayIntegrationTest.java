@@ -35,25 +35,25 @@ class RecordReplayIntegrationTest {
         Path file = dir.resolve("match.mcap");
         List<Envelope> live = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start()) {
-            console.startRecording(file);
-            console.bus().subscribe(live::add);
-            int port = console.port();
+            console.recordings().start(file);
+            console.field().bus().subscribe(live::add);
+            int port = console.field().port();
             try (RobotProcess a = RobotProcess.robot(1, port).start(); RobotProcess b = RobotProcess.robot(2, port).start()) {
-                Await.until("both option lists", () -> console.options().options(1).listReceived()
-                        && console.options().options(2).listReceived());
-                console.setOption(1, "demo.plotter", true);
+                Await.until("both option lists", () -> console.field().options().options(1).listReceived()
+                        && console.field().options().options(2).listReceived());
+                console.optionSwitches().set(1, "demo.plotter", true);
                 Await.until("plots arrive", () -> live.stream().filter(e -> e.kind().equals("debugPlot")).count() >= 5);
                 Await.until("a good stretch of traffic", () -> live.size() > 40);
             }
-            console.stopRecording();
+            console.recordings().stop();
         }
         assertTrue(live.size() > 40, "recorded " + live.size());
 
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback())) {
-            console.setLiveListening(false);
-            console.bus().subscribe(replayed::add);
-            Replay replay = console.openReplay(file);
+            console.field().setLiveListening(false);
+            console.field().replayStream().subscribe(replayed::add);
+            Replay replay = console.replays().open(file);
             assertEquals(List.of(), replay.problems());
             replay.setSpeed(50);
             replay.play();
@@ -62,9 +62,9 @@ class RecordReplayIntegrationTest {
             for (int i = 0; i < live.size(); i++) {
                 assertEquals(live.get(i).asReplayed(), replayed.get(i), "envelope " + i);
             }
-            List<Integer> ids = new ArrayList<>(console.robots().robots().stream().map(RobotSnapshot::id).toList());
+            List<Integer> ids = new ArrayList<>(console.field().robots().robots().stream().map(RobotSnapshot::id).toList());
             assertEquals(List.of(1, 2), ids, "the replayed robots are in the model");
-            assertTrue(console.robots().robots().stream().allMatch(RobotSnapshot::replayed), "and marked as replayed");
+            assertTrue(console.field().robots().robots().stream().allMatch(RobotSnapshot::replayed), "and marked as replayed");
         }
     }
 }

@@ -56,22 +56,22 @@ class ReplaySandboxIntegrationTest {
     private static void recordAMatch(Path file) throws Exception {
         List<Envelope> seen = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start();
-             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.field().port()).start();
              DatagramSocket gc = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
-            console.startRecording(file);
-            console.bus().subscribe(seen::add);
-            Await.until("option list", () -> console.options().options(8).listReceived());
-            assertTrue(console.setOption(8, PLOT, true).isSent());
+            console.recordings().start(file);
+            console.field().bus().subscribe(seen::add);
+            Await.until("option list", () -> console.field().options().options(8).listReceived());
+            assertTrue(console.optionSwitches().set(8, PLOT, true).isSent());
             Await.until("plots", () -> count(seen, "debugPlot") >= 10);
             byte[] playing = golden("04-playing.bin");
-            for (int port : new int[] {robot.port(), console.port()}) {
+            for (int port : new int[] {robot.port(), console.field().port()}) {
                 gc.send(new DatagramPacket(playing, playing.length, InetAddress.getLoopbackAddress(), port));
             }
-            Await.until("the robot reports PLAYING", () -> console.robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
+            Await.until("the robot reports PLAYING", () -> console.field().robots().robot(8).orElseThrow().gameState().equals("PLAYING"));
             // during play the robot keeps to the league's debug limit: one status a second, no option data
             long statuses = count(seen, "status");
             Await.until("statuses during play", () -> count(seen, "status") >= statuses + 2);
-            console.stopRecording();
+            console.recordings().stop();
         }
         assertTrue(seen.stream().anyMatch(e -> e.channel() == Channel.GAMECONTROLLER), "the GameController is recorded");
     }
@@ -86,23 +86,25 @@ class ReplaySandboxIntegrationTest {
         List<Envelope> sentLive = new CopyOnWriteArrayList<>();
         List<Envelope> replayed = new CopyOnWriteArrayList<>();
         try (Console console = new Console(loopback()).start();
-             RobotProcess robot = RobotProcess.robot(8, console.port()).start()) {
-            console.bus().subscribe(e -> {
+             RobotProcess robot = RobotProcess.robot(8, console.field().port()).start()) {
+            touchline.transport.EnvelopeSink both = e -> {
                 if (e.replayed()) {
                     replayed.add(e);
                 } else if (e.direction() == Direction.OUT) {
                     sentLive.add(e);
                 }
-            });
-            Await.until("the live robot's option list", () -> console.options().options(8).listReceived());
+            };
+            console.field().bus().subscribe(both);
+            console.field().replayStream().subscribe(both);
+            Await.until("the live robot's option list", () -> console.field().options().options(8).listReceived());
             // wanted live, and off in every option list the recording holds: a replayed list reaching
             // the option session would make it switch demo.text on again at the live robot
-            assertTrue(console.setOption(8, "demo.text", true).isSent());
+            assertTrue(console.optionSwitches().set(8, "demo.text", true).isSent());
             Await.until("demo.text streams live", () -> streaming(console, "demo.text"));
             sentLive.clear();
 
-            Replay replay = console.openReplay(file);
-            assertTrue(console.liveListening(), "the replay runs beside live traffic");
+            Replay replay = console.replays().open(file);
+            assertTrue(console.field().liveListening(), "the replay runs beside live traffic");
             replay.setSpeed(50);
             replay.play();
             Await.until("the replay played to its end", () -> replay.state().finished());
@@ -112,19 +114,19 @@ class ReplaySandboxIntegrationTest {
                     .filter(t -> !t.contains("debugPlot") && !t.contains("status")).toList() + " problems " + replay.problems());
             assertTrue(replayed.stream().anyMatch(e -> "PLAYING".equals(gameState(e))), "robot 8 reported PLAYING");
             assertTrue(replayed.stream().anyMatch(e -> e.direction() == Direction.OUT), "and the console's requests");
-            assertTrue(console.matchMode().mayConsoleSend(), console.matchMode().notice());
-            assertFalse(console.matchMode().playIsOn(), "match mode follows the live field only");
+            assertTrue(console.referee().matchMode().mayConsoleSend(), console.referee().matchMode().notice());
+            assertFalse(console.referee().matchMode().playIsOn(), "match mode follows the live field only");
 
-            RobotSnapshot live = console.robots().robot(8).orElseThrow();
-            RobotSnapshot fromReplay = console.robots().robot(8, Origin.REPLAY).orElseThrow();
+            RobotSnapshot live = console.field().robots().robot(8).orElseThrow();
+            RobotSnapshot fromReplay = console.field().robots().robot(8, Origin.REPLAY).orElseThrow();
             assertNotEquals("PLAYING", live.gameState(), "the live robot never heard PLAYING");
             assertEquals("PLAYING", fromReplay.gameState());
             assertTrue(fromReplay.label().endsWith("(replay)"), fromReplay.label());
             assertEquals(List.of(Origin.LIVE, Origin.REPLAY),
-                    console.robots().robots().stream().filter(r -> r.id() == 8).map(RobotSnapshot::origin).toList());
+                    console.field().robots().robots().stream().filter(r -> r.id() == 8).map(RobotSnapshot::origin).toList());
 
             // the proof that nothing went out: the next live request is the first datagram since the replay began
-            SendResult sent = console.setOption(8, PLOT, true);
+            SendResult sent = console.optionSwitches().set(8, PLOT, true);
             assertTrue(sent.isSent(), sent.toString());
             Await.until("the live robot streams " + PLOT, 5000, () -> streaming(console, PLOT));
             assertFalse(sentLive.isEmpty());
@@ -136,21 +138,21 @@ class ReplaySandboxIntegrationTest {
             // the option session's retry), nothing the recording held
             assertTrue(sentLive.stream().map(e -> e.extension(Fumanoid.debugOptionRequest)).filter(java.util.Objects::nonNull)
                     .allMatch(r -> r.getName().equals(PLOT) && r.getEnable()), "only the live request: " + sentLive);
-            assertTrue(console.options().options(8, Origin.REPLAY).listReceived(), "the replayed options are shown");
+            assertTrue(console.field().options().options(8, Origin.REPLAY).listReceived(), "the replayed options are shown");
 
             seekingBackStartsTheReplaysPlotsAfresh(console, replay, file);
-            assertSame(console.stores().replay().plots(), console.stores().plots(), "the views show the open replay");
+            assertSame(console.field().stores().replay().plots(), console.field().stores().plots(), "the views show the open replay");
 
-            console.closeReplay();
-            assertTrue(console.robots().robot(8, Origin.REPLAY).isEmpty(), "the replayed robot goes with the replay");
-            assertTrue(console.robots().robot(8).orElseThrow().online());
-            assertSame(console.stores().live().plots(), console.stores().plots(), "and the views show live data again");
+            console.replays().close();
+            assertTrue(console.field().robots().robot(8, Origin.REPLAY).isEmpty(), "the replayed robot goes with the replay");
+            assertTrue(console.field().robots().robot(8).orElseThrow().online());
+            assertSame(console.field().stores().live().plots(), console.field().stores().plots(), "and the views show live data again");
         }
     }
 
     private static void seekingBackStartsTheReplaysPlotsAfresh(Console console, Replay replay, Path file)
             throws Exception {
-        PlotStore plots = console.stores().replay().plots();
+        PlotStore plots = console.field().stores().replay().plots();
         int playedThrough = plots.snapshot(8, PLOT).series().get(0).count();
         // the middle of the plotting (during play the robot keeps to the debug limit and plots nothing)
         long from;
@@ -185,11 +187,11 @@ class ReplaySandboxIntegrationTest {
                 java.util.Arrays.copyOf(got.x(), got.count()));
         assertArrayEquals(java.util.Arrays.copyOf(expected.y(), expected.count()),
                 java.util.Arrays.copyOf(got.y(), got.count()));
-        assertTrue(console.stores().live().plots().snapshot(8, PLOT) != null, "the live robot's plot is untouched");
+        assertTrue(console.field().stores().live().plots().snapshot(8, PLOT) != null, "the live robot's plot is untouched");
     }
 
     private static boolean streaming(Console console, String option) {
-        return console.options().options(8).option(option).map(OptionState::streaming).orElse(false);
+        return console.field().options().options(8).option(option).map(OptionState::streaming).orElse(false);
     }
 
     private static String gameState(Envelope e) {

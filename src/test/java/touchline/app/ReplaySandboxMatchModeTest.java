@@ -16,7 +16,12 @@ import static org.junit.jupiter.api.Assertions.*;
 class ReplaySandboxMatchModeTest {
 
     private final MatchMode matchMode = new MatchMode(new ManualClock(1_000));
-    private final ReportedGameState reported = new ReportedGameState(matchMode);
+    /** As the console wires it: the reported game state listens to the live stream only. */
+    private final touchline.transport.LiveStream reported = new touchline.transport.LiveStream();
+
+    {
+        reported.subscribe(new ReportedGameState(matchMode));
+    }
 
     private static Envelope playing(int robot) {
         Fumanoid.Message m = Fumanoid.Message.newBuilder().setRobotID(robot)

@@ -58,11 +58,11 @@ class RobotGameControllerSpoofingIntegrationTest {
                 .withGameControllerPort(HslMatchModeIntegrationTest.freeLoopbackPort());
         ScheduledExecutorService field = Executors.newScheduledThreadPool(2);
         try (Console console = new Console(config).start();
-             RobotProcess robot = RobotProcess.robot(8, console.port()).start();
+             RobotProcess robot = RobotProcess.robot(8, console.field().port()).start();
              DatagramSocket gc = new DatagramSocket(ANY_LOOPBACK_PORT);
              DatagramSocket forger = new DatagramSocket(ANY_LOOPBACK_PORT)) {
             InetSocketAddress robotAddress = new InetSocketAddress(InetAddress.getLoopbackAddress(), robot.port());
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.direction() != Direction.IN || e.robotId() != 8) {
                     return;
                 }
@@ -72,13 +72,13 @@ class RobotGameControllerSpoofingIntegrationTest {
                     dataBeforeGame.incrementAndGet();
                 }
             });
-            Await.until("option list", 5000, () -> console.options().options(8).listReceived());
-            assertEquals(SendResult.Outcome.SENT, console.setOption(8, "demo.text", true).outcome());
+            Await.until("option list", 5000, () -> console.field().options().options(8).listReceived());
+            assertEquals(SendResult.Outcome.SENT, console.optionSwitches().set(8, "demo.text", true).outcome());
             Await.until("demo.text data flowing", 5000, () -> dataBeforeGame.get() > 0);
 
             // the GameController's own rate: a packet every 500 ms
             field.scheduleAtFixedRate(() -> send(gc, playing, robotAddress), 0, 500, TimeUnit.MILLISECONDS);
-            Await.until("the robot in PLAYING", 5000, () -> "PLAYING".equals(console.robots().robot(8).map(RobotSnapshot::gameState).orElse("")));
+            Await.until("the robot in PLAYING", 5000, () -> "PLAYING".equals(console.field().robots().robot(8).map(RobotSnapshot::gameState).orElse("")));
             recording.set(true);
             field.scheduleAtFixedRate(() -> {
                 if (forgedSent.get() < FORGED) {
@@ -99,7 +99,7 @@ class RobotGameControllerSpoofingIntegrationTest {
                     "the robot believed a forged state: " + statuses.stream().map(Fumanoid.Status::getGameState).toList());
             Fumanoid.Status last = statuses.get(statuses.size() - 1);
             assertTrue(last.hasGcOtherSource() && last.getGcOtherSource() > 0, "the forger's packets counted: " + last);
-            String shown = console.robots().robot(8).orElseThrow().gameStateShown();
+            String shown = console.field().robots().robot(8).orElseThrow().gameStateShown();
             assertTrue(shown.startsWith("PLAYING (") && shown.endsWith(" from another GameController, not believed)"),
                     shown);
             assertTrue(robot.isAlive());

@@ -61,7 +61,7 @@ class SecureRobotLinkIntegrationTest {
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))
                 .withSecurity(LinkSecurity.with(key, new CounterSource(System::currentTimeMillis, CounterSource.inMemory())));
         Console console = new Console(config);
-        console.bus().subscribe(seen::add);
+        console.field().bus().subscribe(seen::add);
         return console.start();
     }
 
@@ -72,12 +72,12 @@ class SecureRobotLinkIntegrationTest {
     }
 
     private static boolean enabledOnRobot(Console console, int robot, String option) {
-        return console.options().options(robot).options().stream()
+        return console.field().options().options(robot).options().stream()
                 .anyMatch(o -> o.name().equals(option) && o.enabledOnRobot());
     }
 
     private static Fumanoid.AuthCounters atRobot(Console console, int robot) {
-        Fumanoid.AuthCounters c = console.robots().robot(robot).map(r -> r.auth().atRobot()).orElse(null);
+        Fumanoid.AuthCounters c = console.field().robots().robot(robot).map(r -> r.auth().atRobot()).orElse(null);
         return c == null ? Fumanoid.AuthCounters.getDefaultInstance() : c;
     }
 
@@ -94,19 +94,19 @@ class SecureRobotLinkIntegrationTest {
         KeyDir team = keys("team");
         KeyDir rival = keys("rival");
         try (Console console = console(team.teamKey());
-             RobotProcess robot = RobotProcess.robot(3, console.port(), "--team-key",
+             RobotProcess robot = RobotProcess.robot(3, console.field().port(), "--team-key",
                      team.file(KeyDir.TEAM_KEY).toString()).start();
              DatagramChannel attacker = DatagramChannel.open()) {
-            Await.until("robot 3 verified with its option list", () -> console.options().options(3).listReceived()
-                    && console.robots().robot(3).map(r -> r.auth().state() == Authenticity.VERIFIED).orElse(false));
+            Await.until("robot 3 verified with its option list", () -> console.field().options().options(3).listReceived()
+                    && console.field().robots().robot(3).map(r -> r.auth().state() == Authenticity.VERIFIED).orElse(false));
 
             // the right key: the option switches on, and off again (the "on" request is kept as a capture)
-            assertTrue(console.setOption(3, "demo.plotter", true).isSent());
+            assertTrue(console.optionSwitches().set(3, "demo.plotter", true).isSent());
             Await.until("demo.plotter on", () -> enabledOnRobot(console, 3, "demo.plotter"));
             byte[] capture = seen.stream().filter(e -> e.direction() == Direction.OUT
                     && e.kind().equals("debugOptionRequest")).reduce((a, b) -> b).orElseThrow().raw();
             assertEquals('T', capture[capture.length - 32], "what went out carries the trailer");
-            assertTrue(console.setOption(3, "demo.plotter", false).isSent());
+            assertTrue(console.optionSwitches().set(3, "demo.plotter", false).isSent());
             Await.until("demo.plotter off", () -> !enabledOnRobot(console, 3, "demo.plotter"));
 
             // forgeries straight to the robot's port: no tag, another team's key, the capture replayed
@@ -123,7 +123,7 @@ class SecureRobotLinkIntegrationTest {
 
             // the robot handles datagrams in order: once a real request's answer is back, any
             // forgery would already have acted. It did not.
-            assertTrue(console.setOption(3, "demo.table", true).isSent());
+            assertTrue(console.optionSwitches().set(3, "demo.table", true).isSent());
             Await.until("demo.table on", () -> enabledOnRobot(console, 3, "demo.table"));
             assertFalse(enabledOnRobot(console, 3, "demo.text"), "the forged request switched nothing on");
             assertFalse(enabledOnRobot(console, 3, "demo.plotter"), "the replayed capture switched nothing on");
@@ -131,8 +131,8 @@ class SecureRobotLinkIntegrationTest {
             Fumanoid.AuthCounters c = atRobot(console, 3);
             assertEquals(0, c.getBadTag());
             assertTrue(c.getAccepted() >= 3, "the console's own requests were accepted: " + c);
-            assertTrue(console.robots().robot(3).orElseThrow().auth().describe().contains("replayed"),
-                    console.robots().robot(3).orElseThrow().auth().describe());
+            assertTrue(console.field().robots().robot(3).orElseThrow().auth().describe().contains("replayed"),
+                    console.field().robots().robot(3).orElseThrow().auth().describe());
         }
     }
 
@@ -141,24 +141,24 @@ class SecureRobotLinkIntegrationTest {
         KeyDir team = keys("team");
         KeyDir rival = keys("rival");
         try (Console console = console(team.teamKey());
-             RobotProcess impostor = RobotProcess.robot(4, console.port(), "--team-key",
+             RobotProcess impostor = RobotProcess.robot(4, console.field().port(), "--team-key",
                      rival.file(KeyDir.TEAM_KEY).toString()).start();
-             RobotProcess lab = RobotProcess.robot(5, console.port()).start()) {
+             RobotProcess lab = RobotProcess.robot(5, console.field().port()).start()) {
             Await.until("robot 4 forged, robot 5 heard", () ->
-                    console.robots().robot(4).map(r -> r.auth().state() == Authenticity.FORGED
+                    console.field().robots().robot(4).map(r -> r.auth().state() == Authenticity.FORGED
                             && r.auth().forged() >= 3).orElse(false)
-                            && console.robots().robot(5).map(r -> r.packets() >= 2).orElse(false));
-            RobotSnapshot r4 = console.robots().robot(4).orElseThrow();
+                            && console.field().robots().robot(5).map(r -> r.packets() >= 2).orElse(false));
+            RobotSnapshot r4 = console.field().robots().robot(4).orElseThrow();
             assertFalse(r4.online(), "forged data is not taken as the robot's");
             assertEquals(0, r4.packets());
             assertTrue(r4.auth().lastForgery().contains("another team key"), r4.auth().lastForgery());
             assertTrue(r4.auth().lastForgery().startsWith("127.0.0.1:" + impostor.port()), "with its source");
-            assertTrue(console.transportCounts().forgedIn() >= 3);
-            assertFalse(console.options().options(4).listReceived(), "nothing of the impostor's reached the model");
+            assertTrue(console.field().transportCounts().forgedIn() >= 3);
+            assertFalse(console.field().options().options(4).listReceived(), "nothing of the impostor's reached the model");
 
             // issue 35: a console with a key shows a robot without one as untagged and sends it nothing
-            assertEquals(Authenticity.UNTAGGED, console.robots().robot(5).orElseThrow().auth().state());
-            touchline.transport.SendResult refused = console.setOption(5, "demo.text", true);
+            assertEquals(Authenticity.UNTAGGED, console.field().robots().robot(5).orElseThrow().auth().state());
+            touchline.transport.SendResult refused = console.optionSwitches().set(5, "demo.text", true);
             assertFalse(refused.isSent());
             assertTrue(String.valueOf(refused).contains("untagged"), String.valueOf(refused));
             assertTrue(seen.stream().noneMatch(e -> e.direction() == Direction.OUT && e.robotId() == 5),
@@ -175,12 +175,12 @@ class SecureRobotLinkIntegrationTest {
         Path file = java.nio.file.Files.writeString(tmp.resolve("stream.txt"), line);
         String key = team.file(KeyDir.TEAM_KEY).toString();
         try (Console console = console(team.teamKey());
-             RobotProcess printer = RobotProcess.robot(6, console.port(), "--team-key", key,
+             RobotProcess printer = RobotProcess.robot(6, console.field().port(), "--team-key", key,
                      "--reliable-print").start();
-             RobotProcess sender = RobotProcess.robot(7, console.port(), "--team-key", key).start()) {
-            Await.until("robots 6 and 7 verified", () -> console.robots().robots().stream()
+             RobotProcess sender = RobotProcess.robot(7, console.field().port(), "--team-key", key).start()) {
+            Await.until("robots 6 and 7 verified", () -> console.field().robots().robots().stream()
                     .filter(r -> r.auth().state() == Authenticity.VERIFIED).count() == 2);
-            touchline.transport.ReliableSession toPrinter = console.reliable()
+            touchline.transport.ReliableSession toPrinter = console.field().reliable()
                     .open(new InetSocketAddress("127.0.0.1", printer.port()));
             byte[] bytes = line.getBytes(java.nio.charset.StandardCharsets.US_ASCII);
             for (int off = 0; off < bytes.length; off += 300) {
@@ -194,9 +194,9 @@ class SecureRobotLinkIntegrationTest {
         // robot to console: a robot with the key sends a file; the console takes its tagged segments
         try (Console console = console(team.teamKey())) {
             java.io.ByteArrayOutputStream got = new java.io.ByteArrayOutputStream();
-            try (RobotProcess sender = RobotProcess.robot(8, console.port(), "--team-key", key,
+            try (RobotProcess sender = RobotProcess.robot(8, console.field().port(), "--team-key", key,
                     "--reliable-send", file.toString()).start()) {
-                touchline.transport.ReliableSession fromSender = console.reliable()
+                touchline.transport.ReliableSession fromSender = console.field().reliable()
                         .open(new InetSocketAddress("127.0.0.1", sender.port()));
                 fromSender.onReceive(p -> {
                     synchronized (got) {
@@ -211,7 +211,7 @@ class SecureRobotLinkIntegrationTest {
                 synchronized (got) {
                     assertEquals(line, got.toString(java.nio.charset.StandardCharsets.US_ASCII));
                 }
-                assertEquals(0, console.transportCounts().forgedIn(), "no segment was taken for a forgery");
+                assertEquals(0, console.field().transportCounts().forgedIn(), "no segment was taken for a forgery");
             }
         }
     }

@@ -44,37 +44,37 @@ class SimulatedRobotIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start()) {
-            console.bus().subscribe(seen::add);
-            int port = console.port();
+            console.field().bus().subscribe(seen::add);
+            int port = console.field().port();
             RobotProcess robot = RobotProcess.robot(7, port).start();
             try {
-                Await.until("robot 7 appears", () -> console.robots().robot(7).map(RobotSnapshot::online).orElse(false));
-                RobotSnapshot r = console.robots().robot(7).orElseThrow();
+                Await.until("robot 7 appears", () -> console.field().robots().robot(7).map(RobotSnapshot::online).orElse(false));
+                RobotSnapshot r = console.field().robots().robot(7).orElseThrow();
                 assertEquals(13, r.teamId());
                 assertFalse(r.role().isEmpty(), "the keep-alive carries a role");
 
-                Await.until("option list", () -> console.options().options(7).listReceived());
-                List<String> names = console.options().options(7).options().stream().map(OptionState::name).toList();
+                Await.until("option list", () -> console.field().options().options(7).listReceived());
+                List<String> names = console.field().options().options(7).options().stream().map(OptionState::name).toList();
                 assertTrue(names.containsAll(List.of("demo.text", "demo.plotter", "demo.table", "demo.image",
                         "demo.relative", "demo.field", "havimo.region", "havimo.grid")), names.toString());
                 assertEquals(0, dataFrom(7, "demo.text"), "nothing streams before it is switched on");
 
-                assertTrue(console.setOption(7, "demo.text", true).isSent());
+                assertTrue(console.optionSwitches().set(7, "demo.text", true).isSent());
                 Await.until("demo.text data", () -> dataFrom(7, "demo.text") > 0);
 
                 robot.kill();
-                Await.until("robot 7 offline", () -> !console.robots().robot(7).orElseThrow().online());
+                Await.until("robot 7 offline", () -> !console.field().robots().robot(7).orElseThrow().online());
                 long requestsBefore = seen.stream().filter(e -> e.direction() == Direction.OUT
                         && e.kind().equals("debugOptionRequest")).count();
                 seen.clear();
 
                 robot = RobotProcess.robot(7, port).start(); // a fresh process: it knows nothing of demo.text
-                Await.until("robot 7 back online", () -> console.robots().robot(7).orElseThrow().online());
+                Await.until("robot 7 back online", () -> console.field().robots().robot(7).orElseThrow().online());
                 Await.until("demo.text streams again without being asked", () -> dataFrom(7, "demo.text") > 0);
                 assertTrue(seen.stream().anyMatch(e -> e.direction() == Direction.OUT && e.kind().equals("debugOptionRequest")),
                         "the console re-sent the request by itself");
                 assertTrue(requestsBefore >= 1);
-                assertTrue(console.options().wanted(7).contains("demo.text"));
+                assertTrue(console.field().options().wanted(7).contains("demo.text"));
             } finally {
                 robot.close();
             }
@@ -86,14 +86,14 @@ class SimulatedRobotIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start()) {
-            int port = console.port();
+            int port = console.field().port();
             try (RobotProcess r1 = RobotProcess.robot(1, port, "--framing", "legacy").start();
                  RobotProcess r2 = RobotProcess.robot(2, port, "--framing", "length").start();
                  RobotProcess r3 = RobotProcess.robot(3, port).start()) {
-                Await.until("three robots online", () -> console.robots().robots().stream().filter(RobotSnapshot::online).count() == 3);
-                Await.until("all option lists", () -> console.options().options(1).listReceived()
-                        && console.options().options(2).listReceived() && console.options().options(3).listReceived());
-                assertEquals(0, console.transportCounts().malformedIn());
+                Await.until("three robots online", () -> console.field().robots().robots().stream().filter(RobotSnapshot::online).count() == 3);
+                Await.until("all option lists", () -> console.field().options().options(1).listReceived()
+                        && console.field().options().options(2).listReceived() && console.field().options().options(3).listReceived());
+                assertEquals(0, console.field().transportCounts().malformedIn());
             }
         }
     }
@@ -104,12 +104,12 @@ class SimulatedRobotIntegrationTest {
         ConsoleConfig config = ConsoleConfig.defaults()
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start()) {
-            console.bus().subscribe(seen::add);
-            try (RobotProcess robot = RobotProcess.robot(9, console.port(), "--wifi-sim").start()) {
-                Await.until("robot 9 and its option list", () -> console.options().options(9).listReceived());
-                assertTrue(console.setOption(9, "demo.text", true).isSent());
+            console.field().bus().subscribe(seen::add);
+            try (RobotProcess robot = RobotProcess.robot(9, console.field().port(), "--wifi-sim").start()) {
+                Await.until("robot 9 and its option list", () -> console.field().options().options(9).listReceived());
+                assertTrue(console.optionSwitches().set(9, "demo.text", true).isSent());
                 Await.until("demo.text data through the serial module", () -> dataFrom(9, "demo.text") > 0);
-                assertEquals(0, console.transportCounts().malformedIn());
+                assertEquals(0, console.field().transportCounts().malformedIn());
             }
         }
     }

@@ -174,7 +174,7 @@ class NaoCommandTest {
         int gcPort = freePort();
         try (RobotProcess sim = RobotProcess.of(List.of(RobotProcess.binDir().resolve("touchline-nao-sim").toString(),
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
-             NaoLink check = new NaoLink("127.0.0.1", sim.port(), NaoLinkConfig.defaults(), e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+             NaoLink check = new NaoLink("127.0.0.1", sim.port(), NaoLinkConfig.defaults(), e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             String target = "127.0.0.1:" + sim.port();
             ScheduledExecutorService gameController = Executors.newSingleThreadScheduledExecutor();
             try (DatagramSocket gc = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {

@@ -27,7 +27,7 @@ class OptionsOffCommandTest {
     }
 
     private static boolean streaming(Console c) {
-        return c.options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false);
+        return c.field().options().options(8).option("demo.text").map(o -> o.streaming()).orElse(false);
     }
 
     @Test
@@ -36,10 +36,10 @@ class OptionsOffCommandTest {
             try (RobotProcess robot = RobotProcess.robot(8, field.port()).start()) {
                 field.robotAt(robot.port());
                 try (Console other = field.join()) {
-                    Await.until("the other console has the list", () -> other.options().options(8).listReceived());
-                    assertTrue(other.setOption(8, "demo.text", true).isSent());
+                    Await.until("the other console has the list", () -> other.field().options().options(8).listReceived());
+                    assertTrue(other.optionSwitches().set(8, "demo.text", true).isSent());
                     Await.until("demo.text streams", () -> streaming(watcher));
-                    field.forget(other.port());
+                    field.forget(other.field().port());
                 }
                 int port;
                 try (DatagramSocket free = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {

@@ -80,14 +80,14 @@ class OptionsThroughServeTest {
                         .withGameControllerPort(0).withUdp(touchline.transport.UdpConfig.defaults()
                                 .withBindAddress("127.0.0.1").withListenPort(0))).start();
                      DatagramSocket gc = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
-                    viewer.viewRemote(new java.net.URI("ws://127.0.0.1:" + web + "/"), null);
+                    viewer.remote().view(new java.net.URI("ws://127.0.0.1:" + web + "/"), null);
                     byte[] playing;
                     try (var in = OptionsThroughServeTest.class.getResourceAsStream("/golden/gamecontroller/hl12/04-playing.bin")) {
                         playing = in.readAllBytes();
                     }
                     gc.send(new java.net.DatagramPacket(playing, playing.length, java.net.InetAddress.getLoopbackAddress(),
                             robot.port()));
-                    Await.until("the serving console heard the robot report PLAYING", () -> viewer.robots().robot(5)
+                    Await.until("the serving console heard the robot report PLAYING", () -> viewer.field().robots().robot(5)
                             .map(r -> r.gameState().equals("PLAYING")).orElse(false));
                     err = new StringWriter();
                     code = Main.execute(new String[] {"options", "5", "--on", "demo.plotter",

@@ -45,10 +45,10 @@ class RecordCommandsTest {
         List<Envelope> sent = new ArrayList<>();
         new SyntheticTeam(3, 1_000_000_000_000L, 1).generate(seconds, sent::add);
         Path file = dir.resolve("cli.mcap");
-        Run r = run(new RecordCommand((config, teamFiles) -> sink -> {
-            sent.forEach(sink::accept);
-            return () -> { };
-        }), "--out", file.toString(), "--seconds", "1");
+        // a console without the model (nothing asks the synthetic robots for options) and no GameController port
+        Run r = run(new RecordCommand(config -> new touchline.app.Console(config.withGameControllerPort(0),
+                new touchline.app.SystemClock(), false), field -> sent.forEach(field.bus()::accept)),
+                "--out", file.toString(), "--seconds", "1", "--port", "0", "--bind", "127.0.0.1");
         assertEquals(0, r.exit(), r.err());
         assertTrue(r.out().contains("recorded " + sent.size() + " envelopes (0 dropped)"), r.out());
         return file;
@@ -151,13 +151,7 @@ class RecordCommandsTest {
     void recordsLiveUdpTrafficThroughTheConsole() throws Exception {
         java.util.concurrent.atomic.AtomicInteger port = new java.util.concurrent.atomic.AtomicInteger();
         Path file = dir.resolve("live.mcap");
-        RecordCommand command = new RecordCommand((config, teamFiles) -> sink -> {
-            touchline.app.Console console = new touchline.app.Console(config);
-            console.bus().subscribe(sink);
-            console.start();
-            port.set(console.port());
-            return console;
-        });
+        RecordCommand command = new RecordCommand(touchline.app.Console::new, field -> port.set(field.port()));
         Thread recording = new Thread(() -> run(command, "--out", file.toString(), "--port", "0", "--bind", "127.0.0.1",
                 "--seconds", "2"));
         recording.start();

@@ -33,8 +33,8 @@ class ActionSyntaxTest {
         assertEquals(new ToFinished(), parse("finish"));
         assertEquals(new Goal(13), parse("goal 13"));
         assertEquals(new SetKickOff(7), parse("kickoff 7"));
-        assertEquals(new Penalise(7, 2, Penalty.PHYSICAL_CONTACT), parse("penalty 7 2 physical_contact"));
-        assertEquals(new Unpenalise(7, 2), parse("unpenalise 7 2"));
+        assertEquals(new Penalize(7, 2, Penalty.PHYSICAL_CONTACT), parse("penalty 7 2 physical_contact"));
+        assertEquals(new Unpenalize(7, 2), parse("unpenalise 7 2"));
         assertEquals(new Card(7, 3, Card.Kind.YELLOW), parse("card 7 3 yellow"));
         assertEquals(new Card(13, 1, Card.Kind.WARNING), parse("card 13 1 warn"));
         assertEquals(new Substitute(7, 1, 5), parse("substitute 7 1 5"));

@@ -204,11 +204,11 @@ class GameTest {
     @Test
     void timedPenaltyCountsDownAndEndsByItself() {
         kickOff();
-        ok(new Penalise(7, 2, Penalty.PHYSICAL_CONTACT));
-        refused(new Penalise(7, 2, Penalty.SERVICE));
-        refused(new Penalise(7, 5, Penalty.SERVICE));
-        refused(new Penalise(7, 12, Penalty.SERVICE));
-        refused(new Penalise(7, 1, Penalty.SUBSTITUTE));
+        ok(new Penalize(7, 2, Penalty.PHYSICAL_CONTACT));
+        refused(new Penalize(7, 2, Penalty.SERVICE));
+        refused(new Penalize(7, 5, Penalty.SERVICE));
+        refused(new Penalize(7, 12, Penalty.SERVICE));
+        refused(new Penalize(7, 1, Penalty.SUBSTITUTE));
         assertEquals(31, wire().team(7).player(2).penalty());
         assertEquals(30, wire().team(7).player(2).secsTillUnpenalised());
         secs(12);
@@ -216,19 +216,19 @@ class GameTest {
         secs(18);
         assertTrue(game.advance());
         assertEquals(0, wire().team(7).player(2).penalty());
-        refused(new Unpenalise(7, 2));
+        refused(new Unpenalize(7, 2));
     }
 
     @Test
     void manualPenaltyLastsUntilLifted() {
-        ok(new Penalise(13, 3, Penalty.MANUAL));
+        ok(new Penalize(13, 3, Penalty.MANUAL));
         secs(100);
         game.advance();
         assertEquals(15, wire().team(13).player(3).penalty());
         assertEquals(0, wire().team(13).player(3).secsTillUnpenalised());
-        ok(new Unpenalise(13, 3));
+        ok(new Unpenalize(13, 3));
         assertEquals(0, wire().team(13).player(3).penalty());
-        refused(new Unpenalise(13, 5));
+        refused(new Unpenalize(13, 5));
     }
 
     @Test
@@ -248,7 +248,7 @@ class GameTest {
     @Test
     void substituteTakesOverPenaltyAndGoalkeeperRole() {
         kickOff();
-        ok(new Penalise(13, 1, Penalty.PICKUP_OR_INCAPABLE));
+        ok(new Penalize(13, 1, Penalty.PICKUP_OR_INCAPABLE));
         secs(5);
         refused(new Substitute(13, 1, 2));
         refused(new Substitute(13, 5, 6));
@@ -290,7 +290,7 @@ class GameTest {
         kickOff();
         ok(new Goal(13));
         ok(new Card(7, 3, Card.Kind.YELLOW));
-        ok(new Penalise(7, 2, Penalty.SERVICE));
+        ok(new Penalize(7, 2, Penalty.SERVICE));
         ok(new ToFinished());
         assertEquals(4, wire().state());
         assertTrue(wire().firstHalf(), "FINISHED of the first half is published before the switch");
@@ -323,7 +323,7 @@ class GameTest {
         assertEquals(1, changes.get());
         game.undo();
         assertEquals(2, changes.get());
-        ok(new Penalise(7, 1, Penalty.SERVICE));
+        ok(new Penalize(7, 1, Penalty.SERVICE));
         assertFalse(game.advance());
         secs(30);
         assertTrue(game.advance());

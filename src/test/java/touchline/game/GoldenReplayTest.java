@@ -45,7 +45,7 @@ class GoldenReplayTest {
             new Step("07-set-after-goal.bin", 61000, act(new ToSet())),
             new Step("08-playing-after-goal.bin", 63000, act(new ToPlaying())),
             new Step("09-penalty-team7-player2-physical-contact.bin", 78000,
-                    act(new Penalise(7, 2, Penalty.PHYSICAL_CONTACT))),
+                    act(new Penalize(7, 2, Penalty.PHYSICAL_CONTACT))),
             new Step("10-penalty-countdown-after-12s.bin", 90000, NONE),
             new Step("11-penalty-served-after-31s.bin", 109000, NONE),
             new Step("12-yellow-card-team7-player3.bin", 111000, act(new Card(7, 3, Card.Kind.YELLOW))),

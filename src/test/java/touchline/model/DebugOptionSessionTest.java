@@ -52,7 +52,7 @@ class DebugOptionSessionTest {
         String kind = ((touchline.protocol.MessageResult.Decoded) codec.decode(built.toByteArray())).kind();
         Envelope e = new Envelope(now[0], Direction.IN, Channel.FUMANOID, new InetSocketAddress("127.0.0.1", 4000 + robot),
                 robot, kind, built, new byte[10], null);
-        registry.accept(e);
+        registry.live().accept(e);
         session.accept(e);
     }
 
@@ -155,6 +155,32 @@ class DebugOptionSessionTest {
         advance(1_000_000);
         keepAlive(3);
         assertEquals(List.of("3:on demo.text"), sent);
+        assertEquals("", session.options(3).lastHoldReason());
+    }
+
+    /**
+     * Notes stale after play (issue 36, item 6): in play the robot sends no option data, so the
+     * wanted option's retries were held and the robot's row said "waiting: match mode, game is
+     * PLAYING …". After play the robot streams the option again without being asked (it was never
+     * switched off): nothing waits any more, and the note goes although no request went out.
+     */
+    @Test
+    void theWaitingNoteGoesWhenNothingWaitsAnyMore() {
+        keepAlive(3);
+        list(3, "demo.text");
+        session.setWanted(3, "demo.text", true);
+        text(3, "demo.text");
+        hold = Optional.of("match mode, game is PLAYING (this console's GameController); goes out when play stops");
+        for (int i = 0; i < 3; i++) { // in play: no data, the retries are held
+            advance(1_000_000);
+            keepAlive(3);
+        }
+        assertEquals(hold.get(), session.options(3).lastHoldReason());
+        hold = Optional.empty();
+        sent.clear();
+        text(3, "demo.text"); // play over: the data comes back before the next retry
+        advance(100_000);
+        assertEquals(List.of(), sent, "streaming again: nothing to send");
         assertEquals("", session.options(3).lastHoldReason());
     }
 

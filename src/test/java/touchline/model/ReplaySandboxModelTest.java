@@ -47,9 +47,15 @@ class ReplaySandboxModelTest {
                 robot, kind, built, built.toByteArray(), null);
     }
 
+    /** As the console's two streams hand it on: a replayed envelope to the replay's read models, any other to the live side. */
     private void receive(Envelope e) {
-        registry.accept(e);
-        session.accept(e);
+        if (e.replayed()) {
+            registry.replay().accept(e);
+            session.replayed().accept(e);
+        } else {
+            registry.live().accept(e);
+            session.accept(e);
+        }
     }
 
     private Envelope status(long time, int robot, String gameState) {
@@ -90,7 +96,7 @@ class ReplaySandboxModelTest {
         receive(status(now[0], 3, "INITIAL"));
         Envelope junk = new Envelope(replayNow[0], Direction.IN, Channel.FUMANOID,
                 new InetSocketAddress("127.0.0.1", 4003), Envelope.NO_ROBOT, "malformed", null, new byte[3], "too short");
-        registry.accept(junk.asReplayed());
+        registry.replay().accept(junk.asReplayed());
 
         assertEquals(0, registry.robot(3).orElseThrow().malformed(), "the live robot at that address sent nothing bad");
         assertEquals(List.of("/127.0.0.1:4003 (replay)"), registry.sources().stream()

@@ -25,7 +25,7 @@ class RobotRegistryTest {
 
     @Test
     void robotAppearsOnFirstPacketWithItsStatus() {
-        registry.accept(status(2, a, "striker"));
+        registry.live().accept(status(2, a, "striker"));
         RobotSnapshot r = registry.robot(2).orElseThrow();
         assertTrue(r.online());
         assertEquals("fu2", r.name());
@@ -39,12 +39,12 @@ class RobotRegistryTest {
     /** The robot's own count of GameController packets it did not believe is shown beside its game state. */
     @Test
     void theOtherGameControllerTheRobotDidNotBelieveIsShownWithItsGameState() {
-        registry.accept(status(2, a, "striker"));
+        registry.live().accept(status(2, a, "striker"));
         assertEquals(0, registry.robot(2).orElseThrow().gcOtherSource());
         assertEquals("", registry.robot(2).orElseThrow().gameStateShown(), "nothing added while the robot counts none");
         Fumanoid.Message m = Fumanoid.Message.newBuilder().setRobotID(2).setExtension(Fumanoid.status,
                 Fumanoid.Status.newBuilder().setGameState("PLAYING").setGcOtherSource(1234).build()).build();
-        registry.accept(new Envelope(now[0], Direction.IN, Channel.FUMANOID, a, 2, "status", m, new byte[40], null));
+        registry.live().accept(new Envelope(now[0], Direction.IN, Channel.FUMANOID, a, 2, "status", m, new byte[40], null));
         RobotSnapshot r = registry.robot(2).orElseThrow();
         assertEquals(1234, r.gcOtherSource());
         assertEquals("PLAYING (1234 from another GameController, not believed)", r.gameStateShown());
@@ -52,7 +52,7 @@ class RobotRegistryTest {
 
     @Test
     void goesOfflineWhenKeepAlivesStopAndStaysListed() {
-        registry.accept(status(2, a, "striker"));
+        registry.live().accept(status(2, a, "striker"));
         now[0] += 2_900_000; // a game-rate keep-alive (1 s) may be missed twice
         registry.tick();
         assertTrue(registry.robot(2).orElseThrow().online());
@@ -64,8 +64,8 @@ class RobotRegistryTest {
 
     @Test
     void malformedDatagramsAreCountedPerSourceAndAgainstTheRobotAtThatAddress() {
-        registry.accept(status(2, a, "striker"));
-        registry.accept(new Envelope(now[0], Direction.IN, Channel.FUMANOID, a, Envelope.NO_ROBOT, "malformed", null,
+        registry.live().accept(status(2, a, "striker"));
+        registry.live().accept(new Envelope(now[0], Direction.IN, Channel.FUMANOID, a, Envelope.NO_ROBOT, "malformed", null,
                 new byte[3], "truncated header: 3 bytes"));
         SourceSnapshot s = registry.sources().get(0);
         assertEquals(1, s.malformed());
@@ -91,8 +91,8 @@ class RobotRegistryTest {
         InetSocketAddress attacker = new InetSocketAddress("10.0.0.66", 5000);
         Envelope forged = new Envelope(now[0], Direction.IN, Channel.FUMANOID, attacker, 7, "forged", null, new byte[60],
                 "forged: bad tag (claims robot 7)", touchline.transport.Origin.LIVE, touchline.security.Authenticity.FORGED);
-        registry.accept(forged);
-        registry.accept(forged);
+        registry.live().accept(forged);
+        registry.live().accept(forged);
         RobotSnapshot r = registry.robot(7).orElseThrow();
         assertFalse(r.online());
         assertEquals(0, r.packets());
@@ -101,9 +101,9 @@ class RobotRegistryTest {
         assertTrue(r.auth().lastForgery().startsWith("10.0.0.66:5000: forged: bad tag"), r.auth().lastForgery());
         assertEquals("forged ×2", r.auth().describe());
         assertEquals(2, registry.notes().size(), "the 1st and 2nd forgery are noted (then the 4th, 8th...)");
-        registry.accept(forged);
+        registry.live().accept(forged);
         assertEquals(2, registry.notes().size());
-        registry.accept(forged);
+        registry.live().accept(forged);
         assertEquals(3, registry.notes().size());
         assertEquals(1, registry.sources().size(), "counted against its source");
         assertEquals(4, registry.sources().get(0).malformed());
@@ -111,21 +111,21 @@ class RobotRegistryTest {
 
     @Test
     void verifiedDataTheRobotsOwnRejectionsAndARestartAreShown() {
-        registry.accept(statusWithBoot(3, 0x11, 3));
+        registry.live().accept(statusWithBoot(3, 0x11, 3));
         RobotSnapshot r = registry.robot(3).orElseThrow();
         assertEquals(touchline.security.Authenticity.VERIFIED, r.auth().state());
         assertEquals("verified; robot rejected: 3 bad tag, 1 replayed", r.auth().describe());
-        registry.accept(statusWithBoot(3, 0x22, 0));
+        registry.live().accept(statusWithBoot(3, 0x22, 0));
         assertTrue(registry.notes().contains("robot 3 restarted: counter reset, accepted"), registry.notes().toString());
-        registry.accept(withAuth(status(5, a, "goalie"), touchline.security.Authenticity.UNVERIFIED));
+        registry.live().accept(withAuth(status(5, a, "goalie"), touchline.security.Authenticity.UNVERIFIED));
         assertEquals("unverified", registry.robot(5).orElseThrow().auth().describe());
     }
 
     @Test
     void robotChangingAddressIsNoted() {
-        registry.accept(status(2, a, "striker"));
+        registry.live().accept(status(2, a, "striker"));
         InetSocketAddress b = new InetSocketAddress("127.0.0.2", 4001);
-        registry.accept(status(2, b, "striker"));
+        registry.live().accept(status(2, b, "striker"));
         assertEquals(1, registry.robot(2).orElseThrow().addressChanges());
         assertEquals(b, registry.robot(2).orElseThrow().address());
         assertTrue(registry.notes().get(0).contains("robot 2 moved from"), registry.notes().toString());

@@ -217,4 +217,30 @@ class RecordingRoundTripTest {
             assertEquals(frames.get(0), back.get(0));
         }
     }
+
+    /**
+     * Issue 38: each channel says where its envelopes came from ({@code touchline.origin}), a
+     * field other tools ignore: a status heard live and the same robot's status from a remote
+     * Touchline go on two channels and come back with their origin; a file without the field
+     * (before issue 38) reads as live.
+     */
+    @Test
+    void eachChannelSaysTheOriginOfItsEnvelopes() throws Exception {
+        Envelope live = RecordingFixture.team(1, 1).stream().filter(e -> e.kind().equals("status")).findFirst()
+                .orElseThrow();
+        Envelope remote = new Envelope(live.timeMicros() + 1, live.direction(), live.channel(), live.peer(),
+                live.robotId(), live.kind(), live.message(), live.raw(), null, touchline.transport.Origin.REMOTE);
+        Path file = dir.resolve("origins.mcap");
+        RecordingFixture.write(file, List.of(live, remote), EnvelopeWriter.Options.defaults());
+        try (Recording r = Recording.open(file)) {
+            List<String> origins = r.mcap().channels().values().stream()
+                    .map(c -> c.topic() + " " + c.metadata().get("touchline.origin")).sorted().toList();
+            assertEquals(List.of("/robot/1/status live", "/robot/1/status remote"), origins);
+            assertEquals(List.of(live, remote), RecordingFixture.readAll(r));
+        }
+        assertEquals(touchline.transport.Origin.LIVE, EnvelopeLayout.Key.fromMetadata(java.util.Map.of(
+                "touchline.direction", "IN", "touchline.channel", "FUMANOID", "touchline.robot", "1",
+                "touchline.kind", "status", "touchline.layout", "raw")).origin(),
+                "a channel without touchline.origin holds live envelopes");
+    }
 }

@@ -90,7 +90,7 @@ class FoxgloveServerTest {
                 com.google.protobuf.UnknownFieldSet.newBuilder().addField(1042, com.google.protobuf.UnknownFieldSet.Field
                         .newBuilder().addLengthDelimited(com.google.protobuf.ByteString.copyFrom(ball)).build()).build()).build();
         try (ServedField field = new ServedField(); FoxgloveTestClient viewer = new FoxgloveTestClient(field.server().port())) {
-            assertTrue(field.console().kinds().add(file).isEmpty());
+            assertTrue(field.console().field().kinds().add(file).isEmpty());
             field.send(fromRobot);
             JSONObject channel = viewer.awaitChannel("/robot/6/teamBall");
             assertEquals("team.TeamBall", channel.getString("schemaName"));
@@ -233,7 +233,7 @@ class FoxgloveServerTest {
             Await.until("a few ticks without a guarded team", () -> viewer.times().size() >= 3);
             assertTrue(viewer.channel("/team/budget").isEmpty(), "no budget channel without --team");
 
-            field.console().guardTeamMessages(touchline.model.RuleProfile.named("hsl-2026"), 13,
+            field.console().teamBudget().guard(touchline.model.RuleProfile.named("hsl-2026"), 13,
                     new java.net.InetSocketAddress("127.0.0.1", 0));
             JSONObject channel = viewer.awaitChannel("/team/budget");
             assertEquals("json", channel.getString("encoding"));
@@ -250,7 +250,7 @@ class FoxgloveServerTest {
                 byte[] message = "team message".getBytes(StandardCharsets.UTF_8);
                 for (int i = 0; i < 3; i++) {
                     robot.send(new java.net.DatagramPacket(message, message.length, java.net.InetAddress.getLoopbackAddress(),
-                            field.console().teamMessagePort()));
+                            field.console().teamBudget().port()));
                 }
             }
             // no GameController heard: the state is not known, so the three are heard, not counted

@@ -60,8 +60,8 @@ class NaoOnTheViewerIntegrationTest {
     private static Nao nao(Console console) throws Exception {
         RobotProcess sim = sim();
         int[] ports = simPorts(sim);
-        NaoLink link = new NaoLink("127.0.0.1", ports[0], NaoLinkConfig.defaults(), console.bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", ports[1], console.bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        NaoLink link = new NaoLink("127.0.0.1", ports[0], NaoLinkConfig.defaults(), console.field().bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
+        NaoCameraStream camera = new NaoCameraStream("127.0.0.1", ports[1], console.field().bus(), null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         camera.configure(new CameraSettings(1, 11, 30));
         return new Nao(sim, link, camera, camera.subscribe());
     }
@@ -81,9 +81,9 @@ class NaoOnTheViewerIntegrationTest {
                 sim = NaoOnTheViewerIntegrationTest.sim();
                 int[] ports = simPorts(sim);
                 second = viewer();
-                second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-                return new NaoViews(field, sim, ports, new touchline.app.NaoViewModel(field.console()), second,
-                        new touchline.app.NaoViewModel(second));
+                second.remote().view(new URI(field.server().url("127.0.0.1")), null);
+                return new NaoViews(field, sim, ports, new touchline.app.NaoViewModel(field.console().naos()), second,
+                        new touchline.app.NaoViewModel(second.naos()));
             } catch (Exception | AssertionError e) {
                 if (second != null) {
                     second.close();
@@ -134,12 +134,12 @@ class NaoOnTheViewerIntegrationTest {
         List<Envelope> here = new CopyOnWriteArrayList<>();
         List<Envelope> there = new CopyOnWriteArrayList<>();
         try (ServedField field = new ServedField();
-             AutoCloseable heard = field.console().bus().subscribe(here::add);
+             AutoCloseable heard = field.console().field().bus().subscribe(here::add);
              Console second = viewer();
-             AutoCloseable seen = second.bus().subscribe(there::add);
+             AutoCloseable seen = second.field().bus().subscribe(there::add);
              FoxgloveTestClient foxglove = new FoxgloveTestClient(field.server().port());
              Nao nao = nao(field.console())) {
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            second.remote().view(new URI(field.server().url("127.0.0.1")), null);
             Await.until("frames in the first console", () -> here.stream().filter(NaoOnTheViewerIntegrationTest::naoFrame).count() >= 3);
 
             JSONObject image = foxglove.awaitChannel("/nao/camera/image");
@@ -186,7 +186,7 @@ class NaoOnTheViewerIntegrationTest {
             assertEquals(Origin.REMOTE, reply.origin());
             assertTrue(here.stream().anyMatch(e -> e.channel() == Channel.NAO_RPC && e.kind().equals(reply.kind())
                     && Arrays.equals(e.raw(), reply.raw())), "the same reply, byte for byte");
-            assertEquals(0, second.remote().orElseThrow().status().unusable(), second.remote().orElseThrow().status().problem());
+            assertEquals(0, second.remote().stream().orElseThrow().status().unusable(), second.remote().stream().orElseThrow().status().problem());
         }
     }
 
@@ -199,7 +199,7 @@ class NaoOnTheViewerIntegrationTest {
     void theViewersNaoViewShowsTheFirstConsolesCameraFrames() throws Exception {
         Requirement.robotSide("touchline-nao-sim");
         List<Envelope> here = new CopyOnWriteArrayList<>();
-        try (NaoViews views = NaoViews.open(); AutoCloseable heard = views.field().console().bus().subscribe(here::add)) {
+        try (NaoViews views = NaoViews.open(); AutoCloseable heard = views.field().console().field().bus().subscribe(here::add)) {
             int[] ports = views.ports();
             touchline.app.NaoViewModel first = views.first();
             touchline.app.NaoViewModel viewing = views.viewing();
@@ -210,7 +210,7 @@ class NaoOnTheViewerIntegrationTest {
                     first.result());
             Await.until("a frame in the first console's NAO view", () -> first.frame().isPresent());
             Await.until("a frame in the viewer's NAO view", () -> viewing.frame().isPresent());
-            assertTrue(second.naoSessions().isEmpty(), "the viewer opened no NAO and no camera");
+            assertTrue(second.naos().sessions().isEmpty(), "the viewer opened no NAO and no camera");
 
             byte[] shown = viewing.frame().orElseThrow().jpeg();
             assertEquals(0xFF, shown[0] & 0xFF);

@@ -37,48 +37,48 @@ class RemoteViewerIntegrationTest {
     }
 
     private static List<String> optionNames(Console c, int robot) {
-        return c.options().options(robot).options().stream().map(OptionState::name).sorted().toList();
+        return c.field().options().options(robot).options().stream().map(OptionState::name).sorted().toList();
     }
 
     private static List<String> texts(Console c, int robot) {
-        return c.stores().live().text().since(-1, robot, 10_000).stream().map(e -> e.value().text()).toList();
+        return c.field().stores().live().text().since(-1, robot, 10_000).stream().map(e -> e.value().text()).toList();
     }
 
     @Test
     void aSecondTouchlineShowsTheSameRobotOptionsAndTextAndSendsNothing() throws Exception {
         Requirement.robotSide("touchline-robot");
         try (ServedField field = new ServedField();
-             RobotProcess robot = RobotProcess.robot(4, field.console().port()).start();
+             RobotProcess robot = RobotProcess.robot(4, field.console().field().port()).start();
              Console second = viewer()) {
             Console first = field.console();
-            Await.until("the first console has robot 4's option list", () -> first.options().options(4).listReceived());
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("connected", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
-            assertTrue(first.setOption(4, TEXT, true).isSent());
+            Await.until("the first console has robot 4's option list", () -> first.field().options().options(4).listReceived());
+            second.remote().view(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("connected", () -> second.remote().stream().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+            assertTrue(first.optionSwitches().set(4, TEXT, true).isSent());
             // the robot sends its list again when an option changes, and its text from now on
-            Await.until("robot 4 in the second console", () -> second.robots().robot(4).isPresent());
+            Await.until("robot 4 in the second console", () -> second.field().robots().robot(4).isPresent());
             Await.until("the same option tree", () -> !optionNames(second, 4).isEmpty()
                     && optionNames(second, 4).equals(optionNames(first, 4)));
             Await.until("debug text in the second console", () -> !texts(second, 4).isEmpty());
             List<String> seen = texts(second, 4);
             assertTrue(texts(first, 4).containsAll(seen), "every line the second shows, the first showed: " + seen);
 
-            RobotSnapshot there = first.robots().robot(4).orElseThrow();
-            RobotSnapshot here = second.robots().robot(4).orElseThrow();
+            RobotSnapshot there = first.field().robots().robot(4).orElseThrow();
+            RobotSnapshot here = second.field().robots().robot(4).orElseThrow();
             assertEquals(there.name(), here.name());
             assertEquals(there.teamId(), here.teamId());
             assertEquals(Origin.REMOTE, here.origin());
-            assertTrue(second.options().options(4).option(TEXT).orElseThrow().enabledOnRobot());
+            assertTrue(second.field().options().options(4).option(TEXT).orElseThrow().enabledOnRobot());
 
-            SendResult refused = second.setOption(4, TEXT, false);
+            SendResult refused = second.optionSwitches().set(4, TEXT, false);
             assertFalse(refused.isSent());
             assertEquals(Console.COMMANDS_OFF, refused.reason());
-            assertThrows(java.io.IOException.class, () -> second.startGameController(
+            assertThrows(java.io.IOException.class, () -> second.referee().start(
                     new touchline.game.Game(touchline.game.LeagueParams.hlSimulationKidSize(), 4, 0, 5, 1,
                             new touchline.app.SystemClock()),
                     touchline.transport.gamecontroller.GcConfig.defaults(touchline.transport.gamecontroller.GcProfile.HL12)));
-            assertEquals(0, second.transportCounts().datagramsOut(), "the viewing console sent nothing to any robot");
-            assertTrue(first.options().options(4).option(TEXT).orElseThrow().wanted(), "the first console's wish stands");
+            assertEquals(0, second.field().transportCounts().datagramsOut(), "the viewing console sent nothing to any robot");
+            assertTrue(first.field().options().options(4).option(TEXT).orElseThrow().wanted(), "the first console's wish stands");
         }
     }
 
@@ -94,22 +94,22 @@ class RemoteViewerIntegrationTest {
         java.nio.file.Path wanted = dir.resolve("wanted-options.properties");
         java.nio.file.Files.writeString(wanted, "4/demo.plotter=on\n4/demo.table=on\n");
         try (ServedField field = new ServedField();
-             RobotProcess robot = RobotProcess.robot(4, field.console().port()).start();
+             RobotProcess robot = RobotProcess.robot(4, field.console().field().port()).start();
              Console second = viewer()) {
             Console first = field.console();
-            Await.until("the first console has robot 4's option list", () -> first.options().options(4).listReceived());
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            second.rememberWantedOptions(wanted); // as the window does after `console --connect`
-            assertTrue(first.setOption(4, TEXT, true).isSent());
-            Await.until("demo.text on at the robot, as the viewer hears it", () -> second.options().options(4).option(TEXT)
+            Await.until("the first console has robot 4's option list", () -> first.field().options().options(4).listReceived());
+            second.remote().view(new URI(field.server().url("127.0.0.1")), null);
+            second.optionSwitches().rememberWanted(wanted); // as the window does after `console --connect`
+            assertTrue(first.optionSwitches().set(4, TEXT, true).isSent());
+            Await.until("demo.text on at the robot, as the viewer hears it", () -> second.field().options().options(4).option(TEXT)
                     .map(OptionState::enabledOnRobot).orElse(false));
-            OptionState text = second.options().options(4).option(TEXT).orElseThrow();
-            OptionState plotter = second.options().options(4).option("demo.plotter").orElseThrow();
-            assertTrue(second.optionShownOn(text), "on, as the serving console has it");
+            OptionState text = second.field().options().options(4).option(TEXT).orElseThrow();
+            OptionState plotter = second.field().options().options(4).option("demo.plotter").orElseThrow();
+            assertTrue(second.optionSwitches().shownOn(text), "on, as the serving console has it");
             assertFalse(plotter.wanted(), "the local wanted file is not this viewer's wish");
-            assertFalse(second.optionShownOn(plotter));
-            assertFalse(first.options().options(4).option("demo.plotter").orElseThrow().enabledOnRobot());
-            assertEquals(0, second.transportCounts().datagramsOut(), "the viewer sent nothing");
+            assertFalse(second.optionSwitches().shownOn(plotter));
+            assertFalse(first.field().options().options(4).option("demo.plotter").orElseThrow().enabledOnRobot());
+            assertEquals(0, second.field().transportCounts().datagramsOut(), "the viewer sent nothing");
             assertEquals("4/demo.plotter=on\n4/demo.table=on\n", java.nio.file.Files.readString(wanted),
                     "the user's file is left as it was");
         }
@@ -124,19 +124,19 @@ class RemoteViewerIntegrationTest {
     @Test
     void aSecondTouchlineShowsTheRobotsOfAConsoleWithATeamKey() throws Exception {
         try (ServedField field = new ServedField(); Console second = viewer()) {
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("connected", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+            second.remote().view(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("connected", () -> second.remote().stream().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
             long[] counter = {0};
             // a status each time the condition is polled: the viewer subscribes once the channel is advertised
             Await.until("robot 6 in the second console", () -> {
                 field.publishTagged(ServedField.status(6, "tagged-six", 77), "status", ++counter[0]);
-                return second.robots().robot(6).isPresent();
+                return second.field().robots().robot(6).isPresent();
             });
-            RobotSnapshot here = second.robots().robot(6).orElseThrow();
+            RobotSnapshot here = second.field().robots().robot(6).orElseThrow();
             assertEquals("tagged-six", here.name());
             assertEquals(Origin.REMOTE, here.origin());
-            assertEquals(0, second.remote().orElseThrow().status().unusable(),
-                    second.remote().orElseThrow().status().toString());
+            assertEquals(0, second.remote().stream().orElseThrow().status().unusable(),
+                    second.remote().stream().orElseThrow().status().toString());
         }
     }
 
@@ -152,17 +152,17 @@ class RemoteViewerIntegrationTest {
     void theGameControllerAndMalformedDatagramsReachTheViewerAndItsMatchModeFollowsTheRemoteField() throws Exception {
         try (ServedField field = new ServedField(); Console second = viewer()) {
             java.util.List<touchline.transport.Envelope> heard = new java.util.concurrent.CopyOnWriteArrayList<>();
-            try (AutoCloseable sub = second.bus().subscribe(heard::add)) {
-                second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-                Await.until("connected", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
-                assertFalse(second.matchMode().playIsOn());
+            try (AutoCloseable sub = second.field().bus().subscribe(heard::add)) {
+                second.remote().view(new URI(field.server().url("127.0.0.1")), null);
+                Await.until("connected", () -> second.remote().stream().orElseThrow().status().state() == RemoteStatus.State.CONNECTED);
+                assertFalse(second.referee().matchMode().playIsOn());
                 byte[] playing;
                 try (var in = RemoteViewerIntegrationTest.class.getResourceAsStream("/golden/gamecontroller/hl12/04-playing.bin")) {
                     playing = in.readAllBytes();
                 }
                 Await.until("the GameController's packet on the viewer", () -> {
                     // as the first console's port watch publishes what it hears on 3838 (the raw channel appears with it)
-                    field.console().bus().accept(new touchline.transport.Envelope(field.console().clock().nowMicros(),
+                    field.console().field().bus().accept(new touchline.transport.Envelope(field.console().field().clock().nowMicros(),
                             touchline.transport.Direction.IN, touchline.transport.Channel.GAMECONTROLLER,
                             new java.net.InetSocketAddress("127.0.0.1", 3838), touchline.transport.Envelope.NO_ROBOT,
                             "gc.hl12", null, playing, null));
@@ -173,23 +173,23 @@ class RemoteViewerIntegrationTest {
                 org.junit.jupiter.api.Assertions.assertArrayEquals(playing, gc.raw(), "the datagram's bytes as heard there");
                 assertEquals("gc.hl12", gc.kind());
                 assertEquals(Origin.REMOTE, gc.origin());
-                Await.until("the viewer's match mode shows the remote field's play", () -> second.matchMode().playIsOn());
-                assertTrue(second.matchMode().notice().contains("remote console's GameController"),
-                        second.matchMode().notice());
+                Await.until("the viewer's match mode shows the remote field's play", () -> second.referee().matchMode().playIsOn());
+                assertTrue(second.referee().matchMode().notice().contains("remote console's GameController"),
+                        second.referee().matchMode().notice());
 
                 // a datagram the first console could not decode: the viewer's network console shows the same error
                 byte[] garbage = {1, 2, 3, 4, 5, 6, 7};
                 try (java.net.DatagramSocket s = new java.net.DatagramSocket()) {
                     Await.until("the malformed datagram on the viewer", () -> {
                         send(s, new java.net.DatagramPacket(garbage, garbage.length,
-                                java.net.InetAddress.getLoopbackAddress(), field.console().port()));
+                                java.net.InetAddress.getLoopbackAddress(), field.console().field().port()));
                         return heard.stream().anyMatch(e -> e.error() != null);
                     });
                 }
                 touchline.transport.Envelope bad = heard.stream().filter(e -> e.error() != null).findFirst().orElseThrow();
                 org.junit.jupiter.api.Assertions.assertArrayEquals(garbage, bad.raw());
                 assertFalse(bad.error().isEmpty());
-                assertEquals(0, second.transportCounts().datagramsOut(), "the viewing console sent nothing");
+                assertEquals(0, second.field().transportCounts().datagramsOut(), "the viewing console sent nothing");
             }
         }
     }
@@ -198,23 +198,23 @@ class RemoteViewerIntegrationTest {
     void aLostServerIsSaidAndTheViewerReconnectsAndSubscribesAgain() throws Exception {
         try (ServedField field = new ServedField(); Console second = viewer()) {
             int port = field.server().port();
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
+            second.remote().view(new URI(field.server().url("127.0.0.1")), null);
             field.publish(ServedField.text(2, "a", "before"), "debugText");
             Await.until("first text", () -> {
                 field.publish(ServedField.text(2, "a", "before"), "debugText");
                 return texts(second, 2).contains("before");
             });
             field.server().close();
-            Await.until("lost", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST);
-            assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
+            Await.until("lost", () -> second.remote().stream().orElseThrow().status().state() == RemoteStatus.State.LOST);
+            assertTrue(second.remote().stream().orElseThrow().status().describe().contains("reconnecting"));
             try (FoxgloveServer again = new FoxgloveServer(ServeConfig.defaults().withPort(port),
-                    field.console().kinds(), field.console().clock());
-                 AutoCloseable sub = field.console().bus().subscribe(again)) {
+                    field.console().field().kinds(), field.console().field().clock());
+                 AutoCloseable sub = field.console().field().bus().subscribe(again)) {
                 Await.until("reconnected and subscribed", () -> {
                     field.publish(ServedField.text(2, "a", "after"), "debugText");
                     return texts(second, 2).contains("after");
                 });
-                assertEquals(RemoteStatus.State.CONNECTED, second.remote().orElseThrow().status().state());
+                assertEquals(RemoteStatus.State.CONNECTED, second.remote().stream().orElseThrow().status().state());
             }
         }
     }
@@ -223,9 +223,9 @@ class RemoteViewerIntegrationTest {
     void aWrongTokenIsAStatusNotACrash() throws Exception {
         try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withToken("right"));
              Console second = viewer()) {
-            second.viewRemote(new URI("ws://127.0.0.1:" + field.server().port() + "/?token=wrong"), null);
-            Await.until("refused", () -> second.remote().orElseThrow().status().detail().contains("token"));
-            assertEquals(RemoteStatus.State.LOST, second.remote().orElseThrow().status().state());
+            second.remote().view(new URI("ws://127.0.0.1:" + field.server().port() + "/?token=wrong"), null);
+            Await.until("refused", () -> second.remote().stream().orElseThrow().status().detail().contains("token"));
+            assertEquals(RemoteStatus.State.LOST, second.remote().stream().orElseThrow().status().state());
         }
     }
 
@@ -233,10 +233,10 @@ class RemoteViewerIntegrationTest {
     void whatTheServerSaidBeforeClosingIsShown() throws Exception {
         try (ServedField field = new ServedField(ServeConfig.defaults().withPort(0).withMaxViewers(0));
              Console second = viewer()) {
-            second.viewRemote(new URI(field.server().url("127.0.0.1")), null);
-            Await.until("told why", () -> second.remote().orElseThrow().status().state() == RemoteStatus.State.LOST
-                    && second.remote().orElseThrow().status().detail().contains("too many viewers"));
-            assertTrue(second.remote().orElseThrow().status().describe().contains("reconnecting"));
+            second.remote().view(new URI(field.server().url("127.0.0.1")), null);
+            Await.until("told why", () -> second.remote().stream().orElseThrow().status().state() == RemoteStatus.State.LOST
+                    && second.remote().stream().orElseThrow().status().detail().contains("too many viewers"));
+            assertTrue(second.remote().stream().orElseThrow().status().describe().contains("reconnecting"));
         }
     }
 }

@@ -75,17 +75,17 @@ class ServeTlsTest {
              Console trusting = viewer(); Console doubting = viewer()) {
             String url = field.server().url("127.0.0.1");
             assertTrue(url.startsWith("wss://"), url);
-            trusting.viewRemote(new URI(url), RemoteTrust.trusting(pem[0]));
-            doubting.viewRemote(new URI(url), null);
+            trusting.remote().view(new URI(url), RemoteTrust.trusting(pem[0]));
+            doubting.remote().view(new URI(url), null);
             Await.until("robot 5 over TLS", () -> {
                 field.publish(ServedField.status(5, "tls", 40), "status");
-                return trusting.robots().robot(5).isPresent();
+                return trusting.field().robots().robot(5).isPresent();
             });
-            assertEquals("tls", trusting.robots().robot(5).orElseThrow().name());
+            assertEquals("tls", trusting.field().robots().robot(5).orElseThrow().name());
             Await.until("the doubting viewer is refused",
-                    () -> doubting.remote().orElseThrow().status().state() == RemoteStatus.State.LOST);
-            assertFalse(doubting.remote().orElseThrow().status().detail().isEmpty());
-            assertTrue(doubting.robots().robots().isEmpty());
+                    () -> doubting.remote().stream().orElseThrow().status().state() == RemoteStatus.State.LOST);
+            assertFalse(doubting.remote().stream().orElseThrow().status().detail().isEmpty());
+            assertTrue(doubting.field().robots().robots().isEmpty());
         }
     }
 

@@ -31,9 +31,9 @@ final class ServedField implements AutoCloseable {
     ServedField(ServeConfig config) throws Exception {
         console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-        server = new FoxgloveServer(config, console.kinds(), console.clock());
-        console.servedStateChannels(JsonChannel::new).forEach(server::serveJson); // as Serving does
-        subscription = console.bus().subscribe(server);
+        server = new FoxgloveServer(config, console.field().kinds(), console.field().clock());
+        console.serving().stateChannels().forEach(server::serveJson); // as Serving does
+        subscription = console.field().bus().subscribe(server);
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
     }
 
@@ -62,12 +62,12 @@ final class ServedField implements AutoCloseable {
     /** A robot's datagram to the console's UDP port. */
     void send(Fumanoid.Message m) throws Exception {
         byte[] d = frames.encode(Framing.LENGTH_PREFIX, m.toByteArray());
-        robot.send(new DatagramPacket(d, d.length, InetAddress.getLoopbackAddress(), console.port()));
+        robot.send(new DatagramPacket(d, d.length, InetAddress.getLoopbackAddress(), console.field().port()));
     }
 
     /** Publishes {@code m} into the console's Envelope stream as if its robot had sent it; returns when every subscriber has it. */
     void publish(Fumanoid.Message m, String kind) {
-        console.bus().accept(new Envelope(console.clock().nowMicros(), Direction.IN, Channel.FUMANOID,
+        console.field().bus().accept(new Envelope(console.field().clock().nowMicros(), Direction.IN, Channel.FUMANOID,
                 new InetSocketAddress("127.0.0.1", 40000 + m.getRobotID()), m.getRobotID(), kind, m,
                 frames.encode(Framing.LENGTH_PREFIX, m.toByteArray()), null));
     }
@@ -80,7 +80,7 @@ final class ServedField implements AutoCloseable {
         byte[] tagged = new touchline.security.MessageTag(new touchline.security.TeamKey(new byte[32])).append(
                 touchline.security.MessageTag.FROM_ROBOT, m.getRobotID(), counter,
                 frames.encode(Framing.LENGTH_PREFIX, m.toByteArray()));
-        console.bus().accept(new Envelope(console.clock().nowMicros(), Direction.IN, Channel.FUMANOID,
+        console.field().bus().accept(new Envelope(console.field().clock().nowMicros(), Direction.IN, Channel.FUMANOID,
                 new InetSocketAddress("127.0.0.1", 40000 + m.getRobotID()), m.getRobotID(), kind, m, tagged, null,
                 touchline.transport.Origin.LIVE, touchline.security.Authenticity.VERIFIED));
     }
@@ -91,7 +91,7 @@ final class ServedField implements AutoCloseable {
         try (var in = ServedField.class.getResourceAsStream("/golden/gamecontroller/" + golden)) {
             packet = in.readAllBytes();
         }
-        console.bus().accept(new Envelope(console.clock().nowMicros(), Direction.IN, Channel.GAMECONTROLLER,
+        console.field().bus().accept(new Envelope(console.field().clock().nowMicros(), Direction.IN, Channel.GAMECONTROLLER,
                 new InetSocketAddress("127.0.0.1", 3838), Envelope.NO_ROBOT, "gc.hl12", null, packet, null));
     }
 

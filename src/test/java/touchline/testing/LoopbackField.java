@@ -43,7 +43,7 @@ public final class LoopbackField implements AutoCloseable {
     public touchline.app.Console join() throws InterruptedException {
         touchline.app.Console c = new touchline.app.Console(touchline.app.ConsoleConfig.defaults()
                 .withUdp(touchline.transport.UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-        console(c.port());
+        console(c.field().port());
         return c;
     }
 

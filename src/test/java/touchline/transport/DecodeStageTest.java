@@ -18,7 +18,7 @@ class DecodeStageTest {
     @Test
     void publishesEveryBatchInOrderAndWhatWaitsBeforeItStops() {
         List<Long> seen = Collections.synchronizedList(new ArrayList<>());
-        DecodeStage stage = new DecodeStage(e -> seen.add(e.timeMicros()));
+        DecodeStage stage = new DecodeStage(e -> seen.add(e.timeMicros())).start();
         int n = 1000; // more than one full batch, and a last batch flushed by hand
         for (int i = 0; i < n; i++) {
             int k = i;
@@ -38,7 +38,7 @@ class DecodeStageTest {
     @Test
     void aDatagramWhoseDecodeFailsIsLostAndTheNextOneIsNot() {
         List<Long> seen = Collections.synchronizedList(new ArrayList<>());
-        DecodeStage stage = new DecodeStage(e -> seen.add(e.timeMicros()));
+        DecodeStage stage = new DecodeStage(e -> seen.add(e.timeMicros())).start();
         stage.add(() -> numbered(1));
         stage.add(() -> {
             throw new IllegalStateException("a decoder bug");
@@ -56,7 +56,7 @@ class DecodeStageTest {
         DecodeStage stage = new DecodeStage(e -> {
             seen.add(e.timeMicros());
             threads.add(Thread.currentThread().getName());
-        });
+        }).start();
         for (int i = 0; i < 200; i++) {
             int k = i;
             if (i % 3 == 0) {
@@ -86,7 +86,7 @@ class DecodeStageTest {
             } catch (InterruptedException ex) {
                 Thread.currentThread().interrupt();
             }
-        });
+        }).start();
         stage.add(numbered(1));
         stage.flush();
         assertFalse(stage.behind(), "nothing waited");
@@ -116,7 +116,7 @@ class DecodeStageTest {
                 Thread.currentThread().interrupt();
             }
             seen.add(e.timeMicros());
-        });
+        }).start();
         for (int i = 0; i < 100; i++) {
             stage.add(numbered(i));
         }

@@ -41,8 +41,8 @@ class ReliableStreamFirmwareTest {
     @Test
     void loremIpsumFromConsoleToFirmware() throws Exception {
         try (Console console = console();
-             LossyUdpProxy link = new LossyUdpProxy(new java.net.InetSocketAddress("127.0.0.1", console.port()), 0.15, 0.05, 0.05, 11)) {
-            ReliableSession session = console.openStream(link.consoleSide());
+             LossyUdpProxy link = new LossyUdpProxy(new java.net.InetSocketAddress("127.0.0.1", console.field().port()), 0.15, 0.05, 0.05, 11)) {
+            ReliableSession session = console.field().openStream(link.consoleSide());
             try (RobotProcess robot = RobotProcess.robot(4, link.robotSide().getPort(), "--reliable-print").start()) {
                 byte[] text = LOREM.getBytes(StandardCharsets.US_ASCII);
                 for (int off = 0; off < text.length; off += 300) {
@@ -60,8 +60,8 @@ class ReliableStreamFirmwareTest {
     void loremIpsumFromFirmwareToConsole(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
         Path file = Files.writeString(dir.resolve("lorem.txt"), LOREM);
         try (Console console = console();
-             LossyUdpProxy link = new LossyUdpProxy(new java.net.InetSocketAddress("127.0.0.1", console.port()), 0.15, 0.05, 0.05, 12)) {
-            ReliableSession session = console.openStream(link.consoleSide());
+             LossyUdpProxy link = new LossyUdpProxy(new java.net.InetSocketAddress("127.0.0.1", console.field().port()), 0.15, 0.05, 0.05, 12)) {
+            ReliableSession session = console.field().openStream(link.consoleSide());
             ByteArrayOutputStream got = new ByteArrayOutputStream();
             session.onReceive(p -> {
                 synchronized (got) {
@@ -86,8 +86,8 @@ class ReliableStreamFirmwareTest {
     void matheBothSidesAtOnce() throws Exception {
         int operands = 150;
         try (Console console = console();
-             LossyUdpProxy link = new LossyUdpProxy(new java.net.InetSocketAddress("127.0.0.1", console.port()), 0.15, 0.05, 0.05, 13)) {
-            ReliableSession session = console.openStream(link.consoleSide());
+             LossyUdpProxy link = new LossyUdpProxy(new java.net.InetSocketAddress("127.0.0.1", console.field().port()), 0.15, 0.05, 0.05, 13)) {
+            ReliableSession session = console.field().openStream(link.consoleSide());
             Mathe mathe = new Mathe(operands, 99);
             session.onReceive(p -> {
                 synchronized (mathe) {

@@ -85,13 +85,11 @@ class UdpTransportTest {
      */
     private ReliableStreamHandler useTeamKeyAndReliableStream() throws Exception {
         transport.close();
-        ReliableStreamHandler reliable = new ReliableStreamHandler(received::add, new touchline.app.SystemClock());
         transport = new UdpTransport(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0),
                 LinkSecurity.with(key, new CounterSource(clock::get, CounterSource.inMemory())),
-                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock(), reliable);
-        reliable.useAuth(transport.segmentAuth());
+                new MessageCodec(new MessageKinds()), received::add, new touchline.app.SystemClock());
         transport.start();
-        return reliable;
+        return transport.reliable();
     }
 
     private void send(byte[] bytes) throws Exception {
@@ -197,7 +195,7 @@ class UdpTransportTest {
     void gateHoldsCommandsBack() throws Exception {
         send(status(4, Framing.LEGACY));
         next();
-        transport.setGate(() -> Optional.of("match mode: PLAYING"));
+        transport.setGate(() -> Optional.of(Hold.always("match mode: PLAYING")));
         SendResult r = transport.send(4, new MessageCodec(new MessageKinds()).optionListRequest());
         assertEquals(SendResult.Outcome.HELD, r.outcome());
         assertEquals("match mode: PLAYING", r.reason());

@@ -2,20 +2,17 @@ package touchline.ui;
 
 import javafx.scene.control.TextArea;
 import javafx.scene.input.KeyCode;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.model.store.StoreEnvelopes;
 import touchline.proto.Fumanoid;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.views.ImageDataView;
 import touchline.ui.views.PlotView;
 import touchline.ui.views.RawDataView;
 import touchline.ui.views.RegionOverlayView;
 
-import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -25,32 +22,24 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * deliver it): each view shows what it can, says what it could not, and the next good input
  * shows again.
  */
-@Tag("ui")
+@UiTest
 class BadInputUiTest {
 
     private static final int ROBOT = 50;
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
         publish(StoreEnvelopes.status(now(), ROBOT));
     }
 
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
-
     private long now() {
-        return ui.console.clock().nowMicros();
+        return ui.console.field().clock().nowMicros();
     }
 
     private void publish(Envelope e) {
-        ui.console.bus().accept(e);
+        ui.console.field().bus().accept(e);
     }
 
     private String status(View view) throws Exception {

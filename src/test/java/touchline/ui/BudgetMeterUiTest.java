@@ -4,15 +4,13 @@ import javafx.scene.control.Label;
 import javafx.scene.text.Text;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.model.RuleProfile;
+import touchline.testing.UiTest;
 
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
-import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -23,25 +21,21 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * reads whole in a 1280-pixel window in play, and an oversized message at once.
  * Team messages are real datagrams on loopback; the GameController is the console's own.
  */
-@Tag("ui")
+@UiTest
 class BudgetMeterUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
     private DatagramSocket field;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         ui.laptopSize();
     }
 
     @AfterEach
     void close() throws Exception {
-        ui.console.stopGameController();
-        ui.close();
+        ui.console.referee().stop();
         field.close();
     }
 
@@ -60,8 +54,8 @@ class BudgetMeterUiTest {
 
     @Test
     void theMeterCountsByTheRulesAndReadsWholeInPlayAtA1280PixelWindow() throws Exception {
-        ui.console.guardTeamMessages(RuleProfile.named("hsl-2026"), 13, new InetSocketAddress("127.0.0.1", 0));
-        int port = ui.console.teamMessagePort();
+        ui.console.teamBudget().guard(RuleProfile.named("hsl-2026"), 13, new InetSocketAddress("127.0.0.1", 0));
+        int port = ui.console.teamBudget().port();
         try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             InetSocketAddress to = new InetSocketAddress("127.0.0.1", port);
             for (int i = 0; i < 3; i++) {
@@ -74,11 +68,11 @@ class BudgetMeterUiTest {
             GameControllerTabDriver gc = new GameControllerTabDriver(ui);
             gc.start(field, "hsl20"); // teams 13 and 7, INITIAL
             robot.send(new DatagramPacket(new byte[40], 40, to));
-            ui.await(30, () -> ui.console.teamMessageBudget().orElseThrow().snapshot().notCounted() == 4
+            ui.await(30, () -> ui.console.teamBudget().budget().orElseThrow().snapshot().notCounted() == 4
                     || text().contains("1 used"));
             assertTrue(text().startsWith("team 13: 0 used"), "INITIAL does not count: " + text());
             gc.press("#gc-ready");
-            ui.await(30, () -> ui.console.matchMode().playIsOn());
+            ui.await(30, () -> ui.console.referee().matchMode().playIsOn());
             for (int i = 0; i < 3; i++) {
                 robot.send(new DatagramPacket(new byte[40], 40, to));
             }
@@ -109,8 +103,8 @@ class BudgetMeterUiTest {
     /** The status bar's "in" rate counts the team messages the console hears (it read 0 pkt/s while they came). */
     @Test
     void theInRateCountsTeamMessages() throws Exception {
-        ui.console.guardTeamMessages(RuleProfile.named("hsl-2026"), 13, new InetSocketAddress("127.0.0.1", 0));
-        InetSocketAddress to = new InetSocketAddress("127.0.0.1", ui.console.teamMessagePort());
+        ui.console.teamBudget().guard(RuleProfile.named("hsl-2026"), 13, new InetSocketAddress("127.0.0.1", 0));
+        InetSocketAddress to = new InetSocketAddress("127.0.0.1", ui.console.teamBudget().port());
         java.util.regex.Pattern in = java.util.regex.Pattern.compile("^in (\\d+) pkt/s");
         try (DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             // no robot talks to the console: only team messages arrive, a few on every look
@@ -122,6 +116,6 @@ class BudgetMeterUiTest {
                 return m.find() && Long.parseLong(m.group(1)) > 0;
             });
         }
-        assertEquals(0, ui.console.robots().robots().size(), "no robot was heard: the rate is the team messages'");
+        assertEquals(0, ui.console.field().robots().robots().size(), "no robot was heard: the rate is the team messages'");
     }
 }

@@ -2,19 +2,16 @@ package touchline.ui;
 
 import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.model.RobotSnapshot;
+import touchline.testing.UiTest;
 import touchline.ui.views.LiveRows;
 import touchline.testing.RobotProcess;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.views.PlotView;
 import touchline.ui.views.RegionOverlayView;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
@@ -25,23 +22,11 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The real console window (headless) against the real simulated robot. */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class ConsoleUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private static void assumeRobot() {
         touchline.testing.Requirement.robotSide("touchline-robot");
@@ -121,8 +106,8 @@ class ConsoleUiTest {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
             ui.selectOption(3, "demo.plotter");
             ui.robot.type(KeyCode.SPACE);
-            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().wanted());
-            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().streaming());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.plotter").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.plotter").orElseThrow().streaming());
             ui.robot.doubleClickOn(ui.fx(() -> ui.optionCell(3, "demo.plotter")));
             ui.await(10, () -> ui.view(PlotView.class) != null);
             PlotView plot = ui.view(PlotView.class);
@@ -133,7 +118,7 @@ class ConsoleUiTest {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
             ui.selectOption(3, "havimo.region");
             ui.robot.type(KeyCode.SPACE);
-            ui.await(10, () -> ui.console.options().options(3).option("havimo.region").orElseThrow().streaming());
+            ui.await(10, () -> ui.console.field().options().options(3).option("havimo.region").orElseThrow().streaming());
             ui.robot.type(KeyCode.ENTER);
             ui.await(10, () -> ui.view(RegionOverlayView.class) != null);
             RegionOverlayView overlay = ui.view(RegionOverlayView.class);
@@ -168,7 +153,7 @@ class ConsoleUiTest {
 
     @Test
     void aLayoutWithAMissingViewOrRobotStillOpens() throws Exception {
-        java.nio.file.Files.writeString(layouts.resolve("old.layout"), """
+        java.nio.file.Files.writeString(ui.layoutDir().resolve("old.layout"), """
                 touchline-layout 1
                 window
                  branch vertical 0.5

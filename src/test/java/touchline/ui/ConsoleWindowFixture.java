@@ -14,21 +14,30 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * The real console window on a headless (Monocle) stage, listening on a loopback port the OS
- * chose, for the UI tests.
+ * chose, for the UI tests. A class tagged {@link touchline.testing.UiTest} gets one per field of
+ * this type before each test; a test that opens its windows itself (another configuration, two
+ * windows) uses the constructors.
  */
-final class ConsoleWindowFixture implements AutoCloseable {
+public final class ConsoleWindowFixture implements AutoCloseable {
 
     final Console console;
     final ConsoleWindow window;
     final FxRobot robot = new FxRobot();
 
-    ConsoleWindowFixture(Path layoutDir) throws Exception {
+    public ConsoleWindowFixture(Path layoutDir) throws Exception {
         this(layoutDir, loopback());
     }
 
     /** The console on a loopback port the OS chose. */
     static ConsoleConfig loopback() {
         return ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+    }
+
+    private final Path layoutDir;
+
+    /** Where this window keeps its layouts and settings. */
+    Path layoutDir() {
+        return layoutDir;
     }
 
     /** Views open when {@link ConsoleWindow#show} returned (on the FX thread, before any later pulse). */
@@ -40,6 +49,7 @@ final class ConsoleWindowFixture implements AutoCloseable {
 
     /** With {@code viewsAfterShown}: shown as {@code touchline console} shows it (views after the first frame). */
     ConsoleWindowFixture(Path layoutDir, ConsoleConfig config, boolean viewsAfterShown) throws Exception {
+        this.layoutDir = layoutDir;
         console = new Console(config).start();
         Stage stage = FxToolkit.registerPrimaryStage();
         int[] views = new int[1];
@@ -67,7 +77,7 @@ final class ConsoleWindowFixture implements AutoCloseable {
     }
 
     int port() {
-        return console.port();
+        return console.field().port();
     }
 
     <T> T fx(Callable<T> step) throws Exception {

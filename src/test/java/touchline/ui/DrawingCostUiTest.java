@@ -3,9 +3,9 @@ package touchline.ui;
 import javafx.scene.Node;
 import javafx.scene.layout.Region;
 import javafx.scene.paint.Color;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.views.PlotView;
 
@@ -22,7 +22,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * session"): no view is drawn into a cached image first, a canvas's repaint starts at its own
  * opaque pane, and no transparent background is filled where views repaint.
  */
-@Tag("ui")
+@UiTest
 class DrawingCostUiTest {
 
     @TempDir

@@ -2,14 +2,10 @@ package touchline.ui;
 
 import javafx.scene.image.ImageView;
 import javafx.scene.paint.Color;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import software.coley.bentofx.layout.container.DockContainerLeaf;
+import touchline.testing.UiTest;
 
-import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -18,22 +14,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * Where a dragged tab would land is drawn in the theme's accent, not BentoFX's red: the tab
  * group's own hint, drawn as BentoFX draws it during a drag, read back from its pixels.
  */
-@Tag("ui")
+@UiTest
 class DropHintUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private Color hint() throws Exception {
         return ui.fx(() -> {

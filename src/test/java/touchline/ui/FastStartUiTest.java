@@ -1,8 +1,8 @@
 package touchline.ui;
 
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 
 import java.nio.file.Path;
 
@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** Issue 14's start: the window shows before its views, which follow after the first frame. */
-@Tag("ui")
+@UiTest
 class FastStartUiTest {
 
     @TempDir

@@ -2,12 +2,10 @@ package touchline.ui;
 
 import javafx.scene.control.ListView;
 import javafx.scene.input.KeyCode;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.views.FieldPlotView;
 
@@ -22,23 +20,11 @@ import static org.junit.jupiter.api.Assertions.*;
  * typing, Enter adds it as a series, the plot draws its points, and the plotted data exports
  * as CSV (time, one column per series).
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class FieldPlotUiTest {
 
-    @TempDir
-    Path dir;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(dir);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     @Test
     @SuppressWarnings("unchecked")
@@ -63,7 +49,7 @@ class FieldPlotUiTest {
             assertEquals(5, view.fields().series().get(0).robotId());
             ui.await(10, () -> ui.robot.lookup("#field-status").queryLabeled().getText().matches("1 series · [1-9]\\d* points"));
 
-            Path csv = dir.resolve("plot.csv");
+            Path csv = ui.layoutDir().resolve("plot.csv");
             // Export CSV… asks in a dialog that is not modal: a modal one (or the native file chooser)
             // takes a maximised window out of its maximised state under openbox (issue 36 item 7)
             ui.robot.clickOn("#field-export");

@@ -2,10 +2,10 @@ package touchline.ui;
 
 import javafx.scene.control.ListView;
 import javafx.scene.control.TextField;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.model.store.StoreEnvelopes;
+import touchline.testing.UiTest;
 import touchline.ui.views.DebugConsoleView;
 import touchline.ui.views.TextView;
 
@@ -19,7 +19,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * The views that follow a log (debug console, text view) show each new line once, newest at
  * the bottom, and a search starts again from what the log holds.
  */
-@Tag("ui")
+@UiTest
 class FollowingViewsUiTest {
 
     private static final int ROBOT = 51;
@@ -30,7 +30,7 @@ class FollowingViewsUiTest {
     private ConsoleWindowFixture window() throws Exception {
         ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts);
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
-        ui.console.bus().accept(StoreEnvelopes.status(ui.console.clock().nowMicros(), ROBOT));
+        ui.console.field().bus().accept(StoreEnvelopes.status(ui.console.field().clock().nowMicros(), ROBOT));
         return ui;
     }
 
@@ -74,7 +74,7 @@ class FollowingViewsUiTest {
     }
 
     private static void publish(ConsoleWindowFixture ui, String option, String text) {
-        ui.console.bus().accept(StoreEnvelopes.text(ui.console.clock().nowMicros(), ROBOT, option, text));
+        ui.console.field().bus().accept(StoreEnvelopes.text(ui.console.field().clock().nowMicros(), ROBOT, option, text));
     }
 
     @Test
@@ -292,14 +292,20 @@ class FollowingViewsUiTest {
         }
     }
 
+    /** The lines the text view shows (FX thread). */
+    @SuppressWarnings("unchecked")
+    private static List<String> shownLines(TextView view) {
+        return List.copyOf(((ListView<String>) view.node().lookup("#option-text")).getItems());
+    }
+
     private static void onlyItsOption(ConsoleWindowFixture ui) throws Exception {
         ui.fxRun(() -> ui.window.open("text", new ViewSource(ROBOT, "mine")));
         TextView view = ui.view(TextView.class);
         publish(ui, "mine", "one");
         publish(ui, "other", "not this");
         publish(ui, "mine", "two");
-        ui.await(10, () -> ui.fx(view::shownLines).size() == 2);
-        List<String> shown = ui.fx(view::shownLines);
+        ui.await(10, () -> ui.fx(() -> shownLines(view)).size() == 2);
+        List<String> shown = ui.fx(() -> shownLines(view));
         assertTrue(shown.get(0).endsWith("one") && shown.get(1).endsWith("two"), shown.toString());
     }
 }

@@ -46,7 +46,7 @@ final class GameControllerTabDriver {
         });
         press("#gc-start");
         if (expectRunning) {
-            ui.await(30, () -> ui.console.gameController().isPresent());
+            ui.await(30, () -> ui.console.referee().gameController().isPresent());
         }
     }
 

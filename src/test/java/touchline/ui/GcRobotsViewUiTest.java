@@ -1,12 +1,11 @@
 package touchline.ui;
 
 import javafx.scene.control.TextArea;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.protocol.gamecontroller.ForwardedReturnPacket;
 import touchline.protocol.gamecontroller.ReturnPacket;
+import touchline.testing.UiTest;
 
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
@@ -20,27 +19,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * The window registered as a monitor with a (loopback) HSL GameController shows each robot as
  * the GameController sees it: the forwarded return packet's fallen flag, pose and ball.
  */
-@Tag("ui")
+@UiTest
 class GcRobotsViewUiTest {
 
     @TempDir
     Path layouts;
-    private ConsoleWindowFixture ui;
-
-    @AfterEach
-    void close() throws Exception {
-        if (ui != null) {
-            ui.close();
-        }
-    }
 
     @Test
     void aForwardedReturnPacketShowsTheRobotAsTheGameControllerSeesIt() throws Exception {
-        try (DatagramSocket gameController = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
-            ui = new ConsoleWindowFixture(layouts, ConsoleWindowFixture.loopback().withGcMonitor(
-                    new InetSocketAddress(InetAddress.getLoopbackAddress(), gameController.getLocalPort()), 0));
+        try (DatagramSocket gameController = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+             ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts, ConsoleWindowFixture.loopback().withGcMonitor(
+                     new InetSocketAddress(InetAddress.getLoopbackAddress(), gameController.getLocalPort()), 0))) {
             ui.fxRun(() -> ui.window.open("gc-robots", ViewSource.NONE));
-            InetSocketAddress forward = ui.console.gcMonitor().forwardAddress();
+            InetSocketAddress forward = ui.console.referee().monitor().forwardAddress();
             byte[] packet = new ForwardedReturnPacket(new byte[]{10, 0, 5, 12},
                     new ReturnPacket.V4(3, 5, 1, 1500f, -200f, 0.5f, 2.0f, 300f, 40f)).encode();
             gameController.send(new DatagramPacket(packet, packet.length, forward));

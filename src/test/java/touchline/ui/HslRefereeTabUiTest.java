@@ -7,13 +7,12 @@ import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.HslGameState19;
 import touchline.protocol.gamecontroller.HslGameState20;
 import touchline.protocol.gamecontroller.HslPenalty;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 
 import java.net.DatagramPacket;
@@ -21,7 +20,6 @@ import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
 import java.net.SocketTimeoutException;
 import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
@@ -37,11 +35,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * Space stop/resume), a penalty is called and then given to a robot, a goal counts, a second
  * caution sends off, an illegal key says why in the tab, and the setup is remembered.
  */
-@Tag("ui")
+@UiTest
 class HslRefereeTabUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
     private DatagramSocket field;
     private final AtomicReference<GameControlData> heard = new AtomicReference<>();
@@ -50,7 +46,6 @@ class HslRefereeTabUiTest {
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         field.setSoTimeout(200);
         listening = new Thread(this::listen, "test-field");
@@ -61,7 +56,6 @@ class HslRefereeTabUiTest {
     @AfterEach
     void close() throws Exception {
         listening.interrupt();
-        ui.close();
         field.close();
         listening.join(5000);
     }
@@ -272,7 +266,7 @@ class HslRefereeTabUiTest {
         key(KeyCode.P); // no whistle in READY
         ui.await(30, () -> text(tab, "#gc-message").startsWith("illegal now: "));
 
-        ui.await(30, () -> Files.readString(layouts.resolve("gamecontroller.properties"))
+        ui.await(30, () -> Files.readString(ui.layoutDir().resolve("gamecontroller.properties"))
                 .contains("destinations=127.0.0.1\\:" + field.getLocalPort()));
     }
 
@@ -302,7 +296,7 @@ class HslRefereeTabUiTest {
         gc.start(field, "hsl20", false);
         ui.await(30, () -> ((Parent) tab).lookupAll(".label").stream().anyMatch(n -> n instanceof Label l
                 && l.getText().equals("cannot start: a team's field players wear the other goalkeeper's colour")));
-        assertTrue(ui.console.gameController().isEmpty());
+        assertTrue(ui.console.referee().gameController().isEmpty());
         ui.fxRun(() -> ((javafx.scene.control.ComboBox<touchline.protocol.gamecontroller.TeamColour>) tab
                 .lookup("#gc-colour-b")).setValue(touchline.protocol.gamecontroller.TeamColour.BLUE));
         gc.start(field, "hsl20");
@@ -382,10 +376,10 @@ class HslRefereeTabUiTest {
         String far = "the remote console's GameController at 2001:db8:85a3:0:0:8a2e:370:7334%enp0s31f6:3838";
         // observed again on every look, so the claim never goes stale however slow the machine
         ui.await(30, () -> {
-            ui.console.matchMode().observe(GameControlData.STATE_PLAYING, far);
+            ui.console.referee().matchMode().observe(GameControlData.STATE_PLAYING, far);
             return text(tab, "#match-notice").contains(far);
         });
-        ui.console.matchMode().observe(GameControlData.STATE_PLAYING, far);
+        ui.console.referee().matchMode().observe(GameControlData.STATE_PLAYING, far);
         List<javafx.geometry.Bounds> after = laidOutPlaces(tab);
         assertEquals(widthBefore, ui.fx(() -> tab.getLayoutBounds().getWidth()), "the tab kept its width");
         assertEquals(before, after, "nothing moves when the notice grows");

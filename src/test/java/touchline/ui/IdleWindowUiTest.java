@@ -2,11 +2,11 @@ package touchline.ui;
 
 import javafx.animation.AnimationTimer;
 import javafx.stage.Stage;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.model.store.StoreEnvelopes;
 import touchline.proto.Fumanoid;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutCodec;
 import touchline.ui.layout.LayoutNode;
@@ -28,7 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * window does no frame work. Also the Plot fields view's series kept with the layout, and F1 in
  * a window other than the main one.
  */
-@Tag("ui")
+@UiTest
 class IdleWindowUiTest {
 
     private static final int ROBOT = 61;
@@ -36,7 +36,7 @@ class IdleWindowUiTest {
     Path layouts;
 
     private static Envelope status(ConsoleWindowFixture ui, float x) {
-        return StoreEnvelopes.in(ui.console.clock().nowMicros(), ROBOT, "status", Fumanoid.Message.newBuilder()
+        return StoreEnvelopes.in(ui.console.field().clock().nowMicros(), ROBOT, "status", Fumanoid.Message.newBuilder()
                 .setRobotID(ROBOT).setExtension(Fumanoid.status, Fumanoid.Status.newBuilder().setTeamID(13)
                         .setBatteryPercent(80).setRobotPosition(Fumanoid.Position.newBuilder().setX(x).setY(0))
                         .build()).build());
@@ -46,7 +46,7 @@ class IdleWindowUiTest {
     private static FieldView fieldWith(ConsoleWindowFixture ui) throws Exception {
         ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0,
                 List.of(new LayoutNode.Entry("field", ""))))));
-        ui.console.bus().accept(status(ui, 100));
+        ui.console.field().bus().accept(status(ui, 100));
         FieldView field = ui.view(FieldView.class);
         ui.await(10, () -> field.drawnRobots() == 1);
         return field;
@@ -59,7 +59,7 @@ class IdleWindowUiTest {
             ui.fxRun(() -> ui.window.open("plot", new ViewSource(ROBOT, "calm.plot")));
             PlotView plot = ui.view(PlotView.class);
             FramePulse pulse = ui.window.pulse();
-            ui.console.bus().accept(StoreEnvelopes.plot(ui.console.clock().nowMicros(), ROBOT, "calm.plot", "a", 1, 2, 3));
+            ui.console.field().bus().accept(StoreEnvelopes.plot(ui.console.field().clock().nowMicros(), ROBOT, "calm.plot", "a", 1, 2, 3));
             ui.await(10, () -> plot.points() == 3);
             // quiet from here: the pulse pulls a few catch-up frames, then stops and says so
             ui.await(30, () -> !pulse.running());
@@ -68,14 +68,14 @@ class IdleWindowUiTest {
             long[] before = ui.fx(() -> new long[] {plot.draws(), plot.resizes(), pulse.workFrames()});
             // a datagram that moves the robot registry but not the plot's data: the idle watch wakes
             // the pulse, the views pull, the plot does not redraw (a resize would be a reason to)
-            ui.console.bus().accept(StoreEnvelopes.text(ui.console.clock().nowMicros(), ROBOT, "demo.text", "hello"));
+            ui.console.field().bus().accept(StoreEnvelopes.text(ui.console.field().clock().nowMicros(), ROBOT, "demo.text", "hello"));
             ui.await(10, () -> pulse.workFrames() > before[2]);
             ui.await(30, () -> !pulse.running());
             long redraws = ui.fx(plot::draws) - before[0];
             long resized = ui.fx(plot::resizes) - before[1];
             assertTrue(redraws <= resized, "redrawn " + redraws + " times without new data, resized " + resized + " times");
             // new data for the plot: woken again, and drawn
-            ui.console.bus().accept(StoreEnvelopes.plot(ui.console.clock().nowMicros(), ROBOT, "calm.plot", "a", 4));
+            ui.console.field().bus().accept(StoreEnvelopes.plot(ui.console.field().clock().nowMicros(), ROBOT, "calm.plot", "a", 4));
             ui.await(10, () -> plot.draws() > before[0]); // (older points may have left its 10-s window)
         }
     }
@@ -89,7 +89,7 @@ class IdleWindowUiTest {
             double at100 = ui.fx(shape::getLayoutX);
             long fieldPaints = ui.fx(field::fieldPaints);
             long paints = ui.fx(field::paints);
-            ui.console.bus().accept(status(ui, 900)); // 800 mm towards the opponent goal
+            ui.console.field().bus().accept(status(ui, 900)); // 800 mm towards the opponent goal
             ui.await(10, () -> ui.fx(shape::getLayoutX) > at100 + 1);
             assertTrue(ui.fx(field::paints) > paints, "the robot drawn where it is now");
             assertEquals(fieldPaints, (long) ui.fx(field::fieldPaints), "the field itself is not painted again");
@@ -107,7 +107,7 @@ class IdleWindowUiTest {
             ui.await(10, () -> stage.isIconified() && !pulse.running());
             long frames = ui.fx(pulse::frames);
             long paints = ui.fx(field::paints);
-            ui.console.bus().accept(status(ui, 900)); // the robot moves while the window is minimised
+            ui.console.field().bus().accept(status(ui, 900)); // the robot moves while the window is minimised
             // JavaFX goes on pulsing (a timer of the test's own counts 60 pulses): the console's pulse does nothing
             AtomicLong otherPulses = new AtomicLong();
             AnimationTimer counter = new AnimationTimer() {
@@ -117,7 +117,7 @@ class IdleWindowUiTest {
                 }
             };
             ui.fxRun(counter::start);
-            ui.await(30, () -> otherPulses.get() >= 60 && ui.console.robots().robot(ROBOT)
+            ui.await(30, () -> otherPulses.get() >= 60 && ui.console.field().robots().robot(ROBOT)
                     .map(r -> r.x() == 900).orElse(false));
             ui.fxRun(counter::stop);
             assertEquals(frames, (long) ui.fx(pulse::frames), "no frame while minimised");
@@ -134,7 +134,7 @@ class IdleWindowUiTest {
             ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0,
                     List.of(new LayoutNode.Entry("field-plot", ""))))));
             FieldPlotView plot = ui.view(FieldPlotView.class);
-            ui.console.bus().accept(status(ui, 100));
+            ui.console.field().bus().accept(status(ui, 100));
             ui.await(10, () -> plot.fields().add(ROBOT, "status:batteryPercent"));
             assertTrue(ui.fx(() -> plot.fields().add(ROBOT, "status:robotPosition.x")));
             ui.fxRun(() -> {
@@ -154,7 +154,7 @@ class IdleWindowUiTest {
             assertTrue(restored != plot, "a new view from the layout");
             // the new view has seen no status yet: the series wait for their kind, and are kept meanwhile
             assertTrue(ui.fx(restored::layoutState).contains(ROBOT + ":status:batteryPercent;"));
-            ui.console.bus().accept(status(ui, 200));
+            ui.console.field().bus().accept(status(ui, 200));
             ui.await(10, () -> restored.fields().series().size() == 2);
             assertEquals(List.of("robot " + ROBOT + " status:batteryPercent", "robot " + ROBOT + " status:robotPosition.x"),
                     ui.fx(() -> restored.fields().series().stream().map(s -> s.name()).toList()));

@@ -10,16 +10,13 @@ import javafx.scene.input.KeyCode;
 import javafx.scene.layout.BorderStroke;
 import javafx.stage.Stage;
 import javafx.stage.Window;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 
@@ -34,23 +31,11 @@ import static org.junit.jupiter.api.Assertions.*;
  * network console keeps the selected row in view while the oldest rows go, starts Down at its newest row and shows ASCII
  * beside the hex.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class KeyboardUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     /** The first control each view under test shows: a restored view joins the scene a pulse later. */
     private static final java.util.Map<String, String> FIRST_CONTROL = java.util.Map.of(
@@ -166,11 +151,11 @@ class KeyboardUiTest {
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE)); // back
             ui.await(10, () -> ui.window.scene().getFocusOwner() instanceof TreeView<?>);
             ui.robot.type(KeyCode.SPACE);
-            ui.await(10, () -> ui.console.options().options(3).option("demo.text").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.text").orElseThrow().wanted());
 
             ui.await(10, () -> ui.optionCell(3, "demo.plotter") != null);
             ui.robot.clickOn(ui.fx(() -> ui.optionCell(3, "demo.plotter").lookup(".option-box")));
-            ui.await(10, () -> ui.console.options().options(3).option("demo.plotter").orElseThrow().wanted());
+            ui.await(10, () -> ui.console.field().options().options(3).option("demo.plotter").orElseThrow().wanted());
             ui.await(10, () -> ((javafx.scene.control.CheckBox) ui.optionCell(3, "demo.plotter").lookup(".option-box"))
                     .isSelected());
         }
@@ -182,8 +167,8 @@ class KeyboardUiTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(4, ui.port(), "--rate", "50").start()) {
             only("debug-console");
-            ui.await(15, () -> ui.console.options().options(4).listReceived());
-            ui.console.setOption(4, "demo.text", true);
+            ui.await(15, () -> ui.console.field().options().options(4).listReceived());
+            ui.console.optionSwitches().set(4, "demo.text", true);
             ui.await(10, () -> counted("") > 5); // "N lines"
 
             ui.fxRun(() -> ui.robot.lookup("#debug-search").queryTextInputControl().setText("BALL AT"));
@@ -214,8 +199,8 @@ class KeyboardUiTest {
     @SuppressWarnings("unchecked")
     private TableView<Envelope> networkTableWithText(int robotId) throws Exception {
         only("network");
-        ui.await(15, () -> ui.console.options().options(robotId).listReceived());
-        ui.console.setOption(robotId, "demo.text", true);
+        ui.await(15, () -> ui.console.field().options().options(robotId).listReceived());
+        ui.console.optionSwitches().set(robotId, "demo.text", true);
         return ui.fx(() -> ui.robot.lookup("#network-table").queryAs(TableView.class));
     }
 

@@ -7,14 +7,10 @@ import javafx.scene.control.MenuBar;
 import javafx.scene.control.MenuItem;
 import javafx.stage.Stage;
 import javafx.stage.Window;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutStore;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 
@@ -22,22 +18,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The Layout menu: saved layouts can be renamed and deleted, and the name dialog shows its buttons whole. */
-@Tag("ui")
+@UiTest
 class LayoutMenuUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private Menu menu(String id) throws Exception {
         return ui.fx(() -> {
@@ -65,7 +49,7 @@ class LayoutMenuUiTest {
                 throw new java.io.UncheckedIOException(e);
             }
         });
-        LayoutStore store = new LayoutStore(layouts);
+        LayoutStore store = new LayoutStore(ui.layoutDir());
         assertTrue(listed("menu-rename-layout").containsAll(List.of("\"match\"…", "\"practice\"…")), listed("menu-rename-layout").toString());
         assertTrue(listed("menu-delete-layout").containsAll(List.of("\"match\"…", "\"practice\"…")));
 
@@ -121,5 +105,37 @@ class LayoutMenuUiTest {
             ((Button) pane.lookupButton(javafx.scene.control.ButtonType.OK)).fire();
         });
         ui.await(30, () -> ui.window.layouts().names().contains("after the dialog") && !stage.isShowing());
+    }
+
+    /**
+     * Deleting a layout asks first, in a dialog that is not modal (a modal one takes a maximised
+     * window out of its maximised state under a window manager, issue 36 item 7): Cancel keeps the
+     * layout, OK deletes it.
+     */
+    @Test
+    void deletingALayoutAsksInADialogThatIsNotModal() throws Exception {
+        ui.fxRun(() -> {
+            try {
+                ui.window.saveLayout("match");
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        });
+        for (javafx.scene.control.ButtonType answer : List.of(javafx.scene.control.ButtonType.CANCEL,
+                javafx.scene.control.ButtonType.OK)) {
+            Menu deletes = menu("menu-delete-layout");
+            MenuItem delete = ui.fx(() -> deletes.getItems().get(0));
+            ui.fxRun(() -> javafx.application.Platform.runLater(delete::fire)); // a modal one would wait here
+            ui.await(30, () -> dialog("Delete layout").isPresent());
+            Stage stage = ui.fx(() -> dialog("Delete layout").orElseThrow());
+            assertEquals(javafx.stage.Modality.NONE, ui.fx(stage::getModality));
+            assertTrue(ui.fx(() -> ((javafx.scene.control.DialogPane) stage.getScene().getRoot()).getContentText())
+                    .startsWith("Delete the layout \"match\"?"));
+            ui.fxRun(() -> ((Button) ((javafx.scene.control.DialogPane) stage.getScene().getRoot()).lookupButton(answer)).fire());
+            ui.await(30, () -> !stage.isShowing());
+            boolean kept = answer == javafx.scene.control.ButtonType.CANCEL;
+            ui.await(30, () -> ui.window.layouts().names().contains("match") == kept);
+        }
+        assertEquals("layout \"match\" deleted", said());
     }
 }

@@ -6,18 +6,15 @@ import javafx.scene.control.ListView;
 import javafx.scene.control.TableView;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.control.skin.VirtualFlow;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -32,23 +29,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * and the oldest go, and the console says it holds it; Pause in the Debug console freezes the
  * lines that were on screen.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class LogViewsUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private void only(String viewId, String control) throws Exception {
         ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry(viewId, ""))))));
@@ -58,8 +43,8 @@ class LogViewsUiTest {
     /** View {@code viewId} alone, once its {@code control} is in the scene, and the robot's demo text switched on. */
     private void onlyWithText(String viewId, String control, int robotId) throws Exception {
         only(viewId, control);
-        ui.await(15, () -> ui.console.options().options(robotId).listReceived());
-        ui.console.setOption(robotId, "demo.text", true);
+        ui.await(15, () -> ui.console.field().options().options(robotId).listReceived());
+        ui.console.optionSwitches().set(robotId, "demo.text", true);
     }
 
     @ParameterizedTest
@@ -69,7 +54,7 @@ class LogViewsUiTest {
         touchline.testing.Requirement.robotSide("touchline-robot");
         try (RobotProcess robot = RobotProcess.robot(7, ui.port(), "--rate", "20").start()) {
             only(viewId, filterId);
-            ui.await(30, () -> ui.console.robots().robots().stream().anyMatch(r -> r.id() == 7));
+            ui.await(30, () -> ui.console.field().robots().robots().stream().anyMatch(r -> r.id() == 7));
             ui.await(30, () -> ui.robot.lookup(filterId).queryAs(ComboBox.class).getItems().contains("robot 7"));
             ComboBox<String> filter = ui.fx(() -> ui.robot.lookup(filterId).queryAs(ComboBox.class));
             ui.fxRun(() -> filter.getSelectionModel().select("robot 7"));

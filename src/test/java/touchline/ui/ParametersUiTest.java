@@ -6,12 +6,11 @@ import javafx.scene.control.TableView;
 import javafx.scene.input.KeyCode;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.app.bridges.BridgeAddress;
 import touchline.testing.SimulatedRos2Robot;
+import touchline.testing.UiTest;
 import touchline.ui.views.ParametersView;
 
-import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.*;
@@ -20,17 +19,15 @@ import static org.junit.jupiter.api.Assertions.*;
  * The Parameters view on a simulated ROS 2 robot (the Python Foxglove SDK): Refresh lists its
  * parameters, Space on a bool switches it at the robot, the status line says it was sent.
  */
-@Tag("ui")
+@UiTest
 @Tag("interop")
 class ParametersUiTest {
 
-    @TempDir
-    Path layouts;
+    private ConsoleWindowFixture ui;
 
     @Test
     void refreshListsTheRobotsParametersAndSpaceTogglesABool() throws Exception {
-        try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1", "--game-state", "INITIAL");
-             ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts)) {
+        try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1", "--game-state", "INITIAL")) {
             ui.console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
             ui.fxRun(() -> ui.window.shell().restore(List.of()));
             ui.fxRun(() -> ui.window.open("parameters", ViewSource.NONE));

@@ -9,14 +9,12 @@ import javafx.scene.input.KeyEvent;
 import javafx.stage.Stage;
 import javafx.stage.Window;
 import javafx.stage.WindowEvent;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -29,23 +27,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * closed inside a key's events crashed GTK (JDK-8301219): the quick-open and help windows close
  * after the key's events, never while one of them is being delivered.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class QuickOpenKeysUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0, List.of(new LayoutNode.Entry("robots", ""))))));
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
     }
 
     /** Counts, on the FX thread, the key events a window is delivering and the closes that happened inside one. */

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.PythonMcap;
 import touchline.testing.Requirement;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 
 import java.nio.file.Path;
 
@@ -23,7 +24,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * the window, and the file is read by the independent Python {@code mcap} reader through its
  * summary and indexes (footer, statistics, every index entry checked).
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 @Tag("interop")
 class RecordingEndsUiTest {
@@ -37,7 +38,6 @@ class RecordingEndsUiTest {
     void open() throws Exception {
         Requirement.robotSide("touchline-robot");
         PythonMcap.require("mcap");
-        ui = new ConsoleWindowFixture(dir.resolve("layouts"));
         ui.fxRun(() -> ui.window.open("replay", ViewSource.NONE));
         robot = RobotProcess.robot(5, ui.port()).start();
     }
@@ -46,9 +46,6 @@ class RecordingEndsUiTest {
     void close() throws Exception {
         if (robot != null) {
             robot.close();
-        }
-        if (ui != null) {
-            ui.close();
         }
     }
 
@@ -60,9 +57,9 @@ class RecordingEndsUiTest {
         ui.await(10, () -> counters().startsWith("Recording:"));
         // the robot's own traffic (status, replies to the console's requests) reaches the file
         try {
-            ui.await(15, () -> ui.console.recording().map(s -> s.written() >= 3).orElse(false));
+            ui.await(15, () -> ui.console.recordings().current().map(s -> s.written() >= 3).orElse(false));
         } catch (java.util.concurrent.TimeoutException e) {
-            throw new AssertionError("the robot's traffic did not reach the recording: " + ui.console.recording()
+            throw new AssertionError("the robot's traffic did not reach the recording: " + ui.console.recordings().current()
                     + ", robot alive " + robot.isAlive() + ", its output: " + robot.stdout(), e);
         }
         return file;
@@ -92,7 +89,7 @@ class RecordingEndsUiTest {
         Path file = startRecordingFromTheWindow();
         // what the window's close button does: the stage hides, and the app's way out follows
         ui.fxRun(() -> ui.window.scene().getWindow().hide());
-        assertTrue(ui.console.recording().isEmpty(), "the recording ended with the window");
+        assertTrue(ui.console.recordings().current().isEmpty(), "the recording ended with the window");
         assertFinished(file);
     }
 

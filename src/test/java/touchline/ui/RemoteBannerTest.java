@@ -27,9 +27,9 @@ class RemoteBannerTest {
         }
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start()) {
-            ConsoleStatus status = new ConsoleStatus(console);
+            ConsoleStatus status = new ConsoleStatus(console.field(), console.referee(), console.replays(), console.remote());
             assertFalse(status.silence().contains(Console.COMMANDS_OFF), "a console on the field sends");
-            console.viewRemote(new URI("ws://127.0.0.1:" + nobody + "/?token=secret"), null);
+            console.remote().view(new URI("ws://127.0.0.1:" + nobody + "/?token=secret"), null);
             Await.until("lost", () -> status.silence().contains("lost"));
             String banner = status.silence();
             assertTrue(banner.startsWith("connection to ws://127.0.0.1:" + nobody + "/ lost (nobody listening), reconnecting…"),

@@ -4,12 +4,10 @@ import javafx.scene.Node;
 import javafx.scene.control.Label;
 import javafx.scene.control.TreeItem;
 import javafx.scene.control.TreeView;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.ui.views.OptionsView;
 
 import java.net.DatagramSocket;
@@ -28,25 +26,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * waiting now (the running total only in the tooltip), GameController packets in the out rate,
  * and status lines in words.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class StatusBarUiTest {
 
     private static final int ROBOT = 6;
     private static final String OPTION = "demo.plotter";
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private String text(String id) throws Exception {
         return ui.fx(() -> ((Label) ui.window.status().lookup(id)).getText());
@@ -96,7 +82,7 @@ class StatusBarUiTest {
              DatagramSocket field = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             ui.fxRun(() -> ui.window.shell().restore(List.of()));
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));
-            ui.await(30, () -> ui.console.options().options(ROBOT).listReceived());
+            ui.await(30, () -> ui.console.field().options().options(ROBOT).listReceived());
             assertFalse(bannerShown(), "no banner while the console may send");
             ui.await(30, () -> text("#status-waiting").equals("0 requests waiting now"));
 
@@ -121,35 +107,51 @@ class StatusBarUiTest {
             ui.await(30, () -> text("#status-waiting").equals("1 request waiting now"));
             ui.await(30, () -> robotRow(options).contains(" · waiting: match mode, game is PLAYING"));
             // the session retries while play is on: the total grows, "waiting now" stays 1
-            long total = ui.console.matchMode().heldCount();
-            ui.await(30, () -> ui.console.matchMode().heldCount() > total);
+            long total = ui.console.referee().matchMode().heldCount();
+            ui.await(30, () -> ui.console.referee().matchMode().heldCount() > total);
             ui.await(30, () -> ui.window.status().lookup("#status-waiting") instanceof Label l
-                    && l.getTooltip().getText().contains(ui.console.matchMode().heldCount() + " send attempts held back"));
+                    && l.getTooltip().getText().contains(ui.console.referee().matchMode().heldCount() + " send attempts held back"));
             assertTrue(text("#status-waiting").equals("1 request waiting now"));
             assertFalse(text("#status-rates").contains("held") || ui.fx(() -> ((Label) ui.window.status().getChildren().get(2))
                     .getText()).contains("held"), "the running total is in the tooltip only");
 
             gc.press("#gc-stop");
             ui.await(30, () -> !bannerShown());
-            ui.await(30, () -> ui.console.options().options(ROBOT).option(OPTION).orElseThrow().streaming());
+            ui.await(30, () -> ui.console.field().options().options(ROBOT).option(OPTION).orElseThrow().streaming());
             ui.await(30, () -> text("#status-waiting").equals("0 requests waiting now"));
             ui.await(30, () -> !robotRow(options).contains("waiting"));
             assertFalse(ui.fx(() -> robotRow(options)).contains("held"), ui.fx(() -> robotRow(options)));
         }
     }
 
+    /**
+     * Notes stale after play (issue 36, item 6): match mode turns on and off with nothing else
+     * heard (play ends by the clock: a source not heard for 5 s no longer counts, and the window
+     * idles after 3 s). The idle window follows it instead of keeping the last banner.
+     */
+    @Test
+    void theIdleWindowFollowsMatchModeWithNothingElseHeard() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(List.of()));
+        FramePulse pulse = ui.window.pulse();
+        ui.await(30, () -> !pulse.running() && !bannerShown());
+        ui.console.referee().matchMode().observeBelieved(3, "GameController at 127.0.0.1:3838");
+        ui.await(30, () -> bannerShown() && text("#status-silence").contains("PLAYING"));
+        // nothing more heard: the window idles after 3 s, the GameController's PLAYING goes stale after 5 s
+        ui.await(30, () -> !bannerShown());
+    }
+
     @Test
     void aReplayAndPausedLiveTrafficShowTheirBanner() throws Exception {
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
         assertFalse(bannerShown());
-        ui.console.openReplay(Path.of("samples/demo-team.mcap").toAbsolutePath());
+        ui.console.replays().open(Path.of("samples/demo-team.mcap").toAbsolutePath());
         ui.await(30, () -> bannerShown() && text("#status-silence").startsWith("Replay: views show the recording (paused)"));
-        ui.console.replay().orElseThrow().play();
+        ui.console.replays().current().orElseThrow().play();
         ui.await(30, () -> text("#status-silence").startsWith("Replay: views show the recording (playing)"));
-        ui.console.setLiveListening(false);
+        ui.console.field().setLiveListening(false);
         ui.await(30, () -> text("#status-silence").endsWith(" · Live traffic paused: robots on the field are not shown"));
-        ui.console.setLiveListening(true);
-        ui.console.closeReplay();
+        ui.console.field().setLiveListening(true);
+        ui.console.replays().close();
         ui.await(30, () -> !bannerShown());
     }
 }

@@ -1,9 +1,9 @@
 package touchline.ui;
 
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import touchline.app.ProductVersion;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutCodec;
 import touchline.ui.layout.LayoutNode;
 import touchline.ui.layout.LayoutStore;
@@ -24,7 +24,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * the window's place, and the configuration directory stays where 0.1.0 kept it. The window
  * names this version in its title and says the transport and priority in use.
  */
-@Tag("ui")
+@UiTest
 class UpgradeUiTest {
 
     private static final Path PREVIOUS = Path.of("src/test/resources/layouts/0.1.0");
@@ -64,7 +64,7 @@ class UpgradeUiTest {
             assertTrue(title.startsWith(ProductVersion.ofThisBuild().title() + " — UDP port "), title);
             javafx.scene.control.Label platform = ui.fx(() ->
                     (javafx.scene.control.Label) ui.window.scene().lookup("#status-platform"));
-            assertEquals(ui.console.runtime().portability(), ui.fx(platform::getText));
+            assertEquals(ui.console.field().runtime().portability(), ui.fx(platform::getText));
 
             // Help → About Touchline… says the version, the transport and the sender's priority
             ui.fxRun(() -> ((javafx.scene.control.MenuBar) ((javafx.scene.layout.BorderPane) ui.window.scene().getRoot())
@@ -76,8 +76,8 @@ class UpgradeUiTest {
                     .map(w -> w.getScene() == null ? null : w.getScene().lookup("#help-about-text"))
                     .filter(java.util.Objects::nonNull).map(n -> ((javafx.scene.control.Label) n).getText())
                     .findFirst().orElseThrow());
-            assertTrue(about.contains("UDP transport: " + ui.console.transportDescription()), about);
-            assertTrue(about.contains("GameController sender: " + ui.console.runtime().priority()), about);
+            assertTrue(about.contains("UDP transport: " + ui.console.field().transportDescription()), about);
+            assertTrue(about.contains("GameController sender: " + ui.console.field().runtime().priority()), about);
         } finally {
             ui.close();
         }

@@ -10,17 +10,15 @@ import javafx.scene.control.TextField;
 import javafx.scene.control.ToggleButton;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import touchline.testing.RobotProcess;
+import touchline.testing.UiTest;
 import touchline.transport.Envelope;
 
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 
@@ -32,18 +30,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * A fault in one view stays in that view: the reason is shown inside it, and the network
  * console next to it keeps showing the newest datagrams (real datagrams on loopback).
  */
-@Tag("ui")
+@UiTest
 class ViewFaultUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
     private DatagramSocket sender;
     private int sent;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         sender = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
         ui.fxRun(() -> {
             ui.window.shell().restore(List.of());
@@ -54,7 +49,6 @@ class ViewFaultUiTest {
     @AfterEach
     void close() throws Exception {
         sender.close();
-        ui.close();
     }
 
     /** A view whose refresh throws while {@code broken} is set. */
@@ -206,7 +200,7 @@ class ViewFaultUiTest {
                 "--bind", "127.0.0.1", "--rpc-port", "0", "--cam-port", "0")).start();
              touchline.transport.nao.NaoLink link = new touchline.transport.nao.NaoLink("127.0.0.1", nao.port(),
                      touchline.transport.nao.NaoLinkConfig.defaults(),
-                     new touchline.transport.nao.NaoEnvelopeChannel(ui.console.bus()), null,
+                     new touchline.transport.nao.NaoEnvelopeChannel(ui.console.field().bus()), null,
                      new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
             touchline.testing.Await.until("the NAO online", () -> link.state() == touchline.transport.nao.ConnectionState.ONLINE);
             link.call("ALMotion", "ping").get(30, java.util.concurrent.TimeUnit.SECONDS);

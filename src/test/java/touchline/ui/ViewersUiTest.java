@@ -5,17 +5,14 @@ import javafx.scene.control.TextField;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.input.KeyCode;
 import org.json.JSONObject;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.views.ViewersView;
 
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.WebSocket;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -28,23 +25,11 @@ import static org.junit.jupiter.api.Assertions.*;
  * the URL, a real WebSocket client (the JDK's) connects with it and appears in the table with
  * its subscription; Ctrl+Shift+V again stops serving and the viewer is disconnected.
  */
-@Tag("ui")
+@UiTest
 @Tag("integration")
 class ViewersUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
-
-    @BeforeEach
-    void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        ui.close();
-    }
 
     private void shortcut() throws Exception {
         ui.fxRun(() -> ui.window.scene().getWindow().requestFocus());

@@ -6,12 +6,10 @@ import javafx.scene.control.ButtonBase;
 import javafx.scene.control.Label;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
+import touchline.testing.UiTest;
 import touchline.ui.layout.LayoutNode;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -21,23 +19,19 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
  * Every view alone in a 1280×720 window: the menu and the status bar stay whole and in the
  * window, no button is cut to "…", and every table header reads in full.
  */
-@Tag("ui")
+@UiTest
 class ViewsFitUiTest {
 
-    @TempDir
-    Path layouts;
     private ConsoleWindowFixture ui;
 
     @BeforeEach
     void open() throws Exception {
-        ui = new ConsoleWindowFixture(layouts);
         ui.laptopSize();
     }
 
     @AfterEach
     void close() throws Exception {
-        ui.console.stopGameController();
-        ui.close();
+        ui.console.referee().stop();
         if (field != null) {
             field.close();
         }
@@ -184,7 +178,7 @@ class ViewsFitUiTest {
         try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
             nobody = s.getLocalPort(); // free again once closed: nothing listens there
         }
-        ui.console.viewRemote(new java.net.URI("ws://127.0.0.1:" + nobody + "/a/rather/long/path/of/the/server"), null);
+        ui.console.remote().view(new java.net.URI("ws://127.0.0.1:" + nobody + "/a/rather/long/path/of/the/server"), null);
         ui.await(30, () -> ui.fx(() -> ((Label) ui.window.scene().lookup("#status-silence")).getText().contains("lost")));
         long start = ui.fx(() -> ui.window.pulse().frames());
         ui.await(30, () -> ui.window.pulse().frames() > start + 5);
@@ -268,11 +262,70 @@ class ViewsFitUiTest {
                 problems.add(id + " is " + over + " px wider than its pane");
             }
             if (id.equals("gamecontroller")) {
-                ui.console.stopGameController();
+                ui.console.referee().stop();
                 field.close();
                 field = null;
             }
         }
         assertEquals(List.of(), problems);
+    }
+
+    /**
+     * At the PLAYING whistle under openbox at 1280 px the whole window moved 38–75 px sideways for a few
+     * seconds: the status bar's texts (the banner "Silent: match mode, …", the meter's "… · debug over
+     * limit") asked together for more than the window, and the window laid everything out wider. With
+     * the longest texts each shows in play, the window needs no more than 1280 px, the counts, the meter
+     * and the frame rate stay whole and the referee's buttons do not move.
+     */
+    @Test
+    void theStatusBarsAndRefereesLongestTextsNeitherWidenTheWindowNorMoveAButton() throws Exception {
+        ui.fxRun(() -> ui.window.shell().restore(DemoLayout.standard()));
+        field = new java.net.DatagramSocket(new java.net.InetSocketAddress("127.0.0.1", 0));
+        new GameControllerTabDriver(ui).start(field, "hsl20");
+        ui.await(30, () -> ui.window.scene().lookup("#gamecontroller-hsl") != null);
+        long start = ui.fx(() -> ui.window.pulse().frames());
+        ui.await(30, () -> ui.window.pulse().frames() > start + 10);
+        List<String> buttons = List.of("#gc-ready", "#gc-play", "#gc-stop-resume", "#gc-undo", "#gc-second-half");
+        List<String> problems = ui.fx(() -> {
+            List<String> out = new ArrayList<>();
+            javafx.scene.Parent root = ui.window.scene().getRoot();
+            List<Bounds> before = buttons.stream().map(id -> root.lookup(id)).map(b -> b.localToScene(b.getLayoutBounds())).toList();
+            // the longest each can show (the pulse refreshes them twice a second: set, laid out and measured at once)
+            text(root, "#status-silence", "Silent: match mode, game is PLAYING (GameController at 192.168.100.200:3838)");
+            text(root, "#status-rates", "in 12345 pkt/s 123.4 MB/s · out 12345 pkt/s 123.4 MB/s");
+            text(root, "#status-malformed", "malformed 1234567");
+            text(root, "#status-waiting", "123 requests waiting now");
+            text(root, "#status-meter", "team 13: 11999 used · 12000 left · runs out in 12:34 · 12 OVERSIZE · debug over limit");
+            text(root, "#status-message", "layout \"a layout with a rather long name for the tournament\" saved");
+            text(root, "#status-fps", "60 fps · p99 1234 ms");
+            text(root, "#gc-state", "PLAYING · penalty shoot-out · STOPPED · Indirect free kick 13 · 2nd half · robots still see SET");
+            root.applyCss();
+            root.layout();
+            double least = root.minWidth(-1);
+            if (least > 1280) {
+                out.add("the window needs " + least + " px");
+            }
+            double width = ui.window.scene().getWidth();
+            for (String id : List.of("#status-meter", "#status-fps", "#status-waiting", "#status-malformed")) {
+                Label l = (Label) root.lookup(id);
+                Bounds b = l.localToScene(l.getLayoutBounds());
+                if (l.getWidth() + 0.5 < l.prefWidth(-1) || b.getMaxX() > width + 0.5) {
+                    out.add(id + " cut or out of the window: " + b + " of " + l.prefWidth(-1) + " in " + width);
+                }
+            }
+            for (int i = 0; i < buttons.size(); i++) {
+                Node b = root.lookup(buttons.get(i));
+                Bounds now = b.localToScene(b.getLayoutBounds());
+                if (Math.abs(now.getMinX() - before.get(i).getMinX()) > 0.5 || Math.abs(now.getMinY() - before.get(i).getMinY()) > 0.5) {
+                    out.add(buttons.get(i) + " moved from " + before.get(i) + " to " + now);
+                }
+            }
+            return out;
+        });
+        assertEquals(List.of(), problems);
+    }
+
+    private static void text(javafx.scene.Parent root, String id, String text) {
+        ((Label) java.util.Objects.requireNonNull(root.lookup(id), id)).setText(text);
     }
 }

@@ -88,14 +88,12 @@ public final class GcIntervalBenchmark {
         }
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         HlGameState12 format = new HlGameState12();
-        try (GcIntervalProbe ours = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
+        // as the embedded GameController runs it: one owner changes the game, the sender reads its snapshots
+        try (touchline.app.game.GameRuntime owner = new touchline.app.game.GameRuntime(game);
+             GcIntervalProbe ours = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
              GcIntervalProbe baseline = new GcIntervalProbe("probe-baseline", INTERVAL_MS, realtime);
-             GcSender sender = new GcSender(p -> {
-                 if (p) {
-                     game.advance();
-                 }
-                 return game.controlData();
-             }, List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS,
+             GcSender sender = new GcSender(p -> (p ? owner.tick().join() : owner.snapshot()).robots(),
+                     List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS,
                      new touchline.app.SystemClock());
              DatagramSocket naive = new DatagramSocket()) {
             // Its own game: a shared lock would let the baseline thread delay ours (priority inversion).
@@ -106,6 +104,7 @@ public final class GcIntervalBenchmark {
             System.out.printf(Locale.ROOT, "measuring %d s on loopback after %d s warm-up, %d load thread(s), %d cores%n",
                     seconds, warmupSeconds, loadThreads, Runtime.getRuntime().availableProcessors());
             sender.useRealtimePriority(realtime);
+            owner.start();
             sender.start();
             naiveSender.start();
             // Intervals during start-up (JIT, thread set-up) are not part of the measurement.
@@ -131,18 +130,17 @@ public final class GcIntervalBenchmark {
                 new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, new touchline.app.SystemClock());
         List<Long> stops = new ArrayList<>();
-        try (GcIntervalProbe probe = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
-             GcSender sender = new GcSender(p -> {
-                 if (p) {
-                     game.advance();
-                 }
-                 return game.controlData();
-             }, List.of(new HslGameState20()), List.of(probe.address()), null, e -> { }, INTERVAL_MS, true,
-                new touchline.app.SystemClock())) {
-            game.addListener(() -> sender.changed(game.controlData().stopped()));
+        // as the embedded GameController runs it: one owner changes the game, the sender reads its snapshots
+        try (touchline.app.game.GameRuntime owner = new touchline.app.game.GameRuntime(game);
+             GcIntervalProbe probe = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
+             GcSender sender = new GcSender(p -> (p ? owner.tick().join() : owner.snapshot()).robots(),
+                     List.of(new HslGameState20()), List.of(probe.address()), null, e -> { }, INTERVAL_MS, true,
+                     new touchline.app.SystemClock())) {
+            owner.addListener(snapshot -> sender.changed(snapshot.robots().stopped()));
+            owner.start();
             for (HslAction a : List.<HslAction>of(new StartSetPlay(5, SetPlay.KICK_OFF), new WaitForSetPlay(),
                     new FreeSetPlay())) {
-                game.perform(a);
+                owner.perform(a).join();
             }
             System.out.printf(Locale.ROOT, "HSL schedule: stop every %d ms for %d s after %d s warm-up, %d cores%n",
                     STOP_EVERY_MS, seconds, warmupSeconds, Runtime.getRuntime().availableProcessors());
@@ -154,9 +152,9 @@ public final class GcIntervalBenchmark {
             while (System.nanoTime() < end) {
                 Thread.sleep(STOP_EVERY_MS / 2);
                 stops.add(System.nanoTime());
-                game.perform(new StopPlay(false));
+                owner.perform(new StopPlay(false));
                 Thread.sleep(STOP_EVERY_MS / 2);
-                game.perform(new StopPlay(true));
+                owner.perform(new StopPlay(true));
             }
             System.out.println("sender real-time priority: " + (sender.realtimeOutcome().isEmpty() ? "yes"
                     : sender.realtimeOutcome()));

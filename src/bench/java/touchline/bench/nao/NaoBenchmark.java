@@ -185,7 +185,7 @@ public final class NaoBenchmark {
     }
 
     private NaoLink link(int port, NaoClientKeys keys) throws InterruptedException {
-        NaoLink link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), e -> { }, keys, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        NaoLink link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), e -> { }, keys, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
         while (link.state() != ConnectionState.ONLINE && System.nanoTime() < end) {
             Thread.sleep(5);
@@ -333,7 +333,7 @@ public final class NaoBenchmark {
     }
 
     private void camera(int camPort, int resolution) throws Exception {
-        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camPort, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camPort, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             stream.configure(new CameraSettings(resolution, 11, 30));
             try (AutoCloseable viewer = stream.subscribe()) {
                 long warm = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);

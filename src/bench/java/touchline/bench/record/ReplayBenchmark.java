@@ -96,7 +96,7 @@ public final class ReplayBenchmark implements Callable<Integer> {
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)));
         try {
             AtomicLong lastTime = new AtomicLong();
-            console.bus().subscribe(e -> lastTime.set(e.timeMicros()));
+            console.field().replayStream().subscribe(e -> lastTime.set(e.timeMicros()));
             double baseline = Double.MAX_VALUE;
             long baselineCount = 0;
             double best = Double.MAX_VALUE;
@@ -105,7 +105,7 @@ public final class ReplayBenchmark implements Callable<Integer> {
                 UnpacedReplay run = UnpacedReplay.intoNothing(laptop);
                 baseline = Math.min(baseline, run.seconds());
                 baselineCount = run.envelopes();
-                Replay r = console.openReplay(List.of(laptop), Map.of());
+                Replay r = console.replays().open(List.of(laptop), Map.of());
                 long t0 = System.nanoTime();
                 delivered = r.runFor(Long.MAX_VALUE);
                 best = Math.min(best, (System.nanoTime() - t0) / 1e9);
@@ -114,9 +114,9 @@ public final class ReplayBenchmark implements Callable<Integer> {
                     + "time%n", baselineCount, baseline, seconds / baseline);
             System.out.printf("replay through the console's model: %d envelopes of %d min in %.2f s = %.0fx real time "
                             + "(budget >= 50x; %.2f x the baseline's time); %d robots in the model%n", delivered, minutes,
-                    best, seconds / best, best / baseline, console.robots().robots().size());
+                    best, seconds / best, best / baseline, console.field().robots().robots().size());
 
-            Replay r = console.openReplay(List.of(laptop), Map.of());
+            Replay r = console.replays().open(List.of(laptop), Map.of());
             long first = r.state().startMicros();
             long span = r.state().durationMicros();
             Random random = new Random(7);
@@ -143,7 +143,7 @@ public final class ReplayBenchmark implements Callable<Integer> {
                     times[(int) Math.ceil(seeks * 0.99) - 1] / 1e6, times[seeks - 1] / 1e6);
 
             long t0 = System.nanoTime();
-            Replay session = console.openReplay(List.of(laptop, robotLog), Map.of());
+            Replay session = console.replays().open(List.of(laptop, robotLog), Map.of());
             double open = (System.nanoTime() - t0) / 1e9;
             for (ReplaySession.Part p : session.files()) {
                 System.out.printf("  %s: %s%n", p.name(), p.offset().describe());
@@ -154,7 +154,7 @@ public final class ReplayBenchmark implements Callable<Integer> {
             System.out.printf("two-file session (the laptop's and robot 3's own log, its clock %.3f s ahead): opened and "
                             + "aligned in %.2f s; %d envelopes played through the model in %.2f s = %.0fx real time%n",
                     ROBOT_CLOCK_AHEAD / 1e6, open, merged, play, seconds / play);
-            console.closeReplay();
+            console.replays().close();
         } finally {
             console.close();
         }

@@ -61,14 +61,14 @@ final class UdpServeRun implements Callable<Integer> {
         Map<Integer, DatagramSocket> robots = new HashMap<>();
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)), clock).start();
-             Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.kinds(), clock, console.bus(),
-                     console.servedStateChannels(touchline.serve.JsonChannel::new))) {
+             Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.field().kinds(), clock, console.field().bus(),
+                     console.serving().stateChannels())) {
             for (Envelope e : team) {
                 if (!robots.containsKey(e.robotId())) {
                     robots.put(e.robotId(), new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)));
                 }
             }
-            InetSocketAddress to = new InetSocketAddress(InetAddress.getLoopbackAddress(), console.port());
+            InetSocketAddress to = new InetSocketAddress(InetAddress.getLoopbackAddress(), console.field().port());
             send(console, robots, to, team.size()); // every channel exists before the viewers come
             drained(console);
             for (int r = 0; r < rounds; r++) {
@@ -99,7 +99,7 @@ final class UdpServeRun implements Callable<Integer> {
         long deadline = System.nanoTime() + 5_000_000_000L;
         long last = -1;
         while (System.nanoTime() < deadline) {
-            long now = console.transportCounts().datagramsIn();
+            long now = console.field().transportCounts().datagramsIn();
             if (now == last) {
                 return;
             }
@@ -111,7 +111,7 @@ final class UdpServeRun implements Callable<Integer> {
     /** Sends {@code total} of the team's datagrams at the rate, in 10 ms steps; the console's ingest rate over that time. */
     private double send(Console console, Map<Integer, DatagramSocket> robots, InetSocketAddress to, long total)
             throws java.io.IOException {
-        long inBefore = console.transportCounts().datagramsIn();
+        long inBefore = console.field().transportCounts().datagramsIn();
         long start = System.nanoTime();
         long n = 0;
         int i = 0;
@@ -125,6 +125,6 @@ final class UdpServeRun implements Callable<Integer> {
             LockSupport.parkNanos(10_000_000L);
         }
         double secs = (System.nanoTime() - start) / 1e9;
-        return (console.transportCounts().datagramsIn() - inBefore) / secs;
+        return (console.field().transportCounts().datagramsIn() - inBefore) / secs;
     }
 }

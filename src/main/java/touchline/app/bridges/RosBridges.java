@@ -1,5 +1,6 @@
 package touchline.app.bridges;
 
+import touchline.app.LiveField;
 import touchline.app.game.MatchMode;
 import touchline.model.RobotRegistry;
 import touchline.model.RosMapping;
@@ -44,24 +45,22 @@ public final class RosBridges implements EnvelopeSink, AutoCloseable {
     private final MatchMode matchMode;
     private final MicrosClock clock;
     private final SendGate gate;
-    private final String refusal;
     private final List<Bridge> bridges = new CopyOnWriteArrayList<>();
     private volatile RosReadings readings = new RosReadings();
 
     /**
-     * @param live     where the bridges' envelopes go (the console's live stream)
-     * @param gate     the console's send gate
-     * @param refusal  the gate's reason that refuses for good rather than holds (a viewing console's)
+     * @param field    the live field: its robots, stores and clock; the game states its stream carries feed match mode
+     * @param live     where the bridges' envelopes go (the field's live switch, paused with live listening)
+     * @param gate     the console's send gate (held in play, shut on a viewing console)
      */
-    public RosBridges(EnvelopeSink live, RobotRegistry robots, ViewStores stores, MatchMode matchMode, MicrosClock clock,
-                      SendGate gate, String refusal) {
+    public RosBridges(LiveField field, EnvelopeSink live, MatchMode matchMode, SendGate gate) {
         this.live = live;
-        this.robots = robots;
-        this.stores = stores;
+        this.robots = field.robots();
+        this.stores = field.stores();
         this.matchMode = matchMode;
-        this.clock = clock;
+        this.clock = field.clock();
         this.gate = gate;
-        this.refusal = refusal;
+        field.bus().subscribe(this);
     }
 
     /** Connects to one robot's bridge (it reconnects by itself); returns its robot number. */
@@ -152,8 +151,9 @@ public final class RosBridges implements EnvelopeSink, AutoCloseable {
         return bridge(robotId).map(Bridge::held).orElse(List.of());
     }
 
+    /** A gate shut for good (a console viewing another Touchline) refuses; one held by play holds. */
     private Optional<SendResult> refused() {
-        return gate.holdReason().filter(refusal::equals).map(SendResult::failed);
+        return gate.hold().filter(h -> !h.untilPlayStops()).map(h -> SendResult.failed(h.why()));
     }
 
     private static SendResult noBridge(int robotId) {

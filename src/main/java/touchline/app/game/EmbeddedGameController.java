@@ -8,13 +8,12 @@ import touchline.transport.gamecontroller.BadPackets;
 import touchline.transport.gamecontroller.GcProfile;
 import touchline.transport.gamecontroller.RobotLiveness;
 import touchline.transport.gamecontroller.GcListener;
+import touchline.transport.gamecontroller.MonitorRegistrations;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import touchline.game.Action;
 import touchline.game.Game;
-import touchline.app.game.MatchMode;
-import touchline.game.Outcome;
 import touchline.game.RefereedGame;
 import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
@@ -37,39 +36,53 @@ import java.net.SocketException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 
 /**
- * The GameController running inside the console: a {@link Game} published by a
- * {@link GcSender}, return packets received and turned into liveness and (edge-triggered)
- * manual penalties, and a watch for other GameControllers on the game-state port. Every
- * datagram in or out is published as a GAMECONTROLLER envelope; our own packets heard back on
- * a shared port are recognised by source and ignored. Bad return packets are counted per
- * source and never applied. Notable events (rival heard, first bad packet of a source, robot
- * requests) go to event listeners as text.
+ * The GameController running inside the console: a refereed game owned by its
+ * {@link GameRuntime} (thread {@value GameRuntime#THREAD}) and published by a {@link GcSender}
+ * that reads the owner's snapshots; return packets received and turned into liveness and
+ * (edge-triggered) manual penalties, enqueued to the owner; other GameControllers heard on the
+ * game-state port through its one listener ({@link GameStateWatch}: the console's, or one of its
+ * own for {@code gc}) and kept as rivals by {@link GameControllerStates}, which also tells match
+ * mode the state we send. Every datagram in or out is published as a GAMECONTROLLER envelope;
+ * our own packets heard back on a shared port are recognised by source and ignored. Bad return
+ * packets are counted per source and never applied. Notable events (rival heard, first bad
+ * packet of a source, robot requests) go to event listeners as text.
  */
 public final class EmbeddedGameController implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
-    private static final String OWN_SOURCE = "this console's GameController";
+    /** How long a periodic send waits for the owner's timer event (it works in memory: microseconds). */
+    private static final long TICK_WAIT_MS = 100;
 
-    private final RefereedGame referee;
     /** The HL game when one is refereed (robots' manual penalty requests apply to it), else null. */
     private final Game game;
+    /** The only thread that changes the game; everything here enqueues to it or reads its snapshot. */
+    private final GameRuntime runtime;
     private final GcConfig config;
     private final EnvelopeSink sink;
-    private final MatchMode matchMode;
+    /** The one source of GameController states for match mode; its tracker keeps our rivals. */
+    private final GameControllerStates states;
+    private final Own own = new Own();
+    /** Where rivals are heard: the console's one listener on the game-state port, or our own; null: nowhere. */
+    private GameStateWatch watch;
+    private final boolean ownsWatch;
+    /** Return packets arrive through {@link #watch} (they share its port). */
+    private boolean returnsOnWatch;
+    /** Our own return-packet listener, unless they come through the watch. */
+    private GcListener returns;
     /** Envelope time stamps (the console's wall clock). */
     private final MicrosClock stamps;
     private final ReturnPacketDecoder returnDecoder = new ReturnPacketDecoder();
-    private final KnownGameStateFormats knownFormats = new KnownGameStateFormats();
     private final RobotLiveness liveness = new RobotLiveness();
     private final BadPackets badPackets = new BadPackets();
-    private final RivalGameControllers rivals = new RivalGameControllers();
     private final ManualPenaltyRequests manualRequests = new ManualPenaltyRequests();
     private final List<Consumer<String>> eventListeners = new CopyOnWriteArrayList<>();
     private final GcSender sender;
-    private final List<GcListener> listeners = new ArrayList<>();
     private volatile MonitorService monitors;
     private final int senderPort;
 
@@ -96,6 +109,22 @@ public final class EmbeddedGameController implements AutoCloseable {
      */
     public EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, MatchMode matchMode,
                                   MicrosClock stamps) throws IOException {
+        this(referee, config, sink, null, matchMode, stamps);
+    }
+
+    /**
+     * A GameController inside a console that already listens on the game-state port: it hears its
+     * rivals (and, where they share that port, its return packets) through {@code watch}, the one
+     * listener there, and tells match mode through the watch's {@link GameControllerStates};
+     * {@code config.rivalBind()} is not opened a second time.
+     */
+    public EmbeddedGameController(RefereedGame referee, GcConfig config, GameStateWatch watch, EnvelopeSink sink,
+                                  MicrosClock stamps) throws IOException {
+        this(referee, config, sink, watch, null, stamps);
+    }
+
+    private EmbeddedGameController(RefereedGame referee, GcConfig config, EnvelopeSink sink, GameStateWatch shared,
+                                   MatchMode matchMode, MicrosClock stamps) throws IOException {
         boolean hslGame = !(referee instanceof Game);
         if (hslGame != config.profile().hsl()) {
             throw new IllegalArgumentException(config.profile().hsl()
@@ -103,12 +132,13 @@ public final class EmbeddedGameController implements AutoCloseable {
                     + "referee it with 'touchline gc --format " + config.profile().cliName() + "'"
                     : "an HSL game is sent in the hsl20 or hsl19 format, not " + config.profile().cliName());
         }
-        this.referee = referee;
         this.game = referee instanceof Game g ? g : null;
+        this.runtime = new GameRuntime(referee);
         this.config = config;
         this.sink = sink;
-        this.matchMode = matchMode;
         this.stamps = stamps;
+        this.states = shared != null ? shared.states() : new GameControllerStates(sink, matchMode,
+                new MonitorRegistrations(), new GameControllerSources(referee::now, null), badPackets, stamps);
         List<GameStateFormat> formats = new ArrayList<>();
         formats.add(config.profile().format());
         if (config.v7Compat() && config.profile() != GcProfile.V7) {
@@ -118,19 +148,26 @@ public final class EmbeddedGameController implements AutoCloseable {
                 config.intervalMs(), config.profile().hsl(), stamps);
         senderPort = sender.localAddress().getPort();
         sender.useRealtimePriority(config.realtime());
+        this.ownsWatch = shared == null;
         try {
-            listeners.add(new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns"));
-            if (config.rivalBind() != null) {
-                listeners.add(new GcListener(config.rivalBind(), this::onGameStatePortDatagram, "gc-rivals"));
+            watch = shared != null ? shared
+                    : config.rivalBind() != null ? new GameStateWatch(config.rivalBind(), states) : null;
+            // one listener per port: returns that share the game-state port come through the watch
+            returnsOnWatch = watch != null && watch.localAddress().getPort() == config.returnBind().getPort();
+            if (!returnsOnWatch) {
+                returns = new GcListener(config.returnBind(), this::onReturnPortDatagram, "gc-returns");
             }
         } catch (IOException e) {
             close();
             throw e;
         }
-        referee.addListener(() -> sender.changed(referee.controlData().stopped()));
+        runtime.addListener(s -> sender.changed(s.robots().stopped()));
     }
 
+    /** Starts the game's owner, then the sender; from now on other GameControllers heard are rivals. */
     public void start() {
+        states.referee(own);
+        runtime.start();
         sender.start();
     }
 
@@ -166,14 +203,17 @@ public final class EmbeddedGameController implements AutoCloseable {
         return m == null ? null : m.stats();
     }
 
-    /** The HL game refereed here; null when it is an HSL game (see {@link #referee()}). */
-    public Game game() {
-        return game;
+    /**
+     * The owner of the game refereed here: every change goes to it as an event; views and
+     * commands read its snapshot.
+     */
+    public GameRuntime runtime() {
+        return runtime;
     }
 
-    /** The game refereed here, whatever its rules. */
-    public RefereedGame referee() {
-        return referee;
+    /** Whether the game refereed here follows the HSL rules. */
+    public boolean hsl() {
+        return game == null;
     }
 
     public GcConfig config() {
@@ -188,8 +228,9 @@ public final class EmbeddedGameController implements AutoCloseable {
         return badPackets;
     }
 
+    /** Other GameControllers heard while this one referees (the one tracker, {@link GameControllerSources#others()}). */
     public RivalGameControllers rivals() {
-        return rivals;
+        return states.sources().others();
     }
 
     public GcSender sender() {
@@ -228,12 +269,12 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     /** The bound return-packet address (useful when port 0 was configured). */
     public InetSocketAddress returnAddress() throws IOException {
-        return listeners.get(0).localAddress();
+        return returnsOnWatch ? watch.localAddress() : returns.localAddress();
     }
 
-    /** The bound rival-watch address, or null when not listening separately. */
+    /** Where rivals are heard (the game-state port's one listener), or null when nowhere. */
     public InetSocketAddress rivalAddress() throws IOException {
-        return listeners.size() > 1 ? listeners.get(1).localAddress() : null;
+        return watch == null ? null : watch.localAddress();
     }
 
     public void addEventListener(Consumer<String> onEvent) {
@@ -242,12 +283,14 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     /** "" or the loud warning that another GameController is sending. */
     public String rivalWarning() {
-        return rivals.warning(referee.now());
+        return rivals().warning(states.sources().now());
     }
 
     /**
      * The robots' send cycle: the state to send, and after the robots' datagrams went out, the
      * true state handed to the monitors (whose thread sends it), so no monitor delays the robots.
+     * It changes nothing: a periodic cycle is the runtime's timer event and sends the snapshot
+     * the owner published after it; a send after a change sends the snapshot of that change.
      */
     private final class RobotsCycle implements GcSender.Source {
 
@@ -256,17 +299,26 @@ public final class EmbeddedGameController implements AutoCloseable {
 
         @Override
         public GameControlData next(boolean periodic) {
-            if (periodic) {
-                referee.advance();
-            }
-            GameControlData data = referee.controlData();
+            RefereeSnapshot s = periodic ? ticked() : runtime.snapshot();
+            GameControlData data = s.robots();
             if (periodic && monitors != null) {
-                truth = referee.trueData();
+                truth = s.truth();
             }
-            if (matchMode != null) {
-                matchMode.observeBelieved(data.state(), OWN_SOURCE);
-            }
+            states.own(data.state());
             return data;
+        }
+
+        /** The snapshot after the timer's event; the last one when the owner does not answer in time. */
+        private RefereeSnapshot ticked() {
+            try {
+                return runtime.tick().get(TICK_WAIT_MS, TimeUnit.MILLISECONDS);
+            } catch (TimeoutException | ExecutionException e) {
+                LOG.warn("the game's owner did not run the timer in {} ms; sending its last state", TICK_WAIT_MS);
+                return runtime.snapshot();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return runtime.snapshot();
+            }
         }
 
         @Override
@@ -279,33 +331,57 @@ public final class EmbeddedGameController implements AutoCloseable {
         }
     }
 
+    /** This GameController as the one source of states knows it while it referees. */
+    private final class Own implements GameControllerStates.Referee {
+
+        @Override
+        public boolean ownPacket(InetSocketAddress from) {
+            return from.getPort() == senderPort && isLocal(from.getAddress());
+        }
+
+        @Override
+        public void rivalHeard(String warning) {
+            emit(warning);
+        }
+
+        @Override
+        public void otherDatagram(byte[] data, InetSocketAddress from) {
+            if (returnsOnWatch) {
+                onReturnPacket(data, from);
+            }
+        }
+    }
+
     private void onReturnPortDatagram(byte[] data, InetSocketAddress from) {
         if (KnownGameStateFormats.isGameState(data)) {
-            onGameStatePortDatagram(data, from);
+            states.datagram(data, from); // a rival, or our own heard back, where the ports are shared
             return;
         }
+        onReturnPacket(data, from);
+    }
+
+    private void onReturnPacket(byte[] data, InetSocketAddress from) {
         Decoded<ReturnPacket> decoded = returnDecoder.decode(data);
         if (!decoded.isOk()) {
             rejectReturn(data, from, decoded.failure() + ": " + decoded.detail());
             return;
         }
         ReturnPacket p = decoded.value();
-        if (!referee.hasTeam(p.team())) {
+        if (!runtime.snapshot().hasTeam(p.team())) {
             rejectReturn(data, from, "team " + p.team() + " is not playing in this game");
             return;
         }
         sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
                 p.kind(), null, data, null));
-        liveness.heard(p.team(), p.player(), referee.now());
+        liveness.heard(p.team(), p.player(), runtime.now());
         MonitorService m = monitors;
         if (m != null) {
             m.returnPacket(from, data);
         }
         Action requested = game == null ? null : manualRequests.onMessage(p.team(), p.player(), p.message());
         if (requested != null) {
-            Outcome o = game.perform(requested);
-            emit("robot " + p.team() + "/" + p.player() + " asked for " + requested.describe() + ": "
-                    + (o.applied() ? "applied" : o.message()));
+            runtime.perform(requested).thenAccept(o -> emit("robot " + p.team() + "/" + p.player() + " asked for "
+                    + requested.describe() + ": " + (o.applied() ? "applied" : o.message())));
         }
     }
 
@@ -315,36 +391,6 @@ public final class EmbeddedGameController implements AutoCloseable {
                 "gc.return.malformed", null, data, reason));
         if (first) {
             emit("bad return packet from " + sourceKey(from) + ": " + reason + " (counted, not applied)");
-        }
-    }
-
-    private void onGameStatePortDatagram(byte[] data, InetSocketAddress from) {
-        if (!KnownGameStateFormats.isGameState(data)) {
-            return; // robots' own broadcasts or team traffic on the shared port are not ours to judge
-        }
-        if (from.getPort() == senderPort && isLocal(from.getAddress())) {
-            return; // our own packet, heard back
-        }
-        Decoded<KnownGameStateFormats.Match> recognised = knownFormats.recognise(data);
-        KnownGameStateFormats.Match match = recognised.value();
-        GameStateFormat format = match == null ? null : match.format();
-        GameControlData decoded = match == null ? null : match.data();
-        String kind = format == null ? "gc.unknown" : format.kind();
-        String error = match == null ? recognised.failure() + ": " + recognised.detail() : null;
-        if (error != null) {
-            badPackets.count(from, error);
-        }
-        boolean wasActive = rivals.active(referee.now()).containsKey(sourceKey(from));
-        rivals.heard(from, kind, decoded, referee.now());
-        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT, kind,
-                null, data, error));
-        if (matchMode != null && decoded != null) {
-            matchMode.observe(decoded.state(), "GameController at " + sourceKey(from));
-        }
-        if (!wasActive) {
-            String warning = rivals.warning(referee.now());
-            LOG.warn(warning);
-            emit(warning);
         }
     }
 
@@ -371,11 +417,18 @@ public final class EmbeddedGameController implements AutoCloseable {
 
     @Override
     public void close() {
+        states.endRefereeing(own);
         sender.close();
+        runtime.close();
         MonitorService m = monitors;
         if (m != null) {
             m.close();
         }
-        listeners.forEach(GcListener::close);
+        if (returns != null) {
+            returns.close();
+        }
+        if (ownsWatch && watch != null) {
+            watch.close();
+        }
     }
 }

@@ -8,7 +8,6 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
-import java.util.Comparator;
 
 /**
  * Which GameController the console believes. The GameController protocol has no
@@ -37,8 +36,8 @@ import java.util.Comparator;
  */
 public final class GameControllerSources {
 
-    /** An intruder heard within this long is shown as a warning. */
-    public static final long ACTIVE_MS = 5000;
+    /** An intruder heard within this long is shown as a warning (the one window of {@link RivalGameControllers}). */
+    public static final long ACTIVE_MS = RivalGameControllers.ACTIVE_MS;
     /** After this long without a packet from the pinned source, packet numbers start afresh. */
     public static final long SILENCE_MS = 5000;
     /** A packet number below this with state INITIAL after a step back is a GameController restart. */
@@ -87,7 +86,8 @@ public final class GameControllerSources {
     private long repeats;
     private long restarts;
     private long suspicious;
-    private final RecentSources<Intruder> intruders = new RecentSources<>();
+    /** Other sources: intruders while this console listens, rivals while it referees. */
+    private final RivalGameControllers intruders = new RivalGameControllers();
     private final Deque<Flag> flags = new ArrayDeque<>();
     private Flag lastSuspicious;
 
@@ -116,8 +116,7 @@ public final class GameControllerSources {
         }
         if (!pinnedHost.equals(host)) {
             String source = host + ":" + port;
-            Intruder before = intruders.get(source);
-            intruders.put(source, new Intruder(source, before == null ? 1 : before.packets + 1, data.state(), now));
+            intruders.heard(source, "game state", data, now);
             return Verdict.INTRUDER;
         }
         packets++;
@@ -184,6 +183,23 @@ public final class GameControllerSources {
         }
     }
 
+    /**
+     * The one tracker of other GameControllers (intruders; rivals while this console referees,
+     * {@link GameControllerStates}).
+     */
+    public RivalGameControllers others() {
+        return intruders;
+    }
+
+    /** This tracker's clock (milliseconds, monotonic). */
+    public long now() {
+        return clock.millis();
+    }
+
+    private static Intruder intruder(String source, RivalGameControllers.Rival r) {
+        return new Intruder(source, r.count(), r.state(), r.atMs());
+    }
+
     /** The pinned host, or "" before any GameController was heard (and none was given). */
     public synchronized String pinnedHost() {
         return pinnedHost == null ? "" : pinnedHost;
@@ -193,12 +209,7 @@ public final class GameControllerSources {
     public synchronized List<Intruder> activeIntruders() {
         long now = clock.millis();
         List<Intruder> out = new ArrayList<>();
-        for (Intruder i : intruders.values()) {
-            if (now - i.atMs <= ACTIVE_MS) {
-                out.add(i);
-            }
-        }
-        out.sort(Comparator.comparing(Intruder::source));
+        intruders.active(now).forEach((source, r) -> out.add(intruder(source, r)));
         return out;
     }
 
@@ -207,8 +218,8 @@ public final class GameControllerSources {
      * sent (the others are counted in {@link #forgottenIntruders}).
      */
     public synchronized List<Intruder> allIntruders() {
-        List<Intruder> out = new ArrayList<>(intruders.values());
-        out.sort(Comparator.comparing(Intruder::source));
+        List<Intruder> out = new ArrayList<>();
+        intruders.all().forEach((source, r) -> out.add(intruder(source, r)));
         return out;
     }
 

@@ -2,9 +2,9 @@ package touchline.app.game;
 
 import touchline.game.Action;
 import touchline.game.Penalty;
-import touchline.game.Penalise;
+import touchline.game.Penalize;
 import touchline.game.SetGoalkeeper;
-import touchline.game.Unpenalise;
+import touchline.game.Unpenalize;
 import touchline.protocol.gamecontroller.ReturnPacket;
 
 import java.util.Map;
@@ -29,8 +29,8 @@ public final class ManualPenaltyRequests {
             return null;
         }
         return switch (message) {
-            case ReturnPacket.MAN_PENALISE -> new Penalise(team, player, Penalty.MANUAL);
-            case ReturnPacket.MAN_UNPENALISE -> new Unpenalise(team, player);
+            case ReturnPacket.MAN_PENALISE -> new Penalize(team, player, Penalty.MANUAL);
+            case ReturnPacket.MAN_UNPENALISE -> new Unpenalize(team, player);
             case ReturnPacket.GOALKEEPER -> new SetGoalkeeper(team, player);
             default -> null;
         };

@@ -80,6 +80,10 @@ public final class MatchMode {
     private boolean override;
     private boolean lastMaySend = true;
     private long listeningUntilMs = Long.MIN_VALUE;
+    /** When a believed GameController last said a state that is not play: robots' earlier reports of play are stale. */
+    private long believedStopAtMs = Long.MIN_VALUE;
+    /** How often the console's may-send changed: a window that idles wakes on it. */
+    private long changes;
     private long listenMs;
     /** What ended the first listen early (a non-play state heard), else null. */
     private String listenEndedBy;
@@ -139,6 +143,9 @@ public final class MatchMode {
      */
     public void observeBelieved(int gameState, String source) {
         synchronized (this) {
+            if (!GameControlData.isPlay(gameState)) {
+                believedStopAtMs = clock.millis();
+            }
             if (!GameControlData.isPlay(gameState) && listening()) {
                 listeningUntilMs = clock.millis();
                 listenEndedBy = "heard " + GameControlData.stateName(gameState) + " (" + source + ")";
@@ -155,7 +162,9 @@ public final class MatchMode {
     /**
      * Records the game state a robot reports (what it last heard from a GameController). It keeps
      * match mode on like any claim, but a GameController heard at the same time is named first: the
-     * robot only repeats it.
+     * robot only repeats it. A report of play made before a believed GameController said a state
+     * that is not play no longer counts: the robot repeated what that GameController has since ended
+     * (a robot switched off after the final whistle kept the console silent for 5 s).
      */
     public void observeReported(int gameState, int robot) {
         observe(gameState, "robot " + robot, true);
@@ -301,6 +310,9 @@ public final class MatchMode {
             if (changed && now) {
                 held.clear();
             }
+            if (changed) {
+                changes++;
+            }
             why = !changed ? null : now ? "may send again"
                     : source != null ? "silent: a game in play (" + source + ")" : "silent: " + LISTENING;
         }
@@ -317,6 +329,22 @@ public final class MatchMode {
 
     private boolean listening() {
         return clock.millis() < listeningUntilMs;
+    }
+
+    /**
+     * A count that moves each time the console's may-send changes, after re-evaluating what went
+     * stale: play ends by the clock with nothing else heard, and an idle window must still show it.
+     */
+    public long changes() {
+        refresh();
+        synchronized (this) {
+            return changes;
+        }
+    }
+
+    /** A robot's report of play that a believed GameController's later non-play state has ended. */
+    private boolean superseded(Heard h) {
+        return h.reported && h.atMs <= believedStopAtMs;
     }
 
     /**
@@ -343,7 +371,7 @@ public final class MatchMode {
         String reported = null;
         for (Map.Entry<String, Heard> e : heard.entries()) {
             Heard h = e.getValue();
-            if (now - h.atMs <= STALE_MS && GameControlData.isPlay(h.state)) {
+            if (now - h.atMs <= STALE_MS && GameControlData.isPlay(h.state) && !superseded(h)) {
                 if (!h.reported) {
                     return e.getKey();
                 }
@@ -354,7 +382,7 @@ public final class MatchMode {
             return reported;
         }
         for (Map.Entry<String, Heard> e : lastPlayClaim.entries()) {
-            if (now - e.getValue().atMs <= PLAY_MEMORY_MS) {
+            if (now - e.getValue().atMs <= PLAY_MEMORY_MS && !superseded(e.getValue())) {
                 return e.getKey();
             }
         }

@@ -7,13 +7,21 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * Other GameControllers heard on the game-state port. Two GameControllers on one field confuse
- * every robot, so while any was heard in the last {@link #ACTIVE_MS} ms {@link #warning} is a
- * loud, non-empty text. Kept for the last {@link RecentSources#CAPACITY} sources heard. Thread-safe.
+ * Other GameControllers heard on the game-state port: the one tracker of them. While this
+ * console referees, every other GameController is a rival; while it only listens, those that
+ * are not the pinned one are intruders ({@link GameControllerSources}, which keeps its table
+ * here). Two GameControllers on one field confuse every robot, so while any was heard in the
+ * last {@link #ACTIVE_MS} ms {@link #warning} is a loud, non-empty text. Kept for the last
+ * {@link RecentSources#CAPACITY} sources heard. Thread-safe.
  */
 public final class RivalGameControllers {
 
-    public static final long ACTIVE_MS = 3000;
+    /**
+     * How long a source counts as sending: {@link MatchMode#STALE_MS}, as long as its claim of
+     * play keeps match mode silent (ten missed 500 ms packets), so the warning never ends while
+     * what it warns of still acts.
+     */
+    public static final long ACTIVE_MS = MatchMode.STALE_MS;
 
     /**
      * What was last heard from one rival.
@@ -29,8 +37,12 @@ public final class RivalGameControllers {
 
     private final RecentSources<Rival> rivals = new RecentSources<>();
 
-    public synchronized void heard(InetSocketAddress from, String kind, GameControlData data, long nowMs) {
-        String key = from.getAddress().getHostAddress() + ":" + from.getPort();
+    public void heard(InetSocketAddress from, String kind, GameControlData data, long nowMs) {
+        heard(from.getAddress().getHostAddress() + ":" + from.getPort(), kind, data, nowMs);
+    }
+
+    /** @param key the source, "address:port" */
+    public synchronized void heard(String key, String kind, GameControlData data, long nowMs) {
         int state = data == null ? -1 : data.state();
         String teams = data == null ? ""
                 : data.teams().get(0).teamNumber() + " vs " + data.teams().get(1).teamNumber();
@@ -47,6 +59,26 @@ public final class RivalGameControllers {
             }
         }
         return out;
+    }
+
+    /** Every source heard, the {@link RecentSources#CAPACITY} heard last at most. */
+    public synchronized Map<String, Rival> all() {
+        Map<String, Rival> out = new TreeMap<>();
+        for (Map.Entry<String, Rival> e : rivals.entries()) {
+            out.put(e.getKey(), e.getValue());
+        }
+        return out;
+    }
+
+    /** Whether {@code key} ("address:port") was heard within {@link #ACTIVE_MS}. */
+    public synchronized boolean isActive(String key, long nowMs) {
+        Rival r = rivals.get(key);
+        return r != null && nowMs - r.atMs <= ACTIVE_MS;
+    }
+
+    /** The table's capacity. */
+    public int capacity() {
+        return rivals.capacity();
     }
 
     /** Rival sources forgotten because more than {@link RecentSources#CAPACITY} sent. */

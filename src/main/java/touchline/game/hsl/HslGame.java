@@ -2,29 +2,25 @@ package touchline.game.hsl;
 
 import touchline.game.GameClock;
 import touchline.game.Outcome;
+import touchline.game.RefereeEngine;
 import touchline.game.RefereedGame;
-import touchline.game.UndoHistory;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.TeamColour;
 
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
- * One refereed HSL game: the {@link HslState}, the clock it runs on and the undo history. An
- * action during the robots' delay after a PLAYING whistle is applied to the held copy too
- * when it is legal there, and ends the delay when it is not (a goal, say), as the official
- * GameController does. All access is serialised; listeners hear about every change.
+ * One refereed HSL game: the one {@link RefereeEngine} with the {@link HslLeague}'s way of running
+ * time and actions (an action during the robots' delay after a PLAYING whistle is applied to the
+ * held copy too when it is legal there, and ends the delay when it is not), over an {@link HslState}. In the console its one owner is {@code app.game.GameRuntime};
+ * access is serialised all the same; listeners hear about every change.
  */
 public final class HslGame implements RefereedGame {
 
     /** How many actions can be undone. */
-    public static final int UNDO_DEPTH = 50;
+    public static final int UNDO_DEPTH = RefereeEngine.UNDO_DEPTH;
 
-    private final GameClock clock;
-    private final UndoHistory<HslState> history = new UndoHistory<>(UNDO_DEPTH);
-    private final List<Runnable> listeners = new CopyOnWriteArrayList<>();
-    private HslState state;
+    private final RefereeEngine<HslState> engine;
 
     /**
      * @param rules       release and competition
@@ -43,8 +39,8 @@ public final class HslGame implements RefereedGame {
         if (bad != null) {
             throw new IllegalArgumentException(bad);
         }
-        this.clock = clock;
-        this.state = new HslState(rules, leftTeam, leftColours, rightTeam, rightColours, clock.millis());
+        this.engine = new RefereeEngine<>(new HslLeague(),
+                new HslState(rules, leftTeam, leftColours, rightTeam, rightColours, clock.millis()), clock);
     }
 
     /**
@@ -63,137 +59,76 @@ public final class HslGame implements RefereedGame {
 
     @Override
     public void addListener(Runnable onChange) {
-        listeners.add(onChange);
+        engine.addListener(onChange);
     }
 
     @Override
     public long now() {
-        return clock.millis();
+        return engine.now();
     }
 
     /** Lets time pass, checks legality, applies the action (also to the robots' held copy), notifies. */
     public Outcome perform(HslAction action) {
-        Outcome outcome;
-        synchronized (this) {
-            state.advance(clock.millis());
-            if (!action.isLegal(state)) {
-                return new Outcome(false, "illegal now: " + action.describe() + " (" + describeLocked() + ")");
-            }
-            if (action.undoable()) {
-                history.push(action.describe(), state.copy());
-            }
-            HslState held = state.delayed;
-            boolean legalForRobots = held != null && action.isLegal(held);
-            action.apply(state);
-            if (held != null && state.delayed == held) {
-                if (legalForRobots) {
-                    action.apply(held);
-                } else {
-                    state.delayed = null;
-                }
-            }
-            outcome = new Outcome(true, action.describe());
-        }
-        notifyListeners();
-        return outcome;
+        return engine.perform(action);
     }
 
     @Override
     public boolean advance() {
-        boolean changed;
-        synchronized (this) {
-            changed = state.advance(clock.millis());
-        }
-        if (changed) {
-            notifyListeners();
-        }
-        return changed;
+        return engine.advance();
     }
 
     /** Reverts the last action; time since then is run again on the restored state. */
     @Override
     public Outcome undo() {
-        UndoHistory.Done<HslState> done;
-        synchronized (this) {
-            done = history.pop();
-            if (done == null) {
-                return new Outcome(false, "nothing to undo");
-            }
-            state = done.before();
-            state.advance(clock.millis());
-        }
-        notifyListeners();
-        return new Outcome(true, "undid " + done.description());
+        return engine.undo();
     }
 
-    public synchronized List<String> undoList() {
-        return history.descriptions();
+    @Override
+    public List<String> undoList() {
+        return engine.undoList();
     }
 
-    public synchronized boolean isLegal(HslAction action) {
-        state.advance(clock.millis());
-        return action.isLegal(state);
+    public boolean isLegal(HslAction action) {
+        return engine.read((s, now) -> {
+            s.advance(now);
+            return action.isLegal(s);
+        });
     }
 
     /** A copy of the current state, safe to read on any thread. */
-    public synchronized HslState snapshot() {
-        state.advance(clock.millis());
-        return state.copy();
+    public HslState snapshot() {
+        return engine.read((s, now) -> {
+            s.advance(now);
+            return s.copy();
+        });
     }
 
     @Override
-    public synchronized GameControlData controlData() {
-        state.advance(clock.millis());
-        return state.robotData();
+    public GameControlData controlData() {
+        return engine.read((s, now) -> {
+            s.advance(now);
+            return s.robotData();
+        });
     }
 
     @Override
-    public synchronized GameControlData trueData() {
-        state.advance(clock.millis());
-        return state.trueData();
+    public GameControlData trueData() {
+        return engine.read((s, now) -> {
+            s.advance(now);
+            return s.trueData();
+        });
     }
 
     @Override
-    public synchronized boolean hasTeam(int number) {
-        return state.team(number) != null;
+    public boolean hasTeam(int number) {
+        return engine.read((s, now) -> s.team(number) != null);
     }
 
     @Override
-    public synchronized String describe() {
-        state.advance(clock.millis());
-        return describeLocked();
-    }
-
-    private String describeLocked() {
-        HslState s = state;
-        StringBuilder b = new StringBuilder(s.state.name());
-        if (s.phase != HslPhase.NORMAL) {
-            b.append('/').append(s.phase.name());
-        }
-        if (s.stopped) {
-            b.append(" STOPPED");
-        }
-        if (s.setPlay != null) {
-            b.append(' ').append(s.setPlay.label());
-        }
-        b.append(s.firstHalf ? " 1st half" : " 2nd half");
-        b.append(", ").append(s.secsRemaining()).append(" s left");
-        b.append(", secondary ").append(s.secondaryTime()).append(" s");
-        b.append(", kicking ").append(s.kickingTeam == HslState.NO_TEAM ? "none" : String.valueOf(s.kickingTeam));
-        HslTeam l = s.teams[0];
-        HslTeam r = s.teams[1];
-        b.append(", ").append(l.number).append(' ').append(l.score).append(':').append(r.score).append(' ')
-                .append(r.number);
-        b.append(", budget ").append(l.messageBudget).append('/').append(r.messageBudget);
-        if (s.delayed != null) {
-            b.append(", robots still see SET");
-        }
-        return b.toString();
-    }
-
-    private void notifyListeners() {
-        for (Runnable r : listeners) {
-            r.run();
-        }
+    public String describe() {
+        return engine.read((s, now) -> {
+            s.advance(now);
+            return s.describe();
+        });
     }
 }

@@ -85,6 +85,13 @@ public final class HslState {
         return new HslState(this, true);
     }
 
+    /** A deep copy with time run on to {@code nowMs}; this state stays as it is (a reader's view of a snapshot). */
+    public HslState at(long nowMs) {
+        HslState c = copy();
+        c.advance(nowMs);
+        return c;
+    }
+
     /** Whole seconds rounded up, as the official GameController sends every timer. */
     static long ceilSeconds(long ms) {
         return -Math.floorDiv(-ms, 1000L);
@@ -406,5 +413,33 @@ public final class HslState {
         return new GameControlData(0, rules.competition().playersPerTeam(), 0, rules.competition().type(),
                 state.wire(), firstHalf && (phase != HslPhase.EXTRA_TIME || rules.firstHalfInExtraTime()), kicking, wireSetPlay ? setPlay.wire().secondaryState() : gamePhase,
                 wireSetPlay ? kicking : 0, 0, 0, 0, secsRemaining(), secondaryTime(), wireTeams, gamePhase, stopped);
+    }
+
+    /** One line for logs, the CLI and the referee box: state, phase, clocks, score, budgets. */
+    public String describe() {
+        HslState s = this;
+        StringBuilder b = new StringBuilder(s.state.name());
+        if (s.phase != HslPhase.NORMAL) {
+            b.append('/').append(s.phase.name());
+        }
+        if (s.stopped) {
+            b.append(" STOPPED");
+        }
+        if (s.setPlay != null) {
+            b.append(' ').append(s.setPlay.label());
+        }
+        b.append(s.firstHalf ? " 1st half" : " 2nd half");
+        b.append(", ").append(s.secsRemaining()).append(" s left");
+        b.append(", secondary ").append(s.secondaryTime()).append(" s");
+        b.append(", kicking ").append(s.kickingTeam == HslState.NO_TEAM ? "none" : String.valueOf(s.kickingTeam));
+        HslTeam l = s.teams[0];
+        HslTeam r = s.teams[1];
+        b.append(", ").append(l.number).append(' ').append(l.score).append(':').append(r.score).append(' ')
+                .append(r.number);
+        b.append(", budget ").append(l.messageBudget).append('/').append(r.messageBudget);
+        if (s.delayed != null) {
+            b.append(", robots still see SET");
+        }
+        return b.toString();
     }
 }

@@ -10,17 +10,17 @@ import touchline.transport.EnvelopeSink;
 import java.util.function.BooleanSupplier;
 
 /**
- * The bounded stores the views read, fed together from the Envelope stream on the network
- * thread. Subscribe this one sink to the bus; views pull from the stores once per frame.
- * Live and replayed envelopes fill separate stores, so a replayed robot's plot never mixes
- * with the live robot of the same number, and a seek can start the replay's stores afresh
+ * The bounded stores the views read: one {@link Shelf} per stream, fed on the stream's thread
+ * ({@link #live()} subscribed to the live stream, {@link #replay()} to the replay stream);
+ * views pull from the stores once per frame. So a replayed robot's plot never mixes with the
+ * live robot of the same number, and a seek can start the replay's stores afresh
  * ({@link #restartReplay}) without touching live data. The accessors return the stores the
  * views show: the replay's while {@code showReplay} says so (the console: while a replay is
  * open), else the live ones.
  */
-public final class ViewStores implements EnvelopeSink {
+public final class ViewStores {
 
-    /** One set of stores: what the views read of one origin. */
+    /** One set of stores: what the views read of one stream. */
     public record Shelf(TextLog text, PlotStore plots, LatestValues latest, NetworkLog network,
                         java.util.concurrent.atomic.AtomicReference<touchline.model.RosReadings> readings)
             implements EnvelopeSink {
@@ -80,11 +80,6 @@ public final class ViewStores implements EnvelopeSink {
         this.live = new Shelf(textLines, plotPoints, networkEnvelopes, originMicros);
         this.replay = new Shelf(textLines, plotPoints, networkEnvelopes, originMicros);
         this.showReplay = showReplay;
-    }
-
-    @Override
-    public void accept(Envelope e) {
-        (e.replayed() ? replay : live).accept(e);
     }
 
     /**

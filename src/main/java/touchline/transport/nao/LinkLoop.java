@@ -7,6 +7,8 @@ import java.nio.ByteBuffer;
 import java.nio.channels.Pipe;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.ReentrantLock;
@@ -17,9 +19,11 @@ import java.util.concurrent.locks.ReentrantLock;
  * thread makes the dispatcher's turns; between two turns it waits without the lock, in a
  * selector on the sockets' signalling file descriptors (ZeroMQ's ZMQ_FD contract) and a
  * wake-up pipe, until a reply, a connection event, a caller's wake-up or the next timer. A
- * caller that finds the lock free sends its call itself, at once ({@link #submit}), instead of
- * queueing it and waking the thread (a thread wake-up costs about as much as a loopback round
- * trip); a caller that finds it busy queues the call and wakes the thread.
+ * caller that may send and finds the lock free sends its call itself, at once ({@link #submit}),
+ * instead of queueing it and waking the thread (a thread wake-up costs about as much as a
+ * loopback round trip); any other caller queues the call and wakes the thread. The console's
+ * sessions never send on the caller's thread ({@link NaoLink#queueEveryCall}): a click only
+ * enqueues.
  */
 final class LinkLoop {
 
@@ -37,7 +41,9 @@ final class LinkLoop {
     private volatile long nextTurnNanos;
     private volatile boolean running = true;
     private volatile String closedBecause = "link closed";
-    private final AtomicBoolean closing = new AtomicBoolean();
+    private boolean started;  // guarded by this
+    private boolean closing;  // guarded by this
+    private final CompletableFuture<Void> stopped = new CompletableFuture<>();
 
     /** @param peer "host:port", for the thread's name and the log */
     LinkLoop(String peer, NaoConnection connection, CallDispatcher dispatcher, MonotonicClock clock) {
@@ -56,8 +62,12 @@ final class LinkLoop {
         thread.setDaemon(true);
     }
 
-    void start() {
-        thread.start();
+    /** Starts the link's thread (once; not after {@link #close}). */
+    synchronized void start() {
+        if (!started && !closing) {
+            started = true;
+            thread.start();
+        }
     }
 
     boolean running() {
@@ -70,12 +80,13 @@ final class LinkLoop {
     }
 
     /**
-     * Sends at once on the caller's thread if the lock is free, else queues for the link
-     * thread. Not on a thread already inside the link (a callback of a completed call): the
-     * dispatcher would be re-entered.
+     * With {@code callerMaySend}: sends at once on the caller's thread if the lock is free
+     * (never on a thread already inside the link, a callback of a completed call: the dispatcher
+     * would be re-entered). Otherwise, or when the lock is busy, queues the call and wakes the
+     * link thread, which sends it.
      */
-    void submit(QueuedCall s) {
-        if (!lock.isHeldByCurrentThread() && lock.tryLock()) {
+    void submit(QueuedCall s, boolean callerMaySend) {
+        if (callerMaySend && !lock.isHeldByCurrentThread() && lock.tryLock()) {
             try {
                 if (connection.isOpen()) {
                     dispatcher.drainSubmissions(); // calls queued before this one go first
@@ -100,27 +111,40 @@ final class LinkLoop {
     }
 
     /**
-     * Stops the thread (waiting up to 3 s for it): every call still open ends as lost. False
-     * when the loop was already closed.
+     * Asks the thread to stop and returns at once (never waits for it: the caller may be the
+     * window's thread): the thread ends every call still open as lost, shuts the connection and
+     * then completes {@link #stopped()}. False when the loop was already closed.
      */
     boolean close() {
-        if (!closing.compareAndSet(false, true)) {
-            return false;
+        synchronized (this) {
+            if (closing) {
+                return false;
+            }
+            closing = true;
+            running = false;
+            if (!started) { // no thread to do it
+                locked(() -> dispatcher.endCalls(closedBecause));
+                closePipe();
+                stopped.complete(null);
+                return true;
+            }
         }
-        running = false;
         wake();
-        try {
-            thread.join(3000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        return true;
+    }
+
+    /** Completes (on the link's thread) once the loop has stopped and let go of its connection. */
+    CompletionStage<Void> stopped() {
+        return stopped.minimalCompletionStage();
+    }
+
+    private void closePipe() {
         try {
             wakePipe.sink().close();
             wakePipe.source().close();
         } catch (IOException ignored) {
             // closing a pipe we own; nothing to report
         }
-        return true;
     }
 
     private void wake() {
@@ -185,6 +209,8 @@ final class LinkLoop {
                 // closing our own selector at exit
             }
             locked(() -> dispatcher.closed(closedBecause));
+            closePipe();
+            stopped.complete(null);
         }
     }
 

@@ -54,6 +54,8 @@ public final class NaoCameraStream implements AutoCloseable {
     private final AtomicLong fetched = new AtomicLong();
     private final AtomicLong errors = new AtomicLong();
     private volatile boolean running = true;
+    private boolean started; // guarded by lock
+    private final java.util.concurrent.CompletableFuture<Void> stopped = new java.util.concurrent.CompletableFuture<>();
     private volatile CameraFrame latest;
     private volatile String lastError;
     private volatile CameraSettings requested = CameraSettings.DEFAULT;
@@ -93,7 +95,17 @@ public final class NaoCameraStream implements AutoCloseable {
             fail("camera thread stopped: " + e);
             LOG.error("camera stream {}:{} stopped", host, port, e);
         });
-        thread.start();
+    }
+
+    /** Starts the camera thread; it fetches while someone {@link #subscribe subscribes}. */
+    public NaoCameraStream start() {
+        synchronized (lock) {
+            if (!started && running) {
+                started = true;
+                thread.start();
+            }
+        }
+        return this;
     }
 
     /** Starts fetching (if this is the first viewer) until the returned handle is closed. */
@@ -177,20 +189,34 @@ public final class NaoCameraStream implements AutoCloseable {
         }
     }
 
+    /**
+     * Asks the camera thread to stop and returns at once (the window's thread may call it); the
+     * thread lets go of its socket, then {@link #stopped()} completes.
+     */
     @Override
     public void close() {
-        running = false;
+        boolean ends;
         synchronized (lock) {
+            running = false;
+            ends = !started;
+            started = true; // never starts after a close
             lock.notifyAll();
         }
-        try {
-            thread.join(REPLY_TIMEOUT_MS + 2000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (ends) {
+            ended();
         }
+    }
+
+    /** Completes once the camera thread has stopped after {@link #close()}. */
+    public java.util.concurrent.CompletionStage<Void> stopped() {
+        return stopped.minimalCompletionStage();
+    }
+
+    private void ended() {
         if (ownsEnvelopes) {
             envelopes.close();
         }
+        stopped.complete(null);
     }
 
     // ---------------------------------------------------------------- camera thread
@@ -202,6 +228,14 @@ public final class NaoCameraStream implements AutoCloseable {
      * and never silently.
      */
     private void run() {
+        try {
+            fetchUntilClosed();
+        } finally {
+            ended();
+        }
+    }
+
+    private void fetchUntilClosed() {
         while (running) {
             try (ZContext zmq = new ZContext(1)) {
                 fetch(zmq);

@@ -1,44 +1,38 @@
 package touchline.transport.nao;
 
-import io.netty.channel.ChannelPipeline;
-import io.netty.channel.embedded.EmbeddedChannel;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 
 /**
- * The Netty pipeline NAO traffic passes through on its way into the console's Envelope
- * stream. JeroMQ owns its sockets and threads, so there is no Netty socket channel to read
- * from; instead the JeroMQ threads (RPC and camera) write each {@link Envelope} into an
- * {@link EmbeddedChannel}, whose handlers run synchronously on the writing thread. The last
- * handler, named {@value #PUBLISHER}, hands the envelope to the {@link EnvelopeSink}. The
- * same accounting or decoding handlers used for the UDP traffic can therefore be attached
- * with {@code pipeline().addBefore(PUBLISHER, name, handler)}. Writes are serialised because
- * an EmbeddedChannel is not thread-safe and two JeroMQ threads feed it.
+ * The way NAO traffic enters the console's Envelope stream. JeroMQ owns its sockets and threads,
+ * and two of them (RPC and camera) publish here: publishing is serialised, so the stream sees
+ * one NAO's envelopes one at a time, in the order they were published. A sink that fails loses
+ * that envelope only (said in the log); after {@link #close} nothing more is published.
  */
 public final class NaoEnvelopeChannel implements AutoCloseable {
 
-    public static final String PUBLISHER = "publish";
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(NaoEnvelopeChannel.class);
 
-    private final EmbeddedChannel channel;
+    private final EnvelopeSink sink;
+    private boolean open = true; // guarded by this
 
     public NaoEnvelopeChannel(EnvelopeSink sink) {
-        channel = new EmbeddedChannel();
-        channel.pipeline().addLast(PUBLISHER, new touchline.transport.EnvelopePublisher(sink));
-    }
-
-    /** For attaching shared handlers before {@link #PUBLISHER}. */
-    public ChannelPipeline pipeline() {
-        return channel.pipeline();
+        this.sink = sink;
     }
 
     public synchronized void publish(Envelope envelope) {
-        if (channel.isOpen()) {
-            channel.writeInbound(envelope);
+        if (!open) {
+            return;
+        }
+        try {
+            sink.accept(envelope);
+        } catch (RuntimeException e) {
+            LOG.warn("NAO envelope {} not published: {}", envelope.kind(), e.toString());
         }
     }
 
     @Override
     public synchronized void close() {
-        channel.finishAndReleaseAll();
+        open = false;
     }
 }

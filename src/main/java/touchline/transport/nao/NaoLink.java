@@ -5,6 +5,7 @@ import touchline.protocol.nao.MixedValueCodec;
 import touchline.protocol.nao.MixedValueException;
 import touchline.transport.Channel;
 import touchline.transport.EnvelopeSink;
+import touchline.transport.Hold;
 import touchline.transport.MicrosClock;
 import touchline.transport.MonotonicClock;
 import touchline.transport.SendGate;
@@ -32,7 +33,7 @@ import java.util.function.Supplier;
  * CallPacing} (per-method minimum intervals, coalescing to the newest call), {@link
  * CallDispatcher} (one turn of the link: submitted calls, replies, events, timers, on an
  * injected monotonic clock), {@link LinkLoop} (the thread {@code nao-link-HOST:PORT} making the
- * turns, and the lock a caller sends under when it finds it free), {@link LinkTraffic} (the
+ * turns, started by {@link #start()}, and the lock a caller sends under when it finds it free), {@link LinkTraffic} (the
  * envelopes) and {@link LinkCounters} (the {@link #stats}).
  *
  * <p>Liveness and the rules of {@link NaoLinkConfig} (timeouts, retries of idempotent methods,
@@ -58,9 +59,10 @@ public final class NaoLink implements AutoCloseable {
     private final CallDispatcher dispatcher;
     private final LinkLoop loop;
     private volatile SendGate gate = SendGate.open();
+    private volatile boolean callerMaySend = true;
 
     /**
-     * Connects to {@code host:port} and publishes into its own pipeline ending in {@code sink}.
+     * A link to {@code host:port} ({@link #start()} connects) publishing into its own pipeline ending in {@code sink}.
      *
      * @param keys      CURVE client keys (the NAO link encrypted, the robot side checks our key), or null: insecure
      * @param wall      stamps the envelopes (the console's clock)
@@ -91,7 +93,23 @@ public final class NaoLink implements AutoCloseable {
         LinkTraffic traffic = new LinkTraffic(envelopes, InetSocketAddress.createUnresolved(host, port), wall);
         this.dispatcher = new CallDispatcher(peer, config, connection, watch, traffic, monotonic, wall);
         this.loop = new LinkLoop(peer, connection, dispatcher, monotonic);
+    }
+
+    /** Starts the link's thread, which connects and then sends and receives. */
+    public NaoLink start() {
         loop.start();
+        return this;
+    }
+
+    /**
+     * Every call from now on is sent by the link's thread: the caller only enqueues it (and asks
+     * the send gate). For a caller that must not do the link's work, the window's thread among
+     * them (sending, and publishing the request into the stream). Without it a caller that finds
+     * the link idle sends at once on its own thread, a wake-up of the link thread cheaper.
+     */
+    public NaoLink queueEveryCall() {
+        callerMaySend = false;
+        return this;
     }
 
     public String host() {
@@ -135,7 +153,7 @@ public final class NaoLink implements AutoCloseable {
      * caller's thread when the call is made.
      */
     public void setSendGate(BooleanSupplier mayRobotBeCommanded, Supplier<String> reason) {
-        setSendGate(() -> mayRobotBeCommanded.getAsBoolean() ? Optional.empty() : Optional.of(reason.get()));
+        setSendGate(() -> mayRobotBeCommanded.getAsBoolean() ? Optional.empty() : Optional.of(Hold.always(reason.get())));
     }
 
     /**
@@ -167,9 +185,9 @@ public final class NaoLink implements AutoCloseable {
             future.complete(new CallOutcome.Lost(loop.closedBecause()));
             return future;
         }
-        Optional<String> held = gate.holdReason();
+        Optional<Hold> held = gate.hold();
         if (held.isPresent()) {
-            future.complete(new CallOutcome.HeldBack(held.get()));
+            future.complete(new CallOutcome.HeldBack(held.get().dropped()));
             return future;
         }
         HAWActorRPCRequest.Builder request;
@@ -180,7 +198,7 @@ public final class NaoLink implements AutoCloseable {
             future.complete(new CallOutcome.Failed("cannot send parameters: " + e.getMessage()));
             return future;
         }
-        loop.submit(new QueuedCall(call, request, timeoutMillis, config.isIdempotent(call), future, now));
+        loop.submit(new QueuedCall(call, request, timeoutMillis, config.isIdempotent(call), future, now), callerMaySend);
         return future;
     }
 
@@ -205,10 +223,19 @@ public final class NaoLink implements AutoCloseable {
                             long retried) {
     }
 
+    /**
+     * Asks the link to stop and returns at once (the window's thread may call it): its thread ends
+     * every open call as lost and lets go of the connection, then {@link #stopped()} completes.
+     */
     @Override
     public void close() {
         if (loop.close() && ownsEnvelopes) {
-            envelopes.close();
+            loop.stopped().thenRun(envelopes::close);
         }
+    }
+
+    /** Completes once the link's thread has stopped after {@link #close()} (its last envelopes published). */
+    public java.util.concurrent.CompletionStage<Void> stopped() {
+        return loop.stopped();
     }
 }

@@ -3,6 +3,7 @@ package touchline.transport.remote;
 import org.json.JSONArray;
 import org.json.JSONObject;
 import touchline.transport.EnvelopeSink;
+import touchline.transport.Hold;
 import touchline.transport.MicrosClock;
 import touchline.transport.SendGate;
 import touchline.transport.SendResult;
@@ -178,7 +179,11 @@ public final class Bridge implements AutoCloseable {
 
     /** A command through the gate: sent now, or held (the newest per key) until play stops. */
     private SendResult command(Held c) {
-        Optional<String> hold = gate.holdReason();
+        Optional<Hold> hold = gate.hold();
+        if (hold.isPresent() && !hold.get().untilPlayStops()) {
+            lastCommand = c.what() + ": " + hold.get().why();
+            return SendResult.failed(hold.get().why());
+        }
         if (hold.isPresent()) {
             synchronized (this) {
                 held.remove(c.key());
@@ -186,8 +191,8 @@ public final class Bridge implements AutoCloseable {
                     held.put(c.key(), c);
                 }
             }
-            lastCommand = c.what() + ": held back: " + hold.get();
-            return SendResult.held(hold.get());
+            lastCommand = c.what() + ": held back: " + hold.get().queued();
+            return SendResult.held(hold.get().queued());
         }
         SendResult r = send(c);
         lastCommand = c.what() + ": " + r.describe();
@@ -211,7 +216,7 @@ public final class Bridge implements AutoCloseable {
 
     /** Sends what was held once the gate is open again (the console's tick calls it); returns how many went out. */
     public int sendHeld() {
-        if (gate.holdReason().isPresent()) {
+        if (gate.hold().isPresent()) {
             return 0;
         }
         List<Held> due;

@@ -11,7 +11,8 @@ import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.FlowPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
-import touchline.app.Console;
+import touchline.app.LiveField;
+import touchline.app.Referee;
 import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.app.game.MatchMode;
@@ -47,7 +48,8 @@ public final class GameControllerTab implements View {
     /** Default destinations, e.g. the demo team's robot ports; else the official broadcast. */
     public static final String DESTINATIONS_PROPERTY = "touchline.gc.dest";
 
-    private final Console console;
+    private final Referee refereeing;
+    private final LiveField field;
     private final BorderPane root = new BorderPane();
     private final ComboBox<String> format = new ComboBox<>();
     private final TextField teamA = new TextField("13");
@@ -72,8 +74,9 @@ public final class GameControllerTab implements View {
     private final touchline.ui.ConsoleStatus status;
 
     public GameControllerTab(ViewContext context, ViewSource source) {
-        this.console = context.console();
-        this.status = new touchline.ui.ConsoleStatus(console);
+        this.refereeing = context.referee();
+        this.field = context.field();
+        this.status = context.status();
         this.remembered = new RememberedSetup(context.settingsDir());
         root.setId("gamecontroller-tab");
         for (GcProfile p : GcProfile.values()) {
@@ -164,13 +167,13 @@ public final class GameControllerTab implements View {
                     return;
                 }
                 game = new HslGame(HslRules.forVersion(profile.hslVersion(), hsl.competition()), a, hsl.coloursA(), b,
-                        hsl.coloursB(), console.gameClock());
+                        hsl.coloursB(), refereeing.gameClock());
             } else {
-                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, console.gameClock());
+                game = new Game(LeagueParams.hlSimulationKidSize(), a, 1, b, 0, refereeing.gameClock());
             }
             Integer monitorPort = profile.hsl() ? hsl.monitorPort() : null;
             remembered.save(format, teamA, teamB, destinations, returnPort, hsl);
-            EmbeddedGameController gc = console.startGameController(game, config);
+            EmbeddedGameController gc = refereeing.start(game, config);
             monitorLine = monitorPort == null ? "" : serveMonitors(gc, monitorPort);
             show(gc);
         } catch (NumberFormatException e) {
@@ -193,8 +196,8 @@ public final class GameControllerTab implements View {
     /** Shows the referee controls of a running GameController (started here or elsewhere). */
     private void show(EmbeddedGameController gc) {
         shown = gc;
-        referee = gc.referee() instanceof HslGame h ? new HslRefereeView(new HslRefereeModel(h), gc, console)
-                : new GameControllerView(gc.game(), gc);
+        referee = gc.hsl() ? new HslRefereeView(new HslRefereeModel(gc.runtime()), gc, field)
+                : new GameControllerView(gc.runtime(), gc);
         Button stop = new Button("Stop GameController");
         stop.setId("gc-stop");
         stop.setOnAction(e -> stop());
@@ -212,7 +215,7 @@ public final class GameControllerTab implements View {
     }
 
     private void stop() {
-        console.stopGameController();
+        refereeing.stop();
         referee = null;
         shown = null;
         root.setCenter(setup);
@@ -221,7 +224,7 @@ public final class GameControllerTab implements View {
     }
 
     private void toggleOverride() {
-        MatchMode mm = console.matchMode();
+        MatchMode mm = refereeing.matchMode();
         if (override.isSelected() && overrideReason.getText().isBlank()) {
             override.setSelected(false);
             matchNotice.setText("An override needs a reason; it is logged.");
@@ -237,7 +240,7 @@ public final class GameControllerTab implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        EmbeddedGameController running = console.gameController().orElse(null);
+        EmbeddedGameController running = refereeing.gameController().orElse(null);
         if (running != shown) {
             if (running == null) {
                 referee = null;
@@ -259,7 +262,7 @@ public final class GameControllerTab implements View {
                 monitors.setText(line);
             }
         }
-        String notice = console.matchMode().notice();
+        String notice = refereeing.matchMode().notice();
         // the same words as the status bar: attempts held back (retries count) beside the requests waiting now
         int waiting = status.waitingNow();
         matchNotice.setText(notice.isEmpty() ? "Match mode: no game on; the console may talk to the robots."

@@ -13,12 +13,11 @@ import javafx.scene.layout.VBox;
 import touchline.game.Action;
 import touchline.game.Card;
 import touchline.game.DropBall;
-import touchline.game.Game;
 import touchline.game.GameState;
 import touchline.game.Goal;
 import touchline.game.LeagueParams;
 import touchline.game.Outcome;
-import touchline.game.Penalise;
+import touchline.game.Penalize;
 import touchline.game.Penalty;
 import touchline.game.PlayerState;
 import touchline.game.SecondaryState;
@@ -30,8 +29,10 @@ import touchline.game.ToFinished;
 import touchline.game.ToPlaying;
 import touchline.game.ToReady;
 import touchline.game.ToSet;
-import touchline.game.Unpenalise;
+import touchline.game.Unpenalize;
 import touchline.app.game.EmbeddedGameController;
+import touchline.app.game.GameRuntime;
+import touchline.app.game.RefereeSnapshot;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 
@@ -42,13 +43,14 @@ import java.util.List;
  * The referee's GameController tab: the clock and state in large type, big buttons for every
  * action (keys R S P F D for ready/set/play/finish/dropped ball, Ctrl+Z undo), per team its
  * set plays and each robot's penalty, countdown, cards and liveness with a penalise/unpenalise
- * button. Buttons only build actions for {@link Game#perform}; the frame pulse pulls a
- * snapshot, so the view never receives callbacks from network threads. A second GameController
+ * button. Buttons only build actions and enqueue them to the game's {@link GameRuntime} (the
+ * outcome is shown as soon as its owner answered); the frame pulse pulls the owner's snapshot,
+ * so the view never receives callbacks from network threads. A second GameController
  * on the network shows as a red banner.
  */
 public final class GameControllerView implements View {
 
-    private final Game game;
+    private final GameRuntime game;
     private final EmbeddedGameController gc;
     private final VBox root = new VBox(8);
     private final Label warning = new Label();
@@ -58,8 +60,11 @@ public final class GameControllerView implements View {
     private final List<List<Label>> robotLabels = new ArrayList<>();
     private final List<List<Button>> robotButtons = new ArrayList<>();
 
-    /** @param gc the running GameController for liveness and rival warnings; null shows neither */
-    public GameControllerView(Game game, EmbeddedGameController gc) {
+    /**
+     * @param game the owner of an HL/SPL game: buttons enqueue to it, frames read its snapshot
+     * @param gc   the running GameController for liveness and rival warnings; null shows neither
+     */
+    public GameControllerView(GameRuntime game, EmbeddedGameController gc) {
         this.game = game;
         this.gc = gc;
         root.setPadding(new Insets(8));
@@ -83,7 +88,7 @@ public final class GameControllerView implements View {
                 button("gc-abort", "Abort", () -> new SetPlayStep(SetPlayStep.Step.ABORT)));
         Button undo = new Button("Undo (Ctrl+Z)");
         undo.setId("gc-undo");
-        undo.setOnAction(e -> show(game.undo()));
+        undo.setOnAction(e -> show(GameRuntime.outcome(game.undo())));
         states.getChildren().add(undo);
         HBox teams = new HBox(24, teamColumn(0), teamColumn(1));
         root.getChildren().addAll(warning, clock, states, teams, message);
@@ -96,7 +101,7 @@ public final class GameControllerView implements View {
         b.setId(id);
         b.setMinHeight(40);
         b.setStyle("-fx-font-size: 15px;");
-        b.setOnAction(e -> show(game.perform(action.get())));
+        b.setOnAction(e -> show(GameRuntime.outcome(game.perform(action.get()))));
         return b;
     }
 
@@ -128,9 +133,9 @@ public final class GameControllerView implements View {
             l.setStyle("-fx-font-family: monospace;");
             Button pen = new Button();
             pen.setId("gc-robot-" + side + "-" + n);
-            pen.setOnAction(e -> show(game.perform(togglePenalty(side, player))));
+            pen.setOnAction(e -> show(GameRuntime.outcome(game.perform(togglePenalty(side, player)))));
             Button yellow = new Button("Yellow");
-            yellow.setOnAction(e -> show(game.perform(new Card(team(side), player, Card.Kind.YELLOW))));
+            yellow.setOnAction(e -> show(GameRuntime.outcome(game.perform(new Card(team(side), player, Card.Kind.YELLOW)))));
             robots.addRow(n - 1, l, pen, yellow);
             labels.add(l);
             buttons.add(pen);
@@ -141,19 +146,19 @@ public final class GameControllerView implements View {
     }
 
     private int team(int side) {
-        return game.snapshot().teamOnSide(side).number();
+        return game.snapshot().hl().teamOnSide(side).number();
     }
 
     private Action togglePenalty(int side, int player) {
-        TeamState t = game.snapshot().teamOnSide(side);
-        return t.player(player).isPenalised() ? new Unpenalise(t.number(), player)
-                : new Penalise(t.number(), player, Penalty.PHYSICAL_CONTACT);
+        TeamState t = game.snapshot().hl().teamOnSide(side);
+        return t.player(player).isPenalised() ? new Unpenalize(t.number(), player)
+                : new Penalize(t.number(), player, Penalty.PHYSICAL_CONTACT);
     }
 
     private void key(KeyEvent e) {
         Action a = null;
         if (e.isShortcutDown() && e.getCode() == KeyCode.Z) {
-            show(game.undo());
+            show(GameRuntime.outcome(game.undo()));
             e.consume();
             return;
         }
@@ -166,7 +171,7 @@ public final class GameControllerView implements View {
             default -> { }
         }
         if (a != null) {
-            show(game.perform(a));
+            show(GameRuntime.outcome(game.perform(a)));
             e.consume();
         }
     }
@@ -182,11 +187,6 @@ public final class GameControllerView implements View {
         return root;
     }
 
-    /** The clock line as shown (for tests). */
-    public String clockText() {
-        return clock.getText();
-    }
-
     /** Robot {@code player}'s line on {@code side} as shown (for tests). */
     public String robotText(int side, int player) {
         return robotLabels.get(side).get(player - 1).getText();
@@ -194,13 +194,14 @@ public final class GameControllerView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        GameState s = game.snapshot();
+        RefereeSnapshot snapshot = game.snapshot();
+        GameState s = snapshot.hl();
         long now = game.now();
         String rival = gc == null ? "" : gc.rivalWarning();
         warning.setText(rival);
         warning.setVisible(!rival.isEmpty());
         warning.setManaged(!rival.isEmpty());
-        clock.setText(game.describe());
+        clock.setText(s.describe(now));
         for (int side = 0; side < 2; side++) {
             TeamState t = s.teamOnSide(side);
             teamTitles.get(side).setText("Team " + t.number() + "  " + t.score() + (side == 0 ? "  (left)" : "  (right)"));

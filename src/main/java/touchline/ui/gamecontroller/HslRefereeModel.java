@@ -8,7 +8,7 @@ import touchline.game.hsl.FreeSetPlay;
 import touchline.game.hsl.GlobalGameStuck;
 import touchline.game.hsl.Goal;
 import touchline.game.hsl.HslAction;
-import touchline.game.hsl.HslGame;
+import touchline.app.game.GameRuntime;
 import touchline.game.hsl.HslPlayState;
 import touchline.game.hsl.HslPlayer;
 import touchline.game.hsl.HslState;
@@ -29,7 +29,7 @@ import java.util.Locale;
 
 /**
  * What the HSL referee box shows and does, without a window: per frame a snapshot of the
- * {@link HslGame}; for every button the action it dispatches and whether the rules allow it
+ * HSL game its {@link GameRuntime} owns; for every button the action it dispatches and whether the rules allow it
  * now (the action's own {@code isLegal}); the texts of the clocks, teams and robots; the
  * penalty the referee has chosen and is about to give to a robot (as in the official
  * GameController, the call first, then the robot); and the outcome of the last action, which
@@ -37,24 +37,26 @@ import java.util.Locale;
  */
 public final class HslRefereeModel {
 
-    private final HslGame game;
+    private final GameRuntime game;
     private HslState state;
     private HslPenalty chosen;
     private String message = "";
     private boolean refused;
 
-    public HslRefereeModel(HslGame game) {
+    /** @param game the owner of an HSL game: actions are enqueued to it, frames read its snapshot */
+    public HslRefereeModel(GameRuntime game) {
         this.game = game;
-        this.state = game.snapshot();
+        this.state = game.snapshot().hslAt(game.now());
     }
 
-    public HslGame game() {
-        return game;
+    /** The game's clock. */
+    public long now() {
+        return game.now();
     }
 
-    /** Takes this frame's snapshot of the game; everything else reads it. */
+    /** Takes this frame's snapshot of the game (time run on to now, on a copy); everything else reads it. */
     public void refresh() {
-        state = game.snapshot();
+        state = game.snapshot().hslAt(game.now());
         if (chosen != null && !penaltyLegal(chosen)) {
             chosen = null;
         }
@@ -73,13 +75,13 @@ public final class HslRefereeModel {
 
     /** Dispatches {@code action} to the game; the outcome (or why it was refused) is {@link #message()}. */
     public Outcome perform(HslAction action) {
-        Outcome o = game.perform(action);
+        Outcome o = GameRuntime.outcome(game.perform(action));
         show(o);
         return o;
     }
 
     public Outcome undo() {
-        Outcome o = game.undo();
+        Outcome o = GameRuntime.outcome(game.undo());
         show(o);
         return o;
     }
@@ -183,7 +185,7 @@ public final class HslRefereeModel {
     public void choose(HslPenalty call) {
         chosen = call == null || call == chosen ? null : call;
         if (chosen != null && !penaltyLegal(chosen)) {
-            message = "no robot can get " + label(chosen) + " now (" + game.describe() + ")";
+            message = "no robot can get " + label(chosen) + " now (" + state.describe() + ")";
             refused = true;
             chosen = null;
         } else {

@@ -14,7 +14,7 @@ import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.GridPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
-import touchline.app.Console;
+import touchline.app.LiveField;
 import touchline.game.hsl.HslAction;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.app.game.EmbeddedGameController;
@@ -40,7 +40,7 @@ public final class HslRefereeView implements View {
 
     private final HslRefereeModel model;
     private final EmbeddedGameController gc;
-    private final Console console;
+    private final LiveField field;
     private final RefereeButtons buttons;
     private final BorderPane root = new BorderPane();
     private final Label warning = new Label();
@@ -55,12 +55,12 @@ public final class HslRefereeView implements View {
 
     /**
      * @param gc      the running GameController (liveness from return packets, rival warning), or null
-     * @param console the console whose robots the Robots view lists, or null
+     * @param field   the field whose robots the Robots view lists, or null
      */
-    public HslRefereeView(HslRefereeModel model, EmbeddedGameController gc, Console console) {
+    public HslRefereeView(HslRefereeModel model, EmbeddedGameController gc, LiveField field) {
         this.model = model;
         this.gc = gc;
-        this.console = console;
+        this.field = field;
         this.buttons = new RefereeButtons(model, () -> refresh(null));
         this.stopResume = buttons.button("gc-stop-resume", "", model::stopOrResume);
         root.setId("gamecontroller-hsl");
@@ -190,8 +190,8 @@ public final class HslRefereeView implements View {
         warning.setText(rival);
         warning.setVisible(!rival.isEmpty());
         warning.setManaged(!rival.isEmpty());
-        JerseyLiveness liveness = new JerseyLiveness(console == null ? List.of() : console.robots().robots(),
-                gc == null ? null : gc.liveness(), model.game().now());
+        JerseyLiveness liveness = new JerseyLiveness(field == null ? List.of() : field.robots().robots(),
+                gc == null ? null : gc.liveness(), model.now());
         state.setText(model.stateText());
         clock.setText(model.mainClock());
         secondary.setText(model.secondaryClock());

@@ -15,9 +15,10 @@ import javafx.scene.input.KeyEvent;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
-import touchline.app.Console;
+import touchline.app.Naos;
 import touchline.app.NaoFrame;
 import touchline.app.NaoViewModel;
+import touchline.protocol.nao.NaoModules;
 import touchline.ui.FrameContext;
 import touchline.ui.View;
 import touchline.ui.ViewContext;
@@ -62,12 +63,12 @@ public final class NaoView implements View {
     private long shownFrame;
 
     public NaoView(ViewContext context, ViewSource source) {
-        this(context.console());
+        this(context.naos());
     }
 
-    /** For tests and embedding: connects through {@code console}. */
-    public NaoView(Console console) {
-        this.model = new NaoViewModel(console);
+    /** The view over {@code naos} (the window's, or a test's console's). */
+    public NaoView(Naos naos) {
+        this.model = new NaoViewModel(naos);
         host.setPrefColumnCount(10);
         rpcPort.setPrefColumnCount(5);
         camPort.setPrefColumnCount(5);
@@ -105,7 +106,7 @@ public final class NaoView implements View {
             }
         }
 
-        module.getItems().setAll(NaoViewModel.MODULES);
+        module.getItems().setAll(NaoModules.ALL);
         module.setEditable(true);
         module.setValue("ALMotion");
         Button discover = new Button("Methods");
@@ -163,11 +164,6 @@ public final class NaoView implements View {
     @Override
     public Node node() {
         return root;
-    }
-
-    /** What this view shows and does (for tests). */
-    NaoViewModel model() {
-        return model;
     }
 
     private void callSelected() {

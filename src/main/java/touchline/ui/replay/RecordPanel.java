@@ -8,7 +8,7 @@ import javafx.scene.layout.HBox;
 import javafx.scene.layout.Priority;
 import javafx.scene.layout.VBox;
 import javafx.stage.FileChooser;
-import touchline.app.Console;
+import touchline.app.Recordings;
 import touchline.record.RecorderStats;
 
 import java.io.IOException;
@@ -23,7 +23,7 @@ import java.util.Locale;
  */
 final class RecordPanel {
 
-    private final Console console;
+    private final Recordings recordings;
     private final WorkQueue work;
     private final RecordingName name;
     private final TextField path = new TextField();
@@ -34,11 +34,11 @@ final class RecordPanel {
     private RecorderStats last;
     private boolean recording;
 
-    RecordPanel(Console console, WorkQueue work) {
-        this.console = console;
+    RecordPanel(Recordings recordings, touchline.transport.MicrosClock clock, WorkQueue work) {
+        this.recordings = recordings;
         this.work = work;
         path.setId("record-path");
-        this.name = new RecordingName(console.clock(), java.time.ZoneId.systemDefault());
+        this.name = new RecordingName(clock, java.time.ZoneId.systemDefault());
         path.setText(name.offer());
         toggle.setId("record-toggle");
         counters.setId("record-counters");
@@ -70,7 +70,8 @@ final class RecordPanel {
             chooser.setInitialDirectory(current.getParent().toFile());
         }
         chooser.setInitialFileName(current.getFileName().toString());
-        java.io.File f = chooser.showSaveDialog(root.getScene().getWindow());
+        javafx.stage.Window window = root.getScene().getWindow();
+        java.io.File f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showSaveDialog(window));
         if (f != null) {
             path.setText(f.toString());
         }
@@ -82,7 +83,7 @@ final class RecordPanel {
             toggle.setDisable(true);
             work.run(() -> {
                 try {
-                    console.stopRecording();
+                    recordings.stop();
                 } catch (IOException e) {
                     work.handOff(() -> failure.setText("Finishing the recording failed: " + e.getMessage()));
                 }
@@ -97,7 +98,7 @@ final class RecordPanel {
                 if (parent != null) {
                     Files.createDirectories(parent);
                 }
-                console.startRecording(file);
+                recordings.start(file);
             } catch (IOException | RuntimeException e) {
                 work.handOff(() -> failure.setText("Cannot record to " + file + ": " + e.getMessage()));
             }
@@ -110,7 +111,7 @@ final class RecordPanel {
             return;
         }
         toggle.setDisable(false);
-        RecorderStats s = console.recording().orElse(null);
+        RecorderStats s = recordings.current().orElse(null);
         boolean now = s != null;
         if (now != recording) {
             recording = now;

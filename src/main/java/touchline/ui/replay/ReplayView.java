@@ -15,7 +15,8 @@ import javafx.scene.layout.Priority;
 import javafx.scene.layout.VBox;
 import javafx.stage.FileChooser;
 import javafx.util.StringConverter;
-import touchline.app.Console;
+import touchline.app.LiveField;
+import touchline.app.Replays;
 import touchline.app.Replay;
 import touchline.record.PlayerState;
 import touchline.record.ReplayNotes;
@@ -43,7 +44,9 @@ public final class ReplayView implements View {
 
     static final List<Double> SPEEDS = List.of(0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 10.0, 25.0, 50.0);
 
-    private final Console console;
+    private final LiveField field;
+    private final Replays replays;
+    private final TeamSchemas schemas;
     private final WorkQueue work;
     private final WorkQueue scans;
     private final RecordPanel record;
@@ -73,10 +76,12 @@ public final class ReplayView implements View {
     private boolean messageOfReplay;
 
     public ReplayView(ViewContext context) {
-        this.console = context.console();
+        this.field = context.field();
+        this.replays = context.replays();
+        this.schemas = context.schemas();
         this.work = new WorkQueue("touchline-replay-view", this::fail);
         this.scans = new WorkQueue("touchline-replay-events", this::fail);
-        this.record = new RecordPanel(console, work);
+        this.record = new RecordPanel(context.recordings(), field.clock(), work);
         this.timeline = new TimelineCanvas(this::requestSeek);
         root = new VBox(10, record.node(), new Separator(), replayPane(), new Separator(), schemaPane());
         root.setStyle("-fx-padding: 8;");
@@ -93,7 +98,7 @@ public final class ReplayView implements View {
         browse.setOnAction(e -> browse());
         Button open = button("replay-open", "Open", this::open);
         Button add = button("replay-add", "Add file…", this::addFiles);
-        Button close = button("replay-close", "Close replay", () -> work.run(console::closeReplay));
+        Button close = button("replay-close", "Close replay", () -> work.run(replays::close));
         // the path on a row of its own: beside four buttons it shrank to nothing in the demo layout's
         // left pane at 1280 px (the "File" label cut to "…")
         path.setMinWidth(160);
@@ -161,8 +166,8 @@ public final class ReplayView implements View {
 
         position.setId("replay-position");
         live.setId("replay-live");
-        live.setOnAction(e -> console.setLiveListening(live.isSelected()));
-        live.setSelected(console.liveListening());
+        live.setOnAction(e -> field.setLiveListening(live.isSelected()));
+        live.setSelected(field.liveListening());
         Label hint = new Label("(off: only the replay feeds the views, and their clock follows it)");
         hint.setStyle("-fx-opacity: 0.7;");
         Label title = new Label("Replay");
@@ -243,7 +248,8 @@ public final class ReplayView implements View {
         chooser.setTitle(title);
         chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("MCAP recordings", "*.mcap"),
                 new FileChooser.ExtensionFilter("All files", "*"));
-        List<java.io.File> f = chooser.showOpenMultipleDialog(root.getScene().getWindow());
+        javafx.stage.Window window = root.getScene().getWindow();
+        List<java.io.File> f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showOpenMultipleDialog(window));
         return f == null ? List.of() : f.stream().map(java.io.File::toPath).toList();
     }
 
@@ -267,7 +273,7 @@ public final class ReplayView implements View {
         say("Opening " + names + (chosen.files().size() > 1 ? " (aligning their clocks) …" : " …"));
         work.run(() -> {
             try {
-                console.openReplay(chosen.files(), chosen.offsets());
+                replays.open(chosen.files(), chosen.offsets());
                 work.handOff(() -> sayOfReplay("Opened " + names + "."));
             } catch (RecordingException e) {
                 work.handOff(() -> fail("Cannot replay " + names + ": " + e.getMessage()));
@@ -363,7 +369,8 @@ public final class ReplayView implements View {
         chooser.setTitle("Load team schema (protoc descriptor set)");
         chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("Descriptor sets", "*.desc", "*.pb"),
                 new FileChooser.ExtensionFilter("All files", "*"));
-        java.io.File f = chooser.showOpenDialog(root.getScene().getWindow());
+        javafx.stage.Window window = root.getScene().getWindow();
+        java.io.File f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showOpenDialog(window));
         if (f != null) {
             loadSchema(f.toPath());
         }
@@ -374,7 +381,7 @@ public final class ReplayView implements View {
         work.run(() -> {
             List<String> lines = new ArrayList<>();
             try {
-                TeamSchemas.Outcome o = console.loadTeamSchemas(file);
+                TeamSchemas.Outcome o = schemas.load(file);
                 o.extensions().forEach(x -> lines.add("✔ " + x));
                 o.refusals().forEach(x -> lines.add("✖ " + x));
             } catch (RecordingException e) {
@@ -396,13 +403,13 @@ public final class ReplayView implements View {
         work.drain();
         scans.drain();
         record.refresh();
-        if (live.isSelected() != console.liveListening()) {
-            live.setSelected(console.liveListening());
+        if (live.isSelected() != field.liveListening()) {
+            live.setSelected(field.liveListening());
         }
         if (work.busy()) {
             return; // a file operation may hold the console or player lock: never wait for it here
         }
-        Replay r = console.replay().orElse(null);
+        Replay r = replays.current().orElse(null);
         if (r != shown) {
             adopt(r);
         }
@@ -481,11 +488,6 @@ public final class ReplayView implements View {
     /** The timeline's events as shown now (FX thread; for tests). */
     List<TimelineEvent> shownEvents() {
         return timeline.events();
-    }
-
-    /** The per-file alignment lines under the timeline (FX thread; for tests). */
-    String filesText() {
-        return files.isVisible() ? files.getText() : "";
     }
 
     TimelineCanvas timeline() {

@@ -51,8 +51,14 @@ public final class FieldPlotView implements View {
 
     public FieldPlotView(ViewContext context) {
         this.context = context;
-        this.fields = new FieldPlot(context.console().kinds(), PlotStore.DEFAULT_POINTS, context.console().clock().nowMicros());
-        this.subscription = context.console().bus().subscribe(fields);
+        this.fields = new FieldPlot(context.field().kinds(), PlotStore.DEFAULT_POINTS, context.field().clock().nowMicros());
+        // both streams, as before they were two: a replayed robot shares the live one's series (user guide)
+        AutoCloseable live = context.field().bus().subscribe(fields);
+        AutoCloseable replayed = context.field().replayStream().subscribe(fields);
+        this.subscription = () -> {
+            live.close();
+            replayed.close();
+        };
         this.robot = new RobotFilter(context);
         robot.setId("field-robot");
         path.setId("field-path");
@@ -131,7 +137,7 @@ public final class FieldPlotView implements View {
         }
         int id = robot.robotId();
         List<Integer> robots = id >= 0 ? List.of(id)
-                : context.console().robots().robots().stream().map(RobotSnapshot::id).distinct().toList();
+                : context.field().robots().robots().stream().map(RobotSnapshot::id).distinct().toList();
         int added = 0;
         for (int r : robots) {
             if (fields.add(r, chosen)) {

@@ -75,7 +75,7 @@ public final class FieldView extends SourcedView {
     @Override
     public void refresh(FrameContext frame) {
         bar.refresh();
-        long rv = context.console().robots().version();
+        long rv = context.field().robots().version();
         ViewSource s = bar.selected();
         Optional<Latest> objects = s.isSet() ? context.stores().latest().get(s.robotId(), s.option()) : Optional.empty();
         long ov = objects.map(Latest::version).orElse(0L);
@@ -84,7 +84,7 @@ public final class FieldView extends SourcedView {
         }
         seenRobots = rv;
         // every datagram moves the robots' version: show only what moved of them
-        List<RobotSnapshot> robots = context.console().robots().robots();
+        List<RobotSnapshot> robots = context.field().robots().robots();
         List<Mark> marks = marks(robots);
         boolean field = dirty || ov != seenObjects;
         if (!field && marks.equals(drawnMarks)) {

@@ -49,7 +49,7 @@ public final class GcRobotsView implements View {
             return; // twice a second (frames are few when the window is quiet)
         }
         shownMicros = frame.nowMicros();
-        Optional<MonitorReport> monitor = context.console().monitorReport(context.console().clock().nowMicros() / 1000);
+        Optional<MonitorReport> monitor = context.referee().monitorReport(context.field().clock().nowMicros() / 1000);
         if (monitor.isEmpty()) {
             status.setText("Not a monitor of the field's GameController: start with --gc-monitor HOST to see the "
                     + "robots as the referee sees them.");

@@ -66,7 +66,7 @@ public final class OptionsView implements View {
                 // a click on the box toggles that row's option (the box shows the model, never its own state)
                 box.setOnAction(e -> {
                     Row row = getItem();
-                    box.setSelected(row != null && row.option() != null && context.console().optionShownOn(row.option()));
+                    box.setSelected(row != null && row.option() != null && context.switches().shownOn(row.option()));
                     if (row != null && row.option() != null) {
                         getTreeView().getSelectionModel().select(getTreeItem());
                         toggle(row);
@@ -80,7 +80,7 @@ public final class OptionsView implements View {
                 setText(empty || row == null ? null : row.label());
                 boolean option = !empty && row != null && row.option() != null;
                 if (option) {
-                    box.setSelected(context.console().optionShownOn(row.option())); // a viewer: the serving console's view
+                    box.setSelected(context.switches().shownOn(row.option())); // a viewer: the serving console's view
                     box.setDisable(row.replayed());
                 }
                 setGraphic(option ? box : null);
@@ -140,7 +140,7 @@ public final class OptionsView implements View {
             status.setText(r.option().name() + ": a replayed robot's option is only shown, never switched");
             return;
         }
-        SendResult result = context.console().setOption(r.robotId(), r.option().name(), !r.option().wanted());
+        SendResult result = context.switches().set(r.robotId(), r.option().name(), !r.option().wanted());
         status.setText("Switching " + r.option().name() + (r.option().wanted() ? " off" : " on") + " for robot "
                 + r.robotId() + ": " + result.describe());
         rebuild = true;
@@ -206,8 +206,8 @@ public final class OptionsView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        long ov = context.console().options().version();
-        long rv = context.console().robots().version();
+        long ov = context.field().options().version();
+        long rv = context.field().robots().version();
         // every datagram moves the robots' version, and streaming flags age without any change:
         // both are read twice a second; a changed option list at once. The tree's nodes change
         // only when a row does.
@@ -226,8 +226,8 @@ public final class OptionsView implements View {
         }
         List<TreeItem<Row>> robots = new java.util.ArrayList<>();
         TreeItem<Row> reselect = null;
-        for (RobotSnapshot r : context.console().robots().robots()) {
-            RobotOptions ro = context.console().options().options(r.id(), r.origin());
+        for (RobotSnapshot r : context.field().robots().robots()) {
+            RobotOptions ro = context.field().options().options(r.id(), r.origin());
             TreeItem<Row> robotItem = new TreeItem<>(new Row(r.id(), robotLabel(r, ro), null, r.replayed()));
             robotItem.setExpanded(!collapsed.getOrDefault(r.id(), false) || !needle.isEmpty());
             for (OptionState o : ro.options()) {

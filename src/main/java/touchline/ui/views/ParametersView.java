@@ -45,7 +45,7 @@ public final class ParametersView implements View {
     private long shownVersion = -1;
 
     public ParametersView(ViewContext context) {
-        this.bridges = context.console().bridges();
+        this.bridges = context.bridges();
         table.setId("parameters-table");
         table.setPlaceholder(new Label("No ROS 2 robot's parameters (console --connect NAME=ws://…, Refresh)"));
         TextColumns<Row> columns = new TextColumns<>(false);

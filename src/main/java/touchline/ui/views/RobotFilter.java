@@ -30,8 +30,8 @@ final class RobotFilter extends ComboBox<String> {
     }
 
     void refresh() {
-        long v = context.console().robots().version();
-        long now = context.console().clock().nowMicros();
+        long v = context.field().robots().version();
+        long now = context.field().clock().nowMicros();
         // every datagram moves the version: the robot list is read at most twice a second (the first
         // time at once: a "never read" of Long.MIN_VALUE overflowed now - readMicros and kept the list empty)
         if (v == seenVersion || read && now - readMicros < touchline.ui.SourceBar.REREAD_MICROS) {
@@ -42,7 +42,7 @@ final class RobotFilter extends ComboBox<String> {
         seenVersion = v;
         List<String> items = new ArrayList<>();
         items.add(ALL);
-        for (RobotSnapshot r : context.console().robots().robots()) {
+        for (RobotSnapshot r : context.field().robots().robots()) {
             if (!items.contains("robot " + r.id())) { // a replayed robot 3 beside the live one: one filter entry
                 items.add("robot " + r.id());
             }

@@ -49,7 +49,7 @@ public final class RobotsView implements View {
         this.context = context;
         table.setId("robot-table");
         table.setPlaceholder(new Label("No robot seen yet: robots send keep-alives to UDP port "
-                + context.console().port()));
+                + context.field().port()));
         TableColumn<LiveRows.Row<RobotSnapshot>, String> online = column("", r -> r.online() ? ONLINE : "○", 36);
         online.setCellFactory(c -> new TableCell<>() {
             @Override
@@ -71,8 +71,8 @@ public final class RobotsView implements View {
         table.getColumns().add(column("State", r -> text(r.state()), 90));
         table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
         table.getColumns().add(column("Online for", r -> duration(r.timeOnlineSeconds()), 72));
-        table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.console().replayClock()
-                : context.console().clock()).nowMicros() - r.lastSeenMicros()), 76));
+        table.getColumns().add(column("Last seen", r -> ago((r.replayed() ? context.field().replayClock()
+                : context.field().clock()).nowMicros() - r.lastSeenMicros()), 76));
         table.getColumns().add(column("Status", r -> r.online() ? "online" : "offline", 64));
         table.getColumns().add(column("Packets/s", r -> String.format("%.1f", r.packetsPerSecond()), 72));
         table.getColumns().add(column("Bytes/s", r -> String.format("%.0f", r.bytesPerSecond()), 72));
@@ -131,24 +131,24 @@ public final class RobotsView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
-        long v = context.console().robots().version();
+        long v = context.field().robots().version();
         // keep-alives change the version many times a second; rates and "last seen" only need
         // two updates a second, but a robot appearing shows at once
         if (v == seenVersion || (frame.nowMicros() - lastRebuildMicros < 500_000
-                && context.console().robots().robots().size() == table.getItems().size())) {
+                && context.field().robots().robots().size() == table.getItems().size())) {
             return;
         }
         seenVersion = v;
         lastRebuildMicros = frame.nowMicros();
-        rows.update(table.getItems(), context.console().robots().robots());
+        rows.update(table.getItems(), context.field().robots().robots());
         StringBuilder p = new StringBuilder();
-        for (SourceSnapshot s : context.console().robots().sources()) {
+        for (SourceSnapshot s : context.field().robots().sources()) {
             if (s.malformed() > 0) {
                 p.append(s.label()).append(": ").append(s.malformed()).append(" malformed of ").append(s.packets())
                         .append(s.lastError() == null ? "" : " — last: " + s.lastError()).append('\n');
             }
         }
-        for (String n : context.console().robots().notes()) {
+        for (String n : context.field().robots().notes()) {
             p.append(n).append('\n');
         }
         if (!p.toString().equals(problems.getText())) {

@@ -9,7 +9,6 @@ import touchline.ui.SourcedView;
 import touchline.ui.ViewContext;
 import touchline.ui.ViewSource;
 
-import java.util.List;
 import java.util.Set;
 
 /**
@@ -29,11 +28,6 @@ public final class TextView extends SourcedView {
         lines.setStyle("-fx-font-family: monospace;");
         lines.setFixedCellSize(22);
         root.setCenter(lines);
-    }
-
-    /** The lines shown (for tests). */
-    public List<String> shownLines() {
-        return List.copyOf(lines.getItems());
     }
 
     @Override

@@ -51,7 +51,7 @@ public final class ViewersView implements View {
 
     public ViewersView(ViewContext context) {
         this.toggle = context.serving();
-        this.clock = context.console().clock();
+        this.clock = context.field().clock();
         serve.setId("viewers-toggle");
         port.setId("viewers-port");
         port.setPrefColumnCount(6);

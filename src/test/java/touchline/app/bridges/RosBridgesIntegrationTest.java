@@ -56,15 +56,16 @@ class RosBridgesIntegrationTest {
     }
 
     private static Optional<RobotSnapshot> robot(Console c, int id) {
-        return c.robots().robot(id);
+        return c.field().robots().robot(id);
     }
 
     @Test
     void aBridgedRobotIsARobotOfTheConsoleAndItsMessagesReachTheViewsByType() throws Exception {
         try (Console console = console(0);
              SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1", "--centre", "1.5,-1")) {
-            FieldPlot plot = new FieldPlot(console.kinds(), PlotStore.DEFAULT_POINTS, console.clock().nowMicros());
-            console.bus().subscribe(plot);
+            FieldPlot plot = new FieldPlot(console.field().kinds(), PlotStore.DEFAULT_POINTS,
+                    console.field().clock().nowMicros());
+            console.field().bus().subscribe(plot);
             int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
             assertEquals(RosBridges.FIRST_ROBOT, id);
             assertEquals("booster-1", robot(console, id).orElseThrow().name(), "in the table before its first message");
@@ -80,8 +81,8 @@ class RosBridgesIntegrationTest {
             assertTrue(r.packetsPerSecond() > 0 && r.bytesPerSecond() > 0);
             assertEquals(0, r.malformed());
 
-            Await.until("its log in the debug console", () -> !console.stores().text().since(-1, id, 10).isEmpty());
-            TextLine line = console.stores().text().since(-1, id, 10).get(0).value();
+            Await.until("its log in the debug console", () -> !console.field().stores().text().since(-1, id, 10).isEmpty());
+            TextLine line = console.field().stores().text().since(-1, id, 10).get(0).value();
             assertEquals("booster-1/behavior", line.option());
             assertTrue(line.text().matches("\\[(INFO|WARN)] walking to \\(.*\\)"), line.text());
 
@@ -92,11 +93,11 @@ class RosBridgesIntegrationTest {
             Await.until("points plotted", () -> plot.snapshot().get(0).count() >= 3);
             assertTrue(plot.csv().startsWith("time_s,robot 1001 /pose:pose.position.x\n"), plot.csv());
 
-            Envelope pose = console.stores().network().since(-1, 1000, e -> e.kind().equals("/pose")).get(0).value();
+            Envelope pose = console.field().stores().network().since(-1, 1000, e -> e.kind().equals("/pose")).get(0).value();
             assertEquals(Channel.BRIDGE, pose.channel());
             assertTrue(pose.ros().line(400).contains("frame_id"), pose.ros().line(400));
 
-            assertTrue(console.matchMode().playIsOn(), "the PLAYING the robot reports is play: " + console.matchMode().notice());
+            assertTrue(console.referee().matchMode().playIsOn(), "the PLAYING the robot reports is play: " + console.referee().matchMode().notice());
             BridgeStatus s = console.bridges().statuses().get(0);
             assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 5 channels"),
                     s.describe());
@@ -124,11 +125,11 @@ class RosBridgesIntegrationTest {
         java.nio.file.Path file = dir.resolve("bridged.mcap");
         try (Console console = console(0);
              SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1")) {
-            console.startRecording(file);
+            console.recordings().start(file);
             int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
-            Await.until("a pose, a log line and joints heard", () -> console.robots().robot(id)
+            Await.until("a pose, a log line and joints heard", () -> console.field().robots().robot(id)
                     .map(RobotSnapshot::packets).orElse(0L) > 60);
-            console.stopRecording();
+            console.recordings().stop();
         }
         String out = touchline.testing.PythonMcap.run(READ_ROS2, file);
         assertEquals("['/bridge/1001/joint_states', '/bridge/1001/pose', '/bridge/1001/rosout'] cdr field 0.0 "
@@ -153,17 +154,17 @@ class RosBridgesIntegrationTest {
             game.perform(new ToSet());
             game.perform(new ToPlaying());
             referee.start();
-            Await.until("match mode from the GameController's PLAYING", () -> console.matchMode().playIsOn());
+            Await.until("match mode from the GameController's PLAYING", () -> console.referee().matchMode().playIsOn());
             SendResult set = console.bridges().setParameter(id, "debug.draw_ball", true);
             SendResult publish = console.bridges().publish(id, "/say", "std_msgs/msg/String", "{\"data\":\"after play\"}");
             assertEquals(SendResult.Outcome.HELD, set.outcome());
             assertEquals(SendResult.Outcome.HELD, publish.outcome());
             // the same words as a debug option held in play (the console's gate says them)
-            assertEquals("match mode, " + console.matchMode().play() + "; goes out when play stops", set.reason());
+            assertEquals("match mode, " + console.referee().matchMode().play() + "; goes out when play stops", set.reason());
             assertEquals(2, console.bridges().held(id).size());
 
             game.perform(new ToFinished());
-            Await.until("play over", () -> !console.matchMode().playIsOn());
+            Await.until("play over", () -> !console.referee().matchMode().playIsOn());
             Await.until("the held commands sent", () -> console.bridges().held(id).isEmpty());
             Await.until("the robot heard the publish", () -> robot.heard().contains("{\"data\":\"after play\"}"));
             Await.until("the robot's new value", () -> console.bridges().refreshParameters(id).isSent()

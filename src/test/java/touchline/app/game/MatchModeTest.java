@@ -77,6 +77,27 @@ class MatchModeTest {
     }
 
     /**
+     * Notes stale after play (issue 36, item 6): the believed GameController said FINISHED, and a
+     * robot switched off after the whistle had last reported PLAYING. Its report repeated the game
+     * that has since ended: the console may talk again once the GameController's own claim of play
+     * is old, not 5 s after the robot's last report; a report of play after the FINISHED still counts.
+     */
+    @Test
+    void aRobotsReportOfPlayEndsWithTheBelievedGameControllersFinished() {
+        mode.observeBelieved(3, "this console's GameController");
+        mode.observeReported(3, 1);
+        clock.advance(100);
+        mode.observeBelieved(4, "this console's GameController");
+        long flips = mode.changes();
+        clock.advance(MatchMode.PLAY_MEMORY_MS + 1);
+        assertTrue(mode.mayConsoleSend(), mode.play());
+        assertEquals("", mode.notice());
+        assertEquals(flips + 1, mode.changes(), "the end of play by the clock alone is a change an idle window sees");
+        mode.observeReported(3, 2);
+        assertFalse(mode.mayConsoleSend(), "a robot still reporting play after the FINISHED keeps the console silent");
+    }
+
+    /**
      * Sources are kept for the last {@link RecentSources#CAPACITY} heard: a flood of FINISHED from
      * thousands of made-up sources pushes the GameController's PLAYING out of what was heard last,
      * yet its claim of play holds the console silent all the same.

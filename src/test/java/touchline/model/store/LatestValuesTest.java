@@ -26,7 +26,7 @@ class LatestValuesTest {
     @Test
     void viewStoresFeedEveryStoreFromOneEnvelope() {
         ViewStores stores = new ViewStores(100, 100, 100, 0);
-        stores.accept(StoreEnvelopes.text(5, 1, "demo.text", "hello"));
+        stores.live().accept(StoreEnvelopes.text(5, 1, "demo.text", "hello"));
         assertEquals(1, stores.text().version());
         assertEquals(1, stores.network().version());
         assertEquals("hello", ((Fumanoid.DebugText) stores.latest().get(1, "demo.text").orElseThrow().data()).getText());

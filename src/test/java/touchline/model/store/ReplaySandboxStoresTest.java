@@ -17,9 +17,9 @@ class ReplaySandboxStoresTest {
 
     @Test
     void replayedDataNeverMixesWithTheLiveRobotsOfTheSameNumber() {
-        stores.accept(StoreEnvelopes.plot(1_000_000, 3, "speed", "v", 1.0));
-        stores.accept(StoreEnvelopes.plot(2_000_000, 3, "speed", "v", 7.0).asReplayed());
-        stores.accept(StoreEnvelopes.text(2_000_000, 3, "log", "from the recording").asReplayed());
+        stores.live().accept(StoreEnvelopes.plot(1_000_000, 3, "speed", "v", 1.0));
+        stores.replay().accept(StoreEnvelopes.plot(2_000_000, 3, "speed", "v", 7.0).asReplayed());
+        stores.replay().accept(StoreEnvelopes.text(2_000_000, 3, "log", "from the recording").asReplayed());
 
         assertEquals(1, stores.live().plots().snapshot(3, "speed").series().get(0).count());
         assertEquals(1.0, stores.live().plots().snapshot(3, "speed").series().get(0).y()[0]);
@@ -34,11 +34,11 @@ class ReplaySandboxStoresTest {
 
     @Test
     void aJumpEmptiesTheReplaysStoresOnlyAndTheViewsNoticeTheNextValue() {
-        stores.accept(StoreEnvelopes.plot(1_000_000, 3, "speed", "v", 1.0));
+        stores.live().accept(StoreEnvelopes.plot(1_000_000, 3, "speed", "v", 1.0));
         for (int i = 0; i < 5; i++) {
-            stores.accept(StoreEnvelopes.plot(10_000_000 + i * 100_000L, 3, "speed", "v", i).asReplayed());
+            stores.replay().accept(StoreEnvelopes.plot(10_000_000 + i * 100_000L, 3, "speed", "v", i).asReplayed());
         }
-        stores.accept(StoreEnvelopes.text(10_000_000, 3, "log", "before the seek").asReplayed());
+        stores.replay().accept(StoreEnvelopes.text(10_000_000, 3, "log", "before the seek").asReplayed());
         long plotVersion = stores.replay().plots().version(3, "speed");
         long textSeq = stores.replay().text().version();
         long latestVersion = stores.replay().latest().version();
@@ -49,8 +49,8 @@ class ReplaySandboxStoresTest {
         assertEquals(0, stores.replay().text().size());
         assertEquals(1, stores.live().plots().snapshot(3, "speed").series().get(0).count(), "live data stays");
 
-        stores.accept(StoreEnvelopes.plot(10_000_000, 3, "speed", "v", 42).asReplayed());
-        stores.accept(StoreEnvelopes.text(10_000_000, 3, "log", "after the seek").asReplayed());
+        stores.replay().accept(StoreEnvelopes.plot(10_000_000, 3, "speed", "v", 42).asReplayed());
+        stores.replay().accept(StoreEnvelopes.text(10_000_000, 3, "log", "after the seek").asReplayed());
         PlotStore.SeriesData after = stores.replay().plots().snapshot(3, "speed").series().get(0);
         assertEquals(1, after.count(), "as if played from the seek");
         assertEquals(1.0, after.x()[0], 1e-9, "seconds from the replay's origin");

@@ -16,15 +16,15 @@ class ViewStoresTest {
     @Test
     void eachStoreKeepsWhatItsKindCarriesAndOnlyWhatRobotsSent() {
         ViewStores stores = new ViewStores(T0);
-        stores.accept(StoreEnvelopes.text(T0 + 1, 2, "demo.text", "hello"));
-        stores.accept(StoreEnvelopes.plot(T0 + 2, 2, "demo.plotter", "a", 1.5));
-        stores.accept(StoreEnvelopes.regions(T0 + 3, 2, "havimo.region", new int[] {0, 0, 10, 10}));
-        stores.accept(StoreEnvelopes.status(T0 + 4, 2));
+        stores.live().accept(StoreEnvelopes.text(T0 + 1, 2, "demo.text", "hello"));
+        stores.live().accept(StoreEnvelopes.plot(T0 + 2, 2, "demo.plotter", "a", 1.5));
+        stores.live().accept(StoreEnvelopes.regions(T0 + 3, 2, "havimo.region", new int[] {0, 0, 10, 10}));
+        stores.live().accept(StoreEnvelopes.status(T0 + 4, 2));
         Envelope sent = StoreEnvelopes.text(T0 + 5, 3, "out.text", "sent by the console");
-        stores.accept(new Envelope(sent.timeMicros(), Direction.OUT, sent.channel(), sent.peer(), 3, sent.kind(),
+        stores.live().accept(new Envelope(sent.timeMicros(), Direction.OUT, sent.channel(), sent.peer(), 3, sent.kind(),
                 sent.message(), sent.raw(), null));
         Envelope noRobot = StoreEnvelopes.text(T0 + 6, 4, "lost.text", "no robot");
-        stores.accept(new Envelope(noRobot.timeMicros(), Direction.IN, noRobot.channel(), noRobot.peer(), Envelope.NO_ROBOT,
+        stores.live().accept(new Envelope(noRobot.timeMicros(), Direction.IN, noRobot.channel(), noRobot.peer(), Envelope.NO_ROBOT,
                 noRobot.kind(), noRobot.message(), noRobot.raw(), null));
 
         assertEquals(6, stores.network().size(), "the network log keeps everything, in and out");

@@ -51,21 +51,21 @@ class EmbeddedGameControllerTest {
         try (LoopbackReceiver robot = new LoopbackReceiver();
              EmbeddedGameController gc = start(GcProfile.HL12, robot.address(), false, null)) {
             InetSocketAddress returns = gc.returnAddress();
-            assertEquals(RobotLiveness.Status.OFFLINE, gc.liveness().status(7, 2, gc.game().now()));
+            assertEquals(RobotLiveness.Status.OFFLINE, gc.liveness().status(7, 2, gc.runtime().now()));
             // starts with MAN_PENALISE: no edge, no penalty (like the Java GameController)
             robot.send(new ReturnPacket.V2(7, 2, ReturnPacket.MAN_PENALISE).encode(), returns);
-            Await.until(() -> gc.liveness().status(7, 2, gc.game().now()) == RobotLiveness.Status.ONLINE, 2000,
+            Await.until(() -> gc.liveness().status(7, 2, gc.runtime().now()) == RobotLiveness.Status.ONLINE, 2000,
                     "robot 7/2 online");
-            assertEquals(Penalty.NONE, gc.game().snapshot().team(7).player(2).penalty());
+            assertEquals(Penalty.NONE, gc.runtime().snapshot().hl().team(7).player(2).penalty());
             robot.send(new ReturnPacket.V2(7, 2, ReturnPacket.ALIVE).encode(), returns);
             robot.send(new ReturnPacket.V2(7, 2, ReturnPacket.MAN_PENALISE).encode(), returns);
-            Await.until(() -> gc.game().snapshot().team(7).player(2).penalty() == Penalty.MANUAL, 2000,
+            Await.until(() -> gc.runtime().snapshot().hl().team(7).player(2).penalty() == Penalty.MANUAL, 2000,
                     "manual penalty");
             // repeating the same message changes nothing; a change to MAN_UNPENALISE lifts it
             robot.send(new ReturnPacket.V2(7, 2, ReturnPacket.MAN_PENALISE).encode(), returns);
             robot.send(new ReturnPacket.V2(7, 2, ReturnPacket.MAN_UNPENALISE).encode(), returns);
-            Await.until(() -> gc.game().snapshot().team(7).player(2).penalty() == Penalty.NONE, 2000, "unpenalised");
-            assertEquals(List.of("unpenalise 7 2", "penalty 7 2 manual"), gc.game().undoList().subList(0, 2));
+            Await.until(() -> gc.runtime().snapshot().hl().team(7).player(2).penalty() == Penalty.NONE, 2000, "unpenalised");
+            assertEquals(List.of("unpenalise 7 2", "penalty 7 2 manual"), gc.runtime().snapshot().undoList().subList(0, 2));
             assertTrue(envelopes.stream().anyMatch(e -> e.direction() == Direction.IN
                     && e.kind().equals("gc.return.v2") && e.error() == null));
         }
@@ -85,7 +85,7 @@ class EmbeddedGameControllerTest {
             other.send(new ReturnPacket.V2(99, 1, ReturnPacket.ALIVE).encode(), returns);        // foreign team
             // a good packet afterwards still works
             robot.send(new ReturnPacket.V2(7, 3, ReturnPacket.ALIVE).encode(), returns);
-            Await.until(() -> gc.liveness().status(7, 3, gc.game().now()) == RobotLiveness.Status.ONLINE, 2000,
+            Await.until(() -> gc.liveness().status(7, 3, gc.runtime().now()) == RobotLiveness.Status.ONLINE, 2000,
                     "good packet applied");
             Await.until(() -> gc.badPackets().total() == 6, 2000, "6 bad packets counted");
             String robotKey = "127.0.0.1:" + robot.address().getPort();
@@ -93,9 +93,9 @@ class EmbeddedGameControllerTest {
             assertEquals(4, gc.badPackets().bySource().get(robotKey).count());
             assertEquals(2, gc.badPackets().bySource().get(otherKey).count());
             assertTrue(gc.badPackets().bySource().get(otherKey).lastReason().contains("team 99"));
-            assertEquals(RobotLiveness.Status.OFFLINE, gc.liveness().status(7, 200, gc.game().now()));
-            assertEquals(RobotLiveness.Status.OFFLINE, gc.liveness().status(7, 0, gc.game().now()));
-            assertEquals(Penalty.NONE, gc.game().snapshot().team(7).player(2).penalty());
+            assertEquals(RobotLiveness.Status.OFFLINE, gc.liveness().status(7, 200, gc.runtime().now()));
+            assertEquals(RobotLiveness.Status.OFFLINE, gc.liveness().status(7, 0, gc.runtime().now()));
+            assertEquals(Penalty.NONE, gc.runtime().snapshot().hl().team(7).player(2).penalty());
             assertEquals(6, envelopes.stream().filter(e -> e.kind().equals("gc.return.malformed")
                     && e.error() != null).count());
             assertEquals(2, events.stream().filter(e -> e.startsWith("bad return packet")).count(),
@@ -113,16 +113,16 @@ class EmbeddedGameControllerTest {
                     new GcConfig(GcProfile.HL12, false, List.of(gc.rivalAddress()), ANY_LOOPBACK_PORT,
                             ANY_LOOPBACK_PORT, null, 500, false), e -> { }, null, new touchline.app.SystemClock())) {
                 self.start();
-                Await.until(() -> gc.rivals().active(gc.game().now()).size() == 1, 2000, "a second GC noticed");
+                Await.until(() -> gc.rivals().active(gc.runtime().now()).size() == 1, 2000, "a second GC noticed");
             }
             assertTrue(gc.rivalWarning().contains("ANOTHER GAMECONTROLLER"), gc.rivalWarning());
             Await.until(() -> events.stream().anyMatch(e -> e.contains("ANOTHER GAMECONTROLLER")), 2000,
                     "warning event");
             // a raw rival packet from a plain socket is recognised with its format and state
-            GameControlData playing = gc.game().controlData();
+            GameControlData playing = gc.runtime().snapshot().robots();
             rival.send(new HlGameState12().encode(playing), gc.rivalAddress());
-            Await.until(() -> gc.rivals().active(gc.game().now()).size() == 2, 2000, "second rival");
-            var r = gc.rivals().active(gc.game().now()).get("127.0.0.1:" + rival.address().getPort());
+            Await.until(() -> gc.rivals().active(gc.runtime().now()).size() == 2, 2000, "second rival");
+            var r = gc.rivals().active(gc.runtime().now()).get("127.0.0.1:" + rival.address().getPort());
             assertEquals("gc.hl12", r.kind());
             assertEquals("13 vs 7", r.teams());
         }
@@ -143,10 +143,10 @@ class EmbeddedGameControllerTest {
                 gc.addEventListener(events::add);
                 gc.start();
                 robot.send(new ReturnPacket.V2(13, 1, ReturnPacket.ALIVE).encode(), shared);
-                Await.until(() -> gc.liveness().status(13, 1, gc.game().now()) == RobotLiveness.Status.ONLINE, 2000,
+                Await.until(() -> gc.liveness().status(13, 1, gc.runtime().now()) == RobotLiveness.Status.ONLINE, 2000,
                         "return on 3838-style shared port");
                 Await.until(() -> gc.sender().packetsSent() >= 6, 3000, "own packets sent to the shared port");
-                assertTrue(gc.rivals().active(gc.game().now()).isEmpty(), "own packets taken for a rival");
+                assertTrue(gc.rivals().active(gc.runtime().now()).isEmpty(), "own packets taken for a rival");
                 assertEquals(0, gc.badPackets().total());
                 assertTrue(events.stream().noneMatch(e -> e.contains("ANOTHER")));
             }
@@ -160,9 +160,9 @@ class EmbeddedGameControllerTest {
              EmbeddedGameController gc = start(GcProfile.HL12, robot.address(), false, matchMode)) {
             Await.until(() -> gc.sender().packetsSent() >= 1, 2000, "first packet");
             assertTrue(matchMode.mayConsoleSend());
-            gc.game().perform(new ToReady());
-            gc.game().perform(new ToSet());
-            gc.game().perform(new ToPlaying());
+            gc.runtime().perform(new ToReady()).join();
+            gc.runtime().perform(new ToSet()).join();
+            gc.runtime().perform(new ToPlaying()).join();
             Await.until(() -> !matchMode.mayConsoleSend(), 2000, "console silenced");
             assertTrue(matchMode.hold("debug option request"));
         }

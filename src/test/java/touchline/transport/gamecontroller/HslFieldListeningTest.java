@@ -115,8 +115,8 @@ class HslFieldListeningTest {
                      envelopes::add, matchMode, new touchline.app.SystemClock())) {
             gc.start();
             official.send(golden("07-playing-after-delay.bin"), gc.rivalAddress());
-            Await.until(() -> !gc.rivals().active(gc.game().now()).isEmpty(), 2000, "rival heard");
-            var rival = gc.rivals().active(gc.game().now()).get("127.0.0.1:" + official.address().getPort());
+            Await.until(() -> !gc.rivals().active(gc.runtime().now()).isEmpty(), 2000, "rival heard");
+            var rival = gc.rivals().active(gc.runtime().now()).get("127.0.0.1:" + official.address().getPort());
             assertEquals("gc.hsl20", rival.kind());
             assertEquals("5 vs 14", rival.teams());
             assertTrue(gc.rivalWarning().contains("gc.hsl20 PLAYING 5 vs 14"), gc.rivalWarning());

@@ -61,7 +61,7 @@ class HslMonitorServiceTest {
             monitor.send(new MonitorRequest().encode(), service.requestAddress());
             Await.until(() -> !service.monitors().isEmpty(), TIMEOUT_MS, "monitor registered");
             for (String c : List.of("kickoff 5", "set", "play")) {
-                HslGameGoldenTest.perform(game, c, "monitor test");
+                RefereeScript.perform(gc.runtime(), c, "monitor test");
             }
             GameControlData seen = null;
             while (seen == null || seen.state() != GameControlData.STATE_PLAYING) {
@@ -71,7 +71,7 @@ class HslMonitorServiceTest {
                 assertTrue(d.isOk(), d.toString());
                 seen = d.value();
             }
-            assertEquals(GameControlData.STATE_SET, game.controlData().state(), "robots still see SET");
+            assertEquals(GameControlData.STATE_SET, gc.runtime().snapshot().robots().state(), "robots still see SET");
 
             byte[] packet = returnPacket();
             robot.send(packet, gc.returnAddress());

@@ -58,9 +58,9 @@ class HslSenderLoopbackTest {
             int steps = 0;
             for (HslGoldenScript.Step step : HslGoldenScript.of(20)) {
                 clock.set(step.atMs());
-                game.advance();
+                gc.runtime().tick().join();
                 for (String command : step.commands()) {
-                    HslGameGoldenTest.perform(game, command, "sender at " + step.atMs() + " ms");
+                    RefereeScript.perform(gc.runtime(), command, "sender at " + step.atMs() + " ms");
                 }
                 if (step.file() == null) {
                     continue;
@@ -100,7 +100,7 @@ class HslSenderLoopbackTest {
                 }
                 clock.set(step.atMs());
                 for (String command : step.commands()) {
-                    HslGameGoldenTest.perform(game, command, "at " + step.atMs() + " ms");
+                    RefereeScript.perform(gc.runtime(), command, "at " + step.atMs() + " ms");
                 }
             }
             byte[] corner = HslGameGoldenTest.golden(20, "08-corner-kick-team14-stopped.bin");

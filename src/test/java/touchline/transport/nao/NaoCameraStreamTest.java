@@ -25,7 +25,7 @@ class NaoCameraStreamTest {
     void fetchesOnlyWhileSubscribedSharesOneFrameAndReconfigures() throws Exception {
         List<Envelope> envelopes = new CopyOnWriteArrayList<>();
         try (FakeNaoCamera camera = new FakeNaoCamera();
-             NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+             NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             stream.configure(new CameraSettings(1, 11, 30));
             awaitWaitingForAViewer(camera.port());
             assertEquals(0, camera.fetches.get(), "nothing fetched without a viewer");
@@ -89,7 +89,7 @@ class NaoCameraStreamTest {
         List<Envelope> envelopes = new CopyOnWriteArrayList<>();
         try (FakeNaoCamera camera = new FakeNaoCamera();
              NaoCameraStream stream = new NaoCameraStream("127.0.0.1", camera.port(), envelopes::add, null,
-                     () -> wallMicros, System::nanoTime);
+                     () -> wallMicros, System::nanoTime).start();
              AutoCloseable viewer = stream.subscribe()) {
             assertTrue(Poll.until(() -> stream.framesReceived() >= 2));
             assertEquals(wallMicros, stream.latestFrame().receiveTimeMicros());
@@ -104,7 +104,7 @@ class NaoCameraStreamTest {
         try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
             port = s.getLocalPort();
         }
-        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", port, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+        try (NaoCameraStream stream = new NaoCameraStream("127.0.0.1", port, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             AutoCloseable viewer = stream.subscribe();
             assertTrue(Poll.until(() -> stream.lastError() != null));
             viewer.close();

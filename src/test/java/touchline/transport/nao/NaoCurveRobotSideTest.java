@@ -47,8 +47,8 @@ class NaoCurveRobotSideTest {
     void rightKeysCallAndGetAFrame() throws Exception {
         try (RobotSideProcess sim = secureSim();
              NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { },
-                     NaoClientKeys.load(new KeyDir(keys)), new touchline.app.SystemClock(), new touchline.app.SystemClock());
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, NaoClientKeys.load(new KeyDir(keys)), new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+                     NaoClientKeys.load(new KeyDir(keys)), new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, NaoClientKeys.load(new KeyDir(keys)), new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), link.state()
                     + " " + link.securityProblem());
             assertEquals(new CallOutcome.Done(), link.call("ALTextToSpeech", "setVolume", 0.5f).get(20, TimeUnit.SECONDS));
@@ -69,8 +69,8 @@ class NaoCurveRobotSideTest {
             Files.copy(keys.resolve("nao-server.public"), otherConsole.resolve("nao-server.public"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             NaoClientKeys stranger = NaoClientKeys.load(new KeyDir(otherConsole));
-            try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, stranger, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-                 NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, stranger, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+            try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, stranger, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
+                 NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, stranger, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
                 assertTrue(Poll.until(() -> link.state() == ConnectionState.REFUSED),
                         link.state().toString());
                 assertTrue(link.securityProblem().contains("the NAO refused our key: give it console.public"),
@@ -93,8 +93,8 @@ class NaoCurveRobotSideTest {
     @Test
     void anInsecureClientGetsNothing() throws Exception {
         try (RobotSideProcess sim = secureSim();
-             NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+             NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, e -> { }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             CallOutcome outcome = link.call("ALTextToSpeech", "getVolume").get(20, TimeUnit.SECONDS);
             assertInstanceOf(CallOutcome.Lost.class, outcome);
             assertTrue(link.state() != ConnectionState.ONLINE);
@@ -113,7 +113,7 @@ class NaoCurveRobotSideTest {
             Files.copy(keys.resolve("console.secret"), otherConsole.resolve("console.secret"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             try (NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), e -> { },
-                    NaoClientKeys.load(new KeyDir(otherConsole)), new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+                    NaoClientKeys.load(new KeyDir(otherConsole)), new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
                 assertTrue(Poll.until(() -> link.state() == ConnectionState.REFUSED),
                         link.state().toString());
                 assertTrue(link.securityProblem().contains("no CURVE handshake"), link.securityProblem());

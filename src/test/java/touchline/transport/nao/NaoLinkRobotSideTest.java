@@ -3,6 +3,7 @@ package touchline.transport.nao;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import touchline.protocol.nao.NaoModules;
 import touchline.transport.Envelope;
 
 import java.util.List;
@@ -34,7 +35,7 @@ class NaoLinkRobotSideTest {
     }
 
     private NaoLink online(RobotSideProcess sim) throws Exception {
-        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        NaoLink link = new NaoLink("127.0.0.1", sim.rpcPort, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         return link;
     }
@@ -49,7 +50,11 @@ class NaoLinkRobotSideTest {
             assertEquals(new CallOutcome.Value("hello"), get(link.call("ALMemory", "getData", "Touchline/test")));
             assertInstanceOf(CallOutcome.Failed.class, get(link.call("NoSuchModule", "ping")));
             assertInstanceOf(CallOutcome.Failed.class, get(link.call("ALMotion", "noSuchMethod")));
-            for (String module : List.of("ALMotion", "ALRobotPosture", "ALTextToSpeech", "ALMemory", "ALBattery")) {
+            CallOutcome modules = get(link.call(NaoModules.ROBOT_SIDE, "getModuleList"));
+            assertInstanceOf(CallOutcome.Value.class, modules);
+            assertEquals(new java.util.TreeSet<>(NaoModules.ALL),
+                    new java.util.TreeSet<>((List<?>) ((CallOutcome.Value) modules).value()), "the one module list is the robot side's");
+            for (String module : NaoModules.ALL) {
                 CallOutcome methods = get(link.call(module, "getMethodList"));
                 assertInstanceOf(CallOutcome.Value.class, methods, module);
                 Object list = ((CallOutcome.Value) methods).value();
@@ -132,7 +137,7 @@ class NaoLinkRobotSideTest {
     @Test
     void cameraConfigureAndFetch() throws Exception {
         try (RobotSideProcess sim = new RobotSideProcess(0, 0);
-             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+             NaoCameraStream camera = new NaoCameraStream("127.0.0.1", sim.camPort, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             camera.configure(new CameraSettings(2, 11, 30));
             try (AutoCloseable viewer = camera.subscribe()) {
                 assertTrue(Poll.until(() -> camera.framesReceived() >= 5), "" + camera.lastError());

@@ -28,7 +28,7 @@ class NaoLinkTest {
 
     private NaoLink connect(NaoLinkConfig config) throws Exception {
         robot = new FakeNaoRobot(0);
-        link = new NaoLink("127.0.0.1", robot.port(), config, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        link = new NaoLink("127.0.0.1", robot.port(), config, envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         return link;
     }
@@ -62,7 +62,7 @@ class NaoLinkTest {
         long wallMicros = 4_000_000_000_000_000L; // 2096: the robot stand-in drops requests past their deadline
         robot = new FakeNaoRobot(0);
         link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.defaults(), envelopes::add, null,
-                () -> wallMicros, System::nanoTime);
+                () -> wallMicros, System::nanoTime).start();
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         assertEquals(new CallOutcome.Value("x"), get(link.call(NaoCall.of("Test", "echo", "x"), 700)));
 
@@ -99,7 +99,7 @@ class NaoLinkTest {
         assertTrue(Poll.until(() -> count("Test.sleep") == 3));
         robot.executed.clear();
         link.close();
-        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.parse("retries=2\n", "test"), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        link = new NaoLink("127.0.0.1", robot.port(), NaoLinkConfig.parse("retries=2\n", "test"), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE));
         assertInstanceOf(CallOutcome.TimedOut.class, get(link.call(NaoCall.of("Test", "sleep", 500), 100)));
         Thread.sleep(600); // nothing to await: we check that no second attempt arrives
@@ -151,7 +151,7 @@ class NaoLinkTest {
         try (ServerSocket s = new ServerSocket(0)) {
             port = s.getLocalPort();
         }
-        link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        link = new NaoLink("127.0.0.1", port, NaoLinkConfig.defaults(), envelopes::add, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         CallOutcome outcome = get(link.call(NaoCall.of("Test", "echo", 1), 200));
         assertInstanceOf(CallOutcome.Lost.class, outcome);
         assertEquals(ConnectionState.CONNECTING, link.state());
@@ -231,7 +231,7 @@ class NaoLinkTest {
             if (e.direction() == Direction.OUT) {
                 sendingThreads.add(Thread.currentThread().getName());
             }
-        }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+        }, null, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
         assertTrue(Poll.until(() -> link.state() == ConnectionState.ONLINE), "online");
         for (int i = 0; i < 20; i++) {
             assertEquals(new CallOutcome.Value((long) i), get(link.call("Test", "echo", i)));

@@ -4,6 +4,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
+import touchline.transport.Hold;
 import touchline.transport.SendGate;
 import touchline.transport.SendResult;
 import touchline.testing.Await;
@@ -32,7 +33,7 @@ class BridgeTest {
     private static final int ROBOT = 1001;
 
     private final List<Envelope> heard = new CopyOnWriteArrayList<>();
-    private final AtomicReference<Optional<String>> hold = new AtomicReference<>(Optional.empty());
+    private final AtomicReference<Optional<Hold>> hold = new AtomicReference<>(Optional.empty());
     private final SendGate gate = () -> hold.get();
 
     private Bridge bridge(String url) {
@@ -90,7 +91,7 @@ class BridgeTest {
             assertEquals(0.3, ((Number) param(bridge, "walk.speed").value()).doubleValue());
             assertTrue(param(bridge, "debug.draw_ball").isBool());
 
-            hold.set(Optional.of("match mode, PLAYING; goes out when play stops"));
+            hold.set(Optional.of(Hold.untilPlayStops("match mode, PLAYING")));
             SendResult set = bridge.setParameter("debug.draw_ball", true);
             SendResult publish = bridge.publish("/say", "std_msgs/msg/String", "{\"data\":\"hello\"}");
             assertEquals(SendResult.Outcome.HELD, set.outcome());
@@ -109,6 +110,12 @@ class BridgeTest {
             Await.until("the robot's new value", () -> Boolean.TRUE.equals(param(bridge, "debug.draw_ball").value()));
             Await.until("the robot heard the publish", () -> robot.heard().contains("{\"data\":\"hello\"}"));
             assertTrue(robot.heard().contains("client advertised /say (json)"), robot.heard());
+
+            hold.set(Optional.of(Hold.always("viewing a remote Touchline: commands are off")));
+            SendResult refused = bridge.setParameter("debug.draw_ball", false);
+            assertEquals(SendResult.Outcome.FAILED, refused.outcome(), "a gate shut for good refuses, holds nothing");
+            assertEquals("viewing a remote Touchline: commands are off", refused.reason());
+            assertTrue(bridge.held().isEmpty());
         }
     }
 

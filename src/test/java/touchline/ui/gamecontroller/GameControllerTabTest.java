@@ -4,11 +4,11 @@ import javafx.scene.Scene;
 import javafx.scene.control.Button;
 import javafx.scene.control.TextField;
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.UiTest;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.UdpConfig;
@@ -27,7 +27,7 @@ import static touchline.testing.FxStep.fx;
  * The GameController tab on a headless stage against a real UDP receiver standing in for a
  * robot: starting sends HL v12 packets, Play is sent at once and switches match mode on.
  */
-@Tag("ui")
+@UiTest
 class GameControllerTabTest {
 
     @BeforeAll
@@ -48,12 +48,15 @@ class GameControllerTabTest {
         try (Console console = new Console(config).start(); DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             robot.setSoTimeout(5000);
             AtomicBoolean published = new AtomicBoolean();
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.channel() == Channel.GAMECONTROLLER && e.direction() == Direction.OUT) {
                     published.set(true);
                 }
             });
-            ViewContext context = new ViewContext(console, console.stores(), new ViewRegistry(), (s, src) -> { });
+            ViewContext context = new ViewContext(console.field(), console.optionSwitches(),
+                    console.referee(), console.naos(), console.recordings(), console.replays(), console.teamSchemas(),
+                    console.teamBudget(), console.remote(), console.bridges(), new ViewRegistry(), (s, src) -> { }, null,
+                    new touchline.ui.ServeToggle(console.serving()));
             GameControllerTab tab = fx(() -> {
                 GameControllerTab t = new GameControllerTab(context, null);
                 new Scene((javafx.scene.Parent) t.node());
@@ -73,7 +76,7 @@ class GameControllerTabTest {
             assertEquals(688, first.length, "HL v12 as chosen");
             assertEquals('R', first[0]);
             assertEquals(0, first[9], "INITIAL");
-            assertTrue(console.gameController().isPresent());
+            assertTrue(console.referee().gameController().isPresent());
 
             fx(() -> {
                 ((Button) tab.node().lookup("#gc-ready")).fire();
@@ -85,10 +88,10 @@ class GameControllerTabTest {
             do {
                 p = receive(robot);
             } while (p[9] != 3);
-            assertTrue(console.matchMode().playIsOn(), "our own GameController's PLAYING silences the console");
+            assertTrue(console.referee().matchMode().playIsOn(), "our own GameController's PLAYING silences the console");
             assertTrue(published.get(), "sent packets appear in the Envelope stream");
 
-            String outcome = console.gameController().orElseThrow().sender().awaitRealtimeOutcome(5000);
+            String outcome = console.referee().gameController().orElseThrow().sender().awaitRealtimeOutcome(5000);
             assertNotEquals(touchline.transport.gamecontroller.GcSender.NOT_REQUESTED, outcome, "the tab asks for real-time priority by default");
             fx(() -> {
                 tab.refresh(null);
@@ -102,7 +105,7 @@ class GameControllerTabTest {
                 ((Button) tab.node().lookup("#gc-stop")).fire();
                 return null;
             });
-            assertTrue(console.gameController().isEmpty());
+            assertTrue(console.referee().gameController().isEmpty());
         }
     }
 }

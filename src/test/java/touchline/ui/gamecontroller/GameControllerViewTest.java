@@ -8,6 +8,7 @@ import javafx.scene.input.KeyEvent;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
+import touchline.app.game.GameRuntime;
 import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.game.ManualClock;
@@ -37,12 +38,14 @@ class GameControllerViewTest {
     void buttonsAndKeysRefereeAGame() throws Exception {
         ManualClock clock = new ManualClock(0);
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock);
+        GameRuntime owner = new GameRuntime(game);
+        owner.start();
         GameControllerView view = fx(() -> {
-            GameControllerView v = new GameControllerView(game, null);
+            GameControllerView v = new GameControllerView(owner, null);
             new Scene((javafx.scene.Parent) v.node());
             return v;
         });
-        assertTrue(fx(view::clockText).startsWith("INITIAL"));
+        assertTrue(fx(() -> clockText(view)).startsWith("INITIAL"));
         click(view, "gc-ready");
         assertEquals(PlayState.READY, game.snapshot().state());
         fx(() -> {
@@ -54,7 +57,7 @@ class GameControllerViewTest {
         click(view, "gc-play");
         click(view, "gc-goal-1");
         assertEquals(1, game.snapshot().team(7).score());
-        assertTrue(fx(view::clockText).contains("13 0:1 7"), fx(view::clockText));
+        assertTrue(fx(() -> clockText(view)).contains("13 0:1 7"), fx(() -> clockText(view)));
         click(view, "gc-play"); // illegal in READY: refused, shown, nothing changes
         assertEquals(PlayState.READY, game.snapshot().state());
         click(view, "gc-robot-0-2");
@@ -70,5 +73,11 @@ class GameControllerViewTest {
         click(view, "gc-undo");
         assertEquals(Penalty.PHYSICAL_CONTACT, game.snapshot().team(13).player(2).penalty());
         assertTrue(fx(() -> view.robotText(1, 5)).contains("substitute"));
+        owner.close();
+    }
+
+    /** The clock line as the tab shows it (FX thread). */
+    private static String clockText(GameControllerView view) {
+        return ((javafx.scene.control.Label) view.node().lookup("#gc-clock")).getText();
     }
 }

@@ -1,7 +1,9 @@
 package touchline.ui.gamecontroller;
 
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import touchline.app.game.GameRuntime;
 import touchline.game.ManualClock;
 import touchline.game.hsl.Competition;
 import touchline.game.hsl.HslGame;
@@ -11,17 +13,34 @@ import touchline.game.hsl.SetPlay;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
 
+import java.util.ArrayList;
+import java.util.List;
+
 import static org.junit.jupiter.api.Assertions.*;
 
 /** The HSL referee box without a window: which buttons are legal when, the call-then-robot penalty, texts. */
 class HslRefereeModelTest {
 
     private final ManualClock clock = new ManualClock(0);
+    private final List<GameRuntime> owners = new ArrayList<>();
     private HslRefereeModel model;
+
+    /** The model over a started owner of {@code game}, as the referee tab builds it. */
+    private HslRefereeModel modelOf(HslGame game) {
+        GameRuntime owner = new GameRuntime(game);
+        owner.start();
+        owners.add(owner);
+        return new HslRefereeModel(owner);
+    }
+
+    @AfterEach
+    void stopOwners() {
+        owners.forEach(GameRuntime::close);
+    }
 
     @BeforeEach
     void game() {
-        model = new HslRefereeModel(new HslGame(HslRules.v7(Competition.MIDDLE_ADVANCED), 5,
+        model = modelOf(new HslGame(HslRules.v7(Competition.MIDDLE_ADVANCED), 5,
                 new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, clock));
     }
@@ -169,7 +188,7 @@ class HslRefereeModelTest {
 
     @Test
     void theSixOhReleaseHasNoCautions() {
-        HslRefereeModel v6 = new HslRefereeModel(new HslGame(HslRules.v6(Competition.MIDDLE_ADVANCED), 5,
+        HslRefereeModel v6 = modelOf(new HslGame(HslRules.v6(Competition.MIDDLE_ADVANCED), 5,
                 new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, clock));
         assertFalse(v6.calls().contains(HslPenalty.CAUTIONED));

@@ -5,11 +5,11 @@ import javafx.scene.control.ButtonBase;
 import javafx.scene.control.Label;
 import javafx.scene.control.ToggleButton;
 import javafx.scene.image.ImageView;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.UiTest;
 import touchline.transport.Origin;
 import touchline.transport.UdpConfig;
 import touchline.ui.FrameContext;
@@ -25,7 +25,7 @@ import static touchline.testing.FxStep.fx;
  * that arrives as an envelope is drawn though no camera was opened here, and the view's
  * commands are refused with the remote view's words.
  */
-@Tag("ui")
+@UiTest
 class NaoViewRemoteFramesUiTest {
 
     @Test
@@ -34,8 +34,8 @@ class NaoViewRemoteFramesUiTest {
         FrameContext frame = new FrameContext(new LatencyProbe());
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)))) {
-            console.viewRemote(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
-            NaoView view = fx(() -> new NaoView(console));
+            console.remote().view(new URI("ws://127.0.0.1:9/"), null); // nobody there: it only has to be a viewer
+            NaoView view = fx(() -> new NaoView(console.naos()));
             Node root = view.node();
             ImageView image = (ImageView) root.lookup("#nao-image");
             fx(() -> {
@@ -45,7 +45,7 @@ class NaoViewRemoteFramesUiTest {
             assertNull(image.getImage());
 
             byte[] jpeg = touchline.testing.NaoCameraEnvelopes.jpeg(320, 240);
-            console.bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, console.clock().nowMicros(), Origin.REMOTE));
+            console.field().bus().accept(touchline.testing.NaoCameraEnvelopes.frame(jpeg, console.field().clock().nowMicros(), Origin.REMOTE));
             fx(() -> {
                 view.refresh(frame);
                 return null;
@@ -54,7 +54,7 @@ class NaoViewRemoteFramesUiTest {
             assertEquals(320, image.getImage().getWidth());
             assertEquals(240, image.getImage().getHeight());
             assertFalse(((ToggleButton) root.lookup("#nao-camera")).isSelected(), "no camera was opened here");
-            assertTrue(console.naoSessions().isEmpty());
+            assertTrue(console.naos().sessions().isEmpty());
 
             String result = fx(() -> {
                 ((ButtonBase) root.lookup("#nao-stand")).fire();
@@ -69,7 +69,7 @@ class NaoViewRemoteFramesUiTest {
                 return ((ToggleButton) root.lookup("#nao-connect")).isSelected();
             });
             assertFalse(connected, "a viewer does not connect to a NAO");
-            assertTrue(console.naoSessions().isEmpty());
+            assertTrue(console.naos().sessions().isEmpty());
             assertTrue(fx(() -> ((Label) root.lookup("#nao-state")).getText()).startsWith("viewing a remote Touchline"));
             fx(() -> {
                 view.close();

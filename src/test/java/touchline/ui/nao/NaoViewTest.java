@@ -12,6 +12,7 @@ import org.testfx.api.FxToolkit;
 import org.testfx.util.WaitForAsyncUtils;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.UiTest;
 import touchline.transport.UdpConfig;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
@@ -32,7 +33,7 @@ import static touchline.testing.FxStep.fx;
  * The NAO tab headless (Monocle) against the in-test robot and camera stand-ins, connected
  * through an (unstarted: no GameController heard, so match mode is off) application core.
  */
-@org.junit.jupiter.api.Tag("ui")
+@UiTest
 class NaoViewTest {
 
     @SuppressWarnings("unchecked")
@@ -44,8 +45,8 @@ class NaoViewTest {
         try (FakeNaoRobot robot = new FakeNaoRobot(0); FakeNaoCamera camera = new FakeNaoCamera();
              Console console = new Console(ConsoleConfig.defaults()
                      .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)))) {
-            console.bus().subscribe(envelopes::add);
-            NaoView view = fx(() -> new NaoView(console));
+            console.field().bus().subscribe(envelopes::add);
+            NaoView view = fx(() -> new NaoView(console.naos()));
             Node root = view.node();
             fx(() -> {
                 ((TextField) root.lookup("#nao-rpc-port")).setText(Integer.toString(robot.port()));

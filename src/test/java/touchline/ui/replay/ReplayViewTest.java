@@ -10,7 +10,6 @@ import javafx.scene.control.TextField;
 import javafx.stage.Stage;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.testfx.api.FxRobot;
@@ -21,6 +20,7 @@ import touchline.app.ConsoleConfig;
 import touchline.record.PlayerState;
 import touchline.record.Recording;
 import touchline.record.TimelineEvent;
+import touchline.testing.UiTest;
 import touchline.transport.UdpConfig;
 import touchline.ui.ConsoleWindow;
 import touchline.ui.Shell;
@@ -45,7 +45,7 @@ import static touchline.testing.FxStep.fx;
  * seeking by timeline and by event lands where it should, a broken file is reported and the
  * console carries on, recording writes a file.
  */
-@Tag("ui")
+@UiTest
 class ReplayViewTest {
 
     static final Path SAMPLE = Path.of("samples/demo-team.mcap").toAbsolutePath();
@@ -96,11 +96,11 @@ class ReplayViewTest {
                 .filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow());
         await(5, () -> state().positionMicros() == goal.timeMicros());
         assertFalse(state().playing(), "never played");
-        await(20, () -> console.robots().robots().size() == 3);
+        await(20, () -> console.field().robots().robots().size() == 3);
         await(20, () -> fx(() -> window.context().stores().network().size()) > 0
                 && fx(() -> window.context().stores().text().size()) > 0);
         await(20, () -> !robot.lookup("#replay-position").queryAs(Label.class).getText().contains(" 0 envelopes"));
-        assertTrue(console.robots().robots().stream().allMatch(r -> r.replayed()), "the replay's robots");
+        assertTrue(console.field().robots().robots().stream().allMatch(r -> r.replayed()), "the replay's robots");
     }
 
     @Test
@@ -113,12 +113,12 @@ class ReplayViewTest {
                 .filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow());
 
         robot.clickOn("#replay-live"); // replay alone: the model's clock follows the replay
-        assertFalse(console.liveListening());
+        assertFalse(console.field().liveListening());
         // 4x: the 180 s sample lasts 45 s, so a loaded machine still catches it playing and pauses it
         // before its end (at 50x it reached its end before the check in a CI run beside other builds)
         chooseSpeed(4.0);
         robot.clickOn("#replay-play");
-        await(20, () -> console.robots().robots().size() == 3);
+        await(20, () -> console.field().robots().robots().size() == 3);
         await(20, () -> state().playing() && state().positionMicros() - state().startMicros() > 10_000_000L);
         assertEquals(4.0, state().speed());
         robot.clickOn("#replay-play"); // pause
@@ -160,7 +160,7 @@ class ReplayViewTest {
         robot.clickOn("#replay-loop-clear");
         await(5, () -> state().loopFromMicros() < 0);
         robot.clickOn("#replay-close");
-        await(5, () -> console.replay().isEmpty());
+        await(5, () -> console.replays().current().isEmpty());
         await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().equals("No recording open."));
     }
 
@@ -174,7 +174,7 @@ class ReplayViewTest {
         await(20, () -> message().equals("Opened demo-team.mcap."));
         await(20, () -> fx(() -> !robot.lookup("#replay-play").query().isDisabled()));
         robot.clickOn("#replay-close");
-        await(5, () -> console.replay().isEmpty());
+        await(5, () -> console.replays().current().isEmpty());
         // the position line and the message are updated in the same frame
         await(5, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().equals("No recording open."));
         assertEquals("", message());
@@ -196,7 +196,7 @@ class ReplayViewTest {
         Files.write(junk, bytes);
         openFile(junk);
         await(10, () -> message().contains("Cannot replay junk.mcap") && message().contains("not an MCAP"));
-        assertTrue(console.replay().isEmpty());
+        assertTrue(console.replays().current().isEmpty());
 
         openFile(dir.resolve("missing.mcap"));
         await(10, () -> message().contains("Cannot replay missing.mcap"));
@@ -261,7 +261,17 @@ class ReplayViewTest {
         await(20, () -> !view.shownEvents().isEmpty());
         chooseSpeed(50.0);
         robot.clickOn("#replay-play");
-        await(20, () -> console.recording().map(s -> s.written() > 1000).orElse(false));
+        // the recorder takes the live stream, never the replay (issue 38): the field's traffic goes on
+        // beside the replay, here the sample's envelopes as if heard live (without their field's
+        // addresses, so nothing is ever sent there)
+        try (Recording sample = Recording.open(SAMPLE)) {
+            Recording.Cursor c = sample.cursor(sample.startMicros());
+            for (touchline.transport.Envelope e = c.next(); e != null; e = c.next()) {
+                console.field().bus().accept(new touchline.transport.Envelope(e.timeMicros(), e.direction(), e.channel(), null,
+                        e.robotId(), e.kind(), e.message(), e.raw(), e.error()));
+            }
+        }
+        await(20, () -> console.recordings().current().map(s -> s.written() > 1000).orElse(false));
         robot.clickOn("#record-toggle");
         await(10, () -> robot.lookup("#record-counters").queryAs(Label.class).getText().startsWith("Stopped:"));
         try (Recording r = Recording.open(out, new touchline.protocol.MessageKinds())) {
@@ -282,7 +292,7 @@ class ReplayViewTest {
         });
         await(10, () -> robot.lookup("#schema-list").queryAs(ListView.class).getItems().stream()
                 .anyMatch(i -> i.toString().startsWith("✔ teamBall = 1042")));
-        assertTrue(console.kinds().byName("teamBall").isPresent());
+        assertTrue(console.field().kinds().byName("teamBall").isPresent());
     }
 
     /**
@@ -351,8 +361,8 @@ class ReplayViewTest {
             }
         }
         openText(SAMPLE + "; " + robotLog);
-        await(20, () -> view.filesText().contains("robot2.mcap +0.800 s"));
-        String text = fx(view::filesText);
+        await(20, () -> filesText().contains("robot2.mcap +0.800 s"));
+        String text = fx(this::filesText);
         assertTrue(text.startsWith("demo-team.mcap reference clock"), text);
         assertTrue(text.matches("(?s).*robot2\\.mcap \\+0\\.800 s, \\d+ GC packets matched, agree within 1 ms.*"), text);
         try (Recording sample = Recording.open(SAMPLE)) {
@@ -361,7 +371,7 @@ class ReplayViewTest {
 
         // a given offset wins over the packets
         openText(SAMPLE + "; " + robotLog + "=+0.5");
-        await(20, () -> view.filesText().contains("robot2.mcap +0.500 s (given)"));
+        await(20, () -> filesText().contains("robot2.mcap +0.500 s (given)"));
     }
 
     private void clickTimeline(long micros) throws Exception {
@@ -402,7 +412,13 @@ class ReplayViewTest {
     }
 
     private PlayerState state() throws Exception {
-        return console.replay().orElseThrow().state();
+        return console.replays().current().orElseThrow().state();
+    }
+
+    /** The per-file alignment lines under the timeline as shown (FX thread), "" while hidden. */
+    private String filesText() {
+        javafx.scene.control.Label files = (javafx.scene.control.Label) view.node().lookup("#replay-files");
+        return files.isVisible() ? files.getText() : "";
     }
 
     /** Never shorter than {@link touchline.testing.Await#FLOOR_MILLIS}: a loaded machine must not fail a wait. */

@@ -1,6 +1,6 @@
 package touchline.game;
 
-/** A clock that only moves when told to: for tests, replays and simulations. Thread-safe. */
+/** A clock that only moves when told to: the game tests' clock (a test fixture, not the product's). Thread-safe. */
 public final class ManualClock implements GameClock {
 
     private volatile long millis;

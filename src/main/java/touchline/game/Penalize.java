@@ -1,7 +1,7 @@
 package touchline.game;
 
 /** Penalises an unpenalised robot; timed penalties end by themselves after the league's time. */
-public record Penalise(int team, int player, Penalty penalty) implements Action {
+public record Penalize(int team, int player, Penalty penalty) implements Action {
     @Override
     public boolean isLegal(GameState s) {
         TeamState t = s.team(team);

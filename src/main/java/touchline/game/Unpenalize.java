@@ -1,7 +1,7 @@
 package touchline.game;
 
 /** Lifts a robot's penalty before its time (substitutes come in with {@link Substitute}). */
-public record Unpenalise(int team, int player) implements Action {
+public record Unpenalize(int team, int player) implements Action {
     @Override
     public boolean isLegal(GameState s) {
         TeamState t = s.team(team);

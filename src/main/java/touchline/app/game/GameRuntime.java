@@ -1,0 +1,213 @@
+package touchline.app.game;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import touchline.game.Action;
+import touchline.game.Game;
+import touchline.game.Outcome;
+import touchline.game.RefereedGame;
+import touchline.game.hsl.HslAction;
+import touchline.game.hsl.HslGame;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+
+/**
+ * The one owner of a refereed game (GameController3's runtime task): its thread {@value #THREAD}
+ * is the only one that changes the game. The referee's buttons and commands, robots' return
+ * packets and the sender's timer only enqueue events ({@link #perform}, {@link #undo},
+ * {@link #tick}); the owner applies them one at a time in the order they came and, after each,
+ * publishes an immutable {@link RefereeSnapshot} that the sender, the views and the CLI read.
+ * Listeners hear of every change on the owner thread and must only hand it on (the sender's
+ * wake-up). Events enqueued before {@link #start()} wait for it; after {@link #close()} they are
+ * refused at once.
+ */
+public final class GameRuntime implements AutoCloseable {
+
+    /** The owner thread's name. */
+    public static final String THREAD = "gc-game";
+    /** How long a face waits for the outcome of its own event ({@link #outcome}). */
+    private static final long ANSWER_MS = 2_000;
+    private static final Logger LOG = LoggerFactory.getLogger(GameRuntime.class);
+
+    private final RefereedGame game;
+    private final Deque<Runnable> events = new ArrayDeque<>();
+    private final List<Consumer<RefereeSnapshot>> listeners = new CopyOnWriteArrayList<>();
+    private volatile RefereeSnapshot snapshot;
+    /** Set by the game's own listener; read and cleared by the owner after each event. */
+    private volatile boolean changed;
+    private Thread owner;
+    private boolean closed;
+
+    /** @param game the game this runtime owns from now on: nobody else calls its actions */
+    public GameRuntime(RefereedGame game) {
+        this.game = game;
+        this.snapshot = RefereeSnapshot.of(game);
+        game.addListener(() -> changed = true);
+    }
+
+    /** Starts the owner thread (once). */
+    public synchronized void start() {
+        if (owner != null || closed) {
+            return;
+        }
+        owner = new Thread(this::run, THREAD);
+        owner.setDaemon(true);
+        owner.start();
+    }
+
+    /** The game's clock (a read, not a change). */
+    public long now() {
+        return game.now();
+    }
+
+    /** The game as of the last event. */
+    public RefereeSnapshot snapshot() {
+        return snapshot;
+    }
+
+    /** Called on the owner thread after every event that changed the game, with the new snapshot. */
+    public void addListener(Consumer<RefereeSnapshot> onChange) {
+        listeners.add(onChange);
+    }
+
+    /** Enqueues an HL/SPL action; refused in an HSL game. */
+    public CompletableFuture<Outcome> perform(Action action) {
+        return submit(() -> game instanceof Game g ? g.perform(action)
+                : new Outcome(false, action.describe() + " is not an action of this game's rules"));
+    }
+
+    /** Enqueues an HSL action; refused in an HL/SPL game. */
+    public CompletableFuture<Outcome> perform(HslAction action) {
+        return submit(() -> game instanceof HslGame g ? g.perform(action)
+                : new Outcome(false, action.describe() + " is not an action of this game's rules"));
+    }
+
+    /** Enqueues an undo of the last action. */
+    public CompletableFuture<Outcome> undo() {
+        return submit(game::undo);
+    }
+
+    /**
+     * The timer's event: lets the changes time brings happen (penalties end, halves switch);
+     * completes with the snapshot after them.
+     */
+    public CompletableFuture<RefereeSnapshot> tick() {
+        CompletableFuture<RefereeSnapshot> done = new CompletableFuture<>();
+        if (!enqueue(() -> {
+            try {
+                game.advance();
+                done.complete(publish());
+            } catch (RuntimeException e) {
+                done.completeExceptionally(e);
+                throw e;
+            }
+        })) {
+            done.complete(snapshot);
+        }
+        return done;
+    }
+
+    /**
+     * A face's wait for its own event's outcome: the owner works in memory only, so this is the
+     * events ahead in the queue; a stopped or stuck owner is an outcome, not a hang.
+     */
+    public static Outcome outcome(CompletableFuture<Outcome> pending) {
+        try {
+            return pending.get(ANSWER_MS, TimeUnit.MILLISECONDS);
+        } catch (TimeoutException e) {
+            return new Outcome(false, "the GameController did not answer within " + ANSWER_MS + " ms");
+        } catch (ExecutionException e) {
+            return new Outcome(false, "failed: " + e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return new Outcome(false, "interrupted");
+        }
+    }
+
+    private CompletableFuture<Outcome> submit(Supplier<Outcome> event) {
+        CompletableFuture<Outcome> done = new CompletableFuture<>();
+        if (!enqueue(() -> {
+            try {
+                Outcome o = event.get();
+                publish();
+                done.complete(o);
+            } catch (RuntimeException e) {
+                done.completeExceptionally(e);
+                throw e;
+            }
+        })) {
+            done.complete(new Outcome(false, "the GameController is stopped"));
+        }
+        return done;
+    }
+
+    private synchronized boolean enqueue(Runnable event) {
+        if (closed) {
+            return false;
+        }
+        events.addLast(event);
+        notifyAll();
+        return true;
+    }
+
+    private synchronized Runnable take() throws InterruptedException {
+        while (events.isEmpty() && !closed) {
+            wait();
+        }
+        return events.pollFirst();
+    }
+
+    private void run() {
+        try {
+            for (Runnable event = take(); event != null; event = take()) {
+                try {
+                    event.run();
+                } catch (RuntimeException e) {
+                    LOG.error("a GameController event failed; the game goes on", e);
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** After an event, on the owner thread: the new snapshot, and the listeners when the game changed. */
+    private RefereeSnapshot publish() {
+        RefereeSnapshot s = RefereeSnapshot.of(game);
+        snapshot = s;
+        if (changed) {
+            changed = false;
+            for (Consumer<RefereeSnapshot> l : listeners) {
+                l.accept(s);
+            }
+        }
+        return s;
+    }
+
+    /** Runs the events already enqueued, then stops the owner; later events are refused. */
+    @Override
+    public void close() {
+        Thread t;
+        synchronized (this) {
+            closed = true;
+            notifyAll();
+            t = owner;
+        }
+        if (t != null && t != Thread.currentThread()) {
+            try {
+                t.join(ANSWER_MS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+}
