@@ -31,10 +31,8 @@ public final class EnvelopeLine {
         b.append(e.kind()).append(' ');
         if (e.message() != null) {
             b.append(text.renderLine(e.message()));
-        } else if (e.channel() == touchline.transport.Channel.FOREIGN) {
-            // another tool's JSON channel: the bytes are the text
-            String json = new String(e.raw(), java.nio.charset.StandardCharsets.UTF_8).replace('\n', ' ');
-            b.append(json.length() > 400 ? json.substring(0, 400) + "…" : json);
+        } else if (e.ros() != null) {
+            b.append(e.ros().typeName()).append(' ').append(e.ros().line(400));
         } else {
             b.append('(').append(e.size()).append(" bytes) ").append(hex.dump(e.raw(), 24).replace('\n', ' '));
         }
