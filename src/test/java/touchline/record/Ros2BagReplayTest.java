@@ -7,6 +7,9 @@ import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import touchline.cli.ExportCommand;
 import touchline.cli.ReplayCommand;
+import touchline.model.store.FieldPlot;
+import touchline.model.store.PlotStore;
+import touchline.protocol.MessageKinds;
 import touchline.protocol.ros2.Ros2Sources;
 import touchline.protocol.ros2.RosMessage;
 import touchline.testing.PythonMcap;
@@ -111,6 +114,27 @@ class Ros2BagReplayTest {
             assertEquals("step 190", byTopic.get("/rosout").get(19).ros().get("msg"));
             assertEquals(60004, ((byte[]) byTopic.get("/camera/compressed").get(3).ros().get("data")).length);
             assertEquals(List.of(), r.events(), "a bag has no game events");
+        }
+    }
+
+    @Test
+    void numericFieldsPlotByPath() throws Exception {
+        try (Recording r = Recording.open(bag)) {
+            FieldPlot plot = new FieldPlot(new MessageKinds(), 1000, T0 / 1000);
+            List<Envelope> all = RecordingFixture.readAll(r);
+            plot.accept(all.get(0));
+            assertTrue(plot.paths("position.x").contains("/pose:pose.position.x"), plot.paths("position").toString());
+            assertTrue(plot.add(Envelope.NO_ROBOT, "/pose:pose.position.x"));
+            assertTrue(plot.add(Envelope.NO_ROBOT, "/pose:pose.position.y"));
+            all.forEach(plot::accept);
+            assertTrue(plot.paths("/joint_states:position[23]").contains("/joint_states:position[23]"));
+            List<PlotStore.SeriesData> data = plot.snapshot();
+            assertEquals(List.of("/pose:pose.position.x", "/pose:pose.position.y"),
+                    data.stream().map(PlotStore.SeriesData::name).toList());
+            assertEquals(N, data.get(0).count());
+            assertEquals(1.5, data.get(0).y()[150], 1e-12);
+            assertEquals(-150.0, data.get(1).y()[150]);
+            assertEquals(1.5, data.get(0).x()[150], 1e-9, "seconds since the plot's origin");
         }
     }
 

@@ -21,16 +21,18 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * "Plot anything": any numeric field of any message kind the robots send (the teams' own
  * types loaded at run time included), per robot, as bounded series — like PlotJuggler. It
  * learns which kinds arrive and offers their numeric field paths ({@code kind:path}); each
- * series the user adds (robot × field path) keeps its last points in a ring. Fed by the
+ * series the user adds (robot × field path) keeps its last points in a ring. ROS 2 and JSON
+ * messages ({@link Envelope#ros()}: a bridge's, a bag's) offer theirs too, by topic
+ * ({@code /odom:pose.pose.position.x}), for the robot of their envelope (none for a bag's). Fed by the
  * Envelope stream (live or replayed alike); read by the plot view once per frame; exported as
  * CSV (time, one column per series).
  */
 public final class FieldPlot implements EnvelopeSink {
 
-    /** One plotted series: a robot and a field path of a kind. */
+    /** One plotted series: a robot (or none: a ROS 2 bag's topic) and a field path of a kind. */
     public record Series(int robotId, String kind, String path) {
         public String name() {
-            return "robot " + robotId + " " + kind + ":" + path;
+            return (robotId == Envelope.NO_ROBOT ? "" : "robot " + robotId + " ") + kind + ":" + path;
         }
     }
 
@@ -38,6 +40,8 @@ public final class FieldPlot implements EnvelopeSink {
     private final int pointsPerSeries;
     private final long originMicros;
     private final Map<String, Descriptor> seenKinds = new TreeMap<>();
+    /** Kinds (topics) of ROS 2 and JSON messages ({@link Envelope#ros()}), with the numeric paths their first message had. */
+    private final Map<String, List<String>> rosKinds = new TreeMap<>();
     private final List<Series> series = new CopyOnWriteArrayList<>();
     private final Map<Series, SeriesRing> rings = new java.util.HashMap<>();
     private long version;
@@ -51,6 +55,10 @@ public final class FieldPlot implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
+        if (e.direction() == Direction.IN && e.ros() != null) {
+            acceptRos(e);
+            return;
+        }
         if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m) || e.robotId() < 0) {
             return;
         }
@@ -76,16 +84,37 @@ public final class FieldPlot implements EnvelopeSink {
                     return;
                 }
             }
-            double v = NumericFields.value(data, s.path());
-            if (Double.isFinite(v)) {
-                synchronized (this) {
-                    SeriesRing ring = rings.get(s);
-                    if (ring != null) {
-                        ring.add((e.timeMicros() - originMicros) / 1e6, v);
-                        version++;
-                    }
+            point(s, e.timeMicros(), NumericFields.value(data, s.path()));
+        }
+    }
+
+    /** Adds {@code v} at {@code timeMicros} to {@code s}'s ring (still there: the view may have removed it) when it is a number. */
+    private void point(Series s, long timeMicros, double v) {
+        if (Double.isFinite(v)) {
+            synchronized (this) {
+                SeriesRing ring = rings.get(s);
+                if (ring != null) {
+                    ring.add((timeMicros - originMicros) / 1e6, v);
+                    version++;
                 }
             }
+        }
+    }
+
+    /** A ROS 2 or JSON message: its kind is the topic, its paths those {@link touchline.protocol.ros2.RosMessage} enumerates. */
+    private void acceptRos(Envelope e) {
+        String kind = e.kind();
+        synchronized (this) {
+            if (!rosKinds.containsKey(kind)) {
+                rosKinds.put(kind, e.ros().numericPaths());
+                kindsVersion++;
+            }
+        }
+        for (Series s : series) {
+            if (s.robotId() != e.robotId() || !s.kind().equals(kind)) {
+                continue;
+            }
+            point(s, e.timeMicros(), e.ros().number(s.path()));
         }
     }
 
@@ -118,6 +147,14 @@ public final class FieldPlot implements EnvelopeSink {
                 }
             }
         });
+        rosKinds.forEach((kind, paths) -> {
+            for (String p : paths) {
+                String full = kind + ":" + p;
+                if (full.toLowerCase(Locale.ROOT).contains(n)) {
+                    out.add(full);
+                }
+            }
+        });
         return out;
     }
 
@@ -135,7 +172,10 @@ public final class FieldPlot implements EnvelopeSink {
         Series s = new Series(robotId, kindAndPath.substring(0, colon), kindAndPath.substring(colon + 1));
         synchronized (this) {
             Descriptor type = seenKinds.get(s.kind());
-            if (type == null || !NumericFields.paths(type).contains(s.path()) || rings.containsKey(s)) {
+            List<String> rosPaths = rosKinds.get(s.kind());
+            boolean known = type != null ? NumericFields.paths(type).contains(s.path())
+                    : rosPaths != null && rosPaths.contains(s.path());
+            if (!known || rings.containsKey(s)) {
                 return false;
             }
             rings.put(s, new SeriesRing(pointsPerSeries));
