@@ -241,12 +241,12 @@ class ReplayViewTest {
         chooseSpeed(50.0);
         robot.clickOn("#replay-play");
         await(20, () -> state().finished());
-        assertEquals(25, state().emitted());
+        assertEquals(50, state().emitted());
         await(5, () -> robot.lookup("#replay-problems").queryAs(ListView.class).getItems().equals(items));
         // the same sentence replay prints
         try (Recording r = Recording.open(foreign)) {
             touchline.record.Player p = new touchline.record.Player(r, e -> { }, new touchline.app.SystemClock());
-            assertEquals(25, p.runToEnd());
+            assertEquals(50, p.runToEnd());
             assertEquals(java.util.List.of(said), r.notes().lines());
         }
     }
