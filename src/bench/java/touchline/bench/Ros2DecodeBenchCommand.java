@@ -127,20 +127,8 @@ final class Ros2DecodeBenchCommand implements Callable<Integer> {
         }
     }
 
-    /** Nanoseconds per call of {@code one}, over about {@link #seconds}. */
     private double perMessage(Runnable one) {
-        long deadline = System.nanoTime() + (long) (seconds * 1e9);
-        long calls = 0;
-        long start = System.nanoTime();
-        long now;
-        do {
-            for (int k = 0; k < 1024; k++) {
-                one.run();
-            }
-            calls += 1024;
-            now = System.nanoTime();
-        } while (now < deadline);
-        return (now - start) / (double) calls;
+        return TagBenchCommand.nanosPerCall(one, seconds);
     }
 
     private static byte[] golden(String name) throws IOException {

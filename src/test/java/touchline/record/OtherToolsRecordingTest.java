@@ -234,7 +234,8 @@ class OtherToolsRecordingTest {
         assertFalse(export[1].contains("Exception"), export[1]);
     }
 
-    private static String[] run(Object command, String... args) {
+    /** Runs a command line; returns {out, err}; fails unless it exits 0. */
+    static String[] run(Object command, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         CommandLine c = new CommandLine(command);

@@ -4,7 +4,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 import touchline.cli.ExportCommand;
 import touchline.cli.ReplayCommand;
 import touchline.model.store.FieldPlot;
@@ -16,8 +15,6 @@ import touchline.testing.PythonMcap;
 import touchline.transport.Channel;
 import touchline.transport.Envelope;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -180,12 +177,6 @@ class Ros2BagReplayTest {
     }
 
     private static String[] run(Object command, String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine c = new CommandLine(command);
-        c.setOut(new PrintWriter(out));
-        c.setErr(new PrintWriter(err));
-        assertEquals(0, c.execute(args), err.toString());
-        return new String[]{out.toString(), err.toString()};
+        return OtherToolsRecordingTest.run(command, args);
     }
 }
