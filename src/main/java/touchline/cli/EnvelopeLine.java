@@ -32,7 +32,7 @@ public final class EnvelopeLine {
         if (e.message() != null) {
             b.append(text.renderLine(e.message()));
         } else if (e.ros() != null) {
-            b.append(e.ros().line(400));
+            b.append(e.ros().typeName()).append(' ').append(e.ros().line(400));
         } else if (e.channel() == touchline.transport.Channel.FOREIGN) {
             // another tool's JSON channel: the bytes are the text
             String json = new String(e.raw(), java.nio.charset.StandardCharsets.UTF_8).replace('\n', ' ');

@@ -6,9 +6,15 @@ import com.google.protobuf.InvalidProtocolBufferException;
 import com.google.protobuf.Message;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageResult;
+import touchline.protocol.ros2.ChannelDecoders;
+import touchline.protocol.ros2.ChannelDecoding;
+import touchline.protocol.ros2.DecodeResult;
+import touchline.protocol.ros2.MessageDecoder;
+import touchline.security.Authenticity;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
+import touchline.transport.Origin;
 
 import java.util.Map;
 import java.util.function.Function;
@@ -16,10 +22,10 @@ import java.util.function.Function;
 /**
  * How the messages of one MCAP channel become Envelopes: a channel Touchline wrote
  * ({@link Touchline}, its metadata says everything), a channel another tool wrote whose
- * messages can still be shown ({@link Foreign}: protobuf with its schema in the file, or
- * JSON text), or a channel whose messages are skipped and counted, with the reason
- * ({@link Skipped}: an encoding this reader does not decode, such as ros2msg/cdr or
- * flatbuffer, a protobuf schema missing or unparsable). A foreign channel's bytes are never
+ * messages can still be shown ({@link Foreign}: protobuf with its schema in the file;
+ * {@link Decoded}: ROS 2 CDR by its ros2msg/ros2idl definition, or JSON), or a channel whose
+ * messages are skipped and counted, with the reason ({@link Skipped}: an encoding this reader
+ * does not decode, such as flatbuffer, a definition or protobuf schema missing or unparsable). A foreign channel's bytes are never
  * decoded as FUmanoids protobuf unless its schema says they are {@code fumanoid.Message}.
  */
 sealed interface ChannelReading {
@@ -34,6 +40,21 @@ sealed interface ChannelReading {
         Envelope envelope(long timeMicros, byte[] data) {
             return new Envelope(timeMicros, Direction.IN, Channel.FOREIGN, null, Envelope.NO_ROBOT, topic,
                     decoder == null ? null : decoder.apply(data), data, null);
+        }
+    }
+
+    /**
+     * Another tool's ROS 2 or JSON channel: {@link Channel#FOREIGN} envelopes named by its topic
+     * carrying the decoded tree in {@link Envelope#ros()}; a message that does not fit its
+     * definition is a malformed envelope with the decoder's reason.
+     */
+    record Decoded(String topic, MessageDecoder decoder) implements ChannelReading {
+
+        Envelope envelope(long timeMicros, byte[] data) {
+            DecodeResult r = decoder.decode(data);
+            return new Envelope(timeMicros, Direction.IN, Channel.FOREIGN, null, Envelope.NO_ROBOT, topic, null, data,
+                    r instanceof DecodeResult.Undecodable u ? u.reason() : null, Origin.LIVE, Authenticity.NOT_CHECKED,
+                    r instanceof DecodeResult.Decoded d ? d.message() : null);
         }
     }
 
@@ -56,11 +77,12 @@ sealed interface ChannelReading {
             }
         }
         String messageEncoding = channel.messageEncoding();
-        if (messageEncoding.equals("json")) {
-            return new Foreign(channel.topic(), null);
-        }
         if (!messageEncoding.equals("protobuf")) {
-            return new Skipped(channel.topic(), encoding, "encoding not supported");
+            ChannelDecoding d = new ChannelDecoders().decoding(channel.topic(), messageEncoding,
+                    schema == null ? "" : schema.name(), schema == null ? "" : schema.encoding(),
+                    schema == null ? new byte[0] : schema.data());
+            return d instanceof ChannelDecoding.Ready r ? new Decoded(channel.topic(), r.decoder())
+                    : new Skipped(channel.topic(), encoding, ((ChannelDecoding.Unsupported) d).reason());
         }
         if (schema == null || !schema.encoding().equals("protobuf")) {
             return new Skipped(channel.topic(), encoding, "protobuf without a protobuf schema");

@@ -24,7 +24,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * the message kinds given (Touchline's own plus the team types the recording carries in
  * its schemas), so consumers get {@link Envelope#message()} as from a live transport.
  * Channels written by other tools (no Touchline metadata) play as {@link touchline.transport.Channel#FOREIGN}
- * envelopes where they can (protobuf with its schema in the file, JSON text); the others are
+ * envelopes where they can (protobuf with its schema in the file; ROS 2 CDR by its ros2msg or ros2idl
+ * definition and JSON, decoded into {@link Envelope#ros()}); the others are
  * skipped and counted per channel in {@link #notes()}.
  */
 public final class Recording implements Closeable {
@@ -191,6 +192,9 @@ public final class Recording implements Closeable {
         if (reading instanceof ChannelReading.Foreign f) {
             return f.envelope(time, m.data());
         }
+        if (reading instanceof ChannelReading.Decoded d) {
+            return d.envelope(time, m.data());
+        }
         if (!(reading instanceof ChannelReading.Touchline t)) {
             return null;
         }
@@ -200,7 +204,7 @@ public final class Recording implements Closeable {
                 byte[] raw = layout.frame(key.framing(), m.data());
                 Message message = codec.decode(m.data()) instanceof MessageResult.Decoded d ? d.message() : null;
                 return new Envelope(time, key.direction(), key.channel(), key.peer(), key.robotId(), key.kind(),
-                        message, raw, null, key.origin());
+                        message, raw, null);
             }
             case EnvelopeLayout.MALFORMED -> {
                 Object[] parts = EnvelopeLayout.parseMalformed(m.data());
@@ -209,11 +213,11 @@ public final class Recording implements Closeable {
                     return null;
                 }
                 return new Envelope(time, key.direction(), key.channel(), key.peer(), key.robotId(), key.kind(),
-                        null, (byte[]) parts[1], (String) parts[0], key.origin());
+                        null, (byte[]) parts[1], (String) parts[0]);
             }
             default -> {
                 return new Envelope(time, key.direction(), key.channel(), key.peer(), key.robotId(), key.kind(),
-                        null, m.data(), null, key.origin());
+                        null, m.data(), null);
             }
         }
     }

@@ -19,7 +19,7 @@ public enum Channel {
     /**
      * A message on a channel another tool wrote into a recording (replay only, never live):
      * kind = the MCAP topic, raw = the message's bytes, message = the decoded protobuf message
-     * (by the schema in the file), or null for a JSON channel, whose raw bytes are its text.
+     * (by the schema in the file), ros = the decoded ROS 2 (CDR) or JSON message.
      */
     FOREIGN,
     /**

@@ -22,16 +22,19 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * "Plot anything": any numeric field of any message kind the robots send (the teams' own
  * types loaded at run time included), per robot, as bounded series — like PlotJuggler. It
  * learns which kinds arrive and offers their numeric field paths ({@code kind:path}); each
- * series the user adds (robot × field path) keeps its last points in a ring. Fed by the
+ * series the user adds (robot × field path) keeps its last points in a ring. ROS 2 and JSON
+ * messages ({@link Envelope#ros()}: a bridge's, a bag's, a bridged robot's replayed) offer theirs
+ * too, by topic ({@code /odom:pose.pose.position.x}), for the robot of their envelope (none for a
+ * bag's). Fed by the
  * Envelope stream (live or replayed alike); read by the plot view once per frame; exported as
  * CSV (time, one column per series).
  */
 public final class FieldPlot implements EnvelopeSink {
 
-    /** One plotted series: a robot and a field path of a kind. */
+    /** One plotted series: a robot (or none: a ROS 2 bag's topic) and a field path of a kind. */
     public record Series(int robotId, String kind, String path) {
         public String name() {
-            return "robot " + robotId + " " + kind + ":" + path;
+            return (robotId == Envelope.NO_ROBOT ? "" : "robot " + robotId + " ") + kind + ":" + path;
         }
     }
 
@@ -53,7 +56,8 @@ public final class FieldPlot implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        if (e.direction() != Direction.IN || e.robotId() < 0) {
+        // a bag's ROS 2 channel belongs to no robot: plotted as robot -1
+        if (e.direction() != Direction.IN || (e.robotId() < 0 && e.ros() == null)) {
             return;
         }
         Fumanoid.Message m = e.message() instanceof Fumanoid.Message f ? f : null;

@@ -39,7 +39,7 @@ public final class DefinitionParser {
         try {
             Map<String, MessageType> types = switch (encoding) {
                 case "ros2msg" -> new MsgParser().parse(root, text);
-                case "ros2idl" -> new IdlParser().parse(text);
+                case "ros2idl" -> new IdlParser(BUILT_IN.keySet()).parse(text);
                 default -> throw new DefinitionException(0, "schema encoding '" + MsgParser.cut(encoding)
                         + "' is not ros2msg or ros2idl");
             };
@@ -93,13 +93,11 @@ public final class DefinitionParser {
         MessageType t = types.get(name);
         long size = t.fields().isEmpty() ? 1 : 0;
         for (Field f : t.fields()) {
-            long element = f.isMessage() ? minSize(f.typeName(), types, known, path)
+            boolean inline = f.shape() == Field.Shape.SINGLE || f.shape() == Field.Shape.FIXED_ARRAY;
+            // a sequence is its count on the wire (its elements may be none): no recursion through it
+            long element = !inline ? 4 : f.isMessage() ? minSize(f.typeName(), types, known, path)
                     : f.primitive().numeric() ? f.primitive().size() : 4;
-            long fieldSize = switch (f.shape()) {
-                case SINGLE -> element;
-                case FIXED_ARRAY -> multiply(element, f.bound());
-                default -> 4;
-            };
+            long fieldSize = f.shape() == Field.Shape.FIXED_ARRAY ? multiply(element, f.bound()) : element;
             size = size > Long.MAX_VALUE - fieldSize ? Long.MAX_VALUE : size + fieldSize;
         }
         path.remove(name);

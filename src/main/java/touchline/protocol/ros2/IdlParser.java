@@ -35,8 +35,14 @@ final class IdlParser {
     /** A member as declared, its struct type not yet resolved. */
     private record Member(String name, Alias type) { }
 
+    private final java.util.Set<String> builtIn;
     private List<Token> tokens;
     private int at;
+
+    /** {@code builtIn}: types a schema may name without defining them ({@code builtin_interfaces/msg/Time}). */
+    IdlParser(java.util.Set<String> builtIn) {
+        this.builtIn = builtIn;
+    }
     private final Map<String, Alias> typedefs = new HashMap<>();
     private final Map<String, List<Member>> structs = new LinkedHashMap<>();
     private final Map<String, List<MessageType.Constant>> constants = new HashMap<>();
@@ -53,10 +59,11 @@ final class IdlParser {
                 Alias a = m.type();
                 String typeName = null;
                 if (a.primitive() == null) {
-                    typeName = a.candidates().stream().filter(structs::containsKey).findFirst().orElse(null);
+                    typeName = a.candidates().stream().filter(c -> structs.containsKey(c) || builtIn.contains(c))
+                            .findFirst().orElse(null);
                     if (typeName == null) {
                         throw new DefinitionException(a.line(), "the type "
-                                + a.candidates().get(a.candidates().size() - 1).replace("/", "::") + " of "
+                                + a.candidates().get(0).replace("/", "::") + " of "
                                 + m.name() + " is not defined in the schema");
                     }
                 }

@@ -106,7 +106,7 @@ public final class NetworkView implements View {
         if (e.message() != null) {
             body = messageText.render(e.message());
         } else if (e.ros() != null) {
-            body = e.ros().text(MessageText.MAX_CHARS);
+            body = e.ros().typeName() + "\n" + e.ros().text(MessageText.MAX_CHARS);
         } else {
             body = "(no decoded message)";
         }
