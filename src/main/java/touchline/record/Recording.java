@@ -192,6 +192,9 @@ public final class Recording implements Closeable {
         if (reading instanceof ChannelReading.Foreign f) {
             return f.envelope(time, m.data());
         }
+        if (reading instanceof ChannelReading.Bridged b) {
+            return b.envelope(time, m.data());
+        }
         if (reading instanceof ChannelReading.Decoded d) {
             return d.envelope(time, m.data());
         }
@@ -204,7 +207,7 @@ public final class Recording implements Closeable {
                 byte[] raw = layout.frame(key.framing(), m.data());
                 Message message = codec.decode(m.data()) instanceof MessageResult.Decoded d ? d.message() : null;
                 return new Envelope(time, key.direction(), key.channel(), key.peer(), key.robotId(), key.kind(),
-                        message, raw, null);
+                        message, raw, null, key.origin());
             }
             case EnvelopeLayout.MALFORMED -> {
                 Object[] parts = EnvelopeLayout.parseMalformed(m.data());
@@ -213,11 +216,11 @@ public final class Recording implements Closeable {
                     return null;
                 }
                 return new Envelope(time, key.direction(), key.channel(), key.peer(), key.robotId(), key.kind(),
-                        null, (byte[]) parts[1], (String) parts[0]);
+                        null, (byte[]) parts[1], (String) parts[0], key.origin());
             }
             default -> {
                 return new Envelope(time, key.direction(), key.channel(), key.peer(), key.robotId(), key.kind(),
-                        null, m.data(), null);
+                        null, m.data(), null, key.origin());
             }
         }
     }

@@ -137,6 +137,58 @@ class RosBridgesIntegrationTest {
     }
 
     @Test
+    void touchlineReplaysItsOwnRecordingOfABridgedRobotDecodedAsThatRobot(@org.junit.jupiter.api.io.TempDir
+                                                                           java.nio.file.Path dir) throws Exception {
+        java.nio.file.Path file = dir.resolve("bridged.mcap");
+        try (Console console = console(0);
+             SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1", "--centre", "1.5,-1")) {
+            console.recordings().start(file);
+            int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
+            Await.until("poses, log lines, joints and the robot state heard", () -> robot(console, id)
+                    .filter(r -> r.packets() > 60 && r.hasPosition() && !r.gameState().isEmpty()).isPresent());
+            console.recordings().stop();
+        }
+        List<Envelope> replayed = new java.util.ArrayList<>();
+        try (touchline.record.Recording r = touchline.record.Recording.open(file)) {
+            touchline.record.Recording.Cursor c = r.cursor(Long.MIN_VALUE);
+            for (Envelope e = c.next(); e != null; e = c.next()) {
+                replayed.add(e);
+            }
+            java.io.StringWriter csv = new java.io.StringWriter();
+            new touchline.record.ChannelCsvExport(r).write("/bridge/1001/pose", csv);
+            assertTrue(csv.toString().lines().findFirst().orElse("").contains("pose.position.x"), csv.toString());
+        }
+        List<Envelope> poses = replayed.stream().filter(e -> e.kind().equals("/pose")).toList();
+        assertFalse(poses.isEmpty());
+        for (Envelope pose : poses) {
+            assertEquals(Channel.BRIDGE, pose.channel());
+            assertEquals(RosBridges.FIRST_ROBOT, pose.robotId(), "the robot it was");
+            assertNull(pose.error());
+            assertEquals("geometry_msgs/msg/PoseStamped", pose.ros().typeName(), "decoded, not bytes");
+            // the ellipse of 1.2 m x 0.8 m around (1.5, -1) m the robot walks
+            assertTrue(Math.abs(pose.ros().number("pose.position.x") - 1.5) <= 1.2001, pose.ros().line(200));
+        }
+        FieldPlot plot = new FieldPlot(new touchline.protocol.MessageKinds(), PlotStore.DEFAULT_POINTS,
+                replayed.get(0).timeMicros());
+        plot.accept(poses.get(0));
+        assertTrue(plot.add(RosBridges.FIRST_ROBOT, "/pose:pose.position.x"), plot.paths("/pose").toString());
+        replayed.forEach(plot::accept);
+        assertEquals("robot 1001 /pose:pose.position.x", plot.snapshot().get(0).name());
+        assertEquals(poses.size(), plot.snapshot().get(0).count());
+
+        // replayed into a console: the bridged robot again, its pose and game state read from its messages
+        try (Console viewer = console(0)) {
+            touchline.app.Replay replay = viewer.replays().open(file);
+            assertTrue(replay.runFor(Long.MAX_VALUE) >= replayed.size());
+            RobotSnapshot again = viewer.field().robots().robot(RosBridges.FIRST_ROBOT, touchline.transport.Origin.REPLAY)
+                    .orElseThrow();
+            assertTrue(again.hasPosition() && Math.abs(again.x() - 1500) <= 1201, again.x() + ", " + again.y());
+            assertEquals("PLAYING", again.gameState());
+            assertEquals(0, again.malformed());
+        }
+    }
+
+    @Test
     void aParameterSetAndAPublishAreHeldDuringPlayingWithTheWordsOfADebugOptionAndGoOutAfter() throws Exception {
         int gcPort = freeLoopbackPort();
         Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
