@@ -48,6 +48,8 @@ public final class RemoteStream implements AutoCloseable {
     static final Duration FIRST_BACKOFF = Duration.ofMillis(250);
     /** The largest message taken from a server: more than a raw camera frame; anything bigger is dropped unread. */
     static final int MAX_MESSAGE_BYTES = 16 << 20;
+    /** The most channels read from one connection's advertises (a robot has tens; a hostile server may claim millions). */
+    static final int MAX_CHANNELS = 4096;
     /** A Touchline server sends its time ten times a second; this long without a word, the connection is dead. */
     static final Duration SILENCE = Duration.ofSeconds(15);
     static final Duration HANDSHAKE = Duration.ofSeconds(5);
@@ -409,6 +411,11 @@ public final class RemoteStream implements AutoCloseable {
                     }
                     JSONArray subscribe = new JSONArray();
                     for (int i = 0; i < list.length(); i++) {
+                        if (channels.size() >= MAX_CHANNELS || advertised.size() >= MAX_CHANNELS) {
+                            unusable("an advertise beyond the limit of " + MAX_CHANNELS + " channels: "
+                                    + (list.length() - i) + " not read");
+                            break;
+                        }
                         JSONObject c = list.optJSONObject(i);
                         if (c == null) {
                             unusable("an advertised channel that is not a JSON object");
