@@ -95,7 +95,7 @@ public final class Bridge implements AutoCloseable {
     public BridgeStatus status() {
         RemoteStatus s = stream.status();
         return new BridgeStatus(name, robotId, s, stream.serverName(), stream.subprotocol(), stream.losses(),
-                lastCommand);
+                lastCommand, channels.undecodable());
     }
 
     /** The encoding and schema the server advertised for {@code topic}, or null (for the recorder). */

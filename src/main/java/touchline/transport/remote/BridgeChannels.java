@@ -24,6 +24,8 @@ final class BridgeChannels implements ChannelReader {
     private final MicrosClock clock;
     private final ChannelDecoders decoders = new ChannelDecoders();
     private final java.util.Map<String, BridgedSchema> schemas = new java.util.concurrent.ConcurrentHashMap<>();
+    /** The channels made, by topic (at most {@link RemoteStream#MAX_CHANNELS} a connection), for their counts. */
+    private final java.util.Map<String, BridgedChannel> made = new java.util.concurrent.ConcurrentHashMap<>();
 
     BridgeChannels(int robotId, InetSocketAddress peer, MicrosClock clock) {
         this.robotId = robotId;
@@ -54,17 +56,33 @@ final class BridgeChannels implements ChannelReader {
                     clock);
             schemas.put(topic, new BridgedSchema(encoding, schemaName, schemaEncoding,
                     java.util.Base64.getDecoder().decode(schema)));
-            return bridged;
+            return made(bridged);
         }
         ChannelDecoding d = decoders.decoding(topic, encoding, schemaName, schemaEncoding,
                 schema.getBytes(StandardCharsets.UTF_8));
         if (d instanceof ChannelDecoding.Ready r) {
             schemas.put(topic, new BridgedSchema(encoding, schemaName, schemaEncoding,
                     schema.getBytes(StandardCharsets.UTF_8)));
-            return new BridgedChannel(id, topic, encoding, r.decoder(), robotId, peer, clock);
+            return made(new BridgedChannel(id, topic, encoding, r.decoder(), robotId, peer, clock));
         }
         ChannelDecoding.Unsupported u = (ChannelDecoding.Unsupported) d;
         throw new IllegalArgumentException(u.encoding() + ": " + u.reason());
+    }
+
+    private BridgedChannel made(BridgedChannel c) {
+        made.put(c.topic(), c);
+        return c;
+    }
+
+    /** Messages that did not decode, by topic: only the topics with any, sorted. */
+    java.util.SortedMap<String, Long> undecodable() {
+        java.util.SortedMap<String, Long> out = new java.util.TreeMap<>();
+        made.forEach((topic, c) -> {
+            if (c.undecodable() > 0) {
+                out.put(topic, c.undecodable());
+            }
+        });
+        return out;
     }
 
     /** The schema the server advertised for {@code topic}, or null. */

@@ -11,9 +11,10 @@ package touchline.transport.remote;
  * @param subprotocol {@code foxglove.sdk.v1} or {@code foxglove.websocket.v1}; "" before a connection
  * @param losses      connections lost since the start (each reconnected after the backoff)
  * @param lastCommand the newest command's fate in words; "" when none
+ * @param undecodable messages that did not fit their channel's definition, by topic (only topics with any)
  */
 public record BridgeStatus(String name, int robotId, RemoteStatus connection, String serverName, String subprotocol,
-                           long losses, String lastCommand) {
+                           long losses, String lastCommand, java.util.SortedMap<String, Long> undecodable) {
 
     public boolean online() {
         return connection.state() == RemoteStatus.State.CONNECTED;
@@ -24,6 +25,8 @@ public record BridgeStatus(String name, int robotId, RemoteStatus connection, St
         String counts = connection.channels() + " channels, " + connection.received() + " messages"
                 + (connection.unusable() == 0 ? "" : ", " + connection.unusable() + " unusable, the last: "
                 + connection.problem())
+                + (undecodable.isEmpty() ? "" : ", undecodable: " + undecodable.entrySet().stream()
+                        .map(u -> u.getKey() + " " + u.getValue()).collect(java.util.stream.Collectors.joining(", ")))
                 + (losses == 0 ? "" : ", " + losses + " reconnection" + (losses == 1 ? "" : "s"));
         return name + " " + connection.url() + " " + switch (connection.state()) {
             case CONNECTING -> "connecting…";

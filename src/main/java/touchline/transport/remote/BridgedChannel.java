@@ -32,6 +32,7 @@ final class BridgedChannel implements StreamChannel {
     private final int robotId;
     private final InetSocketAddress peer;
     private final MicrosClock clock;
+    private final java.util.concurrent.atomic.AtomicLong undecodable = new java.util.concurrent.atomic.AtomicLong();
 
     /** A ROS 2 (CDR) or JSON channel, decoded by {@code ros}. */
     BridgedChannel(int id, String topic, String encoding, MessageDecoder ros, int robotId, InetSocketAddress peer,
@@ -84,7 +85,13 @@ final class BridgedChannel implements StreamChannel {
         }
     }
 
+    /** Messages on this channel that did not decode. */
+    long undecodable() {
+        return undecodable.get();
+    }
+
     private Envelope undecodable(long now, byte[] payload, String why) {
+        undecodable.incrementAndGet();
         return new Envelope(now, Direction.IN, Channel.BRIDGE, peer, robotId, topic, null, payload,
                 encoding + " on " + topic + " does not decode: " + why, Origin.LIVE);
     }

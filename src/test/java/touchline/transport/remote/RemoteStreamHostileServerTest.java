@@ -239,6 +239,8 @@ class RemoteStreamHostileServerTest {
             // the three refused channels count against the limit too: it bounds every id remembered
             assertEquals(RemoteStream.MAX_CHANNELS - 3, s.channels(), "the channels beyond the limit are not read");
             assertEquals(1, server.connections(), "bad input does not cost the connection");
+            assertEquals(java.util.Map.of("/pose", 1L, "/values", 1L), bridge.status().undecodable(), "counted per channel");
+            assertTrue(bridge.status().describe().contains("undecodable: /pose 1, /values 1"), bridge.status().describe());
         }
     }
 
