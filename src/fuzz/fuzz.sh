@@ -13,7 +13,7 @@ cd "$ROOT"
 say() { printf '\033[1;34m[touchline fuzz]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[touchline fuzz]\033[0m %s\n' "$*" >&2; exit 1; }
 
-JAVA_TARGETS=(framing message gamecontroller return-packet reliable mixed-value jpeg nao-param trailer recording serve-client gc-monitor)
+JAVA_TARGETS=(framing message gamecontroller return-packet reliable mixed-value jpeg nao-param trailer recording serve-client gc-monitor ros2-definition ros2-cdr)
 C_TARGETS=(gs1500 process auth)
 minutes=1
 only=""

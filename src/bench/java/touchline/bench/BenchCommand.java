@@ -22,6 +22,7 @@ import picocli.CommandLine.Command;
                 SubscriberCostBench.class,
                 TagBenchCommand.class,
                 PresentBenchCommand.class,
+                Ros2DecodeBenchCommand.class,
         })
 public final class BenchCommand implements Runnable {
 

@@ -78,6 +78,11 @@ final class TagBenchCommand implements Callable<Integer> {
 
     /** Nanoseconds per call of {@code one}, over about {@link #seconds}. */
     private double perDatagram(Runnable one) {
+        return nanosPerCall(one, seconds);
+    }
+
+    /** Nanoseconds per call of {@code one}, calling it for about {@code seconds} (also the CDR benchmark's measure). */
+    static double nanosPerCall(Runnable one, double seconds) {
         long end = System.nanoTime() + (long) (seconds * 1e9);
         long calls = 0;
         long start = System.nanoTime();

@@ -9,7 +9,7 @@ final class Targets {
     private final List<FuzzTarget> all = List.of(new FramingTarget(), new MessageTarget(), new GameStateTarget(),
             new ReturnPacketTarget(), new ReliableStreamTarget(), new MixedValueTarget(), new JpegHeaderTarget(),
             new ParamSyntaxTarget(), new TrailerTarget(), new RecordingTarget(), new ServeClientTarget(),
-            new GcMonitorTarget());
+            new GcMonitorTarget(), new Ros2DefinitionTarget(), new Ros2CdrTarget());
 
     List<FuzzTarget> all() {
         return all;

@@ -1,5 +1,6 @@
 package touchline.app;
 
+import touchline.app.bridges.RosBridges;
 import touchline.app.game.MatchMode;
 import touchline.transport.MicrosClock;
 
@@ -31,6 +32,7 @@ public final class Console implements AutoCloseable {
     private final Replays replays;
     private final TeamBudget budget;
     private final LiveServing serving;
+    private final RosBridges bridges;
     private final ScheduledExecutorService ticker;
 
     public Console(ConsoleConfig config) {
@@ -53,7 +55,8 @@ public final class Console implements AutoCloseable {
         field.bus().subscribe(field.unpacking(new ReportedGameState(matchMode))); // a digest's Status too
         FieldGate gate = new FieldGate(field, matchMode);
         referee = new Referee(config, field.live(), matchMode, clock, realClock, gate::commandsOff);
-        recordings = new Recordings(field.bus());
+        bridges = new RosBridges(field, field.live(), matchMode, gate.forBridges());
+        recordings = new Recordings(field.bus(), bridges::schemaOf);
         naos = new Naos(field, gate, clock, realClock, replay);
         replays = new Replays(field, naos, realClock, replay);
         budget = new TeamBudget(field);
@@ -81,6 +84,7 @@ public final class Console implements AutoCloseable {
             referee.tick();
             field.tickWaits();
             switches.keepMatch();
+            bridges.tick();
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }
@@ -106,6 +110,8 @@ public final class Console implements AutoCloseable {
     public TeamSchemas teamSchemas() { return teamSchemas; }
     /** Serving the stream to viewers. */
     public LiveServing serving() { return serving; }
+    /** The team's ROS 2 robots behind their Foxglove bridges. */
+    public RosBridges bridges() { return bridges; }
 
     /** Closes the services in the reverse order of their making. */
     @Override
@@ -116,6 +122,7 @@ public final class Console implements AutoCloseable {
         replays.close();
         naos.close();
         recordings.close();
+        bridges.close();
         ticker.shutdownNow();
         referee.close();
         field.close();

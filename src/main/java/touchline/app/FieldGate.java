@@ -40,6 +40,11 @@ final class FieldGate {
         return commandsOff;
     }
 
+    /** The gate for ROS 2 bridges' commands: held ones go out when play stops ({@link Hold#queued()}), refused when shut. */
+    SendGate forBridges() {
+        return () -> gate.hold();
+    }
+
     /** The gate for NAO calls: held NAO commands are dropped, never sent when play stops (NaoLink says so: {@link Hold#dropped()}). */
     SendGate forNao() {
         return () -> gate.hold();

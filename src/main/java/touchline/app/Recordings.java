@@ -4,6 +4,7 @@ import touchline.record.EnvelopeWriter;
 import touchline.record.Recorder;
 import touchline.record.RecorderStats;
 import touchline.transport.LiveStream;
+import touchline.transport.remote.BridgedSchema;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -17,11 +18,14 @@ import java.util.Optional;
 public final class Recordings {
 
     private final LiveStream bus;
+    private final BridgedSchema.Source bridged;
     private Recorder recorder;
     private AutoCloseable subscription;
 
-    Recordings(LiveStream bus) {
+    /** @param bridged a bridged robot's channel's own encoding and schema, which its recorded channel keeps */
+    Recordings(LiveStream bus, BridgedSchema.Source bridged) {
         this.bus = bus;
+        this.bridged = bridged;
     }
 
     /** Starts recording every envelope (in and out, live or replayed) into an MCAP file. */
@@ -29,10 +33,13 @@ public final class Recordings {
         return start(file, EnvelopeWriter.Options.defaults());
     }
 
-    /** As {@link #start(Path)}, with the writer's options (split, compression, camera rate, team files). */
+    /**
+     * As {@link #start(Path)}, with the writer's options (split, compression, camera rate, team files);
+     * a bridged robot's channels keep their own encoding and schema (ros2msg/cdr, json, protobuf).
+     */
     public synchronized Recorder start(Path file, EnvelopeWriter.Options options) throws IOException {
         stop();
-        recorder = new Recorder(file, options);
+        recorder = new Recorder(file, options.withBridgedSchemas(bridged));
         subscription = bus.subscribe(recorder);
         return recorder;
     }

@@ -7,7 +7,9 @@
  * {@code RemoteView}, {@code LiveServing} (the live server) and {@code TeamSchemas} (the team's own message
  * types); the gate every command passes ({@code FieldGate}); the one wall clock ({@code SystemClock}); and what the
  * faces show about the run ({@code RuntimeReport}, {@code ProductVersion}). A face takes the services it needs,
- * never the {@code Console}.
+ * never the {@code Console}. In {@code app.bridges}: the team's ROS 2 robots behind their Foxglove bridges, a
+ * service like the others ({@code RosBridges}, named by {@code BridgeAddress} and a {@code TeamFile};
+ * {@code ServerKind} tells a lone {@code --connect URL} of another Touchline from a bridge).
  * <p>
  * May depend on: serve, game, transport, model, record, security and protocol. Only the faces (ui, cli) use it.
  */

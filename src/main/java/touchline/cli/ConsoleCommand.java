@@ -56,7 +56,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw StartFailure.badInput(e.getMessage() + " (30 is the standard; 10 is plenty to watch a game on battery).");
         }
+        remote.check();
         try (Console console = remote.remote() ? remote.startViewing() : udp.startConsole()) {
+            remote.connectBridges(console.bridges());
             budget.guard(console.teamBudget(), udp.bind);
             StartMarks marks = new StartMarks(System.err, console.field().clock());
             console.field().robots().addPresenceListener(marks);

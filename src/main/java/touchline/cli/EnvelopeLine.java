@@ -31,6 +31,8 @@ public final class EnvelopeLine {
         b.append(e.kind()).append(' ');
         if (e.message() != null) {
             b.append(text.renderLine(e.message()));
+        } else if (e.ros() != null) {
+            b.append(e.ros().typeName()).append(' ').append(e.ros().line(400));
         } else if (e.channel() == touchline.transport.Channel.FOREIGN) {
             // another tool's JSON channel: the bytes are the text
             String json = new String(e.raw(), java.nio.charset.StandardCharsets.UTF_8).replace('\n', ' ');

@@ -43,6 +43,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
         MonitorTable monitorTable = new MonitorTable();
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
+        remote.check();
         try (Console console = remote.remote() ? remote.startViewing() : new Console(udp.config())) {
             RobotTable table = new RobotTable(console.field().matchRule()::reading);
             if (!quiet) {
@@ -52,6 +53,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                     }
                 });
             }
+            remote.connectBridges(console.bridges());
             if (!remote.remote()) {
                 udp.start(console);
                 new FirstListenLines(spec.commandLine().getErr(), "listen").follow(console.referee().matchMode());
@@ -71,6 +73,7 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                     lastRemote[0] = d;
                     System.err.println(d);
                 });
+                console.bridges().statuses().forEach(b -> System.err.println("bridge " + b.describe()));
                 synchronized (out) {
                     table.print(out, console.field().robots().robots(), console.field().robots().sources(), console.field().robots().notes());
                     monitorTable.print(out, console.referee().monitorReport(console.field().clock().nowMicros() / 1000));

@@ -84,7 +84,7 @@ final class OptionsCommand implements Callable<Integer> {
                 err.println(console.field().robots().robot(robot).isPresent()
                         ? "robot " + robot + " did not send its option list within " + timeoutSeconds + " s"
                         : remote.remote() ? "robot " + robot + " was not seen within " + timeoutSeconds + " s through "
-                        + remote.connect + " (" + console.remote().status().map(Object::toString).orElse("") + ")"
+                        + String.join(" ", remote.connect) + " (" + console.remote().status().map(Object::toString).orElse("") + ")"
                         : "robot " + robot + " was not seen within " + timeoutSeconds + " s (is it sending to port "
                         + console.field().port() + "?)");
                 return 2;
@@ -139,7 +139,7 @@ final class OptionsCommand implements Callable<Integer> {
     }
 
     /** Sends the robot its match items (the digest's content in play); 1 unknown name, 4 held or not sent. */
-    private int choose(touchline.model.DebugOptionSession session) {
+    private int choose(touchline.model.DebugOptionSession session) throws InterruptedException {
         if (remote.remote()) {
             err.println("--match: choose match items on the serving console (its Debug options view), not through it");
             return 1;

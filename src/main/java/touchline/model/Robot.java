@@ -28,6 +28,9 @@ final class Robot {
     String lastForgery = "";
     int bootId;
     boolean hasBootId;
+    /** A robot behind a Foxglove bridge: named by the console, its facts read from its ROS 2 messages. */
+    boolean bridged;
+    String givenName;
 
     Robot(int id, Origin origin, long firstSeenMicros) {
         this.id = id;
@@ -36,6 +39,37 @@ final class Robot {
     }
 
     /** @return a note when the robot's address changed, else null */
+    String take(Envelope e, RosReadings readings) {
+        if (e.ros() != null) {
+            status = read(status, e.kind(), e.ros(), readings);
+        }
+        return take(e);
+    }
+
+    /** The robot's status with what a ROS 2 message says of it (pose, battery, game state) put in. */
+    private static Fumanoid.Status read(Fumanoid.Status s, String topic, touchline.protocol.ros2.RosMessage m,
+                                        RosReadings readings) {
+        Fumanoid.Status.Builder b = null;
+        var pose = readings.pose(topic, m);
+        if (pose.isPresent()) {
+            b = s.toBuilder();
+            // ROS 2 speaks metres (REP 103), the field and the small robots millimetres
+            b.getRobotPositionBuilder().setX((float) (pose.get().x() * 1000)).setY((float) (pose.get().y() * 1000))
+                    .setTheta((float) pose.get().theta());
+        }
+        var battery = readings.batteryPercent(topic, m);
+        if (battery.isPresent() && (!s.hasBatteryPercent() || s.getBatteryPercent() != battery.get())) {
+            b = b == null ? s.toBuilder() : b;
+            b.setBatteryPercent(battery.get());
+        }
+        var game = readings.gameState(topic, m);
+        if (game.isPresent() && !game.get().equals(s.getGameState())) {
+            b = b == null ? s.toBuilder() : b;
+            b.setGameState(game.get());
+        }
+        return b == null ? s : b.build();
+    }
+
     String take(Envelope e) {
         String note = null;
         if (address != null && e.peer() != null && !address.equals(e.peer())) {
@@ -83,7 +117,7 @@ final class Robot {
     RobotSnapshot snapshot(long now) {
         Fumanoid.Status s = status;
         boolean hasPosition = s.hasRobotPosition();
-        return new RobotSnapshot(id, s.hasRobotName() ? s.getRobotName() : "robot " + id,
+        return new RobotSnapshot(id, s.hasRobotName() ? s.getRobotName() : givenName != null ? givenName : "robot " + id,
                 s.hasTeamID() ? s.getTeamID() : RobotSnapshot.UNKNOWN,
                 s.hasBatteryPercent() ? s.getBatteryPercent() : RobotSnapshot.UNKNOWN,
                 s.getActiveRole(), s.getCurrentState(), s.getGameState(),

@@ -45,6 +45,7 @@ public final class RobotRegistry {
     private final List<RobotPresence> presence = new CopyOnWriteArrayList<>();
     private final List<String> notes = new ArrayList<>();
     private long version;
+    private volatile RosReadings rosReadings = new RosReadings();
 
     private static final class Source {
         long packets;
@@ -131,13 +132,15 @@ public final class RobotRegistry {
                         robots.put(e.robotId(), robot);
                         first = true;
                     }
-                    String note = robot.take(e);
+                    robot.bridged |= e.channel() == touchline.transport.Channel.BRIDGE;
+                    String note = robot.take(e, rosReadings);
                     if (note != null) {
                         note(note);
                     }
                     if (!robot.online) {
                         robot.online = true;
-                        cameOnline = tellsPresence ? robot.id : Envelope.NO_ROBOT;
+                        // a bridged robot is no UDP robot: nothing is asked of it when it comes online
+                        cameOnline = tellsPresence && !robot.bridged ? robot.id : Envelope.NO_ROBOT;
                     }
                 }
                 version++;
@@ -159,6 +162,24 @@ public final class RobotRegistry {
         }
     }
 
+    /**
+     * A robot behind a Foxglove bridge, in the table before its first message: named {@code name},
+     * at {@code peer} (its messages' peer, so a message that does not decode counts against it).
+     * Its ROS 2 messages tell its pose, battery and game state ({@link RosReadings}).
+     */
+    public synchronized void addBridged(int id, String name, InetSocketAddress peer) {
+        Robot r = robots.computeIfAbsent(id, k -> new Robot(k, Origin.LIVE, clock.nowMicros()));
+        r.bridged = true;
+        r.givenName = name;
+        r.address = r.address == null ? peer : r.address;
+        version++;
+    }
+
+    /** What the robots' ROS 2 messages are read as beyond their types (the user's mapping file). */
+    public void useRosMapping(RosMapping mapping) {
+        rosReadings = new RosReadings(mapping);
+    }
+
     /** Marks robots offline whose keep-alives stopped; call a few times a second. */
     public void tick() {
         long now = clock.nowMicros();
@@ -168,7 +189,9 @@ public final class RobotRegistry {
             for (Robot r : robots.values()) {
                 if (r.online && now - r.lastSeenMicros > offlineAfterMicros) {
                     r.online = false;
-                    wentOffline.add(r.id);
+                    if (!r.bridged) {
+                        wentOffline.add(r.id);
+                    }
                     version++;
                 }
             }

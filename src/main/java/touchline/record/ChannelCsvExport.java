@@ -9,6 +9,11 @@ import com.google.protobuf.DynamicMessage;
 import com.google.protobuf.ExtensionRegistry;
 import com.google.protobuf.InvalidProtocolBufferException;
 import com.google.protobuf.Message;
+import touchline.protocol.ros2.ChannelDecoders;
+import touchline.protocol.ros2.ChannelDecoding;
+import touchline.protocol.ros2.DecodeResult;
+import touchline.protocol.ros2.MessageDecoder;
+import touchline.protocol.ros2.RosMessage;
 
 import java.io.IOException;
 import java.io.Writer;
@@ -27,7 +32,9 @@ import java.util.Map;
  * indexed ({@code samples[0].value}); an extension is named by its field name. Columns are in
  * order of first appearance; a message without a field leaves its cell empty. Bytes fields
  * (images) are left out. Decoded with the channel's own schema, so it works on any file,
- * Touchline's own and exports alike. Reads the file twice (columns, then rows).
+ * Touchline's own and exports alike. A ROS 2 channel (ros2msg/ros2idl with CDR) or a JSON
+ * channel exports its numeric leaves the same way ({@code pose.position.x}, {@code position[3]};
+ * bools as 0/1, 8-bit arrays left out). Reads the file twice (columns, then rows).
  */
 public final class ChannelCsvExport {
 
@@ -51,23 +58,31 @@ public final class ChannelCsvExport {
     public Result write(String topic, Writer out) throws IOException, NotExportable {
         McapReader mcap = recording.mcap();
         Map<Integer, Descriptor> types = new HashMap<>();
-        List<String> notProtobuf = new ArrayList<>();
+        Map<Integer, MessageDecoder> decoders = new HashMap<>();
+        List<String> notExportable = new ArrayList<>();
         SchemaSet schemas = new SchemaSet();
         for (McapReader.ChannelInfo c : mcap.channels().values()) {
             if (!c.topic().equals(topic)) {
                 continue;
             }
             McapReader.Schema s = mcap.schemas().get(c.schemaId());
-            if (s == null || !s.encoding().equals("protobuf") || !c.messageEncoding().equals("protobuf")) {
-                notProtobuf.add(c.messageEncoding());
+            if (s != null && s.encoding().equals("protobuf") && c.messageEncoding().equals("protobuf")) {
+                types.put(c.id(), type(schemas, s));
                 continue;
             }
-            types.put(c.id(), type(schemas, s));
+            ChannelDecoding d = new ChannelDecoders().decoding(topic, c.messageEncoding(), s == null ? "" : s.name(),
+                    s == null ? "" : s.encoding(), s == null ? new byte[0] : s.data());
+            if (d instanceof ChannelDecoding.Ready r) {
+                decoders.put(c.id(), r.decoder());
+            } else {
+                ChannelDecoding.Unsupported u = (ChannelDecoding.Unsupported) d;
+                notExportable.add(u.encoding() + " (" + u.reason() + ")");
+            }
         }
-        if (types.isEmpty()) {
-            if (!notProtobuf.isEmpty()) {
-                throw new NotExportable("channel " + topic + " carries " + notProtobuf.get(0)
-                        + " without a protobuf schema; only protobuf channels export as CSV");
+        if (types.isEmpty() && decoders.isEmpty()) {
+            if (!notExportable.isEmpty()) {
+                throw new NotExportable("channel " + topic + " carries " + notExportable.get(0)
+                        + "; protobuf, ROS 2 (CDR) and JSON channels export as CSV");
             }
             throw new NotExportable("the recording has no channel " + topic + " (channels: "
                     + String.join(", ", mcap.channels().values().stream().map(McapReader.ChannelInfo::topic)
@@ -78,12 +93,10 @@ public final class ChannelCsvExport {
         long undecodable = 0;
         McapReader.Cursor c = mcap.cursor(0);
         for (McapReader.McapMessage m = c.next(); m != null; m = c.next()) {
-            Message msg = decode(types, extensions, m);
-            if (msg != null) {
-                Map<String, String> cells = new LinkedHashMap<>();
-                flatten("", msg, cells);
+            Map<String, String> cells = cells(types, decoders, extensions, m);
+            if (cells != null) {
                 cells.keySet().forEach(k -> columns.putIfAbsent(k, columns.size()));
-            } else if (types.containsKey(m.channelId())) {
+            } else if (types.containsKey(m.channelId()) || decoders.containsKey(m.channelId())) {
                 undecodable++;
             }
         }
@@ -97,12 +110,10 @@ public final class ChannelCsvExport {
         String[] row = new String[columns.size()];
         c = mcap.cursor(0);
         for (McapReader.McapMessage m = c.next(); m != null; m = c.next()) {
-            Message msg = decode(types, extensions, m);
-            if (msg == null) {
+            Map<String, String> cells = cells(types, decoders, extensions, m);
+            if (cells == null) {
                 continue;
             }
-            Map<String, String> cells = new LinkedHashMap<>();
-            flatten("", msg, cells);
             java.util.Arrays.fill(row, "");
             cells.forEach((k, v) -> row[columns.get(k)] = DebugCsvExport.cell(v));
             long d = m.logTime() - mcap.startTime();
@@ -148,6 +159,32 @@ public final class ChannelCsvExport {
             }
         }
         return r;
+    }
+
+    /**
+     * The cells of {@code m}: a protobuf message's leaves, a ROS 2 or JSON message's numeric
+     * leaves ({@link RosMessage#forEachNumber}); null when its channel is another topic's or the
+     * message does not decode.
+     */
+    private static Map<String, String> cells(Map<Integer, Descriptor> types, Map<Integer, MessageDecoder> decoders,
+                                             ExtensionRegistry extensions, McapReader.McapMessage m) {
+        MessageDecoder decoder = decoders.get(m.channelId());
+        if (decoder != null) {
+            if (!(decoder.decode(m.data()) instanceof DecodeResult.Decoded d)) {
+                return null;
+            }
+            Map<String, String> cells = new LinkedHashMap<>();
+            d.message().forEachNumber((path, v) -> cells.put(path,
+                    v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v)));
+            return cells;
+        }
+        Message msg = decode(types, extensions, m);
+        if (msg == null) {
+            return null;
+        }
+        Map<String, String> cells = new LinkedHashMap<>();
+        flatten("", msg, cells);
+        return cells;
     }
 
     private static Message decode(Map<Integer, Descriptor> types, ExtensionRegistry extensions,

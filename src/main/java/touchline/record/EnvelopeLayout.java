@@ -102,7 +102,12 @@ final class EnvelopeLayout {
                 case LINK_EVENT -> new String[]{"/link", ""};
                 case TEAM_MESSAGE -> new String[]{"/team", ""};
                 case FOREIGN -> new String[]{"/foreign", ""};
+                case BRIDGE -> new String[]{"/bridge/" + robot, ""};
             };
+            if (channel == Channel.BRIDGE) { // a bridged robot's topic as the robot names it, under its robot
+                return parts[0] + (kind.startsWith("/") ? "" : "/") + kind.replaceAll("[^A-Za-z0-9_#./\\-]", "_")
+                        + (layout.equals(MALFORMED) ? "/malformed" : "");
+            }
             String name = kind.replaceAll("[^A-Za-z0-9_#.\\-]", "_");
             String topic = parts[0] + dir + parts[1];
             if (!parts[1].equals("/" + name)) {

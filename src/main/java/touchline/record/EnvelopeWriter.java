@@ -4,6 +4,7 @@ import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Descriptors.FileDescriptor;
 import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
+import touchline.transport.remote.BridgedSchema;
 import touchline.protocol.Framing;
 import touchline.transport.Envelope;
 
@@ -35,32 +36,41 @@ public final class EnvelopeWriter implements Closeable {
      * {@code compression} is applied to every chunk.
      */
     public record Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles,
-                          long cameraIntervalMicros, ChunkCompression compression) {
+                          long cameraIntervalMicros, ChunkCompression compression, BridgedSchema.Source bridged) {
 
         public Options(long splitBytes, long splitMicros, int chunkBytes, List<FileDescriptor> teamFiles) {
-            this(splitBytes, splitMicros, chunkBytes, teamFiles, 0, ChunkCompression.NONE);
+            this(splitBytes, splitMicros, chunkBytes, teamFiles, 0, ChunkCompression.NONE, BridgedSchema.Source.NONE);
         }
 
         public static Options defaults() {
-            return new Options(0, 0, 512 * 1024, List.of(), 0, ChunkCompression.NONE);
+            return new Options(0, 0, 512 * 1024, List.of(), 0, ChunkCompression.NONE, BridgedSchema.Source.NONE);
         }
 
         public Options withSplit(long bytes, long micros) {
-            return new Options(bytes, micros, chunkBytes, teamFiles, cameraIntervalMicros, compression);
+            return new Options(bytes, micros, chunkBytes, teamFiles, cameraIntervalMicros, compression, bridged);
         }
 
         public Options withTeamFiles(List<FileDescriptor> files) {
-            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files), cameraIntervalMicros, compression);
+            return new Options(splitBytes, splitMicros, chunkBytes, List.copyOf(files), cameraIntervalMicros, compression,
+                    bridged);
         }
 
         /** Camera frames at most {@code fps} per second per camera channel (0 = all). */
         public Options withCameraRate(double fps) {
             return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, fps <= 0 ? 0 : (long) (1e6 / fps),
-                    compression);
+                    compression, bridged);
         }
 
         public Options withCompression(ChunkCompression c) {
-            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, cameraIntervalMicros, c);
+            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, cameraIntervalMicros, c, bridged);
+        }
+
+        /**
+         * Bridged robots' channels ({@code Channel.BRIDGE}) recorded in their own encoding and schema
+         * (ROS 2 {@code cdr}/{@code ros2msg}, {@code json}, {@code protobuf}), found in {@code source}.
+         */
+        public Options withBridgedSchemas(BridgedSchema.Source source) {
+            return new Options(splitBytes, splitMicros, chunkBytes, teamFiles, cameraIntervalMicros, compression, source);
         }
     }
 
@@ -134,6 +144,7 @@ public final class EnvelopeWriter implements Closeable {
     private final Map<EnvelopeLayout.Key, ChannelState> channels = new HashMap<>();
     private final RecentChannels recent = new RecentChannels();
     private final Map<Set<String>, Integer> schemaIds = new HashMap<>();
+    private final Map<String, Integer> bridgedSchemaIds = new HashMap<>();
     private McapWriter writer;
     private long fileStartMicros;
     private long bytesOfClosedFiles;
@@ -161,6 +172,7 @@ public final class EnvelopeWriter implements Closeable {
         channels.clear();
         recent.clear();
         schemaIds.clear();
+        bridgedSchemaIds.clear();
         fileStartMicros = Long.MIN_VALUE;
     }
 
@@ -188,7 +200,9 @@ public final class EnvelopeWriter implements Closeable {
                     kindOfLayout, framing, e.origin());
             channel = channels.get(key);
             if (channel == null) {
-                channel = addChannel(key, e.message());
+                BridgedSchema own = e.channel() == touchline.transport.Channel.BRIDGE && kindOfLayout == EnvelopeLayout.RAW
+                        ? options.bridged().of(e.robotId(), e.kind()) : null;
+                channel = own != null ? addBridgedChannel(key, own) : addChannel(key, e.message());
             }
             recent.remember(e, kindOfLayout, framing, channel);
         }
@@ -235,6 +249,17 @@ public final class EnvelopeWriter implements Closeable {
                     SchemaSet.descriptorSet(roots).toByteArray()));
         }
         ChannelState state = new ChannelState(writer.addChannel(schemaId, key.topic(), key.encoding(), key.metadata()));
+        channels.put(key, state);
+        return state;
+    }
+
+    /** A bridged robot's channel in its own encoding and schema; Touchline's metadata still says whose it is. */
+    private ChannelState addBridgedChannel(EnvelopeLayout.Key key, BridgedSchema own) {
+        int schemaId = own.schemaName().isEmpty() ? 0 : bridgedSchemaIds.computeIfAbsent(
+                own.schemaName() + "\n" + own.schemaEncoding() + "\n" + java.util.Arrays.hashCode(own.schemaData()),
+                n -> writer.addSchema(own.schemaName(), own.schemaEncoding(), own.schemaData()));
+        ChannelState state = new ChannelState(writer.addChannel(schemaId, key.topic(), own.messageEncoding(),
+                key.metadata()));
         channels.put(key, state);
         return state;
     }

@@ -24,7 +24,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * the message kinds given (Touchline's own plus the team types the recording carries in
  * its schemas), so consumers get {@link Envelope#message()} as from a live transport.
  * Channels written by other tools (no Touchline metadata) play as {@link touchline.transport.Channel#FOREIGN}
- * envelopes where they can (protobuf with its schema in the file, JSON text); the others are
+ * envelopes where they can (protobuf with its schema in the file; ROS 2 CDR by its ros2msg or ros2idl
+ * definition and JSON, decoded into {@link Envelope#ros()}); the others are
  * skipped and counted per channel in {@link #notes()}.
  */
 public final class Recording implements Closeable {
@@ -190,6 +191,12 @@ public final class Recording implements Closeable {
         long time = m.logTime() / 1000;
         if (reading instanceof ChannelReading.Foreign f) {
             return f.envelope(time, m.data());
+        }
+        if (reading instanceof ChannelReading.Bridged b) {
+            return b.envelope(time, m.data());
+        }
+        if (reading instanceof ChannelReading.Decoded d) {
+            return d.envelope(time, m.data());
         }
         if (!(reading instanceof ChannelReading.Touchline t)) {
             return null;

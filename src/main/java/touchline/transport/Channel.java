@@ -19,7 +19,14 @@ public enum Channel {
     /**
      * A message on a channel another tool wrote into a recording (replay only, never live):
      * kind = the MCAP topic, raw = the message's bytes, message = the decoded protobuf message
-     * (by the schema in the file), or null for a JSON channel, whose raw bytes are its text.
+     * (by the schema in the file), ros = the decoded ROS 2 (CDR) or JSON message.
      */
-    FOREIGN
+    FOREIGN,
+    /**
+     * A message from a robot's Foxglove WebSocket server (a ROS 2 robot's {@code foxglove_bridge}):
+     * kind = the topic, raw = the payload as the server sent it, message = the payload decoded
+     * (ROS 2 CDR, JSON or protobuf, as a protobuf message), or null with {@code error} when it
+     * did not decode.
+     */
+    BRIDGE
 }

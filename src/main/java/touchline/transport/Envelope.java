@@ -1,6 +1,7 @@
 package touchline.transport;
 
 import com.google.protobuf.Message;
+import touchline.protocol.ros2.RosMessage;
 import touchline.security.Authenticity;
 
 import java.net.InetSocketAddress;
@@ -27,10 +28,13 @@ import java.util.Objects;
  * @param matchPart    one message taken out of a robot's match digest (its Status or an item): match data
  *                     shown like streamed data; {@code raw} is then the part's own bytes, and the datagram
  *                     itself travels as its own envelope (what counts traffic or records takes that one)
+ * @param ros          the message decoded by its channel's ROS 2 definition or as JSON (a bridge's channel,
+ *                     a ROS 2 bag's), or null: protobuf stays in {@code message}, and an envelope carries
+ *                     at most one of the two
  */
 public record Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
                        int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
-                       Authenticity authenticity, boolean matchPart) {
+                       Authenticity authenticity, boolean matchPart, RosMessage ros) {
 
     public static final int NO_ROBOT = -1;
 
@@ -43,11 +47,25 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         Objects.requireNonNull(authenticity, "authenticity");
     }
 
-    /** A whole datagram or call (not a part of a match digest). */
+    /** A whole datagram or call (not a part of a match digest) without a decoded ROS 2 or JSON message. */
     public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
                     int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
                     Authenticity authenticity) {
-        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, authenticity, false);
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, authenticity, false, null);
+    }
+
+    /** A part of a match digest ({@code matchPart}) or a whole datagram: never a ROS 2 message. */
+    public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                    int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
+                    Authenticity authenticity, boolean matchPart) {
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, authenticity, matchPart, null);
+    }
+
+    /** A bridge's or a bag's message decoded by its ROS 2 definition or as JSON ({@code ros}; null: none). */
+    public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                    int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
+                    Authenticity authenticity, RosMessage ros) {
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, authenticity, false, ros);
     }
 
     /** An envelope whose authenticity was not checked (outbound, GameController, NAO, older recordings). */
@@ -66,7 +84,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
     public Envelope asReplayed() {
         return origin == Origin.REPLAY ? this
                 : new Envelope(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.REPLAY,
-                        authenticity, matchPart);
+                        authenticity, matchPart, ros);
     }
 
     /** True when a recording played this envelope back: it must never cause a datagram or change match mode. */

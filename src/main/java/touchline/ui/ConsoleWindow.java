@@ -67,7 +67,7 @@ public final class ConsoleWindow {
         this.serving = new ServeToggle(console.serving());
         this.context = new ViewContext(console.field(), console.optionSwitches(), console.referee(), console.naos(),
                 console.recordings(), console.replays(), console.teamSchemas(), console.teamBudget(), console.remote(),
-                registry, (spec, src) -> holder[0].open(spec, src), settings.layoutDir(), serving);
+                console.bridges(), registry, (spec, src) -> holder[0].open(spec, src), settings.layoutDir(), serving);
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(context.status(), context.field(), context.budget());

@@ -9,6 +9,7 @@ import touchline.app.RemoteView;
 import touchline.app.Replays;
 import touchline.app.TeamBudget;
 import touchline.app.TeamSchemas;
+import touchline.app.bridges.RosBridges;
 import touchline.model.store.ViewStores;
 
 import java.nio.file.Path;
@@ -23,6 +24,7 @@ import java.util.function.BiConsumer;
  */
 public record ViewContext(LiveField field, OptionSwitches switches, Referee referee, Naos naos, Recordings recordings,
                           Replays replays, TeamSchemas schemas, TeamBudget budget, RemoteView remote,
+                          RosBridges bridges,
                           ViewRegistry registry, BiConsumer<ViewSpec, ViewSource> opener, Path settingsDir,
                           ServeToggle serving) {
 

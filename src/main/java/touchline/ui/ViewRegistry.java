@@ -70,6 +70,9 @@ public final class ViewRegistry {
             new ViewSpec("viewers", "Viewers", "Serve this console to remote viewers (Foxglove, Lichtblick, another "
                     + "Touchline: console --connect URL); the URL with its token, each viewer's subscriptions, rate and "
                     + "drops. Ctrl+Shift+V switches serving on and off.", Set.of(), (c, s) -> new touchline.ui.views.ViewersView(c)),
+            new ViewSpec("parameters", "Parameters", "The ROS 2 robots' parameters through their Foxglove bridges: "
+                    + "Refresh reads them, Set writes a typed value, Space or a double-click toggles a bool; held during "
+                    + "play like a debug option.", Set.of(), (c, s) -> new touchline.ui.views.ParametersView(c)),
             new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
                     + "text.", Set.of(), RawDataView::new));
 

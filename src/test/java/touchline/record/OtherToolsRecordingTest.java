@@ -144,7 +144,7 @@ class OtherToolsRecordingTest {
         }
         try (Recording r = Recording.open(file)) {
             assertTrue(r.mcap().chunkCount() >= 2, r.mcap().chunkCount() + " chunks");
-            assertEquals(3L * n, RecordingFixture.readAll(r).size());
+            assertEquals(4L * n, RecordingFixture.readAll(r).size());
             assertEquals(List.of(), r.problems());
         }
     }
@@ -174,7 +174,7 @@ class OtherToolsRecordingTest {
             }
             List<Envelope> back = RecordingFixture.readAll(r);
             Map<String, List<Envelope>> byTopic = back.stream().collect(Collectors.groupingBy(Envelope::kind));
-            assertEquals(java.util.Set.of("/their/status", "/pose", "/score"), byTopic.keySet());
+            assertEquals(java.util.Set.of("/their/status", "/pose", "/score", "/chatter"), byTopic.keySet());
             assertTrue(back.stream().allMatch(e -> e.channel() == Channel.FOREIGN && e.replayed() == false));
             byTopic.values().forEach(l -> assertEquals(N, l.size()));
             // Touchline's own type, written by another tool: decoded with Touchline's types
@@ -185,18 +185,21 @@ class OtherToolsRecordingTest {
             assertEquals("other.Pose", pose.getDescriptorForType().getFullName());
             String text = new touchline.protocol.MessageText().renderLine(pose);
             assertTrue(text.contains("field") && text.contains("7.0") && text.contains("-7.0"), text);
-            // JSON is text
+            // JSON: its text kept, its values decoded
             assertEquals("{\"home\": 3, \"away\": 0}", new String(byTopic.get("/score").get(3).raw(),
                     java.nio.charset.StandardCharsets.UTF_8));
             assertEquals(null, byTopic.get("/score").get(3).message());
+            assertEquals(3L, byTopic.get("/score").get(3).ros().get("home"));
+            // ROS 2 CDR by its ros2msg definition
+            assertEquals("std_msgs/msg/String", byTopic.get("/chatter").get(0).ros().typeName());
+            assertEquals("hello", byTopic.get("/chatter").get(0).ros().get("data"));
 
             ReplayNotes notes = r.notes();
             assertTrue(notes.complete());
-            assertEquals(List.of("/chatter (ros2msg/cdr: encoding not supported) 40",
-                    "/monster (flatbuffer/flatbuffer: encoding not supported) 40",
+            assertEquals(List.of("/monster (flatbuffer/flatbuffer: encoding not supported) 40",
                     "/bare (no schema/protobuf: protobuf without a protobuf schema) 40"),
                     notes.skipped().stream().map(Object::toString).toList());
-            assertEquals(3L * N, notes.skippedMessages());
+            assertEquals(2L * N, notes.skippedMessages());
             assertEquals(List.of("attachment calibration.yaml (application/yaml, 200 bytes)",
                     "metadata match: team=FUmanoids, field=B"), notes.contents());
             assertTrue(notes.problems().isEmpty(), notes.problems().toString());
@@ -209,10 +212,11 @@ class OtherToolsRecordingTest {
     void replayInfoAndExportSayTheSameNotes(String layout) throws Exception {
         Path file = written(layout);
         String[] replay = run(new ReplayCommand(), file.toString(), "--headless");
-        assertEquals(3L * N, replay[0].lines().count(), replay[0]);
+        assertEquals(4L * N, replay[0].lines().count(), replay[0]);
         assertTrue(replay[0].contains("/pose") && replay[0].contains("frame: \"field\""), replay[0]);
-        assertTrue(replay[0].contains("{\"home\": 0, \"away\": 0}"), replay[0]);
-        String skipped = "note: skipped 120 messages of 3 channels: /chatter (ros2msg/cdr: encoding not supported) 40,"
+        assertTrue(replay[0].contains("{away: 0, home: 0}"), replay[0]);
+        assertTrue(replay[0].contains("/chatter std_msgs/msg/String {data: \"hello\"}"), replay[0]);
+        String skipped = "note: skipped 80 messages of 2 channels:"
                 + " /monster (flatbuffer/flatbuffer: encoding not supported) 40, /bare (no schema/protobuf: protobuf"
                 + " without a protobuf schema) 40";
         assertTrue(replay[1].contains(skipped), replay[1]);
@@ -230,7 +234,8 @@ class OtherToolsRecordingTest {
         assertFalse(export[1].contains("Exception"), export[1]);
     }
 
-    private static String[] run(Object command, String... args) {
+    /** Runs a command line; returns {out, err}; fails unless it exits 0. */
+    static String[] run(Object command, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         CommandLine c = new CommandLine(command);

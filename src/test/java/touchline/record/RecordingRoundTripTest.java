@@ -45,6 +45,10 @@ class RecordingRoundTripTest {
         sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 2, Direction.IN, Channel.FOREIGN, null,
                 Envelope.NO_ROBOT, "/their/score", null, "{\"home\": 1}".getBytes(java.nio.charset.StandardCharsets.UTF_8),
                 null));
+        // a bridged ROS 2 robot's message (no schema known to this writer: kept as its bytes under /bridge/1001/…)
+        sent.add(new Envelope(sent.get(sent.size() - 1).timeMicros() + 1, Direction.IN, Channel.BRIDGE,
+                InetSocketAddress.createUnresolved("booster-1.local", 8765), 1001, "/robot_state", null,
+                "{\"game_state\": \"READY\"}".getBytes(java.nio.charset.StandardCharsets.UTF_8), null));
         Set<Channel> channels = sent.stream().map(Envelope::channel).collect(Collectors.toCollection(() -> EnumSet.noneOf(Channel.class)));
         assertEquals(EnumSet.allOf(Channel.class), channels, "the fixture covers every wire channel");
 

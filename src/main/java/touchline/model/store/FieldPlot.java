@@ -5,6 +5,7 @@ import com.google.protobuf.Descriptors.FieldDescriptor;
 import com.google.protobuf.Message;
 import touchline.proto.Fumanoid;
 import touchline.protocol.MessageKinds;
+import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
@@ -21,23 +22,27 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * "Plot anything": any numeric field of any message kind the robots send (the teams' own
  * types loaded at run time included), per robot, as bounded series — like PlotJuggler. It
  * learns which kinds arrive and offers their numeric field paths ({@code kind:path}); each
- * series the user adds (robot × field path) keeps its last points in a ring. Fed by the
+ * series the user adds (robot × field path) keeps its last points in a ring. ROS 2 and JSON
+ * messages ({@link Envelope#ros()}: a bridge's, a bag's, a bridged robot's replayed) offer theirs
+ * too, by topic ({@code /odom:pose.pose.position.x}), for the robot of their envelope (none for a
+ * bag's). Fed by the
  * Envelope stream (live or replayed alike); read by the plot view once per frame; exported as
  * CSV (time, one column per series).
  */
 public final class FieldPlot implements EnvelopeSink {
 
-    /** One plotted series: a robot and a field path of a kind. */
+    /** One plotted series: a robot (or none: a ROS 2 bag's topic) and a field path of a kind. */
     public record Series(int robotId, String kind, String path) {
         public String name() {
-            return "robot " + robotId + " " + kind + ":" + path;
+            return (robotId == Envelope.NO_ROBOT ? "" : "robot " + robotId + " ") + kind + ":" + path;
         }
     }
 
     private final MessageKinds kinds;
     private final int pointsPerSeries;
     private final long originMicros;
-    private final Map<String, Descriptor> seenKinds = new TreeMap<>();
+    /** The numeric paths of each kind seen; empty for a kind with none. */
+    private final Map<String, List<String>> seenKinds = new TreeMap<>();
     private final List<Series> series = new CopyOnWriteArrayList<>();
     private final Map<Series, SeriesRing> rings = new java.util.HashMap<>();
     private long version;
@@ -51,7 +56,13 @@ public final class FieldPlot implements EnvelopeSink {
 
     @Override
     public void accept(Envelope e) {
-        if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m) || e.robotId() < 0) {
+        // a bag's ROS 2 channel belongs to no robot: plotted as robot -1
+        if (e.direction() != Direction.IN || (e.robotId() < 0 && e.ros() == null)) {
+            return;
+        }
+        Fumanoid.Message m = e.message() instanceof Fumanoid.Message f ? f : null;
+        boolean foreign = e.ros() != null || (m == null && e.message() != null && e.channel() == Channel.BRIDGE);
+        if (m == null && !foreign) {
             return;
         }
         String kind = e.kind();
@@ -60,7 +71,7 @@ public final class FieldPlot implements EnvelopeSink {
             known = seenKinds.containsKey(kind);
         }
         if (!known) {
-            learn(kind);
+            learn(kind, e);
         }
         if (series.isEmpty()) {
             return;
@@ -70,13 +81,18 @@ public final class FieldPlot implements EnvelopeSink {
             if (s.robotId() != e.robotId() || !s.kind().equals(kind)) {
                 continue;
             }
-            if (data == null) {
-                data = dataOf(kind, m);
+            double v;
+            if (e.ros() != null) {
+                v = e.ros().number(s.path());
+            } else {
                 if (data == null) {
-                    return;
+                    data = m == null ? e.message() : dataOf(kind, m);
+                    if (data == null) {
+                        return;
+                    }
                 }
+                v = NumericFields.value(data, s.path());
             }
-            double v = NumericFields.value(data, s.path());
             if (Double.isFinite(v)) {
                 synchronized (this) {
                     SeriesRing ring = rings.get(s);
@@ -89,12 +105,21 @@ public final class FieldPlot implements EnvelopeSink {
         }
     }
 
-    private void learn(String kind) {
-        FieldDescriptor ext = kinds.byName(kind).orElse(null);
-        Descriptor type = ext != null && ext.getJavaType() == FieldDescriptor.JavaType.MESSAGE && !ext.isRepeated()
-                ? ext.getMessageType() : null;
+    /** The numeric paths of a kind, from its first message: a ROS 2 or JSON message's own, else its protobuf type's. */
+    private void learn(String kind, Envelope e) {
+        List<String> paths;
+        if (e.ros() != null) {
+            paths = e.ros().numericPaths();
+        } else if (e.channel() == Channel.BRIDGE) {
+            paths = NumericFields.paths(e.message().getDescriptorForType());
+        } else {
+            FieldDescriptor ext = kinds.byName(kind).orElse(null);
+            Descriptor type = ext != null && ext.getJavaType() == FieldDescriptor.JavaType.MESSAGE && !ext.isRepeated()
+                    ? ext.getMessageType() : null;
+            paths = type == null ? List.of() : NumericFields.paths(type);
+        }
         synchronized (this) {
-            seenKinds.put(kind, type);
+            seenKinds.put(kind, paths);
             kindsVersion++;
         }
     }
@@ -108,13 +133,11 @@ public final class FieldPlot implements EnvelopeSink {
     public synchronized List<String> paths(String needle) {
         String n = needle == null ? "" : needle.trim().toLowerCase(Locale.ROOT);
         List<String> out = new ArrayList<>();
-        seenKinds.forEach((kind, type) -> {
-            if (type != null) {
-                for (String p : NumericFields.paths(type)) {
-                    String full = kind + ":" + p;
-                    if (full.toLowerCase(Locale.ROOT).contains(n)) {
-                        out.add(full);
-                    }
+        seenKinds.forEach((kind, paths) -> {
+            for (String p : paths) {
+                String full = kind + ":" + p;
+                if (full.toLowerCase(Locale.ROOT).contains(n)) {
+                    out.add(full);
                 }
             }
         });
@@ -134,8 +157,8 @@ public final class FieldPlot implements EnvelopeSink {
         }
         Series s = new Series(robotId, kindAndPath.substring(0, colon), kindAndPath.substring(colon + 1));
         synchronized (this) {
-            Descriptor type = seenKinds.get(s.kind());
-            if (type == null || !NumericFields.paths(type).contains(s.path()) || rings.containsKey(s)) {
+            List<String> paths = seenKinds.get(s.kind());
+            if (paths == null || !paths.contains(s.path()) || rings.containsKey(s)) {
                 return false;
             }
             rings.put(s, new SeriesRing(pointsPerSeries));

@@ -34,6 +34,11 @@ public final class TextLog implements EnvelopeSink {
         }
     }
 
+    /** Keeps a ROS 2 robot's log line: the node as the option, the level before the text. */
+    void add(Envelope e, touchline.model.RosReadings.LogLine l) {
+        lines.append(new TextLine(e.timeMicros(), 0, e.robotId(), l.node(), "[" + l.level() + "] " + l.text()));
+    }
+
     /** Lines after {@code afterSeq} from one robot (or all when {@code robotId < 0}), at most {@code max}. */
     public List<SequencedRing.Entry<TextLine>> since(long afterSeq, int robotId, int max) {
         return lines.since(afterSeq, max, l -> robotId < 0 || l.robotId() == robotId);

@@ -21,11 +21,14 @@ import java.util.function.BooleanSupplier;
 public final class ViewStores {
 
     /** One set of stores: what the views read of one stream. */
-    public record Shelf(TextLog text, PlotStore plots, LatestValues latest, NetworkLog network) implements EnvelopeSink {
+    public record Shelf(TextLog text, PlotStore plots, LatestValues latest, NetworkLog network,
+                        java.util.concurrent.atomic.AtomicReference<touchline.model.RosReadings> readings)
+            implements EnvelopeSink {
 
         Shelf(int textLines, int plotPoints, int networkEnvelopes, long originMicros) {
             this(new TextLog(textLines), new PlotStore(plotPoints, originMicros), new LatestValues(),
-                    new NetworkLog(networkEnvelopes));
+                    new NetworkLog(networkEnvelopes),
+                    new java.util.concurrent.atomic.AtomicReference<>(new touchline.model.RosReadings()));
         }
 
         /** Empties every store; versions and sequence numbers go on, so views notice. */
@@ -40,6 +43,11 @@ public final class ViewStores {
         public void accept(Envelope e) {
             if (!e.matchPart()) {
                 network.accept(e); // the network log lists datagrams; a digest's parts are shown by the others
+            }
+            if (e.ros() != null && e.direction() == Direction.IN) {
+                // a ROS 2 robot's log (/rosout) in the debug console, as the robot's text
+                readings.get().log(e.kind(), e.ros()).ifPresent(l -> text.add(e, l));
+                return;
             }
             if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m)) {
                 return; // the other stores keep only what robots sent
@@ -83,6 +91,12 @@ public final class ViewStores {
      */
     public void restartReplay(long originMicros) {
         replay.restart(originMicros);
+    }
+
+    /** What ROS 2 messages are read as beyond their types (the user's mapping file), live and replayed. */
+    public void useRosMapping(touchline.model.RosMapping mapping) {
+        live.readings().set(new touchline.model.RosReadings(mapping));
+        replay.readings().set(new touchline.model.RosReadings(mapping));
     }
 
     /** The live stores, whatever the views show. */

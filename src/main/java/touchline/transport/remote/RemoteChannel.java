@@ -34,7 +34,7 @@ import java.util.Map;
  * by the same {@link MessageCodec} as a datagram from the field, so every view sees the types
  * it sees live. Other protobuf channels are decoded with the advertised schema.
  */
-final class RemoteChannel {
+final class RemoteChannel implements StreamChannel {
 
     private final int id;
     private final String topic;
@@ -123,16 +123,19 @@ final class RemoteChannel {
         }
     }
 
-    int id() {
+    @Override
+    public int id() {
         return id;
     }
 
-    String topic() {
+    @Override
+    public String topic() {
         return topic;
     }
 
     /** The envelope the remote console saw, rebuilt from one message's payload; received at {@code timeNanos} there. */
-    Envelope rebuild(byte[] payload, long timeNanos) throws IOException {
+    @Override
+    public Envelope rebuild(byte[] payload, long timeNanos) throws IOException {
         long micros = timeNanos / 1000;
         if (bytes) {
             return malformed ? malformed(payload, micros) : new Envelope(micros, direction, channel, peer, robotId, kind,
@@ -187,7 +190,7 @@ final class RemoteChannel {
     }
 
     /** The advertised type from its self-contained FileDescriptorSet (dependencies first, as the recorder writes it). */
-    private static Descriptor schema(String base64, String name) {
+    static Descriptor schema(String base64, String name) {
         try {
             FileDescriptorSet set = FileDescriptorSet.parseFrom(Base64.getDecoder().decode(base64));
             Map<String, FileDescriptor> built = new HashMap<>();

@@ -37,11 +37,19 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class RemoteStream implements AutoCloseable {
 
     public static final String SUBPROTOCOL = "foxglove.websocket.v1";
+    /**
+     * What this client offers: the Foxglove SDK's servers (and the {@code foxglove_bridge} built on
+     * it) accept only {@code foxglove.sdk.v1}, older ones only {@code foxglove.websocket.v1}; the
+     * server picks one, and the two carry the same ops.
+     */
+    public static final String[] SUBPROTOCOLS = {"foxglove.sdk.v1", SUBPROTOCOL};
     /** The query by which a Touchline server also advertises its channels of bytes (serve.Viewer's parameter). */
     static final String BYTES_QUERY = "raw=1";
     static final Duration FIRST_BACKOFF = Duration.ofMillis(250);
     /** The largest message taken from a server: more than a raw camera frame; anything bigger is dropped unread. */
     static final int MAX_MESSAGE_BYTES = 16 << 20;
+    /** The most channels read from one connection's advertises (a robot has tens; a hostile server may claim millions). */
+    static final int MAX_CHANNELS = 4096;
     /** A Touchline server sends its time ten times a second; this long without a word, the connection is dead. */
     static final Duration SILENCE = Duration.ofSeconds(15);
     static final Duration HANDSHAKE = Duration.ofSeconds(5);
@@ -50,8 +58,8 @@ public final class RemoteStream implements AutoCloseable {
     private final String shownUrl;
     private final SSLContext tls;
     private final EnvelopeSink sink;
-    private final MessageCodec codec;
-    private final FrameCodec frames = new FrameCodec(Integer.MAX_VALUE);
+    private final ChannelReader reader;
+    private final ServerReplies replies;
     private final Duration maxBackoff;
     private final ScheduledExecutorService reconnects;
     private final AtomicLong received = new AtomicLong();
@@ -68,6 +76,9 @@ public final class RemoteStream implements AutoCloseable {
             new ConcurrentHashMap<>();
     private volatile boolean closed;
     private Duration backoff = FIRST_BACKOFF;
+    private final AtomicLong losses = new AtomicLong();
+    private volatile JSONObject serverInfo = new JSONObject();
+    private volatile String subprotocol = "";
 
     /**
      * @param uri        e.g. {@code ws://10.0.0.5:8765/?token=…}
@@ -83,22 +94,29 @@ public final class RemoteStream implements AutoCloseable {
     /** As above, with the limits a test can make small: the largest message, the longest silence and handshake. */
     RemoteStream(URI uri, SSLContext tls, MessageCodec codec, EnvelopeSink sink, Duration maxBackoff,
                  int maxMessageBytes, Duration silence, Duration handshake) {
+        this(withBytesQuery(uri), tls, touchlineChannels(codec), ServerReplies.NONE, sink, maxBackoff, maxMessageBytes,
+                silence, handshake);
+    }
+
+    /**
+     * Any Foxglove WebSocket server's stream: {@code reader} makes each advertised channel it
+     * wants into a {@link StreamChannel}, {@code replies} hears the ops and binary replies this
+     * stream does not handle itself (parameter values, services, their answers).
+     */
+    RemoteStream(URI uri, SSLContext tls, ChannelReader reader, ServerReplies replies, EnvelopeSink sink,
+                 Duration maxBackoff, int maxMessageBytes, Duration silence, Duration handshake) {
         String scheme = uri.getScheme() == null ? "" : uri.getScheme().toLowerCase(java.util.Locale.ROOT);
         if (!scheme.equals("ws") && !scheme.equals("wss")) {
             throw new IllegalArgumentException("not a WebSocket URL (ws://HOST:PORT/?token=… or wss://…): " + uri);
         }
-        // ask for the channels of bytes too (GameController packets, malformed datagrams), which a
-        // Touchline server advertises only to viewers that ask: Foxglove has no schema for them
-        String u = uri.toString();
-        int hash = u.indexOf('#');
-        u = hash < 0 ? u : u.substring(0, hash);
-        this.uri = URI.create(u + (uri.getRawQuery() == null ? "?" : "&") + BYTES_QUERY);
+        this.uri = uri;
         this.shownUrl = scheme + "://" + uri.getHost() + (uri.getPort() < 0 ? "" : ":" + uri.getPort()) + "/";
         this.maxMessageBytes = maxMessageBytes;
         this.silence = silence;
         this.handshake = handshake;
         this.tls = tls;
-        this.codec = codec;
+        this.reader = reader;
+        this.replies = replies;
         this.sink = sink;
         this.maxBackoff = maxBackoff;
         this.reconnects = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -106,6 +124,35 @@ public final class RemoteStream implements AutoCloseable {
             t.setDaemon(true);
             return t;
         });
+    }
+
+    /**
+     * Asks for the channels of bytes too (GameController packets, malformed datagrams), which a
+     * Touchline server advertises only to viewers that ask: Foxglove has no schema for them.
+     */
+    private static URI withBytesQuery(URI uri) {
+        String u = uri.toString();
+        int hash = u.indexOf('#');
+        u = hash < 0 ? u : u.substring(0, hash);
+        return URI.create(u + (uri.getRawQuery() == null ? "?" : "&") + BYTES_QUERY);
+    }
+
+    /** A Touchline's robot channels, rebuilt into the envelopes it saw; its JSON state channels are skipped. */
+    private static ChannelReader touchlineChannels(MessageCodec codec) {
+        FrameCodec frames = new FrameCodec(Integer.MAX_VALUE);
+        return advertised -> {
+            if (advertised.optJSONObject("metadata") == null) {
+                return null; // a JSON state channel, or not a Touchline's
+            }
+            try {
+                return RemoteChannel.of(advertised, codec, frames);
+            } catch (IllegalArgumentException e) {
+                if ("no Touchline metadata".equals(e.getMessage())) {
+                    return null;
+                }
+                throw e;
+            }
+        };
     }
 
     /** Starts connecting; returns at once (the status says how it goes). */
@@ -154,7 +201,7 @@ public final class RemoteStream implements AutoCloseable {
         if (tls != null) {
             b.sslContext(tls);
         }
-        b.build().newWebSocketBuilder().subprotocols(SUBPROTOCOL).connectTimeout(handshake)
+        b.build().newWebSocketBuilder().subprotocols(SUBPROTOCOLS[0], SUBPROTOCOLS[1]).connectTimeout(handshake)
                 .buildAsync(uri, s).whenComplete((ws, failure) -> {
                     if (failure != null) {
                         s.lost(reason(failure));
@@ -189,6 +236,7 @@ public final class RemoteStream implements AutoCloseable {
         }
         state = RemoteStatus.State.LOST;
         detail = why;
+        losses.incrementAndGet();
         long wait = backoff.toMillis();
         backoff = backoff.multipliedBy(2).compareTo(maxBackoff) > 0 ? maxBackoff : backoff.multipliedBy(2);
         reconnects.schedule(this::connect, wait, TimeUnit.MILLISECONDS);
@@ -198,6 +246,7 @@ public final class RemoteStream implements AutoCloseable {
         session = s;
         state = RemoteStatus.State.CONNECTED;
         detail = "";
+        subprotocol = s.socket == null || s.socket.getSubprotocol() == null ? "" : s.socket.getSubprotocol();
         s.watch();
     }
 
@@ -210,6 +259,52 @@ public final class RemoteStream implements AutoCloseable {
     /** The server advertised its channels: it really serves us (one that only says "too many viewers" does not). */
     private synchronized void welcomed() {
         backoff = FIRST_BACKOFF;
+    }
+
+    /** The server's name as its serverInfo says it; "" before the first one. */
+    public String serverName() {
+        return serverInfo.optString("name", "");
+    }
+
+    /** Whether the server said it offers {@code capability} (e.g. {@code parameters}, {@code clientPublish}). */
+    public boolean offers(String capability) {
+        JSONArray caps = serverInfo.optJSONArray("capabilities");
+        for (int i = 0; caps != null && i < caps.length(); i++) {
+            if (capability.equals(caps.optString(i))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The subprotocol the server chose on the current (or last) connection; "" before one. */
+    public String subprotocol() {
+        return subprotocol;
+    }
+
+    /** Connections lost since the start (each followed by a reconnection attempt after the backoff). */
+    public long losses() {
+        return losses.get();
+    }
+
+    /** Sends one JSON op on the current connection; false when there is none. */
+    boolean sendText(String op) {
+        Session s = session;
+        if (s == null || s.socket == null || s.ended.get()) {
+            return false;
+        }
+        s.send(s.socket, op);
+        return true;
+    }
+
+    /** Sends one binary message on the current connection; false when there is none. */
+    boolean sendBinary(byte[] message) {
+        Session s = session;
+        if (s == null || s.socket == null || s.ended.get()) {
+            return false;
+        }
+        s.sendBinary(s.socket, message);
+        return true;
     }
 
     @Override
@@ -225,7 +320,7 @@ public final class RemoteStream implements AutoCloseable {
     /** One connection: its channels and subscriptions (each subscribed under the channel's own id). */
     private final class Session implements WebSocket.Listener {
 
-        final Map<Integer, RemoteChannel> channels = new ConcurrentHashMap<>();
+        final Map<Integer, StreamChannel> channels = new ConcurrentHashMap<>();
         /** Every id the server advertised on this connection: a message for another one is the server's fault. */
         private final java.util.Set<Integer> advertised = ConcurrentHashMap.newKeySet();
         private final StringBuilder text = new StringBuilder();
@@ -316,6 +411,11 @@ public final class RemoteStream implements AutoCloseable {
                     }
                     JSONArray subscribe = new JSONArray();
                     for (int i = 0; i < list.length(); i++) {
+                        if (channels.size() >= MAX_CHANNELS || advertised.size() >= MAX_CHANNELS) {
+                            unusable("an advertise beyond the limit of " + MAX_CHANNELS + " channels: "
+                                    + (list.length() - i) + " not read");
+                            break;
+                        }
                         JSONObject c = list.optJSONObject(i);
                         if (c == null) {
                             unusable("an advertised channel that is not a JSON object");
@@ -324,19 +424,14 @@ public final class RemoteStream implements AutoCloseable {
                         if (c.has("id")) {
                             advertised.add(c.optInt("id", -1));
                         }
-                        if (c.optJSONObject("metadata") == null) {
-                            continue; // a JSON state channel, or not a Touchline's
-                        }
                         try {
-                            RemoteChannel rc = RemoteChannel.of(c, codec, frames);
-                            if (channels.putIfAbsent(rc.id(), rc) == null) {
-                                subscribe.put(new JSONObject().put("id", rc.id()).put("channelId", rc.id()));
+                            StreamChannel sc = reader.read(c);
+                            if (sc != null && channels.putIfAbsent(sc.id(), sc) == null) {
+                                subscribe.put(new JSONObject().put("id", sc.id()).put("channelId", sc.id()));
                             }
                         } catch (IllegalArgumentException e) {
-                            if (!"no Touchline metadata".equals(e.getMessage())) {
-                                unusable("channel " + c.opt("id") + " (" + c.optString("topic", "no topic")
-                                        + "): " + e.getMessage());
-                            }
+                            unusable("channel " + c.opt("id") + " (" + c.optString("topic", "no topic") + "): "
+                                    + e.getMessage());
                         }
                     }
                     if (!subscribe.isEmpty()) {
@@ -363,14 +458,19 @@ public final class RemoteStream implements AutoCloseable {
                     lastStatus = o.optString("message", "");
                     detail = lastStatus;
                 }
+                case "serverInfo" -> serverInfo = o;
                 case "" -> unusable("a JSON message without an op: " + clip(o.toString()));
-                default -> { } // serverInfo and ops of newer servers: nothing to do
+                default -> replies.op(o); // parameter values, services, ops of newer servers
             }
         }
 
         /** Sends one text after the previous one went out (the JDK's WebSocket allows one send at a time). */
         private synchronized void send(WebSocket ws, String message) {
             sending = sending.thenCompose(x -> ws.sendText(message, true));
+        }
+
+        private synchronized void sendBinary(WebSocket ws, byte[] message) {
+            sending = sending.thenCompose(x -> ws.sendBinary(ByteBuffer.wrap(message), true));
         }
 
         @Override
@@ -405,6 +505,9 @@ public final class RemoteStream implements AutoCloseable {
             if (op == 0x02 && m.remaining() == 8) {
                 return; // the server's time
             }
+            if (op != 0x01 && replies.binary(op, m)) {
+                return;
+            }
             if (op != 0x01) {
                 unusable(op < 0 ? "an empty binary message" : "a binary message of op " + op + " and "
                         + (m.remaining() + 1) + " bytes (not a message or the time)");
@@ -415,7 +518,7 @@ public final class RemoteStream implements AutoCloseable {
                 return;
             }
             int id = m.getInt();
-            RemoteChannel c = channels.get(id);
+            StreamChannel c = channels.get(id);
             long timeNanos = m.getLong();
             if (c == null) {
                 if (!advertised.contains(id)) {

@@ -144,6 +144,9 @@ public final class FieldPlotView implements View {
                 added++;
             }
         }
+        if (added == 0 && fields.add(touchline.transport.Envelope.NO_ROBOT, chosen)) {
+            added++; // a topic of a ROS 2 bag, whose messages belong to no robot
+        }
         note.setText(added > 0 ? "added " + chosen + " for " + (id >= 0 ? "robot " + id : added + " robots")
                 : chosen.isEmpty() ? "choose a field path first"
                 : chosen + ": no numeric field of a kind seen, or already plotted");

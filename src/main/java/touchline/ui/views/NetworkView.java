@@ -105,6 +105,8 @@ public final class NetworkView implements View {
         String body;
         if (e.message() != null) {
             body = messageText.render(e.message());
+        } else if (e.ros() != null) {
+            body = e.ros().typeName() + "\n" + e.ros().text(MessageText.MAX_CHARS);
         } else {
             body = "(no decoded message)";
         }

@@ -25,7 +25,9 @@ import static org.junit.jupiter.api.Assertions.*;
  * channel never advertised, huge frames, a server that never answers the handshake, one that
  * falls silent, one that closes in the middle of a frame. Each is counted and said in the
  * status, everything good around it still arrives, nothing throws, and a lost connection is
- * called again.
+ * called again. A hostile robot bridge ({@link Bridge}) too: unknown encodings, a definition that
+ * does not parse, a huge schema, an advertise of more channels than the limit, binary garbage, a
+ * message shorter than its definition, a sequence longer than the message.
  */
 class RemoteStreamHostileServerTest {
 
@@ -145,6 +147,100 @@ class RemoteStreamHostileServerTest {
             assertEquals(bads.size() + 1, s.received());
             assertEquals(1, server.connections(), "bad messages do not cost the connection");
             assertEquals(1, server.fromClients().size(), "the client sent only its one subscription");
+        }
+    }
+
+    /** A ROS 2 robot's channel as a bridge advertises it: CDR with its ros2msg definition. */
+    private static JSONObject rosChannel(int id, String topic, String type, String definition) {
+        return new JSONObject().put("id", id).put("topic", topic).put("encoding", "cdr").put("schemaName", type)
+                .put("schemaEncoding", "ros2msg").put("schema", definition);
+    }
+
+    /** CDR (little-endian header) of the given doubles, then {@code tail}. */
+    private static byte[] cdr(byte[] tail, double... values) {
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.allocate(4 + 8 * values.length + tail.length)
+                .order(java.nio.ByteOrder.LITTLE_ENDIAN).put(new byte[]{0, 1, 0, 0});
+        for (double v : values) {
+            b.putDouble(v);
+        }
+        return b.put(tail).array();
+    }
+
+    private static byte[] pose(int n) {
+        return cdr(new byte[0], n, -n, 0.5);
+    }
+
+    @Test
+    void aHostileRobotBridgeIsCountedAndSaidWhileItsGoodMessagesArriveDecoded() throws Exception {
+        int values = 2;
+        JSONObject unknownEncoding = new JSONObject().put("id", 3).put("topic", "/flat").put("encoding", "flatbuffer")
+                .put("schemaName", "robot.Flat").put("schemaEncoding", "flatbuffer").put("schema", "AAAA");
+        JSONObject unparsable = rosChannel(4, "/broken", "robot_msgs/msg/Broken", "float64 x y\n%%% nonsense");
+        JSONObject hugeSchema = rosChannel(5, "/huge", "robot_msgs/msg/Huge",
+                "#" + "x".repeat(BridgeChannels.MAX_SCHEMA_CHARS));
+        JSONObject[] tooMany = new JSONObject[RemoteStream.MAX_CHANNELS + 100];
+        for (int i = 0; i < tooMany.length; i++) {
+            tooMany[i] = rosChannel(1000 + i, "/many/" + i, "geometry_msgs/msg/Pose2D", "float64 x\nfloat64 y\nfloat64 theta");
+        }
+        byte[] garbage = new byte[4096];
+        new java.util.Random(39).nextBytes(garbage);
+        garbage[0] = 0x7F;
+        List<Bad> bads = List.of(
+                new Bad("encoding not supported", c -> c.text(advertise(unknownEncoding))),
+                new Bad("does not parse", c -> c.text(advertise(unparsable))),
+                new Bad("over the limit", c -> c.text(advertise(hugeSchema))),
+                new Bad("limit of " + RemoteStream.MAX_CHANNELS + " channels", c -> c.text(advertise(tooMany))),
+                new Bad("op 127", c -> c.binary(garbage)));
+        List<Envelope> heard = new CopyOnWriteArrayList<>();
+        try (HostileFoxgloveServer server = new HostileFoxgloveServer(c -> {
+            c.handshake();
+            c.serverInfo();
+            c.text(advertise(rosChannel(GOOD, "/pose", "geometry_msgs/msg/Pose2D", "float64 x\nfloat64 y\nfloat64 theta"),
+                    rosChannel(values, "/values", "robot_msgs/msg/Values", "float64[] values")));
+            c.readText();
+            c.message(GOOD, 1_000, pose(0));
+            for (int i = 0; i < bads.size(); i++) {
+                step.acquire();
+                bads.get(i).send().run(c);
+                c.message(GOOD, 1_000, pose(i + 1));
+            }
+            step.acquire();
+            c.message(GOOD, 1_000, cdr(new byte[0], 7)); // shorter than its definition
+            c.message(values, 1_000, cdr(new byte[]{(byte) 0xFF, (byte) 0xFF, (byte) 0xFF, 0x7F})); // 2^31-1 doubles claimed
+            c.message(GOOD, 1_000, pose(99));
+            c.hold();
+        }); Bridge bridge = new Bridge("booster-9", new URI(server.url()), null, 1009, () -> 1L, heard::add,
+                touchline.transport.SendGate.open(), Duration.ofMillis(500)).start()) {
+            Await.until("the first pose", () -> heard.size() >= 1);
+            for (int i = 0; i < bads.size(); i++) {
+                int next = i + 2;
+                step.release();
+                Await.until("pose " + (i + 1), 10_000, () -> heard.size() >= next);
+                RemoteStatus s = bridge.status().connection();
+                assertEquals(i + 1, s.unusable(), "counted: " + s.problem());
+                assertTrue(s.problem().contains(bads.get(i).said()), "said: " + s.problem());
+                assertTrue(bridge.status().describe().contains((i + 1) + " unusable"), bridge.status().describe());
+            }
+            step.release();
+            Await.until("the last pose", () -> heard.stream().anyMatch(e -> e.ros() != null && e.ros().number("x") == 99));
+            List<Envelope> bad = heard.stream().filter(e -> e.error() != null).toList();
+            assertEquals(2, bad.size(), "each message that does not fit its definition is one envelope with the reason");
+            assertEquals("/pose", bad.get(0).kind());
+            assertTrue(bad.get(0).error().contains("does not decode") && bad.get(0).error().contains("ends at byte"),
+                    bad.get(0).error());
+            assertEquals("/values", bad.get(1).kind());
+            assertTrue(bad.get(1).error().contains("2147483647"), bad.get(1).error());
+            assertTrue(heard.stream().filter(e -> e.error() == null).allMatch(e -> e.kind().equals("/pose")
+                    && e.ros() != null && e.robotId() == 1009), "the good ones decoded, as the robot's");
+            assertEquals(List.of(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 99.0), heard.stream().filter(e -> e.error() == null)
+                    .map(e -> e.ros().number("x")).toList());
+            RemoteStatus s = bridge.status().connection();
+            assertEquals(RemoteStatus.State.CONNECTED, s.state());
+            // the three refused channels count against the limit too: it bounds every id remembered
+            assertEquals(RemoteStream.MAX_CHANNELS - 3, s.channels(), "the channels beyond the limit are not read");
+            assertEquals(1, server.connections(), "bad input does not cost the connection");
+            assertEquals(java.util.Map.of("/pose", 1L, "/values", 1L), bridge.status().undecodable(), "counted per channel");
+            assertTrue(bridge.status().describe().contains("undecodable: /pose 1, /values 1"), bridge.status().describe());
         }
     }
 

@@ -55,7 +55,7 @@ class GameControllerTabTest {
             });
             ViewContext context = new ViewContext(console.field(), console.optionSwitches(),
                     console.referee(), console.naos(), console.recordings(), console.replays(), console.teamSchemas(),
-                    console.teamBudget(), console.remote(), new ViewRegistry(), (s, src) -> { }, null,
+                    console.teamBudget(), console.remote(), console.bridges(), new ViewRegistry(), (s, src) -> { }, null,
                     new touchline.ui.ServeToggle(console.serving()));
             GameControllerTab tab = fx(() -> {
                 GameControllerTab t = new GameControllerTab(context, null);

@@ -218,15 +218,18 @@ class ReplayViewTest {
             int schema = w.addSchema("std_msgs/msg/String", "ros2msg", "string data".getBytes());
             int chatter = w.addChannel(schema, "/chatter", "cdr", java.util.Map.of());
             int score = w.addChannel(0, "/score", "json", java.util.Map.of());
+            int monster = w.addChannel(w.addSchema("Monster", "flatbuffer", new byte[]{1}), "/monster", "flatbuffer",
+                    java.util.Map.of());
             w.addMetadata("match", java.util.Map.of("field", "B"));
             for (int i = 0; i < 25; i++) {
                 long t = 1_700_000_000_000_000_000L + i * 10_000_000L;
                 w.addMessage(chatter, t, t, new byte[]{0, 1, 0, 0, 1, 0, 0, 0, 0});
                 w.addMessage(score, t, t, ("{\"home\": " + i + "}").getBytes());
+                w.addMessage(monster, t, t, new byte[]{4, 0, 0, 0});
             }
         }
         openFile(foreign);
-        String said = "skipped 25 messages of 1 channel: /chatter (ros2msg/cdr: encoding not supported) 25";
+        String said = "skipped 25 messages of 1 channel: /monster (flatbuffer/flatbuffer: encoding not supported) 25";
         await(20, () -> robot.lookup("#replay-notes").queryAs(Label.class).getText()
                 .equals("⚠ 25 messages of 1 channel skipped"));
         Label badge = robot.lookup("#replay-notes").queryAs(Label.class);
@@ -234,16 +237,16 @@ class ReplayViewTest {
         java.util.List<?> items = fx(() -> java.util.List.copyOf(
                 robot.lookup("#replay-problems").queryAs(ListView.class).getItems()));
         assertEquals(java.util.List.of("⚠ " + said, "• metadata match: field=B (listed, not played)"), items);
-        // the JSON channel plays into every view without a fault (a fault would be a note of its own)
+        // the JSON and the ROS 2 channel play into every view without a fault (a fault would be a note of its own)
         chooseSpeed(50.0);
         robot.clickOn("#replay-play");
         await(20, () -> state().finished());
-        assertEquals(25, state().emitted());
+        assertEquals(50, state().emitted());
         await(5, () -> robot.lookup("#replay-problems").queryAs(ListView.class).getItems().equals(items));
         // the same sentence replay prints
         try (Recording r = Recording.open(foreign)) {
             touchline.record.Player p = new touchline.record.Player(r, e -> { }, new touchline.app.SystemClock());
-            assertEquals(25, p.runToEnd());
+            assertEquals(50, p.runToEnd());
             assertEquals(java.util.List.of(said), r.notes().lines());
         }
     }
