@@ -50,7 +50,7 @@ class RosTablesTest {
         RosDebugData data = new RosDebugData();
         RosMessage rgb = msg("sensor_msgs/msg/Image", new String[] {"height", "width", "encoding", "step", "data"},
                 1, 1, "bgr8", 3L, new byte[] {1, 2, 3});
-        RosDebugData.Data d = data.of("/camera", rgb).orElseThrow();
+        RosDebugData.Data d = data.of(1001, "/camera", rgb).orElseThrow();
         assertEquals(Fumanoid.DebugKind.IMAGE_VALUE, d.debugKind());
         Fumanoid.DebugImage img = (Fumanoid.DebugImage) d.data();
         assertEquals("/camera", img.getOption());
@@ -58,8 +58,8 @@ class RosTablesTest {
         assertArrayEquals(new byte[] {3, 2, 1}, img.getData().toByteArray());
         RosMessage bad = msg("sensor_msgs/msg/Image", new String[] {"height", "width", "encoding", "step", "data"},
                 1, 1, "bayer_rggb8", 1L, new byte[] {1});
-        assertTrue(data.of("/camera", bad).isEmpty());
+        assertTrue(data.of(1001, "/camera", bad).isEmpty());
         RosMessage js = msg("sensor_msgs/msg/JointState", new String[] {"name"}, (Object) new String[] {"a"});
-        assertEquals(Fumanoid.DebugKind.TABLE_VALUE, data.of("/joint_states", js).orElseThrow().debugKind());
+        assertEquals(Fumanoid.DebugKind.TABLE_VALUE, data.of(1001, "/joint_states", js).orElseThrow().debugKind());
     }
 }

@@ -29,6 +29,7 @@ public final class LatestValues implements EnvelopeSink {
     private final Map<Key, Latest> latest = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
     private final Map<Key, Integer> translatedKinds = new ConcurrentHashMap<>();
+    private final touchline.model.RosDebugData rosData = new touchline.model.RosDebugData();
     private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
 
     @Override
@@ -64,6 +65,16 @@ public final class LatestValues implements EnvelopeSink {
         if (option != null) {
             latest.put(new Key(e.robotId(), option),
                     new Latest(e.robotId(), option, e.kind(), data, e.timeMicros(), version.incrementAndGet()));
+        }
+    }
+
+    /**
+     * Keeps a ROS 2 robot's inbound message as the data a view shows ({@link touchline.model.RosDebugData}:
+     * images, tables, markers), if it is one of those types.
+     */
+    synchronized void acceptRos(Envelope e) {
+        if (e.robotId() >= 0 && e.ros() != null) {
+            rosData.of(e.robotId(), e.kind(), e.ros()).ifPresent(d -> keepTranslated(e, d.data(), d.debugKind()));
         }
     }
 
@@ -114,6 +125,9 @@ public final class LatestValues implements EnvelopeSink {
     public void clear() {
         latest.clear();
         translatedKinds.clear();
+        synchronized (this) {
+            rosData.forget();
+        }
         version.incrementAndGet();
     }
 }

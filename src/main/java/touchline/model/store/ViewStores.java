@@ -25,8 +25,6 @@ public final class ViewStores implements EnvelopeSink {
                         java.util.concurrent.atomic.AtomicReference<touchline.model.RosReadings> readings)
             implements EnvelopeSink {
 
-        private static final touchline.model.RosDebugData ROS_DATA = new touchline.model.RosDebugData();
-
         Shelf(int textLines, int plotPoints, int networkEnvelopes, long originMicros) {
             this(new TextLog(textLines), new PlotStore(plotPoints, originMicros), new LatestValues(),
                     new NetworkLog(networkEnvelopes),
@@ -47,7 +45,7 @@ public final class ViewStores implements EnvelopeSink {
             if (e.ros() != null && e.direction() == Direction.IN) {
                 // a ROS 2 robot's log (/rosout) in the debug console, as the robot's text
                 readings.get().log(e.kind(), e.ros()).ifPresent(l -> text.add(e, l));
-                ROS_DATA.of(e.kind(), e.ros()).ifPresent(d -> latest.keepTranslated(e, d.data(), d.debugKind()));
+                latest.acceptRos(e); // images, tables and markers for the views that show small robots' data
                 return;
             }
             if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m)) {

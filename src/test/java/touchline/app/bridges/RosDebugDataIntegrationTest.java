@@ -26,7 +26,7 @@ import static org.junit.jupiter.api.Assertions.*;
 class RosDebugDataIntegrationTest {
 
     @Test
-    void aCompressedImageJointsAndDiagnosticsFromTheSimulatedRobotReachTheViewModel() throws Exception {
+    void aCompressedImageJointsDiagnosticsAndMarkersFromTheSimulatedRobotReachTheViewModel() throws Exception {
         try (Console console = new Console(ConsoleConfig.defaults().withUdp(UdpConfig.defaults()
                 .withBindAddress("127.0.0.1").withListenPort(0)).withGameControllerPort(0)).start();
              SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1")) {
@@ -49,6 +49,11 @@ class RosDebugDataIntegrationTest {
             Fumanoid.DebugTable diagnostics = (Fumanoid.DebugTable) latest.get(id, "/diagnostics").orElseThrow().data();
             assertTrue(diagnostics.getRows(0).getCells(4).startsWith("Battery="), diagnostics.toString());
             assertEquals(2, latest.translatedSources(Set.of(Fumanoid.DebugKind.TABLE_VALUE)).size());
+
+            Await.until("the markers kept", () -> latest.get(id, "/markers").isPresent());
+            touchline.proto.Drawing.FieldDrawing markers =
+                    (touchline.proto.Drawing.FieldDrawing) latest.get(id, "/markers").orElseThrow().data();
+            assertEquals(4, markers.getShapesCount(), "ball, path, kick range and text after the DELETEALL: " + markers);
         }
     }
 }
