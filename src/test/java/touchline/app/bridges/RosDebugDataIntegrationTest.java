@@ -50,6 +50,9 @@ class RosDebugDataIntegrationTest {
             assertTrue(diagnostics.getRows(0).getCells(4).startsWith("Battery="), diagnostics.toString());
             assertEquals(2, latest.translatedSources(Set.of(Fumanoid.DebugKind.TABLE_VALUE)).size());
 
+            Await.until("a temperature in the Robots table", () -> console.robots().robot(id)
+                    .filter(r -> r.temperature() >= 40 && r.temperature() <= 43).isPresent());
+
             Await.until("the markers kept", () -> latest.get(id, "/markers").isPresent());
             touchline.proto.Drawing.FieldDrawing markers =
                     (touchline.proto.Drawing.FieldDrawing) latest.get(id, "/markers").orElseThrow().data();
