@@ -32,7 +32,10 @@ public final class RosDebugData {
     private final RosTables tables = new RosTables();
     private final Map<SceneKey, MarkerScene> scenes = new HashMap<>();
 
-    /** The data {@code m} on robot {@code robotId}'s {@code topic} shows as, if any; an image that cannot be shown is none. */
+    /**
+     * The data {@code m} on robot {@code robotId}'s {@code topic} shows as, if any; an image that cannot be
+     * shown is a text with the reason, for the image view to say.
+     */
     public Optional<Data> of(int robotId, String topic, RosMessage m) {
         if (RosImage.isImage(m.typeName())) {
             return image(topic, images.frame(m));
@@ -68,7 +71,9 @@ public final class RosDebugData {
             b.setFormat((c.png() ? Fumanoid.ImageFormat.PNG : Fumanoid.ImageFormat.JPEG).getNumber())
                     .setData(ByteString.copyFrom(c.data()));
         } else {
-            return Optional.empty();
+            // shown in the image view in place of the frame, with the reason
+            return Optional.of(new Data(Fumanoid.DebugText.newBuilder().setOption(topic)
+                    .setText(((RosImage.Refused) frame).reason()).build(), Fumanoid.DebugKind.IMAGE_VALUE));
         }
         return Optional.of(new Data(b.build(), Fumanoid.DebugKind.IMAGE_VALUE));
     }

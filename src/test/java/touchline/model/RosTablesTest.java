@@ -58,7 +58,9 @@ class RosTablesTest {
         assertArrayEquals(new byte[] {3, 2, 1}, img.getData().toByteArray());
         RosMessage bad = msg("sensor_msgs/msg/Image", new String[] {"height", "width", "encoding", "step", "data"},
                 1, 1, "bayer_rggb8", 1L, new byte[] {1});
-        assertTrue(data.of(1001, "/camera", bad).isEmpty());
+        Fumanoid.DebugText why = (Fumanoid.DebugText) data.of(1001, "/camera", bad).orElseThrow().data();
+        assertTrue(why.getText().contains("bayer_rggb8"), why.getText());
+        assertEquals("/camera", why.getOption());
         RosMessage js = msg("sensor_msgs/msg/JointState", new String[] {"name"}, (Object) new String[] {"a"});
         assertEquals(Fumanoid.DebugKind.TABLE_VALUE, data.of(1001, "/joint_states", js).orElseThrow().debugKind());
     }
