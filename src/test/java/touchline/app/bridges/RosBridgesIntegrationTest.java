@@ -98,7 +98,7 @@ class RosBridgesIntegrationTest {
 
             assertTrue(console.matchMode().playIsOn(), "the PLAYING the robot reports is play: " + console.matchMode().notice());
             BridgeStatus s = console.bridges().statuses().get(0);
-            assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 5 channels"),
+            assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 8 channels"),
                     s.describe());
         }
     }
