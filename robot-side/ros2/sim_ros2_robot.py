@@ -4,7 +4,10 @@ with the Foxglove SDK (what foxglove_bridge is built on; it speaks foxglove.sdk.
 
   /rosout        rcl_interfaces/msg/Log             ros2msg / cdr
   /pose          geometry_msgs/msg/PoseStamped      ros2msg / cdr   (field coordinates, metres)
-  /joint_states  sensor_msgs/msg/JointState         ros2msg / cdr
+  /joint_states  sensor_msgs/msg/JointState         ros2msg / cdr   (24 joints)
+  /camera/image/compressed  sensor_msgs/msg/CompressedImage  ros2msg / cdr  (a 64×48 JPEG, 5 Hz)
+  /markers       visualization_msgs/msg/MarkerArray ros2msg / cdr   (ball, path, circle, text; 5 Hz)
+  /diagnostics   diagnostic_msgs/msg/DiagnosticArray ros2msg / cdr  (battery, temperature; 1 Hz)
   /robot_state   JSON (battery, temperature, the game state the robot believes)
   /heading       foxglove.Vector2                   protobuf
 
@@ -18,6 +21,7 @@ Prints "listening on port N" once it serves (port 0 takes a free one). Stops aft
 (0: never) or on SIGTERM/SIGINT.
 """
 import argparse
+import base64
 import json
 import math
 import signal
@@ -48,8 +52,43 @@ JOINT_STATE = ("std_msgs/Header header\nstring[] name\nfloat64[] position\nfloat
                + SEP + "MSG: std_msgs/Header\n" + HEADER
                + SEP + "MSG: builtin_interfaces/Time\n" + TIME)
 STRING = "string data\n"
+COMPRESSED_IMAGE = ("std_msgs/Header header\nstring format\nuint8[] data\n"
+                    + SEP + "MSG: std_msgs/Header\n" + HEADER
+                    + SEP + "MSG: builtin_interfaces/Time\n" + TIME)
+MARKER_ARRAY = ("visualization_msgs/Marker[] markers\n"
+                + SEP + "MSG: visualization_msgs/Marker\n"
+                "int32 ARROW=0\nint32 CUBE=1\nint32 SPHERE=2\nint32 CYLINDER=3\nint32 LINE_STRIP=4\nint32 LINE_LIST=5\n"
+                "int32 CUBE_LIST=6\nint32 SPHERE_LIST=7\nint32 POINTS=8\nint32 TEXT_VIEW_FACING=9\n"
+                "int32 MESH_RESOURCE=10\nint32 TRIANGLE_LIST=11\nint32 ADD=0\nint32 MODIFY=0\nint32 DELETE=2\n"
+                "int32 DELETEALL=3\n"
+                "std_msgs/Header header\nstring ns\nint32 id\nint32 type\nint32 action\ngeometry_msgs/Pose pose\n"
+                "geometry_msgs/Vector3 scale\nstd_msgs/ColorRGBA color\nbuiltin_interfaces/Duration lifetime\n"
+                "bool frame_locked\ngeometry_msgs/Point[] points\nstd_msgs/ColorRGBA[] colors\nstring text\n"
+                "string mesh_resource\nbool mesh_use_embedded_materials\n"
+                + SEP + "MSG: std_msgs/Header\n" + HEADER
+                + SEP + "MSG: builtin_interfaces/Time\n" + TIME
+                + SEP + "MSG: builtin_interfaces/Duration\n" + TIME
+                + SEP + "MSG: geometry_msgs/Pose\nPoint position\nQuaternion orientation\n"
+                + SEP + "MSG: geometry_msgs/Point\nfloat64 x\nfloat64 y\nfloat64 z\n"
+                + SEP + "MSG: geometry_msgs/Quaternion\nfloat64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n"
+                + SEP + "MSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n"
+                + SEP + "MSG: std_msgs/ColorRGBA\nfloat32 r\nfloat32 g\nfloat32 b\nfloat32 a\n")
+DIAGNOSTIC_ARRAY = ("std_msgs/Header header\ndiagnostic_msgs/DiagnosticStatus[] status\n"
+                    + SEP + "MSG: std_msgs/Header\n" + HEADER
+                    + SEP + "MSG: builtin_interfaces/Time\n" + TIME
+                    + SEP + "MSG: diagnostic_msgs/DiagnosticStatus\nbyte OK=0\nbyte WARN=1\nbyte ERROR=2\nbyte STALE=3\n"
+                    "byte level\nstring name\nstring message\nstring hardware_id\ndiagnostic_msgs/KeyValue[] values\n"
+                    + SEP + "MSG: diagnostic_msgs/KeyValue\nstring key\nstring value\n")
 
-JOINTS = ["head_yaw", "head_pitch", "l_hip_pitch", "l_knee", "r_hip_pitch", "r_knee"]
+# a Booster T1's 24 joints (head, arms, waist, legs)
+JOINTS = ["head_yaw", "head_pitch"] + ["%s_%s" % (side, j) for side in ("l", "r") for j in (
+    "shoulder_pitch", "shoulder_roll", "elbow_pitch", "elbow_yaw")] + ["waist_yaw"] + [
+    "%s_%s" % (side, j) for side in ("l", "r") for j in (
+        "hip_pitch", "hip_roll", "hip_yaw", "knee_pitch", "ankle_up")] + ["l_toe", "r_toe", "torso_pitch"]
+# what the robot's camera sees: a 64×48 JPEG (green field, white ball, blue sky), made once by ImageIO
+CAMERA_JPEG = base64.b64decode("/9j/4AAQSkZJRgABAgAAAQABAAD/2wBDAAgGBgcGBQgHBwcJCQgKDBQNDAsLDBkSEw8UHRofHh0aHBwgJC4nICIsIxwcKDcpLDAxNDQ0Hyc5PTgyPC4zNDL/2wBDAQkJCQwLDBgNDRgyIRwhMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjIyMjL/wAARCAAwAEADASIAAhEBAxEB/8QAHwAAAQUBAQEBAQEAAAAAAAAAAAECAwQFBgcICQoL/8QAtRAAAgEDAwIEAwUFBAQAAAF9AQIDAAQRBRIhMUEGE1FhByJxFDKBkaEII0KxwRVS0fAkM2JyggkKFhcYGRolJicoKSo0NTY3ODk6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqDhIWGh4iJipKTlJWWl5iZmqKjpKWmp6ipqrKztLW2t7i5usLDxMXGx8jJytLT1NXW19jZ2uHi4+Tl5ufo6erx8vP09fb3+Pn6/8QAHwEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoL/8QAtREAAgECBAQDBAcFBAQAAQJ3AAECAxEEBSExBhJBUQdhcRMiMoEIFEKRobHBCSMzUvAVYnLRChYkNOEl8RcYGRomJygpKjU2Nzg5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6goOEhYaHiImKkpOUlZaXmJmaoqOkpaanqKmqsrO0tba3uLm6wsPExcbHyMnK0tPU1dbX2Nna4uPk5ebn6Onq8vP09fb3+Pn6/9oADAMBAAIRAxEAPwBtFYX9oXX/AD1/8dH+FH9oXX/PX/x0f4V1f21h+z/D/M8b28TdorC/tC6/56/+Oj/Cj+0Lr/nr/wCOj/Cj+2sP2f4f5h7eJu0Vhf2hdf8APX/x0f4Uf2hdf89f/HR/hR/bWH7P8P8AMPbxN2isL+0Lr/nr/wCOj/Cj+0Lr/nr/AOOj/Cj+2sP2f4f5h7eJWooor5k5AooooAKK9M+Gnh/TL7S7rULy0juZvOMCrModFUKrZCkdST19uMc50fH/AIb0iLwvPfW1jDbT2zKUa3jCBgzKpDADkc59sfXO6w8nT57nUsLJ0/aXPIqKKKwOUKKKKACiiigDqPCnjW58MRT2/wBmW6tZW3iPfsKvwMhsHggDj2HTnNrxN8QbnxBpn9nxWS2kLsDN+88wuAQQAcDAyM/gPfPG0Vp7Wajy30NlXqKHJfQKKKKzMT//2Q==")
+WHITE = {"r": 1.0, "g": 1.0, "b": 1.0, "a": 1.0}
+ORANGE = {"r": 1.0, "g": 0.5, "b": 0.0, "a": 1.0}
 
 
 def ros2_channel(topic, type_name, definition):
@@ -100,6 +139,32 @@ def stamp(now):
     return {"sec": int(now), "nanosec": int((now % 1) * 1e9)}
 
 
+def marker(stamp_now, ns, ident, kind, position=(0.0, 0.0), scale=0.1, color=WHITE, points=(), text=""):
+    return {"header": {"stamp": stamp_now, "frame_id": "field"}, "ns": ns, "id": ident, "type": kind, "action": 0,
+            "pose": {"position": {"x": position[0], "y": position[1], "z": 0.0},
+                     "orientation": {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}},
+            "scale": {"x": scale, "y": scale, "z": scale}, "color": color,
+            "lifetime": {"sec": 0, "nanosec": 0}, "frame_locked": False,
+            "points": [{"x": px, "y": py, "z": 0.0} for px, py in points], "colors": [], "text": text,
+            "mesh_resource": "", "mesh_use_embedded_materials": False}
+
+
+def sim_markers(now, x, y):
+    """What the robot's world model draws: where it believes the ball (a sphere), its planned path (a line
+    strip), its kick range (a cylinder seen from above: a circle) and its intention (text)."""
+    s = stamp(now)
+    ball = (x + 0.8, y * 0.5)
+    return [{"header": {"stamp": s, "frame_id": "field"}, "ns": "", "id": 0, "type": 0, "action": 3,
+             "pose": {"position": {"x": 0.0, "y": 0.0, "z": 0.0}, "orientation": {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}},
+             "scale": {"x": 0.0, "y": 0.0, "z": 0.0}, "color": WHITE, "lifetime": {"sec": 0, "nanosec": 0},
+             "frame_locked": False, "points": [], "colors": [], "text": "", "mesh_resource": "",
+             "mesh_use_embedded_materials": False},
+            marker(s, "ball", 0, 2, position=ball, scale=0.1, color=ORANGE),
+            marker(s, "path", 1, 4, points=[(x, y), ((x + ball[0]) / 2, y), ball]),
+            marker(s, "kick", 2, 3, position=ball, scale=0.6, color=ORANGE),
+            marker(s, "intention", 3, 9, position=(x, y + 0.3), scale=0.2, text="go to ball")]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--port", type=int, default=8765)
@@ -122,6 +187,10 @@ def main():
     joints, encode_joints = ros2_channel("/joint_states", "sensor_msgs/msg/JointState", JOINT_STATE)
     state = Channel("/robot_state", message_encoding="json")
     heading = Vector2Channel("/heading")
+    camera, encode_camera = ros2_channel("/camera/image/compressed", "sensor_msgs/msg/CompressedImage", COMPRESSED_IMAGE)
+    markers, encode_markers = ros2_channel("/markers", "visualization_msgs/msg/MarkerArray", MARKER_ARRAY)
+    diagnostics, encode_diagnostics = ros2_channel("/diagnostics", "diagnostic_msgs/msg/DiagnosticArray",
+                                                   DIAGNOSTIC_ARRAY)
     print("listening on port %d" % server.port, flush=True)
 
     stop = threading.Event()
@@ -141,6 +210,18 @@ def main():
                                   "position": [0.3 * math.sin(t + i) for i in range(len(JOINTS))],
                                   "velocity": [0.0] * len(JOINTS), "effort": [1.0 + i for i in range(len(JOINTS))]}))
         heading.log(Vector2(x=math.cos(theta), y=math.sin(theta)))
+        if n % max(1, int(args.rate / 5)) == 0:
+            header = {"stamp": stamp(now), "frame_id": "camera"}
+            camera.log(encode_camera({"header": header, "format": "jpeg", "data": CAMERA_JPEG}))
+            markers.log(encode_markers({"markers": sim_markers(now, x, y)}))
+        if n % max(1, int(args.rate)) == 0:
+            battery = max(0.0, 95.0 - t / 60.0)
+            diagnostics.log(encode_diagnostics({"header": {"stamp": stamp(now), "frame_id": ""}, "status": [
+                {"level": 0, "name": args.name + ": Battery", "message": "discharging", "hardware_id": "bms",
+                 "values": [{"key": "Battery", "value": "%.1f" % battery}, {"key": "Voltage", "value": "25.2"}]},
+                {"level": 1 if t % 20 > 15 else 0, "name": args.name + ": Motors", "message": "warm",
+                 "hardware_id": "joints",
+                 "values": [{"key": "Temperature", "value": "%.1f" % (41.5 + math.sin(t))}]}]}))
         for said in robot.take_heard():
             print(said, flush=True)
             log.log(encode_log({"stamp": stamp(now), "level": 20, "name": args.name, "msg": said,

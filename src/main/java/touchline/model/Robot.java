@@ -39,9 +39,14 @@ final class Robot {
     }
 
     /** @return a note when the robot's address changed, else null */
+    private static final RosDiagnostics DIAGNOSTICS = new RosDiagnostics();
+    /** The hottest temperature its ROS 2 messages last reported, °C; NaN for none. */
+    private double temperature = Double.NaN;
+
     String take(Envelope e, RosReadings readings) {
         if (e.ros() != null) {
             status = read(status, e.kind(), e.ros(), readings);
+            temperature = DIAGNOSTICS.temperature(e.ros()).orElse(temperature);
         }
         return take(e);
     }
@@ -125,6 +130,6 @@ final class Robot {
                 s.getTimeOnline(), firstSeenMicros, lastSeenMicros, online, packets,
                 rate.perSecond(now), rate.bytesPerSecond(now), malformed, addressChanges, address, origin,
                 new RobotAuth(auth, verified, unverified, forged, lastForgery, s.hasAuth() ? s.getAuth() : null),
-                s.getGcOtherSource());
+                s.getGcOtherSource(), temperature);
     }
 }

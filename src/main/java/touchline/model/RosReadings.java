@@ -88,13 +88,18 @@ public final class RosReadings {
 
     /**
      * The battery in percent: {@code sensor_msgs/msg/BatteryState}'s percentage, a field the mapping
-     * names, or a numeric field whose path says battery and percent ({@code battery.percentage},
-     * {@code battery_percent}); fractions (≤ 1) are taken as 0…1.
+     * names, a DiagnosticArray's value whose key says battery ({@link RosDiagnostics}), or a numeric
+     * field whose path says battery and percent ({@code battery.percentage}, {@code battery_percent});
+     * fractions (≤ 1) are taken as 0…1.
      */
     public Optional<Integer> batteryPercent(String topic, RosMessage m) {
         String path = mapping.batteryPath(topic).orElse(null);
         if (path == null && m.typeName().equals("sensor_msgs/msg/BatteryState")) {
             path = "percentage";
+        }
+        if (path == null && m.typeName().equals("diagnostic_msgs/msg/DiagnosticArray")) {
+            var level = new RosDiagnostics().batteryPercent(m); // a "Battery" key/value
+            return level.isPresent() ? Optional.of((int) Math.round(level.getAsDouble())) : Optional.empty();
         }
         if (path == null) {
             for (String p : m.numericPaths()) {

@@ -5,7 +5,9 @@
  * {@code ShownOptions}), the team's traffic against the league's
  * limit ({@code TrafficMeter}), the league's rules as measured ({@code RuleProfile}, {@code MatchDebugRule}) and
  * the team-message budget guard ({@code TeamMessageBudget}); what a ROS 2 robot's messages say of it, by type and by
- * the user's mapping ({@code RosReadings}, {@code RosMapping}). Each is an {@code EnvelopeSink} subscribed to the
+ * the user's mapping ({@code RosReadings}, {@code RosMapping}, {@code RosDiagnostics}: battery and temperature), and
+ * its images, joint states, diagnostics and markers as a small robot's debug data for the views that show that
+ * ({@code RosDebugData}, {@code RosTables}, {@code MarkerScene}). Each is an {@code EnvelopeSink} subscribed to the
  * stream.
  * <p>
  * May depend on: transport, security and protocol; not record (the two do not know each other).

@@ -91,6 +91,11 @@ public final class SourceBar extends HBox {
                 }
             }
         }
+        for (var k : context.stores().latest().translatedSources(kinds)) {
+            if (!found.contains(new ViewSource(k.robotId(), k.option()))) {
+                found.add(new ViewSource(k.robotId(), k.option()));
+            }
+        }
         ViewSource current = choice.getValue();
         if (current != null && current.isSet() && !found.contains(current)) {
             found.add(0, current);

@@ -28,6 +28,8 @@ public final class LatestValues implements EnvelopeSink {
 
     private final Map<Key, Latest> latest = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
+    private final Map<Key, Integer> translatedKinds = new ConcurrentHashMap<>();
+    private final touchline.model.RosDebugData rosData = new touchline.model.RosDebugData();
     private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
 
     @Override
@@ -66,6 +68,40 @@ public final class LatestValues implements EnvelopeSink {
         }
     }
 
+    /**
+     * Keeps a ROS 2 robot's inbound message as the data a view shows ({@link touchline.model.RosDebugData}:
+     * images, tables, markers), if it is one of those types.
+     */
+    synchronized void acceptRos(Envelope e) {
+        if (e.robotId() >= 0 && e.ros() != null) {
+            rosData.of(e.robotId(), e.kind(), e.ros()).ifPresent(d -> keepTranslated(e, d.data(), d.debugKind()));
+        }
+    }
+
+    /**
+     * Keeps a ROS 2 robot's message translated to debug data ({@link touchline.model.RosDebugData}):
+     * its topic is the option, and views find it as a source by {@code debugKind}.
+     */
+    void keepTranslated(Envelope e, Message data, int debugKind) {
+        keep(e, data);
+        String option = names.optionOf(data);
+        if (option != null) {
+            translatedKinds.put(new Key(e.robotId(), option), debugKind);
+        }
+    }
+
+    /** The robots' ROS 2 topics kept as data a view of one of {@code debugKinds} shows. */
+    public List<Key> translatedSources(java.util.Set<Integer> debugKinds) {
+        List<Key> out = new ArrayList<>();
+        translatedKinds.forEach((k, kind) -> {
+            if (debugKinds.contains(kind)) {
+                out.add(k);
+            }
+        });
+        out.sort(java.util.Comparator.comparingInt(Key::robotId).thenComparing(Key::option));
+        return out;
+    }
+
     public Optional<Latest> get(int robotId, String option) {
         return Optional.ofNullable(latest.get(new Key(robotId, option)));
     }
@@ -88,6 +124,10 @@ public final class LatestValues implements EnvelopeSink {
     /** Drops every value; the version goes on counting, so a view notices the next value. */
     public void clear() {
         latest.clear();
+        translatedKinds.clear();
+        synchronized (this) {
+            rosData.forget();
+        }
         version.incrementAndGet();
     }
 }

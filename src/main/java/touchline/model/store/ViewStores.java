@@ -47,6 +47,7 @@ public final class ViewStores {
             if (e.ros() != null && e.direction() == Direction.IN) {
                 // a ROS 2 robot's log (/rosout) in the debug console, as the robot's text
                 readings.get().log(e.kind(), e.ros()).ifPresent(l -> text.add(e, l));
+                latest.acceptRos(e); // images, tables and markers for the views that show small robots' data
                 return;
             }
             if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m)) {

@@ -20,6 +20,9 @@
  *     Plot fields and CSV, {@code line(max)} for the network console, {@code text(max)} indented.
  *     Value types are listed in its Javadoc (arrays stay Java arrays: an image's data is one
  *     {@code byte[]}).</li>
+ * <li>{@link touchline.protocol.ros2.RosImage}{@code .frame(RosMessage)}: a {@code sensor_msgs/msg/Image}
+ *     (rgb8, bgr8, rgba8, bgra8, mono8, yuv422, yuyv) as RGB or grey pixels, a {@code CompressedImage}
+ *     (jpeg, png) as its file bytes, or {@code Refused(reason)}.</li>
  * <li>Below these: {@link touchline.protocol.ros2.DefinitionParser} →
  *     {@link touchline.protocol.ros2.DefinitionResult} ({@code Parsed(MessageDefinition)} or
  *     {@code Refused(reason, line)}); {@link touchline.protocol.ros2.MessageDefinition},

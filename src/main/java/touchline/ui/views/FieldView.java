@@ -178,6 +178,8 @@ public final class FieldView extends SourcedView {
                 g.fillText(o.getLabel(), sx + 7, sy + 4);
                 objectCount++;
             }
+        } else if (objects != null && objects.data() instanceof touchline.proto.Drawing.FieldDrawing d) {
+            objectCount = new FieldDrawingPainter().paint(g, d, cx, cy, scale); // a ROS 2 robot's markers
         }
         objectsNote = objects != null ? " · " + objectCount + " objects from " + objects.option() : "";
     }

@@ -51,7 +51,9 @@ public final class ImageDataView extends SourcedView {
                 }
             } else {
                 shown = null;
-                problem = "not an image: " + latest.kind();
+                // a ROS 2 frame that cannot be shown comes as the reason (model.RosDebugData)
+                problem = latest.data() instanceof Fumanoid.DebugText t ? t.getText() : "not an image: " + latest.kind();
+                failures++;
             }
         }
         GraphicsContext g = canvas.canvas().getGraphicsContext2D();

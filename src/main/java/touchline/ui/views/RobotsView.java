@@ -39,6 +39,7 @@ public final class RobotsView implements View {
     private final TextArea problems = new TextArea();
     private final SplitPane root = new SplitPane();
     /** What each column shows of a robot, in column order. */
+    private final TableColumn<LiveRows.Row<RobotSnapshot>, String> temperature;
     private final List<Function<RobotSnapshot, String>> shownTexts = new java.util.ArrayList<>();
     private final LiveRows<RobotSnapshot> rows = new LiveRows<>(r -> r.id() + "/" + r.origin(),
             r -> shownTexts.stream().map(f -> f.apply(r)).toList());
@@ -65,6 +66,9 @@ public final class RobotsView implements View {
         table.getColumns().add(column("ID", r -> Integer.toString(r.id()), 44));
         table.getColumns().add(column("Name", r -> text(r.label()), 80)); // "robot 3 (replay)" for a replayed one
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
+        temperature = column("Temp.", r -> Double.isNaN(r.temperature()) ? "–" : String.format("%.0f °C", r.temperature()), 56);
+        temperature.setVisible(false); // shown once a ROS 2 robot reports one (small robots do not)
+        table.getColumns().add(temperature);
         table.getColumns().add(column("Game", r -> text(r.gameStateShown()), 80));
         table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 100));
         // the league's debug rule in play (issue 40): datagrams per period, the biggest and its fragments
@@ -156,6 +160,7 @@ public final class RobotsView implements View {
         seenVersion = v;
         lastRebuildMicros = frame.nowMicros();
         rows.update(table.getItems(), context.field().robots().robots());
+        temperature.setVisible(table.getItems().stream().anyMatch(r -> !Double.isNaN(r.value().temperature())));
         StringBuilder p = new StringBuilder();
         for (SourceSnapshot s : context.field().robots().sources()) {
             if (s.malformed() > 0) {

@@ -99,7 +99,7 @@ class RosBridgesIntegrationTest {
 
             assertTrue(console.referee().matchMode().playIsOn(), "the PLAYING the robot reports is play: " + console.referee().matchMode().notice());
             BridgeStatus s = console.bridges().statuses().get(0);
-            assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 5 channels"),
+            assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 8 channels"),
                     s.describe());
         }
     }
@@ -127,8 +127,10 @@ class RosBridgesIntegrationTest {
              SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1")) {
             console.recordings().start(file);
             int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
+            // its log line in the debug console too: the robot's eight channels reach 60 messages before its first log
             Await.until("a pose, a log line and joints heard", () -> console.field().robots().robot(id)
-                    .map(RobotSnapshot::packets).orElse(0L) > 60);
+                    .map(RobotSnapshot::packets).orElse(0L) > 60
+                    && !console.field().stores().text().since(-1, id, 10).isEmpty());
             console.recordings().stop();
         }
         String out = touchline.testing.PythonMcap.run(READ_ROS2, file);
@@ -145,7 +147,8 @@ class RosBridgesIntegrationTest {
             console.recordings().start(file);
             int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
             Await.until("poses, log lines, joints and the robot state heard", () -> robot(console, id)
-                    .filter(r -> r.packets() > 60 && r.hasPosition() && !r.gameState().isEmpty()).isPresent());
+                    .filter(r -> r.packets() > 60 && r.hasPosition() && !r.gameState().isEmpty()).isPresent()
+                    && !console.field().stores().text().since(-1, id, 10).isEmpty());
             console.recordings().stop();
         }
         List<Envelope> replayed = new java.util.ArrayList<>();
@@ -183,7 +186,7 @@ class RosBridgesIntegrationTest {
             RobotSnapshot again = viewer.field().robots().robot(RosBridges.FIRST_ROBOT, touchline.transport.Origin.REPLAY)
                     .orElseThrow();
             assertTrue(again.hasPosition() && Math.abs(again.x() - 1500) <= 1201, again.x() + ", " + again.y());
-            assertEquals("PLAYING", again.gameState());
+            assertEquals("PLAYING", again.gameState(), replayed.stream().map(Envelope::kind).distinct().toList() + " " + replayed.stream().filter(e -> e.kind().equals("/robot_state")).findFirst().map(e -> e.error() + " " + (e.ros() == null ? "null" : e.ros().line(300))).orElse("none"));
             assertEquals(0, again.malformed());
         }
     }

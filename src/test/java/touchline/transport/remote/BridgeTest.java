@@ -48,7 +48,7 @@ class BridgeTest {
     @Test
     void theFoxgloveSdkServerIsReadOnItsOwnSubprotocolEveryChannelAsTheRobots() throws Exception {
         try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1"); Bridge bridge = bridge(robot.url())) {
-            Await.until("the five channels", () -> bridge.status().connection().channels() == 5);
+            Await.until("the eight channels", () -> bridge.status().connection().channels() == 8);
             BridgeStatus s = bridge.status();
             assertEquals("foxglove.sdk.v1", s.subprotocol());
             assertEquals("booster-1", s.serverName());
