@@ -17,8 +17,8 @@ import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.UdpConfig;
 import touchline.transport.nao.FakeNaoRobot;
-import touchline.ui.FrameContext;
-import touchline.ui.LatencyProbe;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.frame.LatencyProbe;
 
 import java.util.Arrays;
 import java.util.concurrent.CountDownLatch;
@@ -41,7 +41,7 @@ class NaoViewThreadsTest {
     private final FrameContext frame = new FrameContext(new LatencyProbe());
 
     private NaoView connected(Console console, FakeNaoRobot robot) throws Exception {
-        NaoView view = fx(() -> new NaoView(console));
+        NaoView view = fx(() -> new NaoView(console.naos()));
         Node root = view.node();
         fx(() -> {
             ((TextField) root.lookup("#nao-rpc-port")).setText(Integer.toString(robot.port()));
@@ -77,7 +77,7 @@ class NaoViewThreadsTest {
         AtomicReference<String> publishedOn = new AtomicReference<>();
         CountDownLatch release = new CountDownLatch(1);
         try (FakeNaoRobot robot = new FakeNaoRobot(0); Console console = console()) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.channel() == Channel.NAO_RPC && e.direction() == Direction.OUT && e.kind().equals("Test.void")) {
                     publishedOn.set(Thread.currentThread().getName());
                     awaitQuietly(release); // the stream's work for this call, held
@@ -128,7 +128,7 @@ class NaoViewThreadsTest {
         AtomicReference<Boolean> fxRanWhileTheLinkStopped = new AtomicReference<>();
         CountDownLatch closing = new CountDownLatch(1);
         try (FakeNaoRobot robot = new FakeNaoRobot(0); Console console = console()) {
-            console.bus().subscribe(e -> {
+            console.field().bus().subscribe(e -> {
                 if (e.channel() == Channel.LINK_EVENT && closing.getCount() == 0 && fxRanWhileTheLinkStopped.get() == null
                         && !Thread.currentThread().getName().equals(fxThread.getName())) {
                     // the link's thread, stopping: does the JavaFX thread run meanwhile, or wait for it?
