@@ -41,7 +41,7 @@ PY
 CFLAGS=(-std=c99 -Os -mcpu=cortex-m3 -mthumb -DFW_LOG_NONE -ffunction-sections -fdata-sections -fstack-usage
         -fcallgraph-info=su -Wall -Wextra -I"$HERE/src" -I"$HERE/third_party/nanopb"
         -I"$HERE/third_party/libsodium/include" -I"$OUT/gen")
-CORE=("$HERE"/src/fw_{framing,registry,gamecontroller,reliable,wlan,robot,gs1500,auth}.c
+CORE=("$HERE"/src/fw_{framing,registry,gamecontroller,reliable,wlan,robot,gs1500,auth,digest}.c
       "$HERE"/third_party/libsodium/{auth_hmacsha256,hash_sha256_cp,verify,sodium_glue}.c
       "$HERE"/third_party/nanopb/pb_{common,encode,decode}.c "$OUT/gen/fumanoid.pb.c" "$HERE/board/board_main.c"
       "$HERE/board/board_boot.c")

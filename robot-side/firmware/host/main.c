@@ -8,7 +8,11 @@
  *                   [--reliable-peer HOST:PORT] [--seed S] [--rto MS]
  *                   [--gc-return HOST[:PORT]] [--gc-return-rate HZ]
  *                   [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE [--boot-file FILE]]
+ *                   [--match-budget BYTES] [--match-sends N]
  *
+ * --match-budget BYTES: the match digest's datagram size (default one MTU, capped at 1400);
+ * --match-sends N: digests per period in play (default 1: the rule; more only to show that the
+ * console flags a robot breaking it).
  * --team-key FILE: the team key (`team.key` of `touchline keys new`); without it the robot
  * runs in lab mode (no tags checked or sent), as before keys existed (docs/security.md).
  * --boot-file FILE: the simulated flash word of the board's boot number (board/board_boot.c):
@@ -65,6 +69,7 @@ static void usage(const char *why)
             "                       [--reliable-peer HOST:PORT] [--seed S] [--rto MS]\n"
             "                       [--gc-return HOST[:PORT]] [--gc-return-rate HZ]\n"
             "                       [--team-msg-rate HZ] [--team-msg-to HOST[:PORT]] [--team-key FILE]\n"
+            "                       [--match-budget BYTES] [--match-sends N]\n"
             "                       [--boot-file FILE]\n",
             why);
     exit(2);
@@ -311,6 +316,20 @@ int main(int argc, char **argv)
             cfg.team_key = &team_key;
         }
         else if (strcmp(a, "--boot-file") == 0) { NEED_VALUE(); boot_path = v; }
+        else if (strcmp(a, "--match-budget") == 0) {
+            long b;
+            NEED_VALUE();
+            b = strtol(v, NULL, 10);
+            if (b < 64 || b > (long)FW_MAX_DATAGRAM) usage("--match-budget must be 64..1400");
+            cfg.match_budget = (uint16_t)b;
+        }
+        else if (strcmp(a, "--match-sends") == 0) {
+            long n;
+            NEED_VALUE();
+            n = strtol(v, NULL, 10);
+            if (n < 1 || n > 10) usage("--match-sends must be 1..10");
+            cfg.match_sends_per_period = (uint8_t)n;
+        }
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) usage("help");
         else usage("unknown argument");
 #undef NEED_VALUE

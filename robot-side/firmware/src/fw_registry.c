@@ -99,23 +99,32 @@ const char *fw_result_name(fw_result r)
     }
 }
 
-uint16_t fw_encode_message(uint8_t *out, uint16_t cap, fw_framing framing, int32_t robot_id,
-                           const pb_extension_type_t *ext_type, const void *msg)
+uint16_t fw_encode_payload(uint8_t *out, uint16_t cap, int32_t robot_id, const pb_extension_type_t *ext_type,
+                           const void *msg)
 {
-    uint16_t hdr = fw_header_size(framing);
     fumanoid_Message m;
     pb_extension_t ext;
     pb_ostream_t os;
-    if (cap > FW_MAX_DATAGRAM) cap = FW_MAX_DATAGRAM;
-    if (cap <= hdr) return 0;
     ext.type = ext_type;
     ext.dest = (void *)msg;
     ext.next = NULL;
     ext.found = true; /* nanopb encodes an optional extension only when "present" */
     m.robotID = robot_id;
     m.extensions = &ext;
-    os = pb_ostream_from_buffer(out + hdr, (size_t)(cap - hdr));
+    os = pb_ostream_from_buffer(out, cap);
     if (!pb_encode(&os, fumanoid_Message_fields, &m)) return 0;
-    fw_write_header(framing, out, (uint32_t)os.bytes_written);
-    return (uint16_t)(hdr + os.bytes_written);
+    return (uint16_t)os.bytes_written;
+}
+
+uint16_t fw_encode_message(uint8_t *out, uint16_t cap, fw_framing framing, int32_t robot_id,
+                           const pb_extension_type_t *ext_type, const void *msg)
+{
+    uint16_t hdr = fw_header_size(framing);
+    uint16_t n;
+    if (cap > FW_MAX_DATAGRAM) cap = FW_MAX_DATAGRAM;
+    if (cap <= hdr) return 0;
+    n = fw_encode_payload(out + hdr, (uint16_t)(cap - hdr), robot_id, ext_type, msg);
+    if (n == 0) return 0;
+    fw_write_header(framing, out, n);
+    return (uint16_t)(hdr + n);
 }

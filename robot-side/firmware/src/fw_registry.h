@@ -49,5 +49,8 @@ const char *fw_result_name(fw_result r);
  * static 1400-byte buffer). Returns the datagram length, or 0 if it does not fit. */
 uint16_t fw_encode_message(uint8_t *out, uint16_t cap, fw_framing framing, int32_t robot_id,
                            const pb_extension_type_t *ext_type, const void *msg);
+/* The same Message without a frame header (a match digest's item); 0 if it does not fit. */
+uint16_t fw_encode_payload(uint8_t *out, uint16_t cap, int32_t robot_id, const pb_extension_type_t *ext_type,
+                           const void *msg);
 
 #endif

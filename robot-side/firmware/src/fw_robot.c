@@ -1,5 +1,6 @@
 #include "fw_robot.h"
 #include "fw_registry.h"
+#include "fw_digest.h"
 
 /* All buffers are static: nothing of message size ever lives on the stack. */
 static uint8_t g_rx[FW_MAX_DATAGRAM];
@@ -16,6 +17,7 @@ static uint8_t g_game_state;
 static uint32_t g_started_at;
 static uint32_t g_next_keepalive;
 static bool g_enabled[FW_MAX_OPTIONS];
+static uint8_t g_rank[FW_MAX_OPTIONS]; /* place in the match digest, 1 = first; 0 = not in it */
 static uint32_t g_next_due[FW_MAX_OPTIONS];
 static rs_stream g_stream;
 static wlan_peer g_stream_peer;
@@ -73,11 +75,10 @@ static uint16_t tag_outgoing(uint16_t n)
                           FW_MAX_DATAGRAM);
 }
 
-static void send_outgoing(void)
+/* Tags and sends g_tx[0..n) to the console; n = 0: it did not fit. */
+static void transmit(uint16_t n)
 {
-    /* the trailer must fit into the 1400 bytes too (the Wi-Fi module's buffer) */
-    uint16_t room = (uint16_t)(sizeof g_tx - (g_cfg->team_key != 0 ? FW_AUTH_TRAILER : 0u));
-    uint16_t n = tag_outgoing(fw_encode_message(g_tx, room, g_cfg->framing, g_cfg->robot_id, g_out.type, &g_out.m));
+    n = tag_outgoing(n);
     if (n == 0) {
         g_count.send_failures++;
         fw_log("message does not fit into one datagram", 0, 0);
@@ -91,6 +92,18 @@ static void send_outgoing(void)
     } else {
         g_count.send_failures++;
     }
+}
+
+static uint16_t trailer_room(void)
+{
+    return g_cfg->team_key != 0 ? FW_AUTH_TRAILER : 0u;
+}
+
+static void send_outgoing(void)
+{
+    /* the trailer must fit into the 1400 bytes too (the Wi-Fi module's buffer) */
+    uint16_t room = (uint16_t)(sizeof g_tx - trailer_room());
+    transmit(fw_encode_message(g_tx, room, g_cfg->framing, g_cfg->robot_id, g_out.type, &g_out.m));
 }
 
 static const char *role_of(int32_t id)
@@ -110,7 +123,7 @@ static const char *behaviour_of(uint8_t state)
     return state < 5 ? names[state] : "standing";
 }
 
-static void send_status(uint32_t now)
+static void fill_status(uint32_t now)
 {
     fumanoid_Status *st = &g_out.m.status;
     uint32_t online_s = (now - g_started_at) / 1000u;
@@ -145,7 +158,45 @@ static void send_status(uint32_t now)
         st->auth = (fumanoid_AuthCounters){true, c->accepted, true, c->missing, true, c->truncated, true, c->wrong_key,
                                            true, c->bad_tag, true, c->replayed, true, g_cfg->boot_id};
     }
+}
+
+static void send_status(uint32_t now)
+{
+    fill_status(now);
     send_outgoing();
+}
+
+static bool has_match_items(void)
+{
+    uint8_t i;
+    for (i = 0; i < FW_MAX_OPTIONS; i++) {
+        if (g_rank[i] != 0) return true;
+    }
+    return false;
+}
+
+/* The match digest: the Status, then each chosen option's newest data in rank order, as much
+ * as the budget (one MTU after the tag, and the module's 1400 bytes) holds. */
+static void send_digest(uint32_t now)
+{
+    fw_digest d;
+    uint16_t budget = g_cfg->match_budget != 0 ? g_cfg->match_budget : FW_DIGEST_MTU_PAYLOAD;
+    uint8_t rank, i;
+    if (budget > FW_MAX_DATAGRAM) budget = FW_MAX_DATAGRAM;
+    fill_status(now);
+    fw_digest_begin(&d, g_tx, (uint16_t)(budget - trailer_room()), g_cfg->framing, g_cfg->robot_id);
+    if (!fw_digest_status(&d, &g_out.m.status)) {
+        transmit(0);
+        return;
+    }
+    for (rank = 1; rank <= FW_MAX_OPTIONS; rank++) {
+        for (i = 0; i < g_cfg->option_count && i < FW_MAX_OPTIONS; i++) {
+            if (g_rank[i] != rank || g_cfg->options[i].produce == 0 || !g_cfg->options[i].produce(now, &g_out)) continue;
+            if (!fw_digest_item(&d, g_cfg->robot_id, g_out.type, &g_out.m)) g_count.digest_omitted++;
+        }
+    }
+    g_count.digests_out++;
+    transmit(fw_digest_end(&d));
 }
 
 static void send_option_list(void)
@@ -163,6 +214,8 @@ static void send_option_list(void)
         o->kind = g_cfg->options[i].kind;
         o->has_enabled = true;
         o->enabled = g_enabled[i];
+        o->has_matchRank = g_rank[i] != 0;
+        o->matchRank = g_rank[i];
     }
     send_outgoing();
 }
@@ -185,6 +238,11 @@ static void on_option_request(int32_t sender, const void *msg)
                 g_enabled[i] = r->enable;
                 g_next_due[i] = 0;
                 fw_log(r->enable ? "debug option on" : "debug option off", r->name, i);
+            }
+            if (r->has_matchRank && g_rank[i] != r->matchRank) {
+                /* the console sends ranks outside play only (its match-mode gate) */
+                g_rank[i] = r->matchRank <= FW_MAX_OPTIONS ? (uint8_t)r->matchRank : 0u;
+                fw_log("match digest place", r->name, (int32_t)g_rank[i]);
             }
             g_send_list = true; /* the console sees the new state in a fresh list */
             return;
@@ -233,6 +291,7 @@ void robot_init(const robot_config *cfg, uint32_t now)
     for (i = 0; i < FW_MAX_OPTIONS; i++) {
         g_enabled[i] = false;
         g_next_due[i] = 0;
+        g_rank[i] = 0;
     }
     fw_registry_use(k_registry, sizeof k_registry / sizeof k_registry[0]);
     fw_auth_init(&g_auth, cfg->team_key, cfg->boot_id); /* the console's requests are bound to this boot */
@@ -496,10 +555,20 @@ void robot_poll(uint32_t now)
     g_now = now;
     match = robot_in_match();
     if (match) {
-        /* The game's limit: one debug packet (the Status) a period; the option list waits
-         * for the game to stop, option data is not produced at all. */
+        /* The game's limit: one debug packet a period, the match digest (or the bare Status
+         * when no item was chosen); the option list waits for the game to stop, option data
+         * is produced only for the digest. */
         uint32_t period = g_cfg->match_debug_period_ms ? g_cfg->match_debug_period_ms : FW_MATCH_DEBUG_PERIOD_MS;
-        if (!g_debug_sent || now - g_last_debug_at >= period) send_status(now);
+        if (!g_debug_sent || now - g_last_debug_at >= period) {
+            uint8_t k, sends = g_cfg->match_sends_per_period > 1u ? g_cfg->match_sends_per_period : 1u;
+            for (k = 0; k < sends; k++) {
+                if (has_match_items()) {
+                    send_digest(now);
+                } else {
+                    send_status(now);
+                }
+            }
+        }
         g_next_keepalive = now;
     } else {
         if (g_send_list) {

@@ -2,7 +2,9 @@
  * every waiting datagram, sends the Status keep-alive every 200 ms and the data of every
  * debug option that is switched on, and drives the reliable stream. During a game (the
  * GameController it follows says READY, SET or PLAYING, and for 2 s after) it keeps to the
- * league's limit on debug traffic: one Status a second and nothing else to the console. When it hears an HSL (or
+ * league's limit on debug traffic: one datagram a second to the console, the match digest
+ * (Status + the chosen options' newest data, fw_digest.h) or, with nothing chosen, the bare
+ * Status. When it hears an HSL (or
  * SPL) GameController it also sends return packets to it and, if configured, team messages.
  * Static memory only; the platform supplies the network driver (fw_wlan.h), the clock
  * (passed in) and fw_log(). */
@@ -91,6 +93,8 @@ typedef struct {
     const wlan_peer *team_msg_to;    /* broadcast (or 127.0.0.1) port 10000 + team; NULL = none */
     uint16_t match_debug_period_ms;  /* console traffic in READY/SET/PLAYING; 0 = FW_MATCH_DEBUG_PERIOD_MS */
     fw_ball_fn ball;                 /* may be NULL: ball never seen */
+    uint16_t match_budget;           /* a match digest's datagram incl. the tag; 0 = one MTU (capped at 1400) */
+    uint8_t match_sends_per_period;  /* 0/1 = the rule; more only to test the console's rule check */
     /* Team key (docs/security.md): NULL = lab mode, as before keys. With a key every datagram
      * from the console must carry a right tag and a newer counter (GameController packets are
      * not tagged: league rules), and the robot tags everything it sends to the console. */
@@ -112,6 +116,8 @@ typedef struct {
     uint32_t team_msgs_out;
     uint32_t team_msgs_held;   /* not sent: the team's message budget is (nearly) used up */
     uint32_t debug_held;       /* option data and lists held back by the game's debug limit */
+    uint32_t digests_out;      /* match digests sent */
+    uint32_t digest_omitted;   /* chosen items left out of a digest for want of room */
     uint32_t reliable_segments;
     uint32_t messages_out;
     uint32_t send_failures;

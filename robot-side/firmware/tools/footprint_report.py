@@ -38,7 +38,8 @@ INDIRECT = {
     "sendMsgToPeer": ["gs_send_peer"],
     "processData": ["on_list_request", "on_option_request"],
     "robot_poll": ["produce_text"],          # option producers (+ stream app: none on the board)
-    "send_status": [],                       # pose provider: none on the board (position NULL)
+    "fill_status": [],                       # pose provider: none on the board (position NULL)
+    "send_digest": ["produce_text"],         # the match digest's items: the option producers
     "world_view": [],                        # pose and ball providers: none on the board
     "rs_input": ["stream_deliver"],
     "rs_poll": ["stream_output"],

@@ -50,7 +50,7 @@ public final class Console implements AutoCloseable {
         MatchMode matchMode = new MatchMode(realClock);
         field = new LiveField(config, clock, withModel, replay);
         teamSchemas = new TeamSchemas(field.kinds());
-        field.bus().subscribe(new ReportedGameState(matchMode));
+        field.bus().subscribe(field.unpacking(new ReportedGameState(matchMode))); // a digest's Status too
         FieldGate gate = new FieldGate(field, matchMode);
         referee = new Referee(config, field.live(), matchMode, clock, realClock, gate::commandsOff);
         recordings = new Recordings(field.bus());
@@ -80,6 +80,7 @@ public final class Console implements AutoCloseable {
             field.tick();
             referee.tick();
             field.tickWaits();
+            switches.keepMatch();
         } catch (RuntimeException e) {
             org.slf4j.LoggerFactory.getLogger(Console.class).warn("tick failed: {}", e.toString());
         }

@@ -1,6 +1,8 @@
 package touchline.app;
 
 import touchline.model.DebugOptionSession;
+import touchline.model.MatchDebugRule;
+import touchline.model.MatchDigestUnpacker;
 import touchline.model.RobotRegistry;
 import touchline.model.RobotSnapshot;
 import touchline.model.TrafficMeter;
@@ -8,9 +10,11 @@ import touchline.model.store.NetworkLog;
 import touchline.model.store.PlotStore;
 import touchline.model.store.TextLog;
 import touchline.model.store.ViewStores;
+import touchline.protocol.MatchDigestParts;
 import touchline.protocol.MessageCodec;
 import touchline.protocol.MessageKinds;
 import touchline.transport.Envelope;
+import touchline.transport.EnvelopeSink;
 import touchline.transport.LiveStream;
 import touchline.transport.ReplayStream;
 import touchline.transport.MicrosClock;
@@ -20,6 +24,7 @@ import touchline.transport.UdpTransport;
 
 import java.net.InetSocketAddress;
 import java.time.Duration;
+import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -46,6 +51,10 @@ public final class LiveField {
     private final UdpTransport udp;
     private final ReliableStreamHandler reliable;
     private final RobotWaits robotWaits;
+    /** The league's debug rule measured for every live robot heard (issue 40); the guarded profile's once a team is guarded. */
+    private final MatchDebugRule matchRule;
+    /** A match digest's Status and items, each as its own envelope (MatchDigestUnpacker). */
+    private final MatchDigestParts digestParts = new MatchDigestParts(kinds);
     private final boolean withModel;
     /** Team messages heard (the budget guard's own socket), for {@link #transportCounts()}. */
     private final AtomicLong teamDatagramsIn = new AtomicLong();
@@ -69,24 +78,29 @@ public final class LiveField {
         robots = new RobotRegistry(clock, replayClock, RobotRegistry.DEFAULT_OFFLINE_AFTER_MICROS);
         robotWaits = new RobotWaits(clock);
         traffic = new TrafficMeter(modelClock);
+        matchRule = new MatchDebugRule(clock, MatchDebugRule.Limits.HSL_2026);
         udp = new UdpTransport(config.udp(), config.security(), codec, live, clock);
         reliable = udp.reliable();
         options = new DebugOptionSession(udp, codec, clock, replayClock);
         stores = new ViewStores(TextLog.DEFAULT_CAPACITY, PlotStore.DEFAULT_POINTS, NetworkLog.DEFAULT_CAPACITY,
                 clock.nowMicros(), replay::open);
         if (withModel) {
-            // the read models the views show: one per stream; the option session only on the live one
-            bus.subscribe(robots.live());
-            replayStream.subscribe(robots.replay());
+            // the read models the views show: one per stream; the option session only on the live one.
+            // A match digest's Status and items reach them as if streamed, on each stream (MatchDigestUnpacker);
+            // what counts traffic or measures the rule sees the datagram only.
+            bus.subscribe(unpacking(robots.live(), options, stores.live()));
+            replayStream.subscribe(unpacking(robots.replay(), options.replayed(), stores.replay()));
             bus.subscribe(traffic);
             replayStream.subscribe(traffic);
-            bus.subscribe(options);
-            replayStream.subscribe(options.replayed());
-            bus.subscribe(stores.live());
-            replayStream.subscribe(stores.replay());
+            bus.subscribe(matchRule); // live only: a replay's packets are last match's
             robots.addPresenceListener(options);
             robots.addPresenceListener(robotWaits);
         }
+    }
+
+    /** {@code sinks} behind a match digest unpacker: a digest passes as it came, then each message in it as its own envelope. */
+    EnvelopeSink unpacking(EnvelopeSink... sinks) {
+        return new MatchDigestUnpacker(digestParts, List.of(sinks));
     }
 
     /** Binds the robots' UDP port. */
@@ -130,6 +144,8 @@ public final class LiveField {
     public RobotRegistry robots() { return robots; }
     public DebugOptionSession options() { return options; }
     public TrafficMeter traffic() { return traffic; }
+    /** The debug rule measured for every live robot heard: per robot in play, datagrams per period, the biggest, warnings. */
+    public MatchDebugRule matchRule() { return matchRule; }
     public MessageKinds kinds() { return kinds; }
     public MicrosClock clock() { return clock; }
     /** The traffic meter's "now": wall time, or the replay position while a replay plays with live listening paused. */

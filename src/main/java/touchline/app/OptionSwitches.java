@@ -51,9 +51,17 @@ public final class OptionSwitches {
     private SendResult remembered(SendResult result) {
         WantedOptionsFile f = wantedFile;
         if (f != null) {
-            f.write(options.allWanted());
+            f.write(options.allWanted(), options.allMatchItems());
         }
         return result;
+    }
+
+    /** Every tick: the match items chosen in the options view or by a command are kept with the wanted options. */
+    void keepMatch() {
+        WantedOptionsFile f = wantedFile;
+        if (f != null) {
+            f.keepMatch(options.allWanted(), options.allMatchItems());
+        }
     }
 
     /**
@@ -96,6 +104,7 @@ public final class OptionSwitches {
         }
         WantedOptionsFile f = new WantedOptionsFile(file);
         options.restoreWanted(f.read());
+        options.restoreMatchItems(f.readMatch());
         wantedFile = f;
     }
 

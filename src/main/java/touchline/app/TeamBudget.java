@@ -1,6 +1,6 @@
 package touchline.app;
 
-import touchline.model.DebugRateGuard;
+import touchline.model.MatchDebugRule;
 import touchline.model.RuleProfile;
 import touchline.model.TeamMessageBudget;
 import touchline.transport.TeamMessageListener;
@@ -11,8 +11,8 @@ import java.util.Optional;
 
 /**
  * The budget guard: a team's messages heard on their own port and counted against the rule
- * profile's budget (with the GameController's own figure when one is heard), and the robots
- * over the profile's debug-packet limit during play. Off until {@link #guard} is called.
+ * profile's budget (with the GameController's own figure when one is heard), and the profile's debug
+ * rule's limits for the rule measured on every robot ({@link MatchDebugRule}). Off until {@link #guard} is called.
  */
 public final class TeamBudget {
 
@@ -20,8 +20,6 @@ public final class TeamBudget {
     private TeamMessageListener listener;
     private TeamMessageBudget budget;
     private AutoCloseable budgetSubscription;
-    private DebugRateGuard debugRate;
-    private AutoCloseable debugRateSubscription;
 
     TeamBudget(LiveField field) {
         this.field = field;
@@ -37,8 +35,7 @@ public final class TeamBudget {
         stop();
         budget = new TeamMessageBudget(field.modelClock(), profile, team);
         budgetSubscription = field.bus().subscribe(budget);
-        debugRate = new DebugRateGuard(field.clock(), profile);
-        debugRateSubscription = field.bus().subscribe(debugRate);
+        field.matchRule().use(MatchDebugRule.Limits.of(profile));
         listener = new TeamMessageListener(bind, field::acceptTeamMessage, field.clock());
         return budget;
     }
@@ -57,11 +54,6 @@ public final class TeamBudget {
         }
     }
 
-    /** Robots over the profile's debug-packet limit during play, if the guard was started. */
-    public synchronized Optional<DebugRateGuard> debugRateGuard() {
-        return Optional.ofNullable(debugRate);
-    }
-
     /** The budget guard's meter as JSON, for serving ({@code /team/budget}); its state is null without a guard. */
     public TeamBudgetJson json() {
         return new TeamBudgetJson(this::budget);
@@ -77,18 +69,14 @@ public final class TeamBudget {
             listener.close();
             listener = null;
         }
-        for (AutoCloseable subscription : new AutoCloseable[]{budgetSubscription, debugRateSubscription}) {
-            try {
-                if (subscription != null) {
-                    subscription.close();
-                }
-            } catch (Exception e) {
-                throw new IllegalStateException(e);
+        try {
+            if (budgetSubscription != null) {
+                budgetSubscription.close();
             }
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
         }
         budgetSubscription = null;
-        debugRateSubscription = null;
         budget = null;
-        debugRate = null;
     }
 }

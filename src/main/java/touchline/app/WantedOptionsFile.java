@@ -15,7 +15,8 @@ import java.util.TreeMap;
 
 /**
  * The debug options the user wants per robot ID, kept between runs in one properties file
- * ({@code ROBOT/OPTION=on}) beside the layouts. Written whole through a temporary file; a file
+ * ({@code ROBOT/OPTION=on}) beside the layouts, with each robot's match items in order
+ * ({@code game/ROBOT=OPTION,OPTION}; empty = chosen none). Written whole through a temporary file; a file
  * that cannot be read or written only costs the remembering: the reason is kept for the
  * status line and logged once.
  */
@@ -23,6 +24,7 @@ final class WantedOptionsFile {
 
     private final Path file;
     private volatile String problem = "";
+    private Map<Integer, java.util.List<String>> writtenMatch = Map.of();
 
     WantedOptionsFile(Path file) {
         this.file = file;
@@ -37,19 +39,55 @@ final class WantedOptionsFile {
         return problem;
     }
 
-    Map<Integer, Set<String>> read() {
-        Map<Integer, Set<String>> out = new TreeMap<>();
-        if (!Files.isRegularFile(file)) {
-            return out;
-        }
+    private Properties load() {
         Properties p = new Properties();
+        if (!Files.isRegularFile(file)) {
+            return p;
+        }
         try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             p.load(r);
         } catch (IOException | IllegalArgumentException e) {
             fail("could not read the wanted debug options in " + file + ": " + e.getMessage());
-            return out;
         }
+        return p;
+    }
+
+    /** Each robot's match items, in order, as last kept. */
+    synchronized Map<Integer, java.util.List<String>> readMatch() {
+        Map<Integer, java.util.List<String>> out = new TreeMap<>();
+        Properties p = load();
         for (String key : p.stringPropertyNames()) {
+            if (!key.startsWith(GAME)) {
+                continue;
+            }
+            try {
+                String v = p.getProperty(key).trim();
+                out.put(Integer.parseInt(key.substring(GAME.length()).trim()),
+                        v.isEmpty() ? java.util.List.of() : java.util.List.of(v.split("\\s*,\\s*")));
+            } catch (NumberFormatException e) {
+                fail("ignored \"" + key + "\" in " + file + ": not game/ROBOT");
+            }
+        }
+        writtenMatch = Map.copyOf(out);
+        return out;
+    }
+
+    /** Writes the file when the match items changed since they were last read or written. */
+    synchronized void keepMatch(Map<Integer, Set<String>> wanted, Map<Integer, java.util.List<String>> match) {
+        if (!match.equals(writtenMatch)) {
+            write(wanted, match);
+        }
+    }
+
+    private static final String GAME = "game/";
+
+    Map<Integer, Set<String>> read() {
+        Map<Integer, Set<String>> out = new TreeMap<>();
+        Properties p = load();
+        for (String key : p.stringPropertyNames()) {
+            if (key.startsWith(GAME)) {
+                continue;
+            }
             int slash = key.indexOf('/');
             if (slash <= 0 || slash == key.length() - 1 || !"on".equals(p.getProperty(key).trim())) {
                 continue;
@@ -64,9 +102,11 @@ final class WantedOptionsFile {
         return out;
     }
 
-    synchronized void write(Map<Integer, Set<String>> wanted) {
+    synchronized void write(Map<Integer, Set<String>> wanted, Map<Integer, java.util.List<String>> match) {
         Properties p = new Properties();
         wanted.forEach((robot, names) -> names.forEach(n -> p.setProperty(robot + "/" + n, "on")));
+        match.forEach((robot, names) -> p.setProperty(GAME + robot, String.join(",", names)));
+        writtenMatch = Map.copyOf(match);
         try {
             Files.createDirectories(file.toAbsolutePath().getParent());
             Path tmp = file.resolveSibling(file.getFileName() + ".tmp");

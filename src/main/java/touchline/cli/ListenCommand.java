@@ -40,11 +40,11 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
     public Integer call() throws Exception {
         PrintStream out = new PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.out), true);
         EnvelopeLine lines = new EnvelopeLine();
-        RobotTable table = new RobotTable();
         MonitorTable monitorTable = new MonitorTable();
         CountDownLatch stop = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(stop::countDown));
         try (Console console = remote.remote() ? remote.startViewing() : new Console(udp.config())) {
+            RobotTable table = new RobotTable(console.field().matchRule()::reading);
             if (!quiet) {
                 console.field().bus().subscribe((Envelope e) -> {
                     synchronized (out) {
@@ -80,8 +80,6 @@ final class ListenCommand implements java.util.concurrent.Callable<Integer> {
                         out.println(gcWarning);
                     }
                     guard.ifPresent(g -> out.println(g.snapshot().describe()));
-                    console.teamBudget().debugRateGuard().ifPresent(d -> d.overLimit().forEach(o -> out.println(
-                            "OVER THE DEBUG LIMIT (" + d.limit().describe() + "/s during play): " + o.describe())));
                     out.flush();
                 }
             }

@@ -35,6 +35,14 @@ final class OptionsCommand implements Callable<Integer> {
     @Option(names = "--off", description = "option to switch off (repeatable)")
     List<String> off = new ArrayList<>();
 
+    @Option(names = "--match", paramLabel = "NAME",
+            description = "option the robot puts into its match digest during play, in this order (repeatable;"
+                    + " replaces the robot's choice; sent outside play only)")
+    List<String> match = new ArrayList<>();
+
+    @Option(names = "--no-match", description = "no match items: the robot sends its Status alone during play")
+    boolean noMatch;
+
     @Option(names = "--timeout", description = "seconds to wait for the robot (default ${DEFAULT-VALUE})", defaultValue = "10")
     long timeoutSeconds;
 
@@ -87,6 +95,9 @@ final class OptionsCommand implements Callable<Integer> {
                 console.referee().awaitFirstListen(0, java.time.Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
             }
             int status = 0;
+            if (!match.isEmpty() || noMatch) {
+                status |= choose(console.optionSwitches().options());
+            }
             for (String name : on) {
                 status |= apply(console.optionSwitches(), name, true, deadline);
             }
@@ -98,11 +109,13 @@ final class OptionsCommand implements Callable<Integer> {
             }
             boolean confirmed = await(deadline, () -> {
                 RobotOptions o = console.field().options().options(robot);
-                return on.stream().allMatch(n -> o.option(n).map(OptionState::streaming).orElse(false));
+                return on.stream().allMatch(n -> o.option(n).map(OptionState::streaming).orElse(false))
+                        && o.options().stream().allMatch(OptionState::matchConfirmed);
             });
             print(console.optionSwitches(), console.field().options().options(robot));
             if (!confirmed) {
-                err.println("the robot did not start streaming every requested option within " + timeoutSeconds + " s");
+                err.println("the robot did not start streaming every requested option, or confirm its match items,"
+                        + " within " + timeoutSeconds + " s");
                 return 3;
             }
             return 0;
@@ -120,6 +133,27 @@ final class OptionsCommand implements Callable<Integer> {
                 : switches.switchAsAsked(robot, name, enable);
         if (!r.isSent()) {
             err.println(name + ": " + r.outcome().name().toLowerCase() + ": " + r.reason());
+            return 4;
+        }
+        return 0;
+    }
+
+    /** Sends the robot its match items (the digest's content in play); 1 unknown name, 4 held or not sent. */
+    private int choose(touchline.model.DebugOptionSession session) {
+        if (remote.remote()) {
+            err.println("--match: choose match items on the serving console (its Debug options view), not through it");
+            return 1;
+        }
+        RobotOptions options = session.options(robot);
+        for (String name : match) {
+            if (options.option(name).isEmpty()) {
+                err.println("robot " + robot + " offers no option '" + name + "'");
+                return 1;
+            }
+        }
+        SendResult r = session.setMatchItems(robot, match);
+        if (r.outcome() != SendResult.Outcome.SENT) {
+            err.println("match items: " + r.outcome().name().toLowerCase() + ": " + r.reason());
             return 4;
         }
         return 0;
@@ -164,8 +198,20 @@ final class OptionsCommand implements Callable<Integer> {
     private void print(OptionSwitches switches, RobotOptions options) {
         System.out.printf("robot %d: %d options%n", options.robotId(), options.options().size());
         for (OptionState o : options.options()) {
-            System.out.printf("  [%s] %-16s %-20s %s%s%n", switches.shownOn(o) ? "x" : " ", o.name(), o.kindName(),
-                    o.description(), o.streaming() ? "  (streaming)" : "");
+            System.out.printf("  [%s] %-16s %-20s %s%s%s%n", switches.shownOn(o) ? "x" : " ", o.name(), o.kindName(),
+                    o.description(), o.streaming() ? "  (streaming)" : "", matchText(o));
         }
+    }
+
+    /** "  (in the game: 2nd)", with "asked, not confirmed yet" until the robot's list shows the place. */
+    static String matchText(OptionState o) {
+        if (o.matchRank() == 0 && o.matchRankOnRobot() == 0) {
+            return "";
+        }
+        if (o.matchConfirmed()) {
+            return "  (in the game: #" + o.matchRank() + ")";
+        }
+        return o.matchRank() == 0 ? "  (in the game on the robot: #" + o.matchRankOnRobot() + ", out asked)"
+                : "  (in the game: #" + o.matchRank() + " asked, not confirmed yet)";
     }
 }

@@ -32,6 +32,12 @@ import java.util.Set;
  * {@link #replayed()}, a {@link ShownOptions} on the replay stream, so nothing a replay plays
  * ever makes this session send (a replayed robot is not on the field, and a live robot with
  * its number must not hear about it).
+ * The options chosen "in the game" (the match digest, docs/protocol.md) are reconciled the
+ * same way: each option's place is sent until the robot's list confirms it, through the same
+ * gate, so a choice never reaches a robot during play.
+ * Over 400 lines because the wanted options, the ones being released and the match places are
+ * one record per robot, reconciled against the same option list by the same tick under one lock;
+ * split apart, each part would need the others' view of that list and a second lock over it.
  */
 public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
 
@@ -57,11 +63,17 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         long lastListRequest = Long.MIN_VALUE / 2;
         final Map<String, Fumanoid.DebugOption> list = new LinkedHashMap<>();
         final Set<String> wanted = new LinkedHashSet<>();
+        /** the options the user chose for the match digest, first = rank 1 */
+        final List<String> match = new ArrayList<>();
+        /** the user chose (an empty choice too): only then is the robot's digest this console's to set */
+        boolean matchChosen;
         /** switched off by the user here, data still coming: off commands sent so far */
         final Map<String, Integer> releasing = new HashMap<>();
         /** when each option's data last came; updated in place (no boxed time per message) */
         final Map<String, LastData> lastData = new HashMap<>();
         final Map<String, Long> lastCommand = new HashMap<>();
+        /** when each option's match rank was last sent */
+        final Map<String, Long> lastRank = new HashMap<>();
         String lastHold = "";
 
         void dataCame(String option, long timeMicros) {
@@ -149,6 +161,110 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         for (String name : toEnable) {
             command(robotId, name, true);
         }
+        placeMatchItems(robotId, false);
+    }
+
+    /**
+     * Chooses the options a robot puts into its match digest, in this order (first = first in
+     * the digest; empty: the robot sends its Status alone in play). Remembered like the wanted
+     * options and sent, held during play like every request, until the robot's list confirms it.
+     */
+    public SendResult setMatchItems(int robotId, List<String> options) {
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            r.match.clear();
+            r.matchChosen = true;
+            for (String o : options) {
+                if (!r.match.contains(o)) {
+                    r.match.add(o);
+                }
+            }
+            version++;
+        }
+        return placeMatchItems(robotId, true);
+    }
+
+    /** The match items of an earlier run (per robot ID), chosen again: each robot gets them when its list arrives. */
+    public void restoreMatchItems(Map<Integer, List<String>> items) {
+        List<Integer> now = new ArrayList<>();
+        synchronized (this) {
+            items.forEach((id, names) -> {
+                PerRobot r = robots.get(id);
+                if (r == null) {
+                    r = robot(id);
+                    r.online = false; // not seen yet: asked for its list when it appears
+                }
+                r.match.clear();
+                r.match.addAll(names);
+                r.matchChosen = true;
+                if (r.online && r.listReceived) {
+                    now.add(id);
+                }
+            });
+            version++;
+        }
+        now.forEach(id -> placeMatchItems(id, true));
+    }
+
+    /** The robot's chosen match items in order (live robots). */
+    public synchronized List<String> matchItems(int robotId) {
+        PerRobot r = robots.get(robotId);
+        return r == null ? List.of() : List.copyOf(r.match);
+    }
+
+    /** Every robot's chosen match items, to keep them with the wanted options. */
+    public synchronized Map<Integer, List<String>> allMatchItems() {
+        Map<Integer, List<String>> out = new java.util.TreeMap<>();
+        robots.forEach((id, r) -> {
+            if (r.matchChosen) {
+                out.put(id, List.copyOf(r.match));
+            }
+        });
+        return out;
+    }
+
+    /** The rank the user wants for {@code name}: 1 = first, 0 = not in the digest; the robot's own without a choice here. */
+    private static int wantedRank(PerRobot r, Fumanoid.DebugOption o) {
+        return r.matchChosen ? r.match.indexOf(o.getName()) + 1 : o.getMatchRank();
+    }
+
+    /**
+     * Sends the place of each listed option whose rank the robot's list does not show yet
+     * ({@code force}: also those asked within the retry time); the last result, or "nothing to
+     * send" when the list already agrees or has not come.
+     */
+    private SendResult placeMatchItems(int robotId, boolean force) {
+        Map<String, int[]> toSend = new LinkedHashMap<>();
+        long now = clock.nowMicros();
+        synchronized (this) {
+            PerRobot r = robot(robotId);
+            if (!r.matchChosen) {
+                // another console's choice (or the robot's own) is never touched
+                return new SendResult(SendResult.Outcome.SENT, "no match items chosen here");
+            }
+            if (!r.online || !r.listReceived) {
+                return SendResult.held("the option list of robot " + robotId + " has not come yet; sent when it does");
+            }
+            for (Fumanoid.DebugOption o : r.list.values()) {
+                int rank = wantedRank(r, o);
+                long last = r.lastRank.getOrDefault(o.getName(), Long.MIN_VALUE / 2);
+                if (o.getMatchRank() != rank && (force || now - last >= COMMAND_RETRY_MICROS)) {
+                    boolean enable = o.getEnabled() || r.wanted.contains(o.getName());
+                    toSend.put(o.getName(), new int[]{enable ? 1 : 0, rank});
+                }
+            }
+        }
+        SendResult last = new SendResult(SendResult.Outcome.SENT, "the robot's list already shows this choice");
+        for (Map.Entry<String, int[]> e : toSend.entrySet()) {
+            last = commands.send(robotId, codec.optionRequest(e.getKey(), e.getValue()[0] == 1, e.getValue()[1]));
+            synchronized (this) {
+                PerRobot r = robot(robotId);
+                r.lastRank.put(e.getKey(), clock.nowMicros());
+                r.lastHold = last.isSent() ? "" : last.reason();
+                version++;
+            }
+        }
+        return last;
     }
 
     @Override
@@ -293,6 +409,15 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         }
         needList.forEach(this::requestList);
         retries.forEach((id, options) -> options.forEach((name, on) -> command(id, name, on)));
+        List<Integer> listed = new ArrayList<>();
+        synchronized (this) {
+            robots.forEach((id, r) -> {
+                if (r.online && r.listReceived) {
+                    listed.add(id);
+                }
+            });
+        }
+        listed.forEach(id -> placeMatchItems(id, false));
     }
 
     /** Whether every wanted option of the robot streams and none it switched off is still being released. */
@@ -361,7 +486,7 @@ public final class DebugOptionSession implements EnvelopeSink, RobotPresence {
         List<OptionState> states = new ArrayList<>();
         for (Fumanoid.DebugOption o : r.list.values()) {
             states.add(new OptionState(o.getName(), o.getDescription(), o.getKind(), r.wanted.contains(o.getName()),
-                    o.getEnabled(), streaming(r, o.getName(), now)));
+                    o.getEnabled(), streaming(r, o.getName(), now), wantedRank(r, o), o.getMatchRank()));
         }
         return new RobotOptions(robotId, r.listReceived, r.listRequests, states, r.lastHold);
     }

@@ -7,9 +7,16 @@ package touchline.model;
  * @param wanted      the user switched it on in the console
  * @param enabledOnRobot what the robot's last option list said
  * @param streaming   data for it arrived within the last two seconds
+ * @param matchRank   its place in the match digest as the user chose it (1 = first), 0 = not "in the game"
+ * @param matchRankOnRobot its place as the robot's last option list confirmed it, 0 = not in its digest
  */
 public record OptionState(String name, String description, int kind, boolean wanted, boolean enabledOnRobot,
-                          boolean streaming) {
+                          boolean streaming, int matchRank, int matchRankOnRobot) {
+
+    /** Chosen "in the game" and the robot confirmed the place. */
+    public boolean matchConfirmed() {
+        return matchRank == matchRankOnRobot;
+    }
 
     public boolean knownKind() {
         return touchline.proto.Fumanoid.DebugKind.forNumber(kind) != null && kind != 0;

@@ -25,10 +25,12 @@ import java.util.Properties;
  * @param halfSeconds            length of a half of the normal game
  * @param halves                 halves of the normal game
  * @param trafficBitsPerSecond   the team's wireless traffic limit
+ * @param maxDebugPacketBytes    the largest debug datagram (UDP payload) during play
+ * @param maxDebugFragments      the IP fragments a debug datagram may take during play
  */
 public record RuleProfile(String name, RuleLimit teamMessageBudget, RuleLimit perAddedMinute, RuleLimit extraTime,
                           RuleLimit maxTeamMessageBytes, RuleLimit debugPacketsPerSecond, int halfSeconds, int halves,
-                          RuleLimit trafficBitsPerSecond) {
+                          RuleLimit trafficBitsPerSecond, RuleLimit maxDebugPacketBytes, RuleLimit maxDebugFragments) {
 
     /** Where the launcher's working directory keeps the profiles the user can pick by name. */
     public static final Path SAMPLES = Path.of("samples", "profiles");
@@ -57,7 +59,8 @@ public record RuleProfile(String name, RuleLimit teamMessageBudget, RuleLimit pe
         return new RuleProfile(f.text("name"), f.limit("team-messages.budget"), f.optionalLimit("team-messages.per-added-minute"),
                 f.optionalLimit("team-messages.extra-time"), f.limit("team-messages.max-bytes"),
                 f.limit("debug.packets-per-second"), (int) f.number("half.seconds"), (int) f.number("halves"),
-                f.limit("traffic.bits-per-second"));
+                f.limit("traffic.bits-per-second"), f.optionalLimit("debug.max-packet-bytes"),
+                f.optionalLimit("debug.max-fragments"));
     }
 
     /** Reads one profile's keys, naming the file and the key in every complaint. */

@@ -78,7 +78,8 @@ public final class ShownOptions implements EnvelopeSink {
         for (Fumanoid.DebugOption o : r.list.values()) {
             long[] last = r.lastData.get(o.getName());
             states.add(new OptionState(o.getName(), o.getDescription(), o.getKind(), false, o.getEnabled(),
-                    last != null && now - last[0] <= DebugOptionSession.STREAMING_WINDOW_MICROS));
+                    last != null && now - last[0] <= DebugOptionSession.STREAMING_WINDOW_MICROS,
+                    o.getMatchRank(), o.getMatchRank())); // the recorded robot's match place, as it had it
         }
         return new RobotOptions(robotId, r.listReceived, 0, states, "");
     }

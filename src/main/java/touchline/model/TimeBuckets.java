@@ -2,7 +2,7 @@ package touchline.model;
 
 /**
  * Events counted over a sliding window of fixed time buckets (e.g. the last minute in twelve
- * 5 s buckets): the budget guard's message rates and the debug-rate guard's packet rates. Not
+ * 5 s buckets): the budget guard's message rates and the debug rule's packet rates. Not
  * thread-safe on its own: the owner synchronises.
  */
 final class TimeBuckets {

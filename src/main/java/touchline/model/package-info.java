@@ -3,7 +3,7 @@
  * writes: every robot seen ({@code RobotRegistry}, {@code RobotSnapshot}, {@code RobotAuth}), the debug-option
  * protocol per robot ({@code DebugOptionSession}, {@code OptionState}; a replay's option lists, only shown:
  * {@code ShownOptions}), the team's traffic against the league's
- * limit ({@code TrafficMeter}), the league's rules as measured ({@code RuleProfile}, {@code DebugRateGuard}) and
+ * limit ({@code TrafficMeter}), the league's rules as measured ({@code RuleProfile}, {@code MatchDebugRule}) and
  * the team-message budget guard ({@code TeamMessageBudget}). Each is an {@code EnvelopeSink} subscribed to the
  * stream.
  * <p>

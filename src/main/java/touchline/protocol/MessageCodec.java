@@ -102,6 +102,14 @@ public final class MessageCodec {
                 .build();
     }
 
+    /** Switches an option and sets its place in the match digest (1 = first, 0 = out of it). */
+    public Fumanoid.Message optionRequest(String name, boolean enable, int matchRank) {
+        return Fumanoid.Message.newBuilder().setRobotID(CONSOLE_ID)
+                .setExtension(Fumanoid.debugOptionRequest, Fumanoid.DebugOptionRequest.newBuilder().setName(name)
+                        .setEnable(enable).setMatchRank(matchRank).build())
+                .build();
+    }
+
     public Fumanoid.Message optionRequest(String name, boolean enable) {
         return Fumanoid.Message.newBuilder().setRobotID(CONSOLE_ID)
                 .setExtension(Fumanoid.debugOptionRequest,

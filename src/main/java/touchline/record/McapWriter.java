@@ -22,7 +22,7 @@ import java.util.zip.CRC32;
  * every chunk is readable on its own after a crash. A chunk is written to the file when it
  * reaches {@code chunkBytes} or, through {@link #flushIfOlderThan}, when it is older than the
  * caller's limit, so a killed process loses at most that much. Not thread-safe: one writer
- * thread owns it.
+ * thread owns it. The open chunk's message indexes are kept by {@link MessageIndexes}.
  */
 public final class McapWriter implements Closeable {
 
@@ -47,13 +47,10 @@ public final class McapWriter implements Closeable {
     private final List<MetadataIndex> metadataIndexes = new ArrayList<>();
     private final Bytes chunkIndexes = new Bytes(4096);
     private int chunkCount;
-    // per channel id: sequence numbers, message counts, and this chunk's message index (time, offset pairs)
+    // per channel id: sequence numbers and message counts
     private int[] sequences = new int[16];
     private long[] messageCounts = new long[16];
-    private long[][] chunkIndex = new long[16][];
-    private int[] chunkIndexSize = new int[16];
-    private int[] chunkChannels = new int[16];
-    private int chunkChannelCount;
+    private final MessageIndexes messageIndexes = new MessageIndexes();
 
     private final Bytes chunk;
     private final Bytes scratch = new Bytes(1024);
@@ -111,9 +108,7 @@ public final class McapWriter implements Closeable {
             int n = sequences.length * 2;
             sequences = Arrays.copyOf(sequences, n);
             messageCounts = Arrays.copyOf(messageCounts, n);
-            chunkIndex = Arrays.copyOf(chunkIndex, n);
-            chunkIndexSize = Arrays.copyOf(chunkIndexSize, n);
-            chunkChannels = Arrays.copyOf(chunkChannels, n);
+            messageIndexes.ensureChannels(n);
         }
         return id;
     }
@@ -155,7 +150,7 @@ public final class McapWriter implements Closeable {
         chunk.u64(logTimeNanos);
         chunk.u64(publishTimeNanos);
         chunk.raw(data, off, len);
-        indexMessage(channelId, logTimeNanos, offset);
+        messageIndexes.add(channelId, logTimeNanos, offset);
         chunkStart = Math.min(chunkStart, logTimeNanos);
         chunkEnd = Math.max(chunkEnd, logTimeNanos);
         firstTime = Math.min(firstTime, logTimeNanos);
@@ -165,24 +160,6 @@ public final class McapWriter implements Closeable {
         if (chunk.size >= chunkBytes) {
             flushChunk();
         }
-    }
-
-    private void indexMessage(int channelId, long time, long offset) {
-        long[] index = chunkIndex[channelId];
-        int n = chunkIndexSize[channelId];
-        if (n == 0) {
-            chunkChannels[chunkChannelCount++] = channelId;
-            if (index == null) {
-                index = new long[64];
-                chunkIndex[channelId] = index;
-            }
-        } else if (n + 2 > index.length) {
-            index = Arrays.copyOf(index, index.length * 2);
-            chunkIndex[channelId] = index;
-        }
-        index[n] = time;
-        index[n + 1] = offset;
-        chunkIndexSize[channelId] = n + 2;
     }
 
     private void writeDefinitions() {
@@ -246,25 +223,7 @@ public final class McapWriter implements Closeable {
         chunk.clear();
 
         scratch.clear();
-        Map<Integer, Long> indexOffsets = new TreeMap<>();
-        long indexStart = chunkOffset + chunkLength;
-        Arrays.sort(chunkChannels, 0, chunkChannelCount);
-        for (int c = 0; c < chunkChannelCount; c++) {
-            int channel = chunkChannels[c];
-            int n = chunkIndexSize[channel];
-            long[] index = chunkIndex[channel];
-            sortByTime(index, n);
-            indexOffsets.put(channel, indexStart + scratch.size);
-            int rec = scratch.beginRecord(McapRecords.MESSAGE_INDEX);
-            scratch.u16(channel);
-            scratch.u32(n * 8L);
-            for (int i = 0; i < n; i++) {
-                scratch.u64(index[i]);
-            }
-            scratch.endRecord(rec);
-            chunkIndexSize[channel] = 0;
-        }
-        chunkChannelCount = 0;
+        Map<Integer, Long> indexOffsets = messageIndexes.writeAndClear(scratch, chunkOffset + chunkLength);
         long indexLength = scratch.size;
         emit(scratch, true);
 
@@ -289,30 +248,6 @@ public final class McapWriter implements Closeable {
         chunkStart = Long.MAX_VALUE;
         chunkEnd = Long.MIN_VALUE;
         chunkHasContent = false;
-    }
-
-    /**
-     * Sorts the (log time, offset) pairs {@code index[0, n)} by time, then offset: readers
-     * binary-search message indexes, and envelopes of several threads can reach the writer
-     * slightly out of order. Already sorted is the common case and costs one pass.
-     */
-    private static void sortByTime(long[] index, int n) {
-        boolean sorted = true;
-        for (int i = 2; i < n && sorted; i += 2) {
-            sorted = index[i - 2] <= index[i];
-        }
-        if (sorted) {
-            return;
-        }
-        long[][] pairs = new long[n / 2][];
-        for (int i = 0; i < n; i += 2) {
-            pairs[i / 2] = new long[]{index[i], index[i + 1]};
-        }
-        Arrays.sort(pairs, (a, b) -> a[0] != b[0] ? Long.compare(a[0], b[0]) : Long.compare(a[1], b[1]));
-        for (int i = 0; i < pairs.length; i++) {
-            index[2 * i] = pairs[i][0];
-            index[2 * i + 1] = pairs[i][1];
-        }
     }
 
     private void write(byte[] b, int length) throws IOException {

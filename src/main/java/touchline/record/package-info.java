@@ -1,5 +1,7 @@
 /**
- * Recording and replay in MCAP: the writer and reader ({@code McapWriter}, {@code McapReader}), the mapping of an
+ * Recording and replay in MCAP: the writer and reader ({@code McapWriter}, {@code McapReader}; the reader's parts:
+ * {@code SummarySection}, {@code LinearScan} for a file without one, {@code ChunkAdmission} weighing chunks against
+ * the {@code ExpansionLimit}, {@code ChunkHeader} decompressing and checking a chunk), the mapping of an
  * {@code Envelope} to channels and back ({@code EnvelopeWriter}, {@code Recording}), the recorder subscribed to
  * the stream ({@code Recorder}), playback paced by a clock ({@code Player}, {@code ReplaySession} for several
  * files on one timeline, {@code ClockAlignment}), timeline events ({@code TimelineEvent}), what a replay has to

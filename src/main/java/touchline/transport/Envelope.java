@@ -24,10 +24,13 @@ import java.util.Objects;
  * @param origin       live traffic, or a recording played back (which must never act on the live field)
  * @param authenticity whether a robot's datagram carried a right tag of the team key (docs/security.md);
  *                     {@code NOT_CHECKED} for everything that is not a robot's datagram
+ * @param matchPart    one message taken out of a robot's match digest (its Status or an item): match data
+ *                     shown like streamed data; {@code raw} is then the part's own bytes, and the datagram
+ *                     itself travels as its own envelope (what counts traffic or records takes that one)
  */
 public record Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
                        int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
-                       Authenticity authenticity) {
+                       Authenticity authenticity, boolean matchPart) {
 
     public static final int NO_ROBOT = -1;
 
@@ -38,6 +41,13 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
         Objects.requireNonNull(raw, "raw");
         Objects.requireNonNull(origin, "origin");
         Objects.requireNonNull(authenticity, "authenticity");
+    }
+
+    /** A whole datagram or call (not a part of a match digest). */
+    public Envelope(long timeMicros, Direction direction, Channel channel, InetSocketAddress peer,
+                    int robotId, String kind, Message message, byte[] raw, String error, Origin origin,
+                    Authenticity authenticity) {
+        this(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, origin, authenticity, false);
     }
 
     /** An envelope whose authenticity was not checked (outbound, GameController, NAO, older recordings). */
@@ -56,7 +66,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
     public Envelope asReplayed() {
         return origin == Origin.REPLAY ? this
                 : new Envelope(timeMicros, direction, channel, peer, robotId, kind, message, raw, error, Origin.REPLAY,
-                        authenticity);
+                        authenticity, matchPart);
     }
 
     /** True when a recording played this envelope back: it must never cause a datagram or change match mode. */
@@ -98,7 +108,8 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
     @Override
     public boolean equals(Object o) {
         return o instanceof Envelope e && timeMicros == e.timeMicros && robotId == e.robotId
-                && direction == e.direction && channel == e.channel && origin == e.origin && Objects.equals(peer, e.peer)
+                && direction == e.direction && channel == e.channel && origin == e.origin && matchPart == e.matchPart
+                && Objects.equals(peer, e.peer)
                 && kind.equals(e.kind) && Objects.equals(error, e.error) && Arrays.equals(raw, e.raw);
     }
 
@@ -109,7 +120,7 @@ public record Envelope(long timeMicros, Direction direction, Channel channel, In
 
     @Override
     public String toString() {
-        return "Envelope[" + (origin == Origin.REPLAY ? "replayed " : "")
+        return "Envelope[" + (origin == Origin.REPLAY ? "replayed " : "") + (matchPart ? "match " : "")
                 + (authenticity == Authenticity.NOT_CHECKED ? "" : authenticity.word() + " ") + direction + " " + channel + " " + kind
                 + " robot=" + robotId + " peer=" + peer + " bytes=" + raw.length + (error == null ? "" : " error=" + error) + "]";
     }

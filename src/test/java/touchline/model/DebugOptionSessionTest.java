@@ -44,7 +44,7 @@ class DebugOptionSessionTest {
             return "list?";
         }
         Fumanoid.DebugOptionRequest r = m.getExtension(Fumanoid.debugOptionRequest);
-        return (r.getEnable() ? "on " : "off ") + r.getName();
+        return (r.getEnable() ? "on " : "off ") + r.getName() + (r.hasMatchRank() ? " #" + r.getMatchRank() : "");
     }
 
     private void receive(int robot, Fumanoid.Message.Builder m) {
@@ -66,6 +66,62 @@ class DebugOptionSessionTest {
             l.addOptions(Fumanoid.DebugOption.newBuilder().setName(n).setKind(Fumanoid.DebugKind.TEXT_VALUE));
         }
         receive(robot, Fumanoid.Message.newBuilder().setExtension(Fumanoid.debugOptionList, l.build()));
+    }
+
+    /** The robot's list with each option's place in its match digest (0 = none). */
+    private void listWithRanks(int robot, String[] names, int[] ranks) {
+        Fumanoid.DebugOptionList.Builder l = Fumanoid.DebugOptionList.newBuilder();
+        for (int i = 0; i < names.length; i++) {
+            l.addOptions(Fumanoid.DebugOption.newBuilder().setName(names[i]).setKind(Fumanoid.DebugKind.PLOT_VALUE)
+                    .setMatchRank(ranks[i]));
+        }
+        receive(robot, Fumanoid.Message.newBuilder().setExtension(Fumanoid.debugOptionList, l.build()));
+    }
+
+    @Test
+    void matchItemsAreSentHeldDuringPlayAndRetriedUntilTheRobotsListConfirmsThem() {
+        keepAlive(3);
+        list(3, "a", "b", "c");
+        sent.clear();
+        hold = Optional.of("match mode, PLAYING");
+        SendResult r = session.setMatchItems(3, List.of("c", "a"));
+        assertEquals(SendResult.Outcome.HELD, r.outcome(), "never changed during play");
+        assertEquals(List.of(), sent);
+        assertEquals(1, session.options(3).option("c").orElseThrow().matchRank());
+        assertFalse(session.options(3).option("a").orElseThrow().matchConfirmed());
+
+        hold = Optional.empty();
+        advance(DebugOptionSession.COMMAND_RETRY_MICROS);
+        assertEquals(List.of("3:off a #2", "3:off c #1"), sent, "each place is asked, the option's switch as it is");
+        listWithRanks(3, new String[]{"a", "b", "c"}, new int[]{2, 0, 1});
+        assertTrue(session.options(3).options().stream().allMatch(OptionState::matchConfirmed));
+        sent.clear();
+        advance(DebugOptionSession.COMMAND_RETRY_MICROS);
+        assertEquals(List.of(), sent, "confirmed: nothing more to send");
+        assertEquals(List.of("c", "a"), session.matchItems(3));
+        assertEquals(java.util.Map.of(3, List.of("c", "a")), session.allMatchItems());
+    }
+
+    @Test
+    void matchItemsOfAnEarlierRunGoToTheRobotWhenItsListArrives() {
+        session.restoreMatchItems(java.util.Map.of(5, List.of("b")));
+        advance(DebugOptionSession.COMMAND_RETRY_MICROS);
+        assertEquals(List.of(), sent, "a robot not seen yet is not asked");
+        keepAlive(5);
+        list(5, "a", "b");
+        assertTrue(sent.contains("5:off b #1"), sent.toString());
+        assertEquals(List.of("b"), session.matchItems(5));
+    }
+
+    @Test
+    void aRobotsMatchItemsChosenElsewhereAreLeftAsTheyAre() {
+        keepAlive(4);
+        listWithRanks(4, new String[]{"a", "b"}, new int[]{0, 1});
+        sent.clear();
+        advance(DebugOptionSession.COMMAND_RETRY_MICROS);
+        assertEquals(List.of(), sent, "another console's choice is not undone");
+        assertEquals(1, session.options(4).option("b").orElseThrow().matchRank());
+        assertTrue(session.options(4).option("b").orElseThrow().matchConfirmed());
     }
 
     private void text(int robot, String option) {

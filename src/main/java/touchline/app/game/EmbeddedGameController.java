@@ -12,19 +12,12 @@ import touchline.transport.gamecontroller.MonitorRegistrations;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import touchline.game.Action;
 import touchline.game.Game;
 import touchline.game.RefereedGame;
-import touchline.protocol.gamecontroller.Decoded;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.GameState7;
 import touchline.protocol.gamecontroller.GameStateFormat;
-import touchline.protocol.gamecontroller.ReturnPacket;
-import touchline.protocol.gamecontroller.ReturnPacketDecoder;
-import touchline.transport.Channel;
-import touchline.transport.Direction;
-import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 import touchline.transport.MicrosClock;
 
@@ -77,10 +70,8 @@ public final class EmbeddedGameController implements AutoCloseable {
     private GcListener returns;
     /** Envelope time stamps (the console's wall clock). */
     private final MicrosClock stamps;
-    private final ReturnPacketDecoder returnDecoder = new ReturnPacketDecoder();
-    private final RobotLiveness liveness = new RobotLiveness();
     private final BadPackets badPackets = new BadPackets();
-    private final ManualPenaltyRequests manualRequests = new ManualPenaltyRequests();
+    private final ReturnPackets returnPackets;
     private final List<Consumer<String>> eventListeners = new CopyOnWriteArrayList<>();
     private final GcSender sender;
     private volatile MonitorService monitors;
@@ -137,6 +128,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         this.config = config;
         this.sink = sink;
         this.stamps = stamps;
+        this.returnPackets = new ReturnPackets(game, runtime, sink, stamps, badPackets, () -> monitors, this::emit);
         this.states = shared != null ? shared.states() : new GameControllerStates(sink, matchMode,
                 new MonitorRegistrations(), new GameControllerSources(referee::now, null), badPackets, stamps);
         List<GameStateFormat> formats = new ArrayList<>();
@@ -221,7 +213,7 @@ public final class EmbeddedGameController implements AutoCloseable {
     }
 
     public RobotLiveness liveness() {
-        return liveness;
+        return returnPackets.liveness();
     }
 
     public BadPackets badPackets() {
@@ -347,7 +339,7 @@ public final class EmbeddedGameController implements AutoCloseable {
         @Override
         public void otherDatagram(byte[] data, InetSocketAddress from) {
             if (returnsOnWatch) {
-                onReturnPacket(data, from);
+                returnPackets.accept(data, from);
             }
         }
     }
@@ -357,45 +349,7 @@ public final class EmbeddedGameController implements AutoCloseable {
             states.datagram(data, from); // a rival, or our own heard back, where the ports are shared
             return;
         }
-        onReturnPacket(data, from);
-    }
-
-    private void onReturnPacket(byte[] data, InetSocketAddress from) {
-        Decoded<ReturnPacket> decoded = returnDecoder.decode(data);
-        if (!decoded.isOk()) {
-            rejectReturn(data, from, decoded.failure() + ": " + decoded.detail());
-            return;
-        }
-        ReturnPacket p = decoded.value();
-        if (!runtime.snapshot().hasTeam(p.team())) {
-            rejectReturn(data, from, "team " + p.team() + " is not playing in this game");
-            return;
-        }
-        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
-                p.kind(), null, data, null));
-        liveness.heard(p.team(), p.player(), runtime.now());
-        MonitorService m = monitors;
-        if (m != null) {
-            m.returnPacket(from, data);
-        }
-        Action requested = game == null ? null : manualRequests.onMessage(p.team(), p.player(), p.message());
-        if (requested != null) {
-            runtime.perform(requested).thenAccept(o -> emit("robot " + p.team() + "/" + p.player() + " asked for "
-                    + requested.describe() + ": " + (o.applied() ? "applied" : o.message())));
-        }
-    }
-
-    private void rejectReturn(byte[] data, InetSocketAddress from, String reason) {
-        boolean first = badPackets.count(from, reason);
-        sink.accept(new Envelope(stamps.nowMicros(), Direction.IN, Channel.GAMECONTROLLER, from, Envelope.NO_ROBOT,
-                "gc.return.malformed", null, data, reason));
-        if (first) {
-            emit("bad return packet from " + sourceKey(from) + ": " + reason + " (counted, not applied)");
-        }
-    }
-
-    private static String sourceKey(InetSocketAddress from) {
-        return from.getAddress().getHostAddress() + ":" + from.getPort();
+        returnPackets.accept(data, from);
     }
 
     private static boolean isLocal(InetAddress a) {

@@ -16,6 +16,9 @@ import java.util.List;
  * instant it ends). While robots still see the state from before a PLAYING whistle, that
  * copy is {@link #delayed}; its timers run by its own state. {@code teams[0]} defends the left goal as the operator sees
  * it; the teams swap at half time. Not thread-safe: {@link HslGame} serialises access.
+ * Over 400 lines because its timers (game clock, shot, secondary time, players' penalties),
+ * which of them run in which state, the next expiry among them and what an expiry changes are
+ * one rule of the official GameController: split apart, each part would ask the others the state.
  */
 public final class HslState {
 

@@ -38,7 +38,9 @@ public final class ViewStores {
 
         @Override
         public void accept(Envelope e) {
-            network.accept(e);
+            if (!e.matchPart()) {
+                network.accept(e); // the network log lists datagrams; a digest's parts are shown by the others
+            }
             if (e.direction() != Direction.IN || !(e.message() instanceof Fumanoid.Message m)) {
                 return; // the other stores keep only what robots sent
             }

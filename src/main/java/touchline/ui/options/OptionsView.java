@@ -60,7 +60,22 @@ public final class OptionsView implements View {
         tree.setShowRoot(false);
         tree.setCellFactory(t -> new TreeCell<>() {
             private final javafx.scene.control.CheckBox box = new javafx.scene.control.CheckBox();
+            /** "in the game": the option goes into the robot's match digest during play */
+            private final javafx.scene.control.CheckBox game = new javafx.scene.control.CheckBox("game");
+            private final HBox boxes = new HBox(6, box, game);
             {
+                game.getStyleClass().add("option-game-box");
+                game.setFocusTraversable(false);
+                game.setTooltip(new javafx.scene.control.Tooltip("In the game: sent in the robot's match digest "
+                        + "(once a period during READY, SET and PLAYING); G on the keyboard"));
+                game.setOnAction(e -> {
+                    Row row = getItem();
+                    game.setSelected(row != null && row.option() != null && row.option().matchRank() > 0);
+                    if (row != null && row.option() != null) {
+                        getTreeView().getSelectionModel().select(getTreeItem());
+                        toggleGame(row);
+                    }
+                });
                 box.getStyleClass().add("option-box");
                 box.setFocusTraversable(false); // the tree keeps the keyboard: Space toggles there
                 // a click on the box toggles that row's option (the box shows the model, never its own state)
@@ -82,8 +97,10 @@ public final class OptionsView implements View {
                 if (option) {
                     box.setSelected(context.switches().shownOn(row.option())); // a viewer: the serving console's view
                     box.setDisable(row.replayed());
+                    game.setSelected(row.option().matchRank() > 0);
+                    game.setDisable(row.replayed());
                 }
-                setGraphic(option ? box : null);
+                setGraphic(option ? boxes : null);
                 setStyle(empty || row == null || row.option() == null ? "-fx-font-weight: bold;"
                         : row.option().streaming() ? "-fx-text-fill: #2da44e;" : "");
             }
@@ -99,6 +116,9 @@ public final class OptionsView implements View {
         tree.addEventFilter(javafx.scene.input.KeyEvent.KEY_PRESSED, e -> {
             if (e.getCode() == KeyCode.SPACE) {
                 toggleSelected();
+                e.consume();
+            } else if (e.getCode() == KeyCode.G) {
+                selectedOption().ifPresent(this::toggleGame);
                 e.consume();
             } else if (e.getCode() == KeyCode.ENTER) {
                 openSelected();
@@ -118,7 +138,7 @@ public final class OptionsView implements View {
         bar.setStyle("-fx-padding: 4 8 4 8;");
         root.setTop(bar);
         root.setCenter(tree);
-        Label hint = new Label("Space or the box: on/off   Double-click or Enter: open visualisation   F1: help");
+        Label hint = new Label("Space or the box: on/off   G: in the game   Double-click or Enter: open visualisation   F1: help");
         status.setId("options-status");
         HBox bottom = new HBox(16, hint, status);
         bottom.setStyle("-fx-padding: 2 8 2 8;");
@@ -143,6 +163,26 @@ public final class OptionsView implements View {
         SendResult result = context.switches().set(r.robotId(), r.option().name(), !r.option().wanted());
         status.setText("Switching " + r.option().name() + (r.option().wanted() ? " off" : " on") + " for robot "
                 + r.robotId() + ": " + result.describe());
+        rebuild = true;
+    }
+
+    /**
+     * Puts the option into the robot's match digest (last place) or takes it out; sent outside
+     * play only (held like every request), shown as confirmed once the robot's list says so.
+     */
+    private void toggleGame(Row r) {
+        if (r.replayed()) {
+            status.setText(r.option().name() + ": a replayed robot's option is only shown, never switched");
+            return;
+        }
+        List<String> items = new java.util.ArrayList<>(context.switches().options().matchItems(r.robotId()));
+        boolean in = items.remove(r.option().name());
+        if (!in) {
+            items.add(r.option().name());
+        }
+        SendResult result = context.switches().options().setMatchItems(r.robotId(), items);
+        status.setText((in ? "Taking " + r.option().name() + " out of" : "Putting " + r.option().name() + " into")
+                + " robot " + r.robotId() + "'s game digest: " + result.describe());
         rebuild = true;
     }
 
@@ -181,6 +221,10 @@ public final class OptionsView implements View {
             s.append(o.enabledOnRobot() ? " · on, waiting for data" : " · wanted, not yet on");
         } else if (o.enabledOnRobot()) {
             s.append(" · on at robot");
+        }
+        if (o.matchRank() > 0 || o.matchRankOnRobot() > 0) {
+            s.append(o.matchConfirmed() ? " · in the game #" + o.matchRank() + " (confirmed)"
+                    : o.matchRank() == 0 ? " · out of the game asked" : " · in the game #" + o.matchRank() + " asked");
         }
         if (o.description() != null && !o.description().isEmpty()) {
             s.append("   — ").append(o.description());

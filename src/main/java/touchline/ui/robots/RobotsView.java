@@ -70,6 +70,8 @@ public final class RobotsView implements View {
         table.getColumns().add(column("Battery", r -> r.batteryPercent() < 0 ? "–" : r.batteryPercent() + " %", 64));
         table.getColumns().add(column("Game", r -> text(r.gameStateShown()), 80));
         table.getColumns().add(column("Authenticity", r -> r.auth().describe(), 100));
+        // the league's debug rule in play (issue 40): datagrams per period, the biggest and its fragments
+        table.getColumns().add(column("Debug in play", this::inPlay, 150, "⚠ 2.0/period, 1400 B, 1 fr."));
         table.getColumns().add(column("Role", r -> text(r.role()), 90));
         table.getColumns().add(column("State", r -> text(r.state()), 90));
         table.getColumns().add(column("Team", r -> number(r.teamId()), 50));
@@ -104,6 +106,19 @@ public final class RobotsView implements View {
         int index = shownTexts.size();
         shownTexts.add(value);
         return columns.observed(title, row -> row.text(index), width, widest);
+    }
+
+    /** "1.0/period, 412 B, 1 fr." while the robot is in play, "⚠ …" when it breaks the rule; "–" outside play. */
+    private String inPlay(RobotSnapshot r) {
+        if (r.replayed()) {
+            return "–";
+        }
+        touchline.model.MatchDebugRule.Reading m = context.field().matchRule().reading(r.id());
+        if (!m.inPlay()) {
+            return "–";
+        }
+        return (m.warnings().isEmpty() ? "" : "⚠ ") + String.format("%.1f/period, %d B, %d fr.", m.perPeriod(),
+                m.biggestBytes(), m.fragments());
     }
 
     private static String text(String s) {
@@ -153,6 +168,10 @@ public final class RobotsView implements View {
         }
         for (String n : context.field().robots().notes()) {
             p.append(n).append('\n');
+        }
+        for (touchline.model.MatchDebugRule.Reading m : context.field().matchRule().broken()) {
+            p.append("robot ").append(m.robotId()).append(" breaks the debug rule in play: ")
+                    .append(String.join("; ", m.warnings())).append('\n');
         }
         if (!p.toString().equals(problems.getText())) {
             problems.setText(p.toString());

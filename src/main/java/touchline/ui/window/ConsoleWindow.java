@@ -300,7 +300,7 @@ public final class ConsoleWindow {
         new QuickOpen(context, places, shell::openAndFocus).show(stage);
     }
 
-    /** In demo mode: switch the demo options on for every robot once its list arrived. */
+    /** In demo mode: switch the demo options on, and choose the demo's match items, for every robot once its list arrived. */
     private void demoStep() {
         if (!settings.demo() || pulse.frames() % 15 != 0) {
             return;
@@ -310,6 +310,9 @@ public final class ConsoleWindow {
                 if (DemoLayout.DEMO_OPTIONS.contains(o.name()) && demoSwitched.add(r.id() + "/" + o.name())) {
                     context.switches().set(r.id(), o.name(), true);
                 }
+            }
+            if (context.field().options().options(r.id()).listReceived() && demoSwitched.add(r.id() + "/in the game")) {
+                context.switches().options().setMatchItems(r.id(), DemoLayout.MATCH_ITEMS);
             }
         }
     }

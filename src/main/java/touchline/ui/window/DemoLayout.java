@@ -29,4 +29,7 @@ final class DemoLayout {
 
     /** Options the demo switches on for every simulated robot, so its views fill at once. */
     static final List<String> DEMO_OPTIONS = List.of("havimo.region", "havimo.grid", "demo.plotter", "demo.text");
+
+    /** What the demo's robots send in the game (their match digest), first first: the plot and the field move once a second. */
+    static final List<String> MATCH_ITEMS = List.of("demo.plotter", "demo.field");
 }

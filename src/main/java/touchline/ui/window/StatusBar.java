@@ -161,8 +161,7 @@ public final class StatusBar extends HBox {
     private void showBudget(touchline.model.TeamMessageBudget.Snapshot s) {
         long total = s.left() >= 0 ? s.left() + s.used() : -1;
         double f = total > 0 ? (double) s.used() / total : 0;
-        java.util.List<touchline.model.DebugRateGuard.OverLimit> over = budget.debugRateGuard()
-                .map(touchline.model.DebugRateGuard::overLimit).orElse(java.util.List.of());
+        java.util.List<touchline.model.MatchDebugRule.Reading> over = field.matchRule().broken();
         boolean alarm = s.oversize() > 0 || s.verdict() == touchline.model.TeamMessageBudget.Verdict.EXHAUSTED
                 || !over.isEmpty();
         boolean warn = s.verdict() == touchline.model.TeamMessageBudget.Verdict.RUNS_OUT_BEFORE_THE_END;
@@ -176,8 +175,8 @@ public final class StatusBar extends HBox {
             tip.append(String.format("%n%s: %d messages, %.0f/min, largest %d bytes%s", r.sender(), r.messages(),
                     r.perMinute(), r.largest(), r.oversize() > 0 ? ", " + r.oversize() + " OVERSIZE" : ""));
         }
-        over.forEach(o -> tip.append("\n").append(o.describe()).append(" (limit ")
-                .append(s.profile().debugPacketsPerSecond().describe()).append(")"));
+        over.forEach(o -> tip.append("\nrobot ").append(o.robotId()).append(" in play: ").append(o.describe())
+                .append(" (limit ").append(s.profile().debugPacketsPerSecond().describe()).append("/s)"));
         meter.show(f, alarm ? BudgetMeter.Level.ALARM : warn ? BudgetMeter.Level.WARN : BudgetMeter.Level.CALM,
                 "team " + s.team() + ": " + s.brief() + (over.isEmpty() ? "" : " · debug over limit"), tip.toString());
     }
