@@ -205,7 +205,7 @@ class ViewFaultUiTest {
              touchline.transport.nao.NaoLink link = new touchline.transport.nao.NaoLink("127.0.0.1", nao.port(),
                      touchline.transport.nao.NaoLinkConfig.defaults(),
                      new touchline.transport.nao.NaoEnvelopeChannel(ui.console.field().bus()), null,
-                     new touchline.app.SystemClock(), new touchline.app.SystemClock())) {
+                     new touchline.app.SystemClock(), new touchline.app.SystemClock()).start()) {
             touchline.testing.Await.until("the NAO online", () -> link.state() == touchline.transport.nao.ConnectionState.ONLINE);
             link.call("ALMotion", "ping").get(30, java.util.concurrent.TimeUnit.SECONDS);
             ui.fxRun(() -> ui.window.open("network", ViewSource.NONE));
