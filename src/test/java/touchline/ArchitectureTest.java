@@ -132,7 +132,7 @@ class ArchitectureTest {
      */
     @Test
     void theMonotonicClockOnlyMeasuresDurationsOutsideTheSystemClock() {
-        noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class, touchline.ui.FramePulse.class,
+        noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class, touchline.ui.frame.FramePulse.class,
                         touchline.record.McapWriter.class, touchline.transport.gamecontroller.GcSender.class)
                 .and().doNotHaveFullyQualifiedName("touchline.record.BackgroundFiles")
                 .and().doNotHaveFullyQualifiedName("touchline.transport.remote.RemoteStream$Session")
@@ -309,7 +309,7 @@ class ArchitectureTest {
      * (the port, keys, a remote URL), and the two option mixins that start one for them.
      */
     static final java.util.Set<String> COMPOSERS = java.util.Set.of(
-            "touchline.ui.TouchlineApp", "touchline.ui.ConsoleWindow",
+            "touchline.ui.TouchlineApp", "touchline.ui.window.ConsoleWindow",
             "touchline.cli.ConsoleCommand", "touchline.cli.ScreenshotsCommand", "touchline.cli.ListenCommand",
             "touchline.cli.OptionsCommand", "touchline.cli.StreamCommand", "touchline.cli.NaoCommand",
             "touchline.cli.RecordCommand", "touchline.cli.ServeCommand", "touchline.cli.UdpOptions",

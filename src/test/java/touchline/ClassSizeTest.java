@@ -30,7 +30,7 @@ class ClassSizeTest {
      */
     static final Set<String> KNOWN_OVER = Set.of(
             "touchline/ui/replay/ReplayView.java",
-            "touchline/ui/ConsoleWindow.java",
+            "touchline/ui/window/ConsoleWindow.java",
             "touchline/transport/remote/RemoteStream.java");
 
     @Test

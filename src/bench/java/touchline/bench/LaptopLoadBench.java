@@ -76,12 +76,12 @@ final class LaptopLoadBench {
             }
             Load standard = null;
             for (int cap : maxFps) {
-                Load l = measure(cap == touchline.ui.FrameCap.DEFAULT ? "window, demo layout"
+                Load l = measure(cap == touchline.ui.frame.FrameCap.DEFAULT ? "window, demo layout"
                         : "window, demo layout, --max-fps " + cap, List.of("console", "--demo", "--team", "13", "--insecure",
                         "--port", String.valueOf(port), "--layouts", scratch.toString(), "--max-fps", String.valueOf(cap)),
                         true, minutes);
                 loads.add(l);
-                if (cap == touchline.ui.FrameCap.DEFAULT || standard == null) {
+                if (cap == touchline.ui.frame.FrameCap.DEFAULT || standard == null) {
                     standard = l;
                 }
             }

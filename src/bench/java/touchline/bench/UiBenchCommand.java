@@ -16,12 +16,12 @@ import touchline.transport.UdpConfig;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.bench.gc.GcIntervalProbe;
 import touchline.transport.gamecontroller.GcProfile;
-import touchline.ui.ConsoleWindow;
-import touchline.ui.UiSettings;
-import touchline.ui.layout.LayoutNode;
-import touchline.ui.layout.LayoutNode.Branch;
-import touchline.ui.layout.LayoutNode.Entry;
-import touchline.ui.layout.LayoutNode.Leaf;
+import touchline.ui.window.ConsoleWindow;
+import touchline.ui.window.UiSettings;
+import touchline.ui.window.LayoutNode;
+import touchline.ui.window.LayoutNode.Branch;
+import touchline.ui.window.LayoutNode.Entry;
+import touchline.ui.window.LayoutNode.Leaf;
 
 import java.net.InetSocketAddress;
 import java.nio.file.Files;

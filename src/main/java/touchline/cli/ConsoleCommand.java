@@ -5,9 +5,9 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import touchline.app.Console;
-import touchline.ui.ConsoleWindow;
-import touchline.ui.UiSettings;
-import touchline.ui.layout.LayoutStore;
+import touchline.ui.window.ConsoleWindow;
+import touchline.ui.window.UiSettings;
+import touchline.ui.window.LayoutStore;
 
 import java.nio.file.Path;
 import java.util.Map;
@@ -50,9 +50,9 @@ final class ConsoleCommand implements java.util.concurrent.Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        touchline.ui.FrameCap cap;
+        touchline.ui.frame.FrameCap cap;
         try {
-            cap = new touchline.ui.FrameCap(maxFps);
+            cap = new touchline.ui.frame.FrameCap(maxFps);
         } catch (IllegalArgumentException e) {
             throw StartFailure.badInput(e.getMessage() + " (30 is the standard; 10 is plenty to watch a game on battery).");
         }

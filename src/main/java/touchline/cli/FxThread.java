@@ -12,7 +12,7 @@ public final class FxThread {
     private FxThread() { }
 
     public static void startToolkit() throws InterruptedException {
-        new touchline.ui.RenderDefaults().apply();
+        new touchline.ui.render.RenderDefaults().apply();
         java.util.concurrent.CountDownLatch up = new java.util.concurrent.CountDownLatch(1);
         Platform.startup(up::countDown);
         up.await(30, TimeUnit.SECONDS);

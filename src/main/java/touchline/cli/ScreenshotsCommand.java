@@ -9,9 +9,9 @@ import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.model.OptionState;
 import touchline.transport.UdpConfig;
-import touchline.ui.ConsoleWindow;
-import touchline.ui.UiSettings;
-import touchline.ui.layout.LayoutNode;
+import touchline.ui.window.ConsoleWindow;
+import touchline.ui.window.UiSettings;
+import touchline.ui.window.LayoutNode;
 
 import javax.imageio.ImageIO;
 import java.nio.file.Files;
@@ -155,8 +155,8 @@ final class ScreenshotsCommand implements java.util.concurrent.Callable<Integer>
     /** Plot fields: each robot's x position and robot 1's battery, typed as a user would. */
     private static void plotFields(ConsoleWindow window) throws Exception {
         FxThread.run(() -> window.shell().openViews().stream().map(v -> v.view())
-                .filter(v -> v instanceof touchline.ui.views.FieldPlotView).findFirst().ifPresent(v -> {
-                    touchline.model.store.FieldPlot f = ((touchline.ui.views.FieldPlotView) v).fields();
+                .filter(v -> v instanceof touchline.ui.plots.FieldPlotView).findFirst().ifPresent(v -> {
+                    touchline.model.store.FieldPlot f = ((touchline.ui.plots.FieldPlotView) v).fields();
                     for (int robot = 1; robot <= 3; robot++) {
                         f.add(robot, "status:robotPosition.x");
                     }

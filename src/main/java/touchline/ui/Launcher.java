@@ -1,6 +1,7 @@
 package touchline.ui;
 
 import javafx.application.Application;
+import touchline.ui.render.RenderDefaults;
 
 /**
  * Plain entry point: JavaFX refuses to start an Application subclass as the main class from

@@ -5,10 +5,12 @@ import javafx.stage.Stage;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.transport.UdpConfig;
-import touchline.ui.layout.LayoutStore;
+import touchline.ui.window.LayoutStore;
 
 import java.nio.file.Path;
 import java.util.Map;
+import touchline.ui.window.ConsoleWindow;
+import touchline.ui.window.UiSettings;
 
 /**
  * The JavaFX application: starts a {@link Console} from the command-line parameters

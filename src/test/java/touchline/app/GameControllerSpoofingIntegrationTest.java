@@ -109,7 +109,7 @@ class GameControllerSpoofingIntegrationTest {
             assertTrue(console.referee().matchMode().playIsOn(), "a forged FINISHED never ends match mode");
             GameControllerSources.Intruder intruder = console.referee().sources().activeIntruders().get(0);
             assertTrue(intruder.source().startsWith("127.0.0.2:"), intruder.source());
-            String status = new touchline.ui.ConsoleStatus(console.field(), console.referee(), console.replays(), console.remote()).silence();
+            String status = new touchline.ui.frame.ConsoleStatus(console.field(), console.referee(), console.replays(), console.remote()).silence();
             assertTrue(status.contains("another source is sending game states: " + intruder.source() + " ("
                     + forged + " packets, last FINISHED)"), status);
             assertTrue(status.contains("Silent: match mode"), status);

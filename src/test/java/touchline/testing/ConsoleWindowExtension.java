@@ -3,7 +3,7 @@ package touchline.testing;
 import org.junit.jupiter.api.extension.AfterEachCallback;
 import org.junit.jupiter.api.extension.BeforeEachCallback;
 import org.junit.jupiter.api.extension.ExtensionContext;
-import touchline.ui.ConsoleWindowFixture;
+import touchline.ui.window.ConsoleWindowFixture;
 
 import java.io.IOException;
 import java.lang.reflect.Field;

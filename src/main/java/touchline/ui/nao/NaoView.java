@@ -19,10 +19,10 @@ import touchline.app.Naos;
 import touchline.app.NaoFrame;
 import touchline.app.NaoViewModel;
 import touchline.protocol.nao.NaoModules;
-import touchline.ui.FrameContext;
-import touchline.ui.View;
-import touchline.ui.ViewContext;
-import touchline.ui.ViewSource;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.frame.View;
+import touchline.ui.window.ViewContext;
+import touchline.ui.frame.ViewSource;
 
 import java.io.ByteArrayInputStream;
 import java.util.Optional;

@@ -71,7 +71,7 @@ final class RecordPanel {
         }
         chooser.setInitialFileName(current.getFileName().toString());
         javafx.stage.Window window = root.getScene().getWindow();
-        java.io.File f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showSaveDialog(window));
+        java.io.File f = new touchline.ui.window.StaysMaximised(window).during(() -> chooser.showSaveDialog(window));
         if (f != null) {
             path.setText(f.toString());
         }

@@ -22,9 +22,9 @@ import touchline.record.PlayerState;
 import touchline.record.ReplayNotes;
 import touchline.record.RecordingException;
 import touchline.record.TimelineEvent;
-import touchline.ui.FrameContext;
-import touchline.ui.View;
-import touchline.ui.ViewContext;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.frame.View;
+import touchline.ui.window.ViewContext;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -249,7 +249,7 @@ public final class ReplayView implements View {
         chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("MCAP recordings", "*.mcap"),
                 new FileChooser.ExtensionFilter("All files", "*"));
         javafx.stage.Window window = root.getScene().getWindow();
-        List<java.io.File> f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showOpenMultipleDialog(window));
+        List<java.io.File> f = new touchline.ui.window.StaysMaximised(window).during(() -> chooser.showOpenMultipleDialog(window));
         return f == null ? List.of() : f.stream().map(java.io.File::toPath).toList();
     }
 
@@ -370,7 +370,7 @@ public final class ReplayView implements View {
         chooser.getExtensionFilters().addAll(new FileChooser.ExtensionFilter("Descriptor sets", "*.desc", "*.pb"),
                 new FileChooser.ExtensionFilter("All files", "*"));
         javafx.stage.Window window = root.getScene().getWindow();
-        java.io.File f = new touchline.ui.StaysMaximised(window).during(() -> chooser.showOpenDialog(window));
+        java.io.File f = new touchline.ui.window.StaysMaximised(window).during(() -> chooser.showOpenDialog(window));
         if (f != null) {
             loadSchema(f.toPath());
         }

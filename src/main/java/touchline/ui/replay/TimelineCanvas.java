@@ -8,7 +8,7 @@ import javafx.scene.paint.Color;
 import javafx.util.Duration;
 import touchline.record.PlayerState;
 import touchline.record.TimelineEvent;
-import touchline.ui.ResizableCanvas;
+import touchline.ui.render.ResizableCanvas;
 
 import java.util.List;
 import java.util.Locale;

@@ -12,8 +12,8 @@ import touchline.app.ConsoleConfig;
 import touchline.testing.UiTest;
 import touchline.transport.Origin;
 import touchline.transport.UdpConfig;
-import touchline.ui.FrameContext;
-import touchline.ui.LatencyProbe;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.frame.LatencyProbe;
 
 import java.net.URI;
 

@@ -18,8 +18,8 @@ import touchline.transport.Channel;
 import touchline.transport.Envelope;
 import touchline.transport.nao.FakeNaoCamera;
 import touchline.transport.nao.FakeNaoRobot;
-import touchline.ui.FrameContext;
-import touchline.ui.LatencyProbe;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.frame.LatencyProbe;
 
 import java.util.List;
 import java.util.concurrent.Callable;

@@ -17,8 +17,8 @@ import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.UdpConfig;
 import touchline.transport.nao.FakeNaoRobot;
-import touchline.ui.FrameContext;
-import touchline.ui.LatencyProbe;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.frame.LatencyProbe;
 
 import java.util.Arrays;
 import java.util.concurrent.CountDownLatch;

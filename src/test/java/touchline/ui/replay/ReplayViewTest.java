@@ -22,10 +22,10 @@ import touchline.record.Recording;
 import touchline.record.TimelineEvent;
 import touchline.testing.UiTest;
 import touchline.transport.UdpConfig;
-import touchline.ui.ConsoleWindow;
-import touchline.ui.Shell;
-import touchline.ui.UiSettings;
-import touchline.ui.ViewSource;
+import touchline.ui.window.ConsoleWindow;
+import touchline.ui.window.Shell;
+import touchline.ui.window.UiSettings;
+import touchline.ui.frame.ViewSource;
 
 import javax.imageio.ImageIO;
 import java.nio.file.Files;
@@ -309,10 +309,10 @@ class ReplayViewTest {
     void screenshot() throws Exception {
         String target = System.getProperty("touchline.replay.screenshot", "target/replay.png");
         fx(() -> {
-            window.shell().restore(java.util.List.of(new touchline.ui.layout.LayoutNode.Branch(true,
+            window.shell().restore(java.util.List.of(new touchline.ui.window.LayoutNode.Branch(true,
                     java.util.List.of(0.62), java.util.List.of(
-                    new touchline.ui.layout.LayoutNode.Leaf(0, java.util.List.of(new touchline.ui.layout.LayoutNode.Entry("replay", ""))),
-                    new touchline.ui.layout.LayoutNode.Leaf(0, java.util.List.of(new touchline.ui.layout.LayoutNode.Entry("robots", "")))))));
+                    new touchline.ui.window.LayoutNode.Leaf(0, java.util.List.of(new touchline.ui.window.LayoutNode.Entry("replay", ""))),
+                    new touchline.ui.window.LayoutNode.Leaf(0, java.util.List.of(new touchline.ui.window.LayoutNode.Entry("robots", "")))))));
             view = window.shell().openViews().stream().map(Shell.OpenView::view)
                     .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
             return null;

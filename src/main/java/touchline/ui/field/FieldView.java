@@ -1,0 +1,252 @@
+package touchline.ui.field;
+
+import touchline.ui.render.FieldDrawingPainter;
+import javafx.scene.Group;
+import javafx.scene.canvas.GraphicsContext;
+import javafx.scene.layout.Pane;
+import javafx.scene.layout.StackPane;
+import javafx.scene.paint.Color;
+import javafx.scene.shape.Circle;
+import javafx.scene.shape.Line;
+import javafx.scene.shape.Rectangle;
+import javafx.scene.text.Text;
+import touchline.model.RobotSnapshot;
+import touchline.model.store.Latest;
+import touchline.proto.Fumanoid;
+import touchline.ui.frame.FrameContext;
+import touchline.ui.render.ResizableCanvas;
+import touchline.ui.frame.SourcedView;
+import touchline.ui.window.ViewContext;
+import touchline.ui.frame.ViewSource;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import touchline.ui.render.ColorClasses;
+import touchline.ui.render.CrispLines;
+
+/**
+ * The field from above (9 m × 6 m, x towards the opponent goal) with every robot at the
+ * position its keep-alive reports, its heading, ID and role; offline robots are drawn hollow.
+ * When a field-objects option is chosen as source, its objects are drawn too.
+ * <p>
+ * The field and the objects are painted on a canvas, the robots are shapes over it: a robot
+ * that moves repaints the few pixels around it, not the whole field (it moved with every
+ * robot's status, up to 30 times a second with three robots; docs/archive/benchmarks-sessions.md, "Sixteenth
+ * session").
+ */
+public final class FieldView extends SourcedView {
+
+    static final double FIELD_LENGTH = 9000;
+    static final double FIELD_WIDTH = 6000;
+    static final double BORDER = 700;
+    private final ResizableCanvas canvas = new ResizableCanvas(() -> dirty = true);
+    /** The robots, over the canvas, in the canvas's coordinates. */
+    private final Pane robotLayer = new Pane();
+    private final Map<Integer, RobotMark> shapes = new HashMap<>();
+    private long seenRobots = -1;
+    private long seenObjects = -1;
+    private int drawnRobots;
+    private List<Mark> drawnMarks = List.of();
+    private long paints;
+    private long fieldPaints;
+    /** Where the field lies on the canvas: its centre and millimetres to pixels, as last painted. */
+    private double cx;
+    private double cy;
+    private double scale;
+    private String objectsNote = "";
+
+    public FieldView(ViewContext context, ViewSource source) {
+        super(context, Set.of(Fumanoid.DebugKind.FIELD_VALUE), source);
+        canvas.setId("field-canvas");
+        robotLayer.setId("field-robots");
+        robotLayer.setMouseTransparent(true);
+        Rectangle clip = new Rectangle();
+        clip.widthProperty().bind(robotLayer.widthProperty());
+        clip.heightProperty().bind(robotLayer.heightProperty());
+        robotLayer.setClip(clip); // a robot off the field's edge stays inside the view
+        root.setCenter(new StackPane(canvas, robotLayer));
+    }
+
+    /** Robots with a position drawn in the last frame (for tests). */
+    public int drawnRobots() {
+        return drawnRobots;
+    }
+
+    @Override
+    public void refresh(FrameContext frame) {
+        bar.refresh();
+        long rv = context.field().robots().version();
+        ViewSource s = bar.selected();
+        Optional<Latest> objects = s.isSet() ? context.stores().latest().get(s.robotId(), s.option()) : Optional.empty();
+        long ov = objects.map(Latest::version).orElse(0L);
+        if (rv == seenRobots && ov == seenObjects && !dirty) {
+            return;
+        }
+        seenRobots = rv;
+        // every datagram moves the robots' version: show only what moved of them
+        List<RobotSnapshot> robots = context.field().robots().robots();
+        List<Mark> marks = marks(robots);
+        boolean field = dirty || ov != seenObjects;
+        if (!field && marks.equals(drawnMarks)) {
+            return;
+        }
+        if (ov != seenObjects && objects.isPresent()) {
+            frame.shown(objects.get().timeMicros());
+        }
+        seenObjects = ov;
+        dirty = false;
+        drawnMarks = marks;
+        paints++;
+        if (field) {
+            paintField(objects.orElse(null));
+        }
+        status(place(marks));
+    }
+
+    /** What the field shows of one robot; two equal lists show the same robots. */
+    private record Mark(int id, boolean hasPosition, double x, double y, double theta, boolean online, String role) {
+
+        boolean placeable() {
+            return hasPosition && Double.isFinite(x) && Double.isFinite(y);
+        }
+
+        String label() {
+            return id + (role == null || role.isEmpty() ? "" : " " + role) + (online ? "" : " (offline)");
+        }
+    }
+
+    private static List<Mark> marks(List<RobotSnapshot> robots) {
+        List<Mark> out = new java.util.ArrayList<>(robots.size());
+        for (RobotSnapshot r : robots) {
+            out.add(new Mark(r.id(), r.hasPosition(), r.x(), r.y(), r.theta(), r.online(), r.role()));
+        }
+        return out;
+    }
+
+    /** Times the field or a robot on it was drawn anew (for tests: a frame without a change draws nothing). */
+    public long paints() {
+        return paints;
+    }
+
+    /** Times the field itself (lines, goals, objects) was painted: a resize or new objects, not a robot moving. */
+    public long fieldPaints() {
+        return fieldPaints;
+    }
+
+    @Override
+    protected String draw(Latest latest) {
+        paints++;
+        paintField(latest);
+        return place(drawnMarks);
+    }
+
+    /** Paints the field and the chosen objects, and remembers where the field lies for the robots. */
+    private void paintField(Latest objects) {
+        fieldPaints++;
+        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
+        double w = canvas.getWidth();
+        double h = canvas.getHeight();
+        g.setFill(Color.DARKGREEN);
+        g.fillRect(0, 0, w, h);
+        scale = Math.min(w / (FIELD_LENGTH + 2 * BORDER), h / (FIELD_WIDTH + 2 * BORDER));
+        cx = w / 2;
+        cy = h / 2;
+        // straight lines as filled rectangles: a stroke costs its whole bounding box in software
+        g.setFill(Color.WHITE);
+        CrispLines.outline(g::fillRect, cx - FIELD_LENGTH / 2 * scale - 1, cy - FIELD_WIDTH / 2 * scale - 1,
+                FIELD_LENGTH * scale + 2, FIELD_WIDTH * scale + 2, 2);
+        g.fillRect(Math.round(cx) - 1, Math.round(cy - FIELD_WIDTH / 2 * scale), 2, Math.round(FIELD_WIDTH * scale));
+        g.setStroke(Color.WHITE);
+        g.setLineWidth(2);
+        g.strokeOval(cx - 750 * scale, cy - 750 * scale, 1500 * scale, 1500 * scale);
+        double goal = 2600 * scale;
+        g.setFill(Color.GOLD);
+        CrispLines.outline(g::fillRect, cx + FIELD_LENGTH / 2 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
+        g.setFill(Color.DODGERBLUE);
+        CrispLines.outline(g::fillRect, cx - FIELD_LENGTH / 2 * scale - 600 * scale - 1, cy - goal / 2 - 1, 600 * scale + 2, goal + 2, 2);
+        int objectCount = 0;
+        if (objects != null && objects.data() instanceof Fumanoid.FieldObjects fo) {
+            for (Fumanoid.RelativeObject o : fo.getObjectsList()) {
+                if (!Float.isFinite(o.getX()) || !Float.isFinite(o.getY())) {
+                    continue;
+                }
+                double sx = cx + o.getX() * scale;
+                double sy = cy - o.getY() * scale;
+                g.setFill(ColorClasses.color(o.getColorClass()));
+                g.fillOval(sx - 5, sy - 5, 10, 10);
+                g.setFill(Color.WHITE);
+                g.fillText(o.getLabel(), sx + 7, sy + 4);
+                objectCount++;
+            }
+        } else if (objects != null && objects.data() instanceof touchline.proto.Drawing.FieldDrawing d) {
+            objectCount = new FieldDrawingPainter().paint(g, d, cx, cy, scale); // a ROS 2 robot's markers
+        }
+        objectsNote = objects != null ? " · " + objectCount + " objects from " + objects.option() : "";
+    }
+
+    /** Puts each robot's shape where the robot is; returns the status line. */
+    private String place(List<Mark> marks) {
+        int drawn = 0;
+        int noPosition = 0;
+        Set<Integer> present = new java.util.HashSet<>();
+        for (Mark m : marks) {
+            if (!m.placeable()) {
+                noPosition++;
+                continue;
+            }
+            present.add(m.id());
+            RobotMark shape = shapes.computeIfAbsent(m.id(), id -> {
+                RobotMark created = new RobotMark();
+                robotLayer.getChildren().add(created);
+                return created;
+            });
+            shape.show(m, cx + m.x() * scale, cy - m.y() * scale);
+            drawn++;
+        }
+        shapes.entrySet().removeIf(e -> {
+            if (present.contains(e.getKey())) {
+                return false;
+            }
+            robotLayer.getChildren().remove(e.getValue());
+            return true;
+        });
+        drawnRobots = drawn;
+        return drawn + " robots on the field" + (noPosition > 0 ? " · " + noPosition + " without a position" : "")
+                + objectsNote;
+    }
+
+    /** One robot on the field: a disc (hollow when offline), its heading and its ID and role. */
+    private static final class RobotMark extends Group {
+
+        private final Circle body = new Circle(10);
+        private final Line heading = new Line();
+        private final Text label = new Text();
+
+        RobotMark() {
+            setManaged(false);
+            body.setStroke(Color.BLACK);
+            body.setStrokeWidth(1.5);
+            heading.setStroke(Color.BLACK);
+            heading.setStrokeWidth(1.5);
+            label.setFill(Color.WHITE);
+            label.setX(12);
+            label.setY(-10);
+            getChildren().addAll(body, heading, label);
+        }
+
+        void show(Mark m, double x, double y) {
+            double th = Double.isFinite(m.theta()) ? m.theta() : 0;
+            setLayoutX(x);
+            setLayoutY(y);
+            body.setFill(m.online() ? Color.LIGHTSKYBLUE : Color.TRANSPARENT);
+            heading.setEndX(Math.cos(th) * 18);
+            heading.setEndY(-Math.sin(th) * 18);
+            if (!m.label().equals(label.getText())) {
+                label.setText(m.label());
+            }
+        }
+    }
+}

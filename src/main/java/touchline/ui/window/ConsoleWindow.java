@@ -1,0 +1,431 @@
+package touchline.ui.window;
+
+import atlantafx.base.theme.PrimerDark;
+import atlantafx.base.theme.PrimerLight;
+import javafx.application.Application;
+import javafx.scene.Scene;
+import javafx.scene.control.Alert;
+import javafx.scene.control.Menu;
+import javafx.scene.control.MenuBar;
+import javafx.scene.control.MenuItem;
+import javafx.scene.control.SeparatorMenuItem;
+import javafx.scene.input.KeyCode;
+import javafx.scene.input.KeyCodeCombination;
+import javafx.scene.input.KeyCombination;
+import javafx.scene.layout.BorderPane;
+import javafx.stage.Stage;
+import touchline.app.Console;
+import touchline.model.OptionState;
+import touchline.model.RobotSnapshot;
+import touchline.ui.window.LayoutNode;
+import touchline.ui.window.LayoutStore;
+
+import java.io.IOException;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import touchline.ui.frame.ConsoleChanges;
+import touchline.ui.frame.FramePulse;
+import touchline.ui.frame.ViewSource;
+import touchline.ui.viewers.ServeToggle;
+
+/**
+ * The console's one window: menus (layouts, views, theme, help), the docking shell, the status
+ * bar, Ctrl+K quick-open, and the frame pulse that drives every view. Built on the FX thread
+ * from an already started {@link Console}; closing the window does not close the Console.
+ */
+public final class ConsoleWindow {
+
+    private final UiSettings settings;
+    private final ViewRegistry registry = new ViewRegistry();
+    private final Shell shell;
+    private final ViewContext context;
+    private final StatusBar status;
+    private final FramePulse pulse;
+    private final LayoutStore layouts;
+    private final WindowPlaces places;
+    /** Save, Default, Rename, Delete and a separator: the saved layouts follow them. */
+    private static final int LAYOUT_MENU_FIXED = 5;
+    private final Menu renameMenu = new Menu("_Rename layout");
+    private final Menu deleteMenu = new Menu("De_lete layout");
+    private final BorderPane root = new BorderPane();
+    private final Set<String> demoSwitched = new HashSet<>();
+    private final Menu layoutMenu = new Menu("_Layout");
+    private final ServeToggle serving;
+    private final HelpWindow help;
+    private Shortcuts shortcuts;
+    private Stage stage;
+    private boolean dark;
+
+    /** Composes the window over {@code console}'s services; the views get them, never the console. */
+    public ConsoleWindow(Console console, UiSettings settings) {
+        this.settings = settings;
+        this.layouts = new LayoutStore(settings.layoutDir());
+        this.places = settings.windowPlaces();
+        this.dark = settings.dark();
+        this.help = new HelpWindow(places);
+        // the wanted debug options belong to the user: kept beside the layouts, wanted again now
+        console.optionSwitches().rememberWanted(settings.layoutDir().resolve("wanted-options.properties"));
+        Shell[] holder = new Shell[1];
+        this.serving = new ServeToggle(console.serving());
+        this.context = new ViewContext(console.field(), console.optionSwitches(), console.referee(), console.naos(),
+                console.recordings(), console.replays(), console.teamSchemas(), console.teamBudget(), console.remote(),
+                console.bridges(), registry, (spec, src) -> holder[0].open(spec, src), settings.layoutDir(), serving);
+        this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
+        holder[0] = shell;
+        this.status = new StatusBar(context.status(), context.field(), context.budget());
+        this.pulse = new FramePulse(shell, status, context.field().clock(), this::demoStep,
+                new ConsoleChanges(context.field(), context.referee().matchMode(), context.status(), serving)::read,
+                settings.frameCap());
+        shell.onChange(pulse::input);
+        MenuBar bar = menus();
+        shortcuts = new Shortcuts(bar);
+        root.setTop(bar);
+        root.setCenter(shell.node());
+        root.setBottom(status);
+    }
+
+    /** Shows the window on {@code stage} with the demo layout, the "last" layout or the default. */
+    /** How long closing the window waits for the recording's file to be finished (a stuck disk must not hang it). */
+    static final long FINISH_RECORDING_MILLIS = 20_000;
+
+    public ConsoleWindow show(Stage stage) {
+        return show(stage, false);
+    }
+
+    /**
+     * Shows the window; with {@code viewsAfterShown} the window opens with its menus and status bar
+     * first and the layout's views are built in the next turn of the JavaFX thread, so the window
+     * is on screen a second or more sooner (the console's start, docs/archive/benchmarks-sessions.md "Start").
+     */
+    public ConsoleWindow show(Stage stage, boolean viewsAfterShown) {
+        this.stage = stage;
+        applyTheme();
+        Scene scene = new Scene(root);
+        scene.getStylesheets().add(ConsoleWindow.class.getResource("touchline.css").toExternalForm());
+        scene.getStylesheets().add(ConsoleWindow.class.getResource("bento-themed.css").toExternalForm());
+        scene.getAccelerators().put(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN), this::quickOpen);
+        stage.setScene(scene);
+        // any of the console's windows touched: the idle pulse wakes up; F1 gives help in every window
+        EveryWindow<javafx.scene.input.InputEvent> input = new EveryWindow<>(javafx.scene.input.InputEvent.ANY,
+                (e, w) -> pulse.input());
+        EveryWindow<javafx.scene.input.KeyEvent> f1 = new EveryWindow<>(javafx.scene.input.KeyEvent.KEY_PRESSED,
+                this::helpKey);
+        places.keep(stage, "main", 1400, 900);
+        stage.setTitle(context.remote().status().map(r -> context.field().runtime().version().title() + " — viewing " + r.url())
+                .orElse(context.field().runtime().version().title() + " — UDP port " + context.field().port()));
+        Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
+        boolean[] restored = new boolean[1];
+        Runnable restore = () -> {
+            if (stage.isShowing() || !viewsAfterShown) {
+                shell.restore(last.orElseGet(DemoLayout::standard));
+                restored[0] = true;
+            }
+        };
+        if (!viewsAfterShown) {
+            restore.run();
+        }
+        stage.setOnHiding(e -> {
+            if (restored[0]) { // closed before its views were built: the saved "last" layout stays as it was
+                saveQuietly("last");
+            }
+            pulse.close();
+            input.close();
+            f1.close();
+            serving.close();
+            // closing the window ends a recording as its Stop button does: the file is finished
+            // (summary, footer) before the process can exit, however the window was closed
+            context.recordings().finish(FINISH_RECORDING_MILLIS);
+        });
+        // light on the laptop: a minimised window does no frame work; a touched one wakes up
+        stage.iconifiedProperty().addListener((o, was, minimised) -> pulse.iconified(minimised));
+        stage.show();
+        pulse.start();
+        if (viewsAfterShown) {
+            // after the first frame: the pulse that draws it, then the views
+            new javafx.animation.AnimationTimer() {
+                @Override
+                public void handle(long now) {
+                    stop();
+                    javafx.application.Platform.runLater(restore);
+                }
+            }.start();
+        }
+        return this;
+    }
+
+    /**
+     * Hides the window (which ends {@code touchline console}) after {@code frames} pulses: the way out
+     * of the class-data-sharing training run, which must end normally for the JVM to write its archive.
+     */
+    public void closeAfterFrames(int frames) {
+        new javafx.animation.AnimationTimer() {
+            private int seen;
+
+            @Override
+            public void handle(long now) {
+                if (++seen >= frames) {
+                    stop();
+                    stage.hide();
+                }
+            }
+        }.start();
+    }
+
+    public Shell shell() { return shell; }
+    public FramePulse pulse() { return pulse; }
+    public StatusBar status() { return status; }
+    public LayoutStore layouts() { return layouts; }
+    public WindowPlaces places() { return places; }
+    public ViewRegistry registry() { return registry; }
+    public ViewContext context() { return context; }
+    public ServeToggle serving() { return serving; }
+    public Scene scene() { return root.getScene(); }
+
+    public ConsoleWindow open(String viewId, ViewSource source) {
+        registry.byId(viewId).ifPresent(spec -> shell.open(spec, source));
+        return this;
+    }
+
+    public void saveLayout(String name) throws IOException {
+        layouts.save(name, shell.capture());
+        status.say("layout \"" + name + "\" saved in " + layouts.dir());
+        rebuildLayoutMenu();
+    }
+
+    /** Renames a saved layout; the status line says what happened or why not. */
+    public void renameLayout(String from, String to) {
+        try {
+            layouts.rename(from, to);
+            status.say("layout \"" + from + "\" is now \"" + to + "\"");
+        } catch (IOException e) {
+            status.say("could not rename layout \"" + from + "\": " + e.getMessage());
+        }
+        rebuildLayoutMenu();
+    }
+
+    /** Deletes a saved layout; the status line says so. */
+    public void deleteLayout(String name) {
+        try {
+            status.say(layouts.delete(name) ? "layout \"" + name + "\" deleted" : "no layout \"" + name + "\"");
+        } catch (IOException e) {
+            status.say("could not delete layout \"" + name + "\": " + e.getMessage());
+        }
+        rebuildLayoutMenu();
+    }
+
+    public boolean loadLayout(String name) throws IOException {
+        Optional<List<LayoutNode>> l = layouts.load(name);
+        l.ifPresent(shell::restore);
+        status.say(l.isPresent() ? "layout \"" + name + "\" restored" : "no layout \"" + name + "\"");
+        return l.isPresent();
+    }
+
+    private Optional<List<LayoutNode>> loadQuietly(String name) {
+        try {
+            return layouts.load(name).filter(w -> !w.isEmpty());
+        } catch (IOException e) {
+            return Optional.empty();
+        }
+    }
+
+    private void saveQuietly(String name) {
+        try {
+            layouts.save(name, shell.capture());
+        } catch (IOException e) {
+            org.slf4j.LoggerFactory.getLogger(ConsoleWindow.class).warn("could not save layout: {}", e.toString());
+        }
+    }
+
+    public void setDark(boolean dark) {
+        this.dark = dark;
+        applyTheme();
+    }
+
+    private void applyTheme() {
+        String css = dark ? new PrimerDark().getUserAgentStylesheet() : new PrimerLight().getUserAgentStylesheet();
+        // the theme names a class-path resource; resolve it to a URL so any class loader finds it
+        java.net.URL url = ConsoleWindow.class.getResource(css);
+        Application.setUserAgentStylesheet(url != null ? url.toExternalForm() : css);
+    }
+
+    /** F1: the help of the view that has the keyboard (every view's when none has). */
+    public Stage helpForFocusedView() {
+        return helpFor(stage.getScene().getFocusOwner(), stage); // a menu item of the shown window: both exist
+    }
+
+    private Stage helpFor(javafx.scene.Node focused, javafx.stage.Window owner) {
+        Optional<Shell.OpenView> view = shell.containing(focused);
+        if (view.isPresent()) {
+            ViewSpec spec = view.get().spec();
+            return help.show(owner, spec.title(), HelpWindow.text(spec, shortcuts));
+        }
+        return helpForViews(owner);
+    }
+
+    /**
+     * F1 in a window other than the main one (whose menu answers it): a view dragged out into its
+     * own window gives its help, Ctrl+K and the dialogs every view's.
+     */
+    private void helpKey(javafx.scene.input.KeyEvent e, javafx.stage.Window w) {
+        if (e.getCode() != KeyCode.F1 || w == stage || w == null
+                || (w instanceof Stage s && s.getTitle() != null && s.getTitle().startsWith(HelpWindow.TITLE))) {
+            return;
+        }
+        e.consume();
+        helpFor(w.getScene().getFocusOwner(), w);
+    }
+
+    /** Help → Keyboard shortcuts (Ctrl+/): the sheet, read from the menus' accelerators. */
+    public Stage shortcutSheet() {
+        return help.show(stage, "Keyboard shortcuts", shortcuts.sheet(registry));
+    }
+
+    private Stage helpForViews() {
+        return helpForViews(stage);
+    }
+
+    private Stage helpForViews(javafx.stage.Window owner) {
+        StringBuilder s = new StringBuilder();
+        for (ViewSpec v : registry.all()) {
+            s.append(v.title()).append(": ").append(v.help()).append("\n\n");
+        }
+        s.append("Ctrl+K opens any view. F1 gives the help of the view that has the keyboard, Ctrl+/ every "
+                + "shortcut. Drag a tab to split or move it, or out of the window.");
+        return help.show(owner, "Views", s.toString());
+    }
+
+    public void quickOpen() {
+        new QuickOpen(context, places, shell::openAndFocus).show(stage);
+    }
+
+    /** In demo mode: switch the demo options on, and choose the demo's match items, for every robot once its list arrived. */
+    private void demoStep() {
+        if (!settings.demo() || pulse.frames() % 15 != 0) {
+            return;
+        }
+        for (RobotSnapshot r : context.field().robots().robots()) {
+            for (OptionState o : context.field().options().options(r.id()).options()) {
+                if (DemoLayout.DEMO_OPTIONS.contains(o.name()) && demoSwitched.add(r.id() + "/" + o.name())) {
+                    context.switches().set(r.id(), o.name(), true);
+                }
+            }
+            if (context.field().options().options(r.id()).listReceived() && demoSwitched.add(r.id() + "/in the game")) {
+                context.switches().options().setMatchItems(r.id(), DemoLayout.MATCH_ITEMS);
+            }
+        }
+    }
+
+    private MenuBar menus() {
+        MenuItem save = new MenuItem("_Save layout as…");
+        save.setOnAction(e -> new NameDialog(stage, places, "Save layout", "Name of the layout", "my layout").ask(
+                name -> {
+                    try {
+                        saveLayout(name);
+                    } catch (IOException ex) {
+                        new Alert(Alert.AlertType.ERROR, "Could not save: " + ex.getMessage()).show();
+                    }
+                }));
+        MenuItem demo = new MenuItem("_Default layout");
+        demo.setOnAction(e -> shell.restore(DemoLayout.standard()));
+        renameMenu.setId("menu-rename-layout");
+        deleteMenu.setId("menu-delete-layout");
+        layoutMenu.getItems().addAll(save, demo, renameMenu, deleteMenu, new SeparatorMenuItem());
+        layoutMenu.setOnShowing(e -> rebuildLayoutMenu());
+        rebuildLayoutMenu();
+
+        Menu views = new Menu("_View");
+        for (ViewSpec s : registry.all()) {
+            if (s.id().equals(ViewRegistry.RAW)) {
+                continue;
+            }
+            MenuItem item = new MenuItem(s.title());
+            item.setOnAction(e -> shell.openAndFocus(s, ViewSource.NONE));
+            views.getItems().add(item);
+        }
+        MenuItem quick = new MenuItem("_Quick open…");
+        quick.setAccelerator(new KeyCodeCombination(KeyCode.K, KeyCombination.SHORTCUT_DOWN));
+        quick.setOnAction(e -> quickOpen());
+        javafx.scene.control.CheckMenuItem serve = new javafx.scene.control.CheckMenuItem("Serve to viewers");
+        serve.setId("menu-serve");
+        serve.setAccelerator(new KeyCodeCombination(KeyCode.V, KeyCombination.SHORTCUT_DOWN, KeyCombination.SHIFT_DOWN));
+        serve.setOnAction(e -> {
+            status.say(serving.toggle());
+            serve.setSelected(serving.serving());
+        });
+        views.setOnShowing(e -> serve.setSelected(serving.serving()));
+        views.getItems().addAll(new SeparatorMenuItem(), quick, serve);
+
+        Menu theme = new Menu("_Theme");
+        MenuItem darkItem = new MenuItem("_Dark");
+        darkItem.setOnAction(e -> setDark(true));
+        MenuItem lightItem = new MenuItem("_Light");
+        lightItem.setOnAction(e -> setDark(false));
+        theme.getItems().addAll(darkItem, lightItem);
+
+        Menu helpMenu = new Menu("_Help");
+        MenuItem forView = new MenuItem("Help for this _view");
+        forView.setAccelerator(new KeyCodeCombination(KeyCode.F1));
+        forView.setOnAction(e -> helpForFocusedView());
+        MenuItem keys = new MenuItem("_Keyboard shortcuts");
+        keys.setAccelerator(new KeyCodeCombination(KeyCode.SLASH, KeyCombination.SHORTCUT_DOWN));
+        keys.setOnAction(e -> shortcutSheet());
+        MenuItem about = new MenuItem("_Views…");
+        about.setOnAction(e -> helpForViews());
+        MenuItem aboutTouchline = new MenuItem("_About Touchline…");
+        aboutTouchline.setId("help-about");
+        aboutTouchline.setOnAction(e -> {
+            touchline.app.RuntimeReport report = context.field().runtime();
+            Alert a = new Alert(Alert.AlertType.INFORMATION);
+            a.initOwner(stage);
+            a.setTitle("About Touchline");
+            a.setHeaderText(report.version().title());
+            javafx.scene.control.Label text = new javafx.scene.control.Label(
+                    String.join("\n", report.lines().subList(1, report.lines().size())));
+            text.setId("help-about-text");
+            text.setWrapText(true);
+            a.getDialogPane().setContent(text);
+            a.setResizable(true);
+            places.keep((Stage) a.getDialogPane().getScene().getWindow(), "about", 560, 260);
+            a.show();
+        });
+        helpMenu.getItems().addAll(forView, keys, about, aboutTouchline);
+        return new MenuBar(layoutMenu, views, theme, helpMenu);
+    }
+
+    private void rebuildLayoutMenu() {
+        layoutMenu.getItems().remove(LAYOUT_MENU_FIXED, layoutMenu.getItems().size());
+        renameMenu.getItems().clear();
+        deleteMenu.getItems().clear();
+        renameMenu.setDisable(layouts.names().isEmpty()); // nothing saved yet: nothing to rename or delete
+        deleteMenu.setDisable(layouts.names().isEmpty());
+        for (String name : layouts.names()) {
+            MenuItem rename = new MenuItem("\"" + name + "\"…");
+            rename.setOnAction(e -> new NameDialog(stage, places, "Rename layout", "New name of \"" + name + "\"", name)
+                    .ask(to -> {
+                        if (!to.equals(name)) {
+                            renameLayout(name, to);
+                        }
+                    }));
+            renameMenu.getItems().add(rename);
+            MenuItem delete = new MenuItem("\"" + name + "\"…");
+            delete.setOnAction(e -> confirmDelete(name));
+            deleteMenu.getItems().add(delete);
+            MenuItem item = new MenuItem("Open \"" + name + "\"");
+            item.setOnAction(e -> {
+                try {
+                    loadLayout(name);
+                } catch (IOException ex) {
+                    status.say("could not read layout " + name + ": " + ex.getMessage());
+                }
+            });
+            layoutMenu.getItems().add(item);
+        }
+    }
+
+    private void confirmDelete(String name) {
+        new ConfirmDialog(stage, places, "Delete layout", "Delete the layout \"" + name + "\"? Its file in "
+                + layouts.dir() + " is removed.").ask(() -> deleteLayout(name));
+    }
+}
