@@ -413,8 +413,8 @@ int main(int argc, char **argv)
     }
     printf("listening on port %d\n", actual);
     fflush(stdout);
-    fprintf(stderr, "robot %ld: sending to %s every %u ms (during READY/SET/PLAYING every %u ms), %s framing, %s\n",
-            (long)cfg.robot_id, console_arg, FW_KEEPALIVE_MS, FW_MATCH_DEBUG_PERIOD_MS, cfg.framing == FW_FRAMING_LEGACY ? "legacy" : "length",
+    fprintf(stderr, "robot %ld: sending to %s every %u ms (during READY/SET/PLAYING every %u ms, %u ms under an SPL GameController), %s framing, %s\n",
+            (long)cfg.robot_id, console_arg, FW_KEEPALIVE_MS, FW_MATCH_DEBUG_PERIOD_MS, FW_MATCH_DEBUG_PERIOD_SPL_MS, cfg.framing == FW_FRAMING_LEGACY ? "legacy" : "length",
             wifi_sim ? "through the simulated GS1500M" : "direct UDP");
     {
         char to[INET_ADDRSTRLEN];

@@ -558,7 +558,8 @@ void robot_poll(uint32_t now)
         /* The game's limit: one debug packet a period, the match digest (or the bare Status
          * when no item was chosen); the option list waits for the game to stop, option data
          * is produced only for the digest. */
-        uint32_t period = g_cfg->match_debug_period_ms ? g_cfg->match_debug_period_ms : FW_MATCH_DEBUG_PERIOD_MS;
+        uint32_t period = g_cfg->match_debug_period_ms ? g_cfg->match_debug_period_ms
+                          : g_gc.version == 18u ? FW_MATCH_DEBUG_PERIOD_SPL_MS : FW_MATCH_DEBUG_PERIOD_MS;
         if (!g_debug_sent || now - g_last_debug_at >= period) {
             uint8_t k, sends = g_cfg->match_sends_per_period > 1u ? g_cfg->match_sends_per_period : 1u;
             for (k = 0; k < sends; k++) {

@@ -24,6 +24,8 @@
 /* HSL 2026 rules, "Debug Communication": a robot may send debug information at most once
  * every second, in a single UDP packet (README.md cites the rule). */
 #define FW_MATCH_DEBUG_PERIOD_MS 1000u
+/* SPL 2025: once every 2 s. Used while the GameController the robot follows is SPL's (v18). */
+#define FW_MATCH_DEBUG_PERIOD_SPL_MS 2000u
 #define FW_GC_RETURN_PERIOD_MS 1000u    /* the GameController wants 0.5-2 Hz */
 #define FW_GC_SILENT_MS 5000u           /* no return packets once the GameController is gone */
 #define FW_TEAM_MSG_PORT_BASE 10000u    /* team messages: UDP 10000 + team number */
@@ -91,7 +93,8 @@ typedef struct {
     const wlan_peer *gc_return_to;   /* NULL = the GameController's own address, port 3939 */
     uint16_t team_msg_period_ms;     /* this robot's team messages; 0 = none */
     const wlan_peer *team_msg_to;    /* broadcast (or 127.0.0.1) port 10000 + team; NULL = none */
-    uint16_t match_debug_period_ms;  /* console traffic in READY/SET/PLAYING; 0 = FW_MATCH_DEBUG_PERIOD_MS */
+    uint16_t match_debug_period_ms;  /* console traffic in READY/SET/PLAYING; 0 = the league's: FW_MATCH_DEBUG_PERIOD_MS,
+                                      * FW_MATCH_DEBUG_PERIOD_SPL_MS under an SPL GameController */
     fw_ball_fn ball;                 /* may be NULL: ball never seen */
     uint16_t match_budget;           /* a match digest's datagram incl. the tag; 0 = one MTU (capped at 1400) */
     uint8_t match_sends_per_period;  /* 0/1 = the rule; more only to test the console's rule check */

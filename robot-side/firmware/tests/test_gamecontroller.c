@@ -428,6 +428,25 @@ static void test_robot_debug_limit(void)
     CHECK(count(true, 0, t1, g_clock) >= 5 + 8 * 9);
 }
 
+/* Under an SPL GameController (v18) the period is SPL 2025's: one debug packet every 2 s. */
+static void test_robot_debug_limit_spl(void)
+{
+    static uint8_t spl_playing[118];
+    uint32_t t0;
+    memcpy(spl_playing, "RGme", 4);
+    spl_playing[4] = 18;
+    spl_playing[10] = FW_GC_PLAYING;
+    start_robot(2, 5);
+    enable_all_options();
+    hear(spl_playing, sizeof spl_playing);
+    CHECK(robot_in_match());
+    t0 = g_clock;
+    run_until(t0 + 10000);
+    CHECK(min_console_gap(t0, g_clock) >= FW_MATCH_DEBUG_PERIOD_SPL_MS);
+    CHECK(count(true, 0, t0, g_clock) >= 4);
+    CHECK(count(true, 0, t0, g_clock) <= 5);
+}
+
 static void test_robot_return_packets(void)
 {
     static uint8_t playing[256];
@@ -688,6 +707,7 @@ int main(int argc, char **argv)
     test_rejected();
     test_return_packet();
     test_robot_debug_limit();
+    test_robot_debug_limit_spl();
     test_follow_rule();
     test_robot_forged_finished();
     test_robot_return_packets();

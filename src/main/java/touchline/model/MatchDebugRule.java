@@ -38,8 +38,7 @@ public final class MatchDebugRule implements EnvelopeSink {
 
         /** The profile's figures; a figure it does not know is no limit (and nothing is flagged for it). */
         public static Limits of(RuleProfile profile) {
-            RuleLimit pps = profile.debugPacketsPerSecond();
-            long period = pps.known() && pps.value() > 0 ? 1_000_000L / pps.value() : 0;
+            long period = valueOr0(profile.debugPeriodMillis()) * 1000L;
             return new Limits(period, (int) valueOr0(profile.maxDebugPacketBytes()),
                     (int) valueOr0(profile.maxDebugFragments()));
         }
@@ -185,7 +184,8 @@ public final class MatchDebugRule implements EnvelopeSink {
                 warnings.add(String.format("too often: two datagrams %d ms apart (one per %d ms allowed)",
                         closest / 1000, period / 1000));
             } else if (l.periodMicros() > 0 && now - first >= WINDOW_PERIODS / 2 * period && perPeriod > 1.2) {
-                warnings.add(String.format("too often: %.1f datagrams per period", perPeriod));
+                warnings.add(String.format("too often: %.1f datagrams per period (one per %d ms allowed)", perPeriod,
+                        period / 1000));
             }
             if (l.maxBytes() > 0 && biggest > l.maxBytes()) {
                 warnings.add("too big: " + biggest + " B (at most " + l.maxBytes() + " B)");

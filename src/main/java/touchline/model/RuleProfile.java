@@ -11,7 +11,7 @@ import java.util.Properties;
 
 /**
  * A league's rules as far as the console measures them: the team-message budget per game and
- * its size limit, the debug rate robots may use during play, the traffic limit of the field
+ * its size limit, the debug period robots keep during play, the traffic limit of the field
  * network, the length of a game. Profiles are data the user picks (samples/profiles/*.properties:
  * HSL 2026, SPL 2025, HL 2025, lab); a figure the rulebook has but the profile does not know is
  * {@link RuleLimit#UNKNOWN}, shown as such.
@@ -21,7 +21,7 @@ import java.util.Properties;
  * @param perAddedMinute         messages added to the budget per added minute
  * @param extraTime              messages added for extra time
  * @param maxTeamMessageBytes    the largest legal team message
- * @param debugPacketsPerSecond  debug packets per robot and second during play
+ * @param debugPeriodMillis      a robot's debug period during play: one datagram per so many ms
  * @param halfSeconds            length of a half of the normal game
  * @param halves                 halves of the normal game
  * @param trafficBitsPerSecond   the team's wireless traffic limit
@@ -29,7 +29,7 @@ import java.util.Properties;
  * @param maxDebugFragments      the IP fragments a debug datagram may take during play
  */
 public record RuleProfile(String name, RuleLimit teamMessageBudget, RuleLimit perAddedMinute, RuleLimit extraTime,
-                          RuleLimit maxTeamMessageBytes, RuleLimit debugPacketsPerSecond, int halfSeconds, int halves,
+                          RuleLimit maxTeamMessageBytes, RuleLimit debugPeriodMillis, int halfSeconds, int halves,
                           RuleLimit trafficBitsPerSecond, RuleLimit maxDebugPacketBytes, RuleLimit maxDebugFragments) {
 
     /** Where the launcher's working directory keeps the profiles the user can pick by name. */
@@ -58,7 +58,7 @@ public record RuleProfile(String name, RuleLimit teamMessageBudget, RuleLimit pe
         Fields f = new Fields(file, p);
         return new RuleProfile(f.text("name"), f.limit("team-messages.budget"), f.optionalLimit("team-messages.per-added-minute"),
                 f.optionalLimit("team-messages.extra-time"), f.limit("team-messages.max-bytes"),
-                f.limit("debug.packets-per-second"), (int) f.number("half.seconds"), (int) f.number("halves"),
+                f.debugPeriod(), (int) f.number("half.seconds"), (int) f.number("halves"),
                 f.limit("traffic.bits-per-second"), f.optionalLimit("debug.max-packet-bytes"),
                 f.optionalLimit("debug.max-fragments"));
     }
@@ -94,6 +94,19 @@ public record RuleProfile(String name, RuleLimit teamMessageBudget, RuleLimit pe
                 case "unknown" -> RuleLimit.UNKNOWN;
                 default -> RuleLimit.of(number(key));
             };
+        }
+
+        /**
+         * "debug.period-ms"; a profile written before it (only "debug.packets-per-second") keeps
+         * working: n a second is a period of 1000/n ms.
+         */
+        RuleLimit debugPeriod() throws RuleProfileException {
+            if (p.getProperty("debug.period-ms") != null || p.getProperty("debug.packets-per-second") == null) {
+                return limit("debug.period-ms");
+            }
+            RuleLimit perSecond = limit("debug.packets-per-second");
+            return !perSecond.known() ? perSecond
+                    : perSecond.value() == 0 ? RuleLimit.NONE : RuleLimit.of(1000 / perSecond.value());
         }
 
         RuleLimit optionalLimit(String key) throws RuleProfileException {

@@ -76,6 +76,29 @@ class MatchDebugRuleTest {
     }
 
     @Test
+    void underSplTwoDigestsWithinTwoSecondsAreTooOftenAndOnePerTwoSecondsIsNot() throws Exception {
+        MatchDebugRule hslPace = rule("spl-2025");
+        assertEquals(2_000_000L, hslPace.limits().periodMicros());
+        run(hslPace, 20, 1000, "PLAYING", "PLAYING");
+        assertEquals(List.of(1, 2), hslPace.broken().stream().map(MatchDebugRule.Reading::robotId).toList(),
+                "one a second is HSL's pace, twice SPL's");
+        assertEquals("too often: 2.0 datagrams per period (one per 2000 ms allowed)",
+                hslPace.reading(1).warnings().get(0));
+
+        MatchDebugRule close = rule("spl-2025");
+        close.accept(digest(4, 300));
+        now[0] += 900_000;
+        close.accept(digest(4, 300));
+        assertEquals(List.of("too often: two datagrams 900 ms apart (one per 2000 ms allowed)"),
+                close.reading(4).warnings());
+
+        MatchDebugRule splPace = rule("spl-2025");
+        run(splPace, 30, 2000, "PLAYING", "SET");
+        assertTrue(splPace.broken().isEmpty(), "one per 2 s is the limit, not over it");
+        assertEquals(1.0, splPace.reading(1).perPeriod(), 0.11);
+    }
+
+    @Test
     void aDigestOverOneFragmentIsFlaggedUnderTheHslProfileAndOneOverTheSizeUnderAStricterOne() throws Exception {
         MatchDebugRule rule = rule("hsl-2026");
         rule.accept(digest(5, 1472));

@@ -22,10 +22,20 @@ class RuleProfileTest {
         RuleProfile hsl = RuleProfile.named("hsl-2026");
         assertEquals(RuleLimit.of(12_000), hsl.teamMessageBudget());
         assertEquals(RuleLimit.of(512), hsl.maxTeamMessageBytes());
-        assertEquals(RuleLimit.of(1), hsl.debugPacketsPerSecond());
+        assertEquals(RuleLimit.of(1000), hsl.debugPeriodMillis());
+        assertEquals(RuleLimit.of(2000), RuleProfile.named("spl-2025").debugPeriodMillis());
+        assertEquals(RuleLimit.NONE, RuleProfile.named("lab").debugPeriodMillis());
         assertEquals(RuleLimit.UNKNOWN, hsl.trafficBitsPerSecond());
         assertEquals(RuleLimit.of(1_000_000), RuleProfile.named("hl-2025").trafficBitsPerSecond());
         assertEquals(RuleLimit.NONE, RuleProfile.named("lab").teamMessageBudget());
+    }
+
+    @Test
+    void aProfileWrittenWithPacketsPerSecondStillReads(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("old.properties");
+        Files.writeString(file, "name = Old\nteam-messages.budget = none\nteam-messages.max-bytes = none\n"
+                + "debug.packets-per-second = 2\nhalf.seconds = 600\nhalves = 2\ntraffic.bits-per-second = none\n");
+        assertEquals(RuleLimit.of(500), RuleProfile.load(file).debugPeriodMillis());
     }
 
     @Test

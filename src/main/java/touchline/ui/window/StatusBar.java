@@ -176,7 +176,7 @@ public final class StatusBar extends HBox {
                     r.perMinute(), r.largest(), r.oversize() > 0 ? ", " + r.oversize() + " OVERSIZE" : ""));
         }
         over.forEach(o -> tip.append("\nrobot ").append(o.robotId()).append(" in play: ").append(o.describe())
-                .append(" (limit ").append(s.profile().debugPacketsPerSecond().describe()).append("/s)"));
+                .append(" (limit: one per ").append(s.profile().debugPeriodMillis().describe()).append(" ms)"));
         meter.show(f, alarm ? BudgetMeter.Level.ALARM : warn ? BudgetMeter.Level.WARN : BudgetMeter.Level.CALM,
                 "team " + s.team() + ": " + s.brief() + (over.isEmpty() ? "" : " · debug over limit"), tip.toString());
     }
