@@ -64,6 +64,9 @@ class ReplayViewTest {
         Stage stage = FxToolkit.registerPrimaryStage();
         window = fx(() -> new ConsoleWindow(console, new UiSettings(dir, true, false)).show(stage));
         view = fx(() -> {
+            // the replay view alone: the clicks below need its controls on screen, not scrolled away
+            // below the default layout's other views
+            window.shell().restore(java.util.List.of());
             window.open("replay", ViewSource.NONE);
             return window.shell().openViews().stream().map(Shell.OpenView::view)
                     .filter(ReplayView.class::isInstance).map(ReplayView.class::cast).findFirst().orElseThrow();
