@@ -250,6 +250,18 @@ class ArchitectureTest {
     }
 
     @Test
+    void theFrameMachineryAndTheDrawingKnowNoWindowAndNoFeature() {
+        // ui.frame and ui.render are shared by every feature: they are handed narrow services and
+        // small interfaces (the status a pulse refreshes, the views it pulls), never the window's types
+        noClasses().that().resideInAnyPackage("touchline.ui.frame..", "touchline.ui.render..")
+                .should().dependOnClassesThat().resideInAnyPackage("touchline.ui.window..", "touchline.ui.robots..",
+                        "touchline.ui.options..", "touchline.ui.consoles..", "touchline.ui.plots..",
+                        "touchline.ui.field..", "touchline.ui.replay..", "touchline.ui.referee..", "touchline.ui.nao..",
+                        "touchline.ui.viewers..", "touchline.ui.ros2..")
+                .check(classes);
+    }
+
+    @Test
     void theLiveServerIsAFaceOverTheStream() {
         noClasses().that().resideInAPackage("touchline.serve..")
                 .should().dependOnClassesThat().resideInAnyPackage("touchline.model..", "touchline.app..",

@@ -64,7 +64,7 @@ public final class DebugConsoleView implements View {
 
     public DebugConsoleView(ViewContext context) {
         this.context = context;
-        this.robot = new RobotFilter(context);
+        this.robot = new RobotFilter(context.field());
         lines.setId("debug-lines");
         robot.setId("debug-robot");
         lines.getSelectionModel().setSelectionMode(SelectionMode.MULTIPLE);

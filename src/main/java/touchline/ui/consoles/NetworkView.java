@@ -54,7 +54,7 @@ public final class NetworkView implements View {
 
     public NetworkView(ViewContext context) {
         this.context = context;
-        this.robot = new RobotFilter(context);
+        this.robot = new RobotFilter(context.field());
         table.setId("network-table");
         robot.setId("network-robot");
         count.setId("network-count");

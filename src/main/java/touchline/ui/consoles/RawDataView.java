@@ -19,7 +19,7 @@ public final class RawDataView extends SourcedView {
     private final MessageText render = new MessageText();
 
     public RawDataView(ViewContext context, ViewSource source) {
-        super(context, Set.of(), source);
+        super(context.field(), Set.of(), source);
         text.setEditable(false);
         text.setId("raw-text");
         text.setStyle("-fx-font-family: monospace;");

@@ -21,7 +21,7 @@ public final class TableDataView extends SourcedView {
     private List<String> header = List.of();
 
     public TableDataView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.TABLE_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.TABLE_VALUE), source);
         table.setId("data-table");
         root.setCenter(table);
     }

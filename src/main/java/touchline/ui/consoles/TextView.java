@@ -23,7 +23,7 @@ public final class TextView extends SourcedView {
     private ViewSource seenSource = ViewSource.NONE;
 
     public TextView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.TEXT_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.TEXT_VALUE), source);
         lines.setId("option-text");
         lines.setStyle("-fx-font-family: monospace;");
         lines.setFixedCellSize(22);
@@ -37,8 +37,8 @@ public final class TextView extends SourcedView {
             seenSource = s;
             follower.reload();
         }
-        SequencedRing.Entry<TextLine> newest = follower.follow(context.stores().text().version(),
-                (after, max) -> context.stores().text().since(after, s.robotId(), max),
+        SequencedRing.Entry<TextLine> newest = follower.follow(stores().text().version(),
+                (after, max) -> stores().text().since(after, s.robotId(), max),
                 l -> l.option().equals(s.option()) ? DebugConsoleView.format(l) : null);
         if (newest != null && follower.added() > 0) {
             lines.scrollTo(lines.getItems().size() - 1);

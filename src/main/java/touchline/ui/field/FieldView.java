@@ -59,7 +59,7 @@ public final class FieldView extends SourcedView {
     private String objectsNote = "";
 
     public FieldView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.FIELD_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.FIELD_VALUE), source);
         canvas.setId("field-canvas");
         robotLayer.setId("field-robots");
         robotLayer.setMouseTransparent(true);
@@ -78,16 +78,16 @@ public final class FieldView extends SourcedView {
     @Override
     public void refresh(FrameContext frame) {
         bar.refresh();
-        long rv = context.field().robots().version();
+        long rv = field.robots().version();
         ViewSource s = bar.selected();
-        Optional<Latest> objects = s.isSet() ? context.stores().latest().get(s.robotId(), s.option()) : Optional.empty();
+        Optional<Latest> objects = s.isSet() ? stores().latest().get(s.robotId(), s.option()) : Optional.empty();
         long ov = objects.map(Latest::version).orElse(0L);
         if (rv == seenRobots && ov == seenObjects && !dirty) {
             return;
         }
         seenRobots = rv;
         // every datagram moves the robots' version: show only what moved of them
-        List<RobotSnapshot> robots = context.field().robots().robots();
+        List<RobotSnapshot> robots = field.robots().robots();
         List<Mark> marks = marks(robots);
         boolean field = dirty || ov != seenObjects;
         if (!field && marks.equals(drawnMarks)) {

@@ -50,7 +50,7 @@ public final class RegionOverlayView extends SourcedView {
     private final LabelSprites labels = new LabelSprites(javafx.scene.text.Font.getDefault());
 
     public RegionOverlayView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.REGION_GROWING_VALUE, Fumanoid.DebugKind.GRID_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.REGION_GROWING_VALUE, Fumanoid.DebugKind.GRID_VALUE), source);
         pane.setId("region-canvas");
         root.setCenter(pane);
     }
@@ -157,7 +157,7 @@ public final class RegionOverlayView extends SourcedView {
 
     private <T> T newest(int robotId, String kind, Class<T> type) {
         Latest best = null;
-        for (Latest l : context.stores().latest().ofKind(kind)) {
+        for (Latest l : stores().latest().ofKind(kind)) {
             if (l.robotId() == robotId && (best == null || l.version() > best.version())) {
                 best = l;
             }

@@ -23,7 +23,7 @@ public final class RelativePositionsView extends SourcedView {
     private final ResizableCanvas canvas = new ResizableCanvas(() -> dirty = true);
 
     public RelativePositionsView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.RELATIVE_POSITIONS_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.RELATIVE_POSITIONS_VALUE), source);
         canvas.setId("relative-canvas");
         root.setCenter(canvas);
     }

@@ -2,7 +2,10 @@ package touchline.ui.frame;
 
 import touchline.app.LiveField;
 import touchline.app.game.MatchMode;
-import touchline.ui.viewers.ServeToggle;
+import touchline.serve.FoxgloveServer;
+
+import java.util.Optional;
+import java.util.function.Supplier;
 
 /**
  * One number that moves whenever anything a view or the status bar shows may have changed:
@@ -15,10 +18,10 @@ public final class ConsoleChanges {
 
     private final LiveField field;
     private final ConsoleStatus status;
-    private final ServeToggle serving;
+    private final Supplier<Optional<FoxgloveServer>> serving;
     private final MatchMode matchMode;
 
-    public ConsoleChanges(LiveField field, MatchMode matchMode, ConsoleStatus status, ServeToggle serving) {
+    public ConsoleChanges(LiveField field, MatchMode matchMode, ConsoleStatus status, Supplier<Optional<FoxgloveServer>> serving) {
         this.field = field;
         this.matchMode = matchMode;
         this.status = status;
@@ -38,7 +41,7 @@ public final class ConsoleChanges {
     /** Viewers come, go and subscribe without any datagram: the Viewers view shows them. */
     private long viewers() {
         long n = 0;
-        var server = serving.server();
+        var server = serving.get();
         if (server.isPresent()) {
             n++;
             for (touchline.serve.ViewerInfo v : server.get().viewers()) {

@@ -1,8 +1,6 @@
 package touchline.ui.frame;
 
 import javafx.animation.AnimationTimer;
-import touchline.ui.window.Shell;
-import touchline.ui.window.StatusBar;
 /**
  * The one place the UI reads the model: once per JavaFX pulse it refreshes every open view
  * and the status bar. 10 000 messages a second cost the FX thread the same as 10, because
@@ -33,8 +31,8 @@ public final class FramePulse extends AnimationTimer {
      */
     private final FrameCap cap;
 
-    private final Shell shell;
-    private final StatusBar status;
+    private final java.util.function.Supplier<? extends Iterable<PulledView>> views;
+    private final FrameStatus status;
     private final touchline.transport.MicrosClock clock;
     private final LatencyProbe latency = new LatencyProbe();
     private final FrameContext frame = new FrameContext(latency);
@@ -56,10 +54,10 @@ public final class FramePulse extends AnimationTimer {
     private boolean closed;
     private long workNanos;
 
-    public FramePulse(Shell shell, StatusBar status, touchline.transport.MicrosClock clock, Runnable extra,
+    public FramePulse(java.util.function.Supplier<? extends Iterable<PulledView>> views, FrameStatus status, touchline.transport.MicrosClock clock, Runnable extra,
                       java.util.function.LongSupplier changes, FrameCap cap) {
         this.cap = cap;
-        this.shell = shell;
+        this.views = views;
         this.status = status;
         this.clock = clock;
         this.extra = extra;
@@ -128,13 +126,13 @@ public final class FramePulse extends AnimationTimer {
         workFrames++;
         frame.begin(clock.nowMicros());
         extra.run();
-        for (Shell.OpenView v : shell.openViews()) {
-            if (!showing(v.view().node())) {
+        for (PulledView v : views.get()) {
+            if (!showing(v.frame().view().node())) {
                 continue; // a tab behind another one catches up the moment it is selected
             }
             long t0 = System.nanoTime();
             v.frame().pull(frame);
-            refreshNanos.merge(v.spec().id(), System.nanoTime() - t0, Long::sum);
+            refreshNanos.merge(v.id(), System.nanoTime() - t0, Long::sum);
         }
         status.refresh(frame.nowMicros(), fps, latency);
     }

@@ -3,7 +3,7 @@ package touchline.ui.frame;
 import javafx.collections.FXCollections;
 import javafx.scene.control.ComboBox;
 import touchline.model.RobotSnapshot;
-import touchline.ui.window.ViewContext;
+import touchline.app.LiveField;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -12,13 +12,13 @@ import java.util.List;
 public final class RobotFilter extends ComboBox<String> {
 
     static final String ALL = "all robots";
-    private final ViewContext context;
+    private final LiveField field;
     private long seenVersion = -1;
     private boolean read;
     private long readMicros;
 
-    public RobotFilter(ViewContext context) {
-        this.context = context;
+    public RobotFilter(LiveField field) {
+        this.field = field;
         getItems().add(ALL);
         getSelectionModel().select(ALL);
     }
@@ -30,8 +30,8 @@ public final class RobotFilter extends ComboBox<String> {
     }
 
     public void refresh() {
-        long v = context.field().robots().version();
-        long now = context.field().clock().nowMicros();
+        long v = field.robots().version();
+        long now = field.clock().nowMicros();
         // every datagram moves the version: the robot list is read at most twice a second (the first
         // time at once: a "never read" of Long.MIN_VALUE overflowed now - readMicros and kept the list empty)
         if (v == seenVersion || read && now - readMicros < touchline.ui.frame.SourceBar.REREAD_MICROS) {
@@ -42,7 +42,7 @@ public final class RobotFilter extends ComboBox<String> {
         seenVersion = v;
         List<String> items = new ArrayList<>();
         items.add(ALL);
-        for (RobotSnapshot r : context.field().robots().robots()) {
+        for (RobotSnapshot r : field.robots().robots()) {
             if (!items.contains("robot " + r.id())) { // a replayed robot 3 beside the live one: one filter entry
                 items.add("robot " + r.id());
             }

@@ -11,7 +11,7 @@ import touchline.model.RobotSnapshot;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
-import touchline.ui.window.ViewContext;
+import touchline.app.LiveField;
 
 /**
  * The bar on top of a visualisation: which robot's option it shows, chosen from the options
@@ -20,7 +20,7 @@ import touchline.ui.window.ViewContext;
  */
 public final class SourceBar extends HBox {
 
-    private final ViewContext context;
+    private final LiveField field;
     private final Set<Integer> kinds;
     private final ComboBox<ViewSource> choice = new ComboBox<>();
     private final Label status = new Label();
@@ -32,9 +32,9 @@ public final class SourceBar extends HBox {
     /** The least time between two reads caused by the robot registry alone. */
     public static final long REREAD_MICROS = 500_000;
 
-    SourceBar(ViewContext context, Set<Integer> kinds, ViewSource initial) {
+    SourceBar(LiveField field, Set<Integer> kinds, ViewSource initial) {
         super(8);
-        this.context = context;
+        this.field = field;
         this.kinds = kinds;
         getStyleClass().add("source-bar");
         choice.setPromptText("choose robot · option");
@@ -58,7 +58,7 @@ public final class SourceBar extends HBox {
 
     /** The status line as it should read now; it changes at most twice a second ({@link PacedText}). */
     public void status(String text) {
-        show(paced.offer(text, context.field().clock().nowMicros()));
+        show(paced.offer(text, field.clock().nowMicros()));
     }
 
     private void show(String text) {
@@ -73,9 +73,9 @@ public final class SourceBar extends HBox {
      * come with the option lists, whose version is read at once).
      */
     public void refresh() {
-        long ov = context.field().options().version();
-        long rv = context.field().robots().version();
-        long now = context.field().clock().nowMicros();
+        long ov = field.options().version();
+        long rv = field.robots().version();
+        long now = field.clock().nowMicros();
         show(paced.due(now));
         if (ov == seenOptionsVersion && (rv == seenRobotsVersion || now - readMicros < REREAD_MICROS)) {
             return;
@@ -84,15 +84,15 @@ public final class SourceBar extends HBox {
         seenOptionsVersion = ov;
         seenRobotsVersion = rv;
         List<ViewSource> found = new ArrayList<>();
-        for (RobotSnapshot r : context.field().robots().robots()) {
-            RobotOptions ro = context.field().options().options(r.id(), r.origin());
+        for (RobotSnapshot r : field.robots().robots()) {
+            RobotOptions ro = field.options().options(r.id(), r.origin());
             for (OptionState o : ro.options()) {
                 if (kinds.contains(o.kind()) && !found.contains(new ViewSource(r.id(), o.name()))) {
                     found.add(new ViewSource(r.id(), o.name()));
                 }
             }
         }
-        for (var k : context.stores().latest().translatedSources(kinds)) {
+        for (var k : field.stores().latest().translatedSources(kinds)) {
             if (!found.contains(new ViewSource(k.robotId(), k.option()))) {
                 found.add(new ViewSource(k.robotId(), k.option()));
             }

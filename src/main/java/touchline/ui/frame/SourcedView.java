@@ -2,11 +2,12 @@ package touchline.ui.frame;
 
 import javafx.scene.Node;
 import javafx.scene.layout.BorderPane;
+import touchline.app.LiveField;
 import touchline.model.store.Latest;
+import touchline.model.store.ViewStores;
 
 import java.util.Optional;
 import java.util.Set;
-import touchline.ui.window.ViewContext;
 
 /**
  * A visualisation of one robot's option: a {@link SourceBar} on top, the drawing below.
@@ -15,22 +16,28 @@ import touchline.ui.window.ViewContext;
  */
 public abstract class SourcedView implements View {
 
-    protected final ViewContext context;
+    /** The live field the source bar lists robots from; its stores are the ones the view draws (the replay's while one is open). */
+    protected final LiveField field;
     protected final SourceBar bar;
     protected final BorderPane root = new BorderPane();
     private long drawnVersion = -1;
     private ViewSource drawnSource = ViewSource.NONE;
     protected boolean dirty;
 
-    protected SourcedView(ViewContext context, Set<Integer> kinds, ViewSource initial) {
-        this.context = context;
-        this.bar = new SourceBar(context, kinds, initial);
+    protected SourcedView(LiveField field, Set<Integer> kinds, ViewSource initial) {
+        this.field = field;
+        this.bar = new SourceBar(field, kinds, initial);
         root.setTop(bar);
     }
 
     @Override
     public Node node() {
         return root;
+    }
+
+    /** The bounded stores the view pulls from. */
+    protected ViewStores stores() {
+        return field.stores();
     }
 
     @Override
@@ -50,7 +57,7 @@ public abstract class SourcedView implements View {
             status("no source chosen");
             return;
         }
-        Optional<Latest> latest = context.stores().latest().get(s.robotId(), s.option());
+        Optional<Latest> latest = stores().latest().get(s.robotId(), s.option());
         if (latest.isEmpty()) {
             if (!s.equals(drawnSource)) {
                 drawnSource = s;

@@ -61,7 +61,7 @@ public final class FieldPlotView implements View {
             live.close();
             replayed.close();
         };
-        this.robot = new RobotFilter(context);
+        this.robot = new RobotFilter(context.field());
         robot.setId("field-robot");
         path.setId("field-path");
         path.setPromptText("field path, e.g. status:battery — Enter adds it");

@@ -32,7 +32,7 @@ public final class ImageDataView extends SourcedView {
     private long failures;
 
     public ImageDataView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.IMAGE_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.IMAGE_VALUE), source);
         canvas.setId("image-canvas");
         root.setCenter(canvas);
     }

@@ -24,7 +24,7 @@ public final class PlotView extends SourcedView {
     private PlotStore.Snapshot last;
 
     public PlotView(ViewContext context, ViewSource source) {
-        super(context, Set.of(Fumanoid.DebugKind.PLOT_VALUE), source);
+        super(context.field(), Set.of(Fumanoid.DebugKind.PLOT_VALUE), source);
         plot.node().setId("plot-canvas");
         root.setCenter(plot.node());
     }
@@ -56,7 +56,7 @@ public final class PlotView extends SourcedView {
 
     @Override
     protected String draw(Latest latest) {
-        PlotStore.Snapshot s = context.stores().plots().snapshot(latest.robotId(), latest.option(), last);
+        PlotStore.Snapshot s = stores().plots().snapshot(latest.robotId(), latest.option(), last);
         if (s == null) {
             return "no plot data";
         }

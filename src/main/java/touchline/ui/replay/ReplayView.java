@@ -16,7 +16,6 @@ import javafx.scene.layout.VBox;
 import javafx.stage.FileChooser;
 import javafx.util.StringConverter;
 import touchline.app.LiveField;
-import touchline.app.Replays;
 import touchline.app.Replay;
 import touchline.record.PlayerState;
 import touchline.record.ReplayNotes;
@@ -29,7 +28,6 @@ import touchline.ui.window.ViewContext;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -45,7 +43,7 @@ public final class ReplayView implements View {
     static final List<Double> SPEEDS = List.of(0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 10.0, 25.0, 50.0);
 
     private final LiveField field;
-    private final Replays replays;
+    private final ReplayViewModel model;
     private final TeamSchemas schemas;
     private final WorkQueue work;
     private final WorkQueue scans;
@@ -70,14 +68,13 @@ public final class ReplayView implements View {
     private Replay shown;
     private PlayerState state;
     private List<TimelineEvent> events = List.of();
-    private long loopA = -1;
     private ReplayNotes shownNotes = ReplayNotes.NONE;
     /** The message speaks of the replay that is open ("Opened …", "No goal after …"): it goes with it. */
     private boolean messageOfReplay;
 
     public ReplayView(ViewContext context) {
         this.field = context.field();
-        this.replays = context.replays();
+        this.model = new ReplayViewModel(context.replays());
         this.schemas = context.schemas();
         this.work = new WorkQueue("touchline-replay-view", this::fail);
         this.scans = new WorkQueue("touchline-replay-events", this::fail);
@@ -98,7 +95,7 @@ public final class ReplayView implements View {
         browse.setOnAction(e -> browse());
         Button open = button("replay-open", "Open", this::open);
         Button add = button("replay-add", "Add file…", this::addFiles);
-        Button close = button("replay-close", "Close replay", () -> work.run(replays::close));
+        Button close = button("replay-close", "Close replay", () -> work.run(model::closeReplay));
         // the path on a row of its own: beside four buttons it shrank to nothing in the demo layout's
         // left pane at 1280 px (the "File" label cut to "…")
         path.setMinWidth(160);
@@ -201,8 +198,7 @@ public final class ReplayView implements View {
     }
 
     static String speedText(double s) {
-        return (s == Math.rint(s) ? String.format(Locale.ROOT, "%.0f", s) : String.format(Locale.ROOT, "%.2f", s)
-                .replaceAll("0+$", "")) + "×";
+        return ReplayViewModel.speedText(s);
     }
 
     private void fail(String why) {
@@ -258,22 +254,17 @@ public final class ReplayView implements View {
      * {@code ;}, play as one session on one timeline ({@link SessionFiles}).
      */
     void open() {
-        SessionFiles chosen;
-        try {
-            chosen = SessionFiles.parse(path.getText());
-        } catch (java.nio.file.InvalidPathException e) {
-            fail("Not a file name: " + e.getMessage());
+        java.util.Optional<String> refusal = ReplayViewModel.refusal(path.getText());
+        if (refusal.isPresent()) {
+            fail(refusal.get());
             return;
         }
-        if (chosen.files().isEmpty()) {
-            fail("Type or choose a recording to open.");
-            return;
-        }
+        SessionFiles chosen = SessionFiles.parse(path.getText());
         String names = chosen.names();
         say("Opening " + names + (chosen.files().size() > 1 ? " (aligning their clocks) …" : " …"));
         work.run(() -> {
             try {
-                replays.open(chosen.files(), chosen.offsets());
+                model.open(chosen);
                 work.handOff(() -> sayOfReplay("Opened " + names + "."));
             } catch (RecordingException e) {
                 work.handOff(() -> fail("Cannot replay " + names + ": " + e.getMessage()));
@@ -307,8 +298,7 @@ public final class ReplayView implements View {
         }
         work.run(() -> {
             if (r.seekToNext(type).isEmpty()) {
-                work.handOff(() -> sayOfReplay("No " + type.name().toLowerCase(Locale.ROOT).replace('_', ' ')
-                        + " after this point."));
+                work.handOff(() -> sayOfReplay(ReplayViewModel.noneAfter(type)));
             }
         });
     }
@@ -331,8 +321,7 @@ public final class ReplayView implements View {
 
     private void setLoopA() {
         if (state != null) {
-            loopA = state.positionMicros();
-            loop.setText("A at " + TimelineCanvas.clock(loopA - state.startMicros()) + ", now set B");
+            loop.setText(model.markA(state));
         }
     }
 
@@ -341,23 +330,17 @@ public final class ReplayView implements View {
         if (r == null || state == null) {
             return;
         }
-        if (loopA < 0) {
-            loop.setText("Set A first");
+        ReplayViewModel.LoopB b = model.markB(state);
+        if (b.refusal() != null) {
+            loop.setText(b.refusal());
             return;
         }
-        long from = Math.min(loopA, state.positionMicros());
-        long to = Math.max(loopA, state.positionMicros());
-        if (to <= from) {
-            loop.setText("A and B are the same time");
-            return;
-        }
-        loopA = -1;
-        work.run(() -> r.setLoop(from, to));
+        work.run(() -> r.setLoop(b.fromMicros(), b.toMicros()));
     }
 
     private void clearLoop() {
         Replay r = shown;
-        loopA = -1;
+        model.clearMark();
         loop.setText("");
         if (r != null) {
             work.run(r::clearLoop);
@@ -409,7 +392,7 @@ public final class ReplayView implements View {
         if (work.busy()) {
             return; // a file operation may hold the console or player lock: never wait for it here
         }
-        Replay r = replays.current().orElse(null);
+        Replay r = model.current().orElse(null);
         if (r != shown) {
             adopt(r);
         }
@@ -425,11 +408,10 @@ public final class ReplayView implements View {
         if (r == null && messageOfReplay) {
             say("");
         }
-        loopA = -1;
+        model.clearMark();
         loop.setText("");
         replayControls.forEach(n -> n.setDisable(r == null));
-        List<String> aligned = r == null || r.files().size() < 2 ? List.of()
-                : r.files().stream().map(f -> f.name() + " " + f.offset().describe()).toList();
+        List<String> aligned = ReplayViewModel.alignedFiles(r);
         files.setText(String.join("\n", aligned));
         files.setTooltip(aligned.isEmpty() ? null : new javafx.scene.control.Tooltip(
                 "Each file's clock moved onto the first file's: by the GameController packets both heard "
@@ -452,30 +434,15 @@ public final class ReplayView implements View {
         ReplayNotes notes = state == null ? ReplayNotes.NONE : state.notes();
         if (!notes.equals(shownNotes)) {
             shownNotes = notes;
-            List<String> items = new ArrayList<>(notes.lines().stream().map(s -> "⚠ " + s).toList());
-            notes.contents().forEach(c -> items.add("• " + c + " (listed, not played)"));
+            List<String> items = ReplayViewModel.noteLines(notes);
             problems.getItems().setAll(items);
             problems.setVisible(!items.isEmpty());
             problems.setManaged(!items.isEmpty());
             notesBadge.setText(notes.badge());
             notesTip.setText(String.join("\n", notes.lines()));
         }
-        String text;
-        if (state == null) {
-            text = "No recording open.";
-        } else {
-            text = TimelineCanvas.clock(state.positionMicros() - state.startMicros()) + " / "
-                    + TimelineCanvas.clock(state.durationMicros())
-                    + (state.finished() ? "  finished" : state.playing() ? "  playing at " + speedText(state.speed())
-                    : "  paused")
-                    + "  ·  " + String.format(Locale.ROOT, "%,d", state.emitted()) + " envelopes"
-                    + "  ·  " + (events.isEmpty() && shown != null && scans.busy() ? "reading events…"
-                    : events.size() + " events");
-            if (state.loopFromMicros() >= 0 && loopA < 0) {
-                loop.setText("Loop " + TimelineCanvas.clock(state.loopFromMicros() - state.startMicros()) + "–"
-                        + TimelineCanvas.clock(state.loopToMicros() - state.startMicros()));
-            }
-        }
+        String text = ReplayViewModel.position(state, events.size(), events.isEmpty() && shown != null && scans.busy());
+        model.loopLine(state).ifPresent(loop::setText);
         if (!text.equals(position.getText())) {
             position.setText(text);
         }

@@ -75,8 +75,8 @@ public final class ConsoleWindow {
         this.shell = new Shell(registry, spec -> src -> spec.factory().apply(context, src));
         holder[0] = shell;
         this.status = new StatusBar(context.status(), context.field(), context.budget());
-        this.pulse = new FramePulse(shell, status, context.field().clock(), this::demoStep,
-                new ConsoleChanges(context.field(), context.referee().matchMode(), context.status(), serving)::read,
+        this.pulse = new FramePulse(shell::pulled, status, context.field().clock(), this::demoStep,
+                new ConsoleChanges(context.field(), context.referee().matchMode(), context.status(), serving::server)::read,
                 settings.frameCap());
         shell.onChange(pulse::input);
         MenuBar bar = menus();

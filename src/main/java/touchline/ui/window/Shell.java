@@ -70,6 +70,11 @@ public final class Shell {
         return List.copyOf(open.values());
     }
 
+    /** The open views as the frame pulse pulls them. */
+    public List<touchline.ui.frame.PulledView> pulled() {
+        return open.values().stream().map(v -> new touchline.ui.frame.PulledView(v.spec().id(), v.frame())).toList();
+    }
+
     /** The open view {@code node} lies in (the focused node, for F1), if any. */
     public java.util.Optional<OpenView> containing(javafx.scene.Node node) {
         for (javafx.scene.Node n = node; n != null; n = n.getParent()) {

@@ -17,7 +17,7 @@ import touchline.ui.frame.LatencyProbe;
  * meter, and the UI's own frame rate. Recomputed twice a second from counters (through
  * {@link ConsoleStatus}), never per packet.
  */
-public final class StatusBar extends HBox {
+public final class StatusBar extends HBox implements touchline.ui.frame.FrameStatus {
 
     private final touchline.app.LiveField field;
     private final touchline.app.TeamBudget budget;
@@ -110,10 +110,12 @@ public final class StatusBar extends HBox {
     }
 
     /** The frame pulse stopped because nothing changed: the frame rate reads "idle" until it runs again. */
+    @Override
     public void idle() {
         fps.setText("idle");
     }
 
+    @Override
     public void refresh(long nowMicros, double framesPerSecond, LatencyProbe latency) {
         if (nowMicros - lastMicros < 500_000) {
             return;
