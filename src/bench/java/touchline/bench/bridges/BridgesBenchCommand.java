@@ -76,7 +76,7 @@ public final class BridgesBenchCommand implements Callable<Integer> {
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start()) {
             for (int r = 1; r <= robots; r++) {
                 List<String> cmd = new ArrayList<>(List.of("python3", "robot-side/ros2/sim_ros2_robot.py", "--port", "0",
-                        "--name", "booster-" + r, "--rate", Integer.toString(rate), "--centre", (r - 4.5) + ",0"));
+                        "--name", "booster-" + r, "--rate", Integer.toString(rate), "--centre=" + (r - 4.5) + ",0"));
                 if (r == 1) {
                     cmd.addAll(List.of("--camera-jpeg", jpeg.toString(), "--camera-hz", Integer.toString(cameraHz)));
                 }
