@@ -123,7 +123,7 @@ class Robot(foxglove.websocket.ServerListener):
     def log(self, channel, message):
         """Logs on the channel, counting it if a client subscribed to it."""
         with self.lock:
-            if self.subscribed.get(channel.topic, 0) > 0:
+            if self.subscribed.get(channel.topic(), 0) > 0:
                 self.sent += 1
         channel.log(message)
 
@@ -262,8 +262,8 @@ def main():
                        "game_state": args.game_state})
         n += 1
         stop.wait(max(0.0, start + n / args.rate - time.time()))  # on a grid: the work does not slow the rate
-    server.stop()
     print("sent %d" % robot.sent, flush=True)
+    server.stop()
 
 
 if __name__ == "__main__":

@@ -202,8 +202,12 @@ public final class BridgesBenchCommand implements Callable<Integer> {
     }
 
     private static String row(Phase p) {
-        return String.format(Locale.ROOT, "| %s | %.1f ms | %.1f ms | %d | %.1f %% | %.1f |", p.name(), p.p50(), p.p99(),
+        return String.format(Locale.ROOT, "| %s | %s | %s | %d | %.1f %% | %.1f |", p.name(), ms(p.p50()), ms(p.p99()),
                 p.shown(), p.cpuPercent(), p.fps());
+    }
+
+    private static String ms(double v) {
+        return Double.isNaN(v) ? "–" : String.format(Locale.ROOT, "%.1f ms", v);
     }
 
     /** A camera's 640×480 picture (field, lines, ball, some sensor noise), JPEG at ImageIO's default quality. */
