@@ -76,7 +76,8 @@ public final class BridgesBenchCommand implements Callable<Integer> {
                 UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start()) {
             for (int r = 1; r <= robots; r++) {
                 List<String> cmd = new ArrayList<>(List.of("python3", "robot-side/ros2/sim_ros2_robot.py", "--port", "0",
-                        "--name", "booster-" + r, "--rate", Integer.toString(rate), "--centre=" + (r - 4.5) + ",0"));
+                        "--name", "booster-" + r, "--rate", Integer.toString(rate), "--centre=" + (r - 4.5) + ",0",
+                        "--seconds", Integer.toString(robotSeconds())));
                 if (r == 1) {
                     cmd.addAll(List.of("--camera-jpeg", jpeg.toString(), "--camera-hz", Integer.toString(cameraHz)));
                 }
@@ -124,14 +125,22 @@ public final class BridgesBenchCommand implements Callable<Integer> {
         }
     }
 
-    /** Stops the robots (each then prints what it sent), waits for the console's counts to settle. */
+    /**
+     * How long the robots send: both phases with their warm-ups and {@link #START_MARGIN_SECONDS}
+     * for the window and the bridges to come up. They stop by themselves and then print what they
+     * sent (a SIGTERM under load did not always get that far).
+     */
+    private int robotSeconds() {
+        return baselineSeconds + seconds + 2 * warmupSeconds + START_MARGIN_SECONDS;
+    }
+
+    private static final int START_MARGIN_SECONDS = 20;
+
+    /** Waits for the robots to stop by themselves and say what they sent, then for the console's counts to settle. */
     private static List<Delivery> deliveries(Console console, List<RobotProcess> sims, double seconds) throws Exception {
-        for (RobotProcess sim : sims) {
-            sim.close();
-        }
         List<Long> sent = new ArrayList<>();
         for (RobotProcess sim : sims) {
-            FxThread.await(() -> sim.stdout().contains("sent "), 10_000);
+            FxThread.await(() -> sim.stdout().contains("sent "), (START_MARGIN_SECONDS + 30) * 1000L);
             String out = sim.stdout();
             int i = out.lastIndexOf("sent ");
             sent.add(i < 0 ? -1 : Long.parseLong(out.substring(i + 5).trim().split("\\s+")[0]));
