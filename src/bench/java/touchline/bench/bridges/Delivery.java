@@ -9,6 +9,9 @@ import java.util.Locale;
  */
 public record Delivery(String bridge, long sent, long received, double seconds) {
 
+    // seconds: the robot's whole run; it counts from the console's subscription, a few seconds in,
+    // so received/s reads a little under the robot's rate
+
     public long lost() {
         return Math.max(0, sent - received);
     }
