@@ -262,7 +262,10 @@ def main():
                        "game_state": args.game_state})
         n += 1
         stop.wait(max(0.0, start + n / args.rate - time.time()))  # on a grid: the work does not slow the rate
-    print("sent %d" % robot.sent, flush=True)
+    try:
+        print("sent %d" % robot.sent, flush=True)
+    except OSError:  # nobody reads our output any more: stopping is all that is left
+        pass
     server.stop()
 
 
