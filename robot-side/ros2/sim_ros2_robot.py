@@ -16,9 +16,13 @@ parameters (get/set), client publish and a service, and says on /rosout what a c
 so a test sees through the bridge that a parameter set or a publish arrived.
 
     python3 sim_ros2_robot.py --port 8765 --name booster-1 [--rate 20] [--seconds 0]
+                              [--camera-jpeg FILE] [--camera-hz 5]
 
 Prints "listening on port N" once it serves (port 0 takes a free one). Stops after --seconds
-(0: never) or on SIGTERM/SIGINT.
+(0: never) or on SIGTERM/SIGINT, and then prints "sent N": the messages it logged on channels a
+client had subscribed to (what a client that lost nothing received; the benchmark
+`./touchline bench bridges` compares them). --camera-jpeg sends that file's JPEG (e.g. 640×480)
+instead of the built-in 64×48 one, at --camera-hz.
 """
 import argparse
 import base64
@@ -105,6 +109,23 @@ class Robot(foxglove.websocket.ServerListener):
         self.lock = threading.Lock()
         self.parameters = {"walk.speed": 0.3, "debug.draw_ball": False, "role": "striker"}
         self.heard = []  # what clients sent: said on /rosout by the publishing loop
+        self.subscribed = {}  # topic -> subscribers
+        self.sent = 0  # messages logged on a subscribed channel
+
+    def on_subscribe(self, client, channel):
+        with self.lock:
+            self.subscribed[channel.topic] = self.subscribed.get(channel.topic, 0) + 1
+
+    def on_unsubscribe(self, client, channel):
+        with self.lock:
+            self.subscribed[channel.topic] = self.subscribed.get(channel.topic, 1) - 1
+
+    def log(self, channel, message):
+        """Logs on the channel, counting it if a client subscribed to it."""
+        with self.lock:
+            if self.subscribed.get(channel.topic(), 0) > 0:
+                self.sent += 1
+        channel.log(message)
 
     def on_get_parameters(self, client, param_names, request_id=None):
         with self.lock:
@@ -172,9 +193,15 @@ def main():
     ap.add_argument("--rate", type=float, default=20.0, help="pose and joint messages per second")
     ap.add_argument("--seconds", type=float, default=0.0, help="stop after this long (0: never)")
     ap.add_argument("--game-state", default="PLAYING", help="the game state the robot reports on /robot_state")
+    ap.add_argument("--camera-jpeg", help="a JPEG file to send as the camera image instead of the built-in 64×48 one")
+    ap.add_argument("--camera-hz", type=float, default=5.0, help="camera images per second (at most --rate)")
     ap.add_argument("--centre", default="0,0", help="the centre of the robot's walk on the field, metres: X,Y")
     args = ap.parse_args()
     cx, cy = (float(v) for v in args.centre.split(","))
+    jpeg = CAMERA_JPEG
+    if args.camera_jpeg:
+        with open(args.camera_jpeg, "rb") as f:
+            jpeg = f.read()
 
     robot = Robot(args.name)
     services = [Service(name="/%s/say" % args.name, schema=ServiceSchema(name="std_srvs/srv/Trigger"),
@@ -202,21 +229,22 @@ def main():
         t = now - start
         angle = 0.4 * t
         x, y, theta = cx + 1.2 * math.cos(angle), cy + 0.8 * math.sin(angle), angle + math.pi / 2
-        pose.log(encode_pose({"header": {"stamp": stamp(now), "frame_id": "field"},
+        robot.log(pose, encode_pose({"header": {"stamp": stamp(now), "frame_id": "field"},
                               "pose": {"position": {"x": x, "y": y, "z": 0.0},
                                        "orientation": {"x": 0.0, "y": 0.0, "z": math.sin(theta / 2),
                                                        "w": math.cos(theta / 2)}}}))
-        joints.log(encode_joints({"header": {"stamp": stamp(now), "frame_id": ""}, "name": JOINTS,
+        robot.log(joints, encode_joints({"header": {"stamp": stamp(now), "frame_id": ""}, "name": JOINTS,
                                   "position": [0.3 * math.sin(t + i) for i in range(len(JOINTS))],
                                   "velocity": [0.0] * len(JOINTS), "effort": [1.0 + i for i in range(len(JOINTS))]}))
-        heading.log(Vector2(x=math.cos(theta), y=math.sin(theta)))
-        if n % max(1, int(args.rate / 5)) == 0:
+        robot.log(heading, Vector2(x=math.cos(theta), y=math.sin(theta)))
+        if n % max(1, int(args.rate / args.camera_hz)) == 0:
             header = {"stamp": stamp(now), "frame_id": "camera"}
-            camera.log(encode_camera({"header": header, "format": "jpeg", "data": CAMERA_JPEG}))
-            markers.log(encode_markers({"markers": sim_markers(now, x, y)}))
+            robot.log(camera, encode_camera({"header": header, "format": "jpeg", "data": jpeg}))
+        if n % max(1, int(args.rate / 5)) == 0:
+            robot.log(markers, encode_markers({"markers": sim_markers(now, x, y)}))
         if n % max(1, int(args.rate)) == 0:
             battery = max(0.0, 95.0 - t / 60.0)
-            diagnostics.log(encode_diagnostics({"header": {"stamp": stamp(now), "frame_id": ""}, "status": [
+            robot.log(diagnostics, encode_diagnostics({"header": {"stamp": stamp(now), "frame_id": ""}, "status": [
                 {"level": 0, "name": args.name + ": Battery", "message": "discharging", "hardware_id": "bms",
                  "values": [{"key": "Battery", "value": "%.1f" % battery}, {"key": "Voltage", "value": "25.2"}]},
                 {"level": 1 if t % 20 > 15 else 0, "name": args.name + ": Motors", "message": "warm",
@@ -224,16 +252,20 @@ def main():
                  "values": [{"key": "Temperature", "value": "%.1f" % (41.5 + math.sin(t))}]}]}))
         for said in robot.take_heard():
             print(said, flush=True)
-            log.log(encode_log({"stamp": stamp(now), "level": 20, "name": args.name, "msg": said,
+            robot.log(log, encode_log({"stamp": stamp(now), "level": 20, "name": args.name, "msg": said,
                                 "file": "sim_ros2_robot.py", "function": "on_client", "line": 1}))
         if n % max(1, int(args.rate)) == 0:
-            log.log(encode_log({"stamp": stamp(now), "level": 20 if n % 3 else 30, "name": args.name + "/behavior",
+            robot.log(log, encode_log({"stamp": stamp(now), "level": 20 if n % 3 else 30, "name": args.name + "/behavior",
                                 "msg": "walking to (%.2f, %.2f)" % (x, y), "file": "behavior.py",
                                 "function": "tick", "line": 42}))
-            state.log({"battery": {"percentage": max(0.0, 95.0 - t / 60.0)}, "temperature": 41.5 + math.sin(t),
+            robot.log(state, {"battery": {"percentage": max(0.0, 95.0 - t / 60.0)}, "temperature": 41.5 + math.sin(t),
                        "game_state": args.game_state})
         n += 1
-        stop.wait(1.0 / args.rate)
+        stop.wait(max(0.0, start + n / args.rate - time.time()))  # on a grid: the work does not slow the rate
+    try:
+        print("sent %d" % robot.sent, flush=True)
+    except OSError:  # nobody reads our output any more: stopping is all that is left
+        pass
     server.stop()
 
 

@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
                 TagBenchCommand.class,
                 PresentBenchCommand.class,
                 Ros2DecodeBenchCommand.class,
+                touchline.bench.bridges.BridgesBenchCommand.class,
         })
 public final class BenchCommand implements Runnable {
 
