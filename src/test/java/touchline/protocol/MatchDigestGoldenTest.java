@@ -83,4 +83,30 @@ class MatchDigestGoldenTest {
                 .setExtension(Fumanoid.status, Fumanoid.Status.getDefaultInstance()).build();
         assertEquals(List.of(), new MatchDigestParts(kinds).of(status));
     }
+
+    /**
+     * A digest cut short (a lost tail fragment, a robot's bug) is a malformed datagram with its
+     * reason, never an exception and never a part made up: whatever decodes still comes apart into
+     * parts that decode on their own.
+     */
+    @Test
+    void aDigestCutAtAnyLengthIsMalformedOrComesApartWhole() throws IOException {
+        FrameResult.Frame frame = assertInstanceOf(FrameResult.Frame.class, new FrameCodec().decode(golden()));
+        byte[] payload = frame.payload();
+        int malformed = 0;
+        for (int n = 1; n < payload.length; n++) {
+            MessageResult r = new MessageCodec(kinds).decode(java.util.Arrays.copyOf(payload, n));
+            if (r instanceof MessageResult.Malformed m) {
+                malformed++;
+                org.junit.jupiter.api.Assertions.assertFalse(m.reason().isBlank(), "a reason for the cut at " + n);
+            } else if (r instanceof MessageResult.Decoded d) {
+                for (MatchDigestParts.Part p : new MatchDigestParts(kinds).of(d.message())) {
+                    assertInstanceOf(MessageResult.Decoded.class, new MessageCodec(kinds).decode(p.bytes()),
+                            "part " + p.kind() + " of the cut at " + n);
+                }
+            }
+        }
+        org.junit.jupiter.api.Assertions.assertTrue(malformed > payload.length / 2,
+                "most cuts end inside a field: " + malformed + " of " + (payload.length - 1));
+    }
 }
