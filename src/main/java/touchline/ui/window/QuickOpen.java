@@ -1,7 +1,6 @@
 package touchline.ui.window;
 
 import javafx.collections.FXCollections;
-import javafx.collections.transformation.FilteredList;
 import javafx.scene.Scene;
 import javafx.scene.control.ListView;
 import javafx.scene.control.TextField;
@@ -65,6 +64,23 @@ public final class QuickOpen {
         return out;
     }
 
+    /**
+     * The choices whose label holds {@code text} (any case), those whose title holds it first: a
+     * view named by what was typed ranks above one whose help text merely mentions it.
+     */
+    public List<Choice> matching(String text) {
+        String n = text.toLowerCase(Locale.ROOT);
+        return choices().stream().filter(c -> c.label().toLowerCase(Locale.ROOT).contains(n))
+                .sorted(java.util.Comparator.comparingInt(c -> rank(c, n))).toList(); // stable: registry order within a rank
+    }
+
+    /** 0: the title starts with it; 1: the title holds it; 2: only the help text does. */
+    private static int rank(Choice c, String n) {
+        int help = c.label().indexOf(" — ");
+        String title = (help < 0 ? c.label() : c.label().substring(0, help)).toLowerCase(Locale.ROOT);
+        return title.startsWith(n) ? 0 : title.contains(n) ? 1 : 2;
+    }
+
     public Stage show(Window owner) {
         Stage stage = new Stage(StageStyle.UTILITY);
         stage.initOwner(owner);
@@ -73,13 +89,12 @@ public final class QuickOpen {
         TextField filter = new TextField();
         filter.setId("quick-open-filter");
         filter.setPromptText("type to find a view or option, Enter opens");
-        FilteredList<Choice> items = new FilteredList<>(FXCollections.observableArrayList(choices()));
+        javafx.collections.ObservableList<Choice> items = FXCollections.observableArrayList(choices());
         ListView<Choice> list = new ListView<>(items);
         list.setId("quick-open-list");
         list.getSelectionModel().select(0);
         filter.textProperty().addListener((o, a, b) -> {
-            String n = b.toLowerCase(Locale.ROOT);
-            items.setPredicate(c -> c.label().toLowerCase(Locale.ROOT).contains(n));
+            items.setAll(matching(b));
             list.getSelectionModel().select(0);
         });
         CloseAfterKey closer = new CloseAfterKey(stage);

@@ -189,6 +189,11 @@ class ConsoleUiTest {
                 assertTrue(labels.stream().anyMatch(l -> l.startsWith(spec.title() + " — ")), spec.id());
             }
         }
+        // a view named by what was typed comes before one whose help text mentions it (the NAO view's
+        // help speaks of "parameters": Enter on "Parameters" opened the NAO view)
+        List<QuickOpen.Choice> parameters = ui.fx(() -> quick.matching("Parameters"));
+        assertEquals("parameters", parameters.get(0).spec().id());
+        assertTrue(parameters.stream().anyMatch(c -> c.spec().id().equals("nao")), "the help text still finds it");
         ui.fxRun(() -> ui.window.shell().restore(List.of()));
         ui.fxRun(ui.window::quickOpen);
         ui.robot.clickOn("#quick-open-filter");
