@@ -135,7 +135,7 @@ class ArchitectureTest {
         noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class, touchline.ui.frame.FramePulse.class,
                         touchline.record.McapWriter.class, touchline.transport.gamecontroller.GcSender.class)
                 .and().doNotHaveFullyQualifiedName("touchline.record.BackgroundFiles")
-                .and().doNotHaveFullyQualifiedName("touchline.transport.remote.RemoteStream$Session")
+                .and().doNotHaveFullyQualifiedName("touchline.transport.remote.FoxgloveSession")
                 .and().resideOutsideOfPackage("touchline.cli..")
                 .should().callMethod(System.class, "nanoTime")
                 .check(classes);

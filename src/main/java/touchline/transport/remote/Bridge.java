@@ -27,7 +27,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  * server made with the Foxglove SDK, an older {@code foxglove.websocket.v1} one): subscribes to
  * every channel it advertises and hands each message to {@code sink} as an envelope of robot
  * {@code robotId}. Reconnects by itself with a doubling backoff, like {@link RemoteStream}
- * (which it uses). Its commands — setting a parameter, publishing on a topic, calling a
+ * (both ride on {@link FoxgloveConnection}). Its commands — setting a parameter, publishing on a topic, calling a
  * service — ask {@code gate} first: held while match mode says so (the latest of each held
  * command goes out when {@link #sendHeld} finds the gate open again), refused when the gate
  * refuses for good.
@@ -50,7 +50,7 @@ public final class Bridge implements AutoCloseable {
     private final String name;
     private final int robotId;
     private final SendGate gate;
-    private final RemoteStream stream;
+    private final FoxgloveConnection stream;
     private final BridgeChannels channels;
     private final Map<String, Parameter> parameters = new TreeMap<>();
     private final Map<String, Held> held = new java.util.LinkedHashMap<>();
@@ -74,8 +74,8 @@ public final class Bridge implements AutoCloseable {
         InetSocketAddress peer = InetSocketAddress.createUnresolved(uri.getHost() == null ? "?" : uri.getHost(),
                 uri.getPort() < 0 ? 8765 : uri.getPort());
         this.channels = new BridgeChannels(robotId, peer, clock);
-        this.stream = new RemoteStream(uri, tls, channels, new Replies(), sink,
-                maxBackoff, RemoteStream.MAX_MESSAGE_BYTES, Duration.ofDays(1), RemoteStream.HANDSHAKE);
+        this.stream = new FoxgloveConnection(uri, tls, channels, new Replies(), sink,
+                maxBackoff, FoxgloveConnection.MAX_MESSAGE_BYTES, Duration.ofDays(1), FoxgloveConnection.HANDSHAKE);
     }
 
     public Bridge start() {

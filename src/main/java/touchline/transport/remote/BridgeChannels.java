@@ -24,7 +24,7 @@ final class BridgeChannels implements ChannelReader {
     private final MicrosClock clock;
     private final ChannelDecoders decoders = new ChannelDecoders();
     private final java.util.Map<String, BridgedSchema> schemas = new java.util.concurrent.ConcurrentHashMap<>();
-    /** The channels made, by topic (at most {@link RemoteStream#MAX_CHANNELS} a connection), for their counts. */
+    /** The channels made, by topic (at most {@link FoxgloveConnection#MAX_CHANNELS} a connection), for their counts. */
     private final java.util.Map<String, BridgedChannel> made = new java.util.concurrent.ConcurrentHashMap<>();
 
     BridgeChannels(int robotId, InetSocketAddress peer, MicrosClock clock) {

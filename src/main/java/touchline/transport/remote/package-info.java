@@ -3,8 +3,9 @@
  * SDK's, older {@code foxglove.websocket.v1} ones) read as one robot, every channel subscribed and decoded by its
  * encoding ({@code BridgeChannels}, {@code BridgedChannel}: cdr and json through {@code protocol.ros2}, protobuf by
  * its descriptor set), its parameters, client publish and services behind the send gate ({@code BridgeStatus});
- * {@code ServerProbe} asks a server its name. Both ride on {@code RemoteStream} (subprotocols, reconnection, limits;
- * {@code ChannelReader}, {@code StreamChannel}, {@code ServerReplies}).
+ * {@code ServerProbe} asks a server its name. Both ride on the core {@code FoxgloveConnection} and its
+ * {@code FoxgloveSession} (subprotocols, reconnection, limits; {@code ChannelReader}, {@code StreamChannel},
+ * {@code ServerReplies}), as does the remote viewer's {@code RemoteStream}.
  * <p>
  * Touchline as a viewer of another Touchline: a Foxglove WebSocket client that subscribes to
  * the robot channels a {@code touchline serve} (or a window serving to viewers) advertises and
