@@ -85,6 +85,20 @@ final class BridgeChannels implements ChannelReader {
         return out;
     }
 
+    /**
+     * The ROS 2 definition a message of type {@code schemaName} on {@code topic} is written by: the
+     * topic's own when the server advertised it with a {@code ros2msg}/{@code ros2idl} schema, else
+     * that of any channel of the same type; null when none is known.
+     */
+    BridgedSchema ros2Schema(String topic, String schemaName) {
+        BridgedSchema own = schemas.get(topic);
+        if (own != null && own.isRos2()) {
+            return own;
+        }
+        return schemas.values().stream().filter(s -> s.isRos2() && s.schemaName().equals(schemaName)).findFirst()
+                .orElse(null);
+    }
+
     /** The schema the server advertised for {@code topic}, or null. */
     BridgedSchema schema(String topic) {
         return schemas.get(topic);
