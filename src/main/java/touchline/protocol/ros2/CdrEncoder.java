@@ -4,12 +4,12 @@ import org.json.JSONArray;
 import org.json.JSONException;
 import org.json.JSONObject;
 
-import java.io.ByteArrayOutputStream;
 import java.math.BigDecimal;
 import java.math.BigInteger;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 
 /**
  * Encodes a message a person wrote as JSON field values into CDR by a {@link MessageDefinition}
@@ -61,9 +61,44 @@ public final class CdrEncoder {
         }
     }
 
+    /** A growing array of bytes (protocol code touches no streams). */
+    private static final class Bytes {
+        private byte[] data = new byte[64];
+        private int size;
+
+        void write(int b) {
+            room(1);
+            data[size++] = (byte) b;
+        }
+
+        void write(byte[] b, int offset, int length) {
+            room(length);
+            System.arraycopy(b, offset, data, size, length);
+            size += length;
+        }
+
+        private void room(int more) {
+            if (size + more > data.length) {
+                data = Arrays.copyOf(data, Math.max(data.length * 2, size + more));
+            }
+        }
+
+        void writeBytes(byte[] b) {
+            write(b, 0, b.length);
+        }
+
+        int size() {
+            return size;
+        }
+
+        byte[] toByteArray() {
+            return Arrays.copyOf(data, size);
+        }
+    }
+
     /** The bytes of one message as they are written, aligned from after the header. */
     private final class Writer {
-        private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+        private final Bytes out = new Bytes();
         private final ByteBuffer scratch = ByteBuffer.allocate(8).order(ByteOrder.LITTLE_ENDIAN);
 
         Writer() {
