@@ -70,6 +70,9 @@ final class BridgeServices {
         synchronized (this) {
             s = byName.get(service);
         }
+        if (s == null) {
+            return new Outgoing.Refused("the robot no longer offers " + service);
+        }
         JSONObject request = s.optJSONObject("request");
         Outgoing out = new ClientEncoding(serverInfo).write(s.optString("type", service) + "_Request",
                 schema(s, "request"), request == null ? "" : request.optString("encoding", ""), json);
