@@ -12,8 +12,10 @@ with the Foxglove SDK (what foxglove_bridge is built on; it speaks foxglove.sdk.
   /heading       foxglove.Vector2                   protobuf
 
 with the CDR bytes made by mcap_ros2's serializer (nobody at Touchline wrote it). It offers
-parameters (get/set), client publish and a service, and says on /rosout what a client sent it,
-so a test sees through the bridge that a parameter set or a publish arrived.
+parameters (get/set), client publish (JSON, or CDR it reads back with mcap_ros2 by the schema the
+client advertised) and three services (/NAME/say answers JSON, /NAME/check a CDR
+std_srvs/srv/Trigger response, /NAME/kick always fails), and says on /rosout what a client sent
+it, so a test sees through the bridge that a parameter set or a publish arrived.
 
     python3 sim_ros2_robot.py --port 8765 --name booster-1 [--rate 20] [--seconds 0]
                               [--camera-jpeg FILE] [--camera-hz 5]
@@ -37,7 +39,7 @@ from foxglove import Capability, Channel, Parameter, Schema
 from foxglove.channels import Vector2Channel
 from foxglove.messages import Vector2
 from foxglove.websocket import Service, ServiceSchema, MessageSchema
-from mcap_ros2._dynamic import serialize_dynamic
+from mcap_ros2._dynamic import generate_dynamic, serialize_dynamic
 
 SEP = "=" * 80 + "\n"
 TIME = "int32 sec\nuint32 nanosec\n"
@@ -109,6 +111,7 @@ class Robot(foxglove.websocket.ServerListener):
         self.lock = threading.Lock()
         self.parameters = {"walk.speed": 0.3, "debug.draw_ball": False, "role": "striker"}
         self.heard = []  # what clients sent: said on /rosout by the publishing loop
+        self.client_channels = {}  # (client id, channel id) -> the channel a client advertised
         self.subscribed = {}  # topic -> subscribers
         self.sent = 0  # messages logged on a subscribed channel
 
@@ -140,20 +143,60 @@ class Robot(foxglove.websocket.ServerListener):
 
     def on_client_advertise(self, client, channel):
         with self.lock:
+            self.client_channels[(client.id, channel.id)] = channel
             self.heard.append("client advertised %s (%s)" % (channel.topic, channel.encoding))
 
     def on_message_data(self, client, client_channel_id, data):
         with self.lock:
-            try:
-                text = data.decode("utf-8")
-            except UnicodeDecodeError:
-                text = "%d bytes" % len(data)
+            channel = self.client_channels.get((client.id, client_channel_id))
+            if channel is not None and channel.encoding == "cdr" and channel.schema:
+                try:
+                    decode = generate_dynamic(channel.schema_name, channel.schema.decode())[channel.schema_name]
+                    text = "(cdr) " + json.dumps(plain(decode(data)), sort_keys=True)
+                except Exception as e:  # a message that does not fit its schema: say so, as a robot's log would
+                    text = "(cdr, unreadable: %s) %d bytes" % (e, len(data))
+            else:
+                try:
+                    text = data.decode("utf-8")
+                except UnicodeDecodeError:
+                    text = "%d bytes" % len(data)
             self.heard.append("client published on channel %d: %s" % (client_channel_id, text))
 
     def take_heard(self):
         with self.lock:
             out, self.heard = self.heard, []
             return out
+
+
+def plain(value):
+    """A message mcap_ros2 decoded (nested namespaces, lists) as plain JSON values."""
+    if hasattr(value, "__slots__") or hasattr(value, "__dict__"):
+        names = getattr(value, "__slots__", None) or vars(value).keys()
+        return {n: plain(getattr(value, n)) for n in names}
+    if isinstance(value, (list, tuple)):
+        return [plain(v) for v in value]
+    if isinstance(value, bytes):
+        return list(value)
+    return value
+
+
+TRIGGER_RESPONSE = "bool success\nstring message\n"
+
+
+def check_service(name):
+    """/NAME/check: a std_srvs/srv/Trigger whose request and response are CDR, answered by mcap_ros2's serializer."""
+    encode = serialize_dynamic("std_srvs/srv/Trigger_Response", TRIGGER_RESPONSE)["std_srvs/srv/Trigger_Response"]
+    request = MessageSchema(encoding="cdr", schema=Schema(name="std_srvs/srv/Trigger_Request", encoding="ros2msg",
+                                                          data=b""))
+    response = MessageSchema(encoding="cdr", schema=Schema(name="std_srvs/srv/Trigger_Response", encoding="ros2msg",
+                                                           data=TRIGGER_RESPONSE.encode()))
+    return Service(name="/%s/check" % name, schema=ServiceSchema(name="std_srvs/srv/Trigger", request=request,
+                                                                 response=response),
+                   handler=lambda req: encode({"success": True, "message": "all joints ready"}))
+
+
+def no_ball(req):
+    raise RuntimeError("no ball in reach")
 
 
 def stamp(now):
@@ -205,7 +248,9 @@ def main():
 
     robot = Robot(args.name)
     services = [Service(name="/%s/say" % args.name, schema=ServiceSchema(name="std_srvs/srv/Trigger"),
-                        handler=lambda req: json.dumps({"success": True, "message": "said"}).encode())]
+                        handler=lambda req: json.dumps({"success": True, "message": "said"}).encode()),
+                check_service(args.name),
+                Service(name="/%s/kick" % args.name, schema=ServiceSchema(name="std_srvs/srv/Trigger"), handler=no_ball)]
     server = foxglove.start_server(name=args.name, host="127.0.0.1", port=args.port, server_listener=robot,
                                    capabilities=[Capability.ClientPublish, Capability.Parameters, Capability.Services],
                                    supported_encodings=["json", "cdr"], services=services)

@@ -135,7 +135,7 @@ class ArchitectureTest {
         noClasses().that().doNotBelongToAnyOf(touchline.app.SystemClock.class, touchline.ui.frame.FramePulse.class,
                         touchline.record.McapWriter.class, touchline.transport.gamecontroller.GcSender.class)
                 .and().doNotHaveFullyQualifiedName("touchline.record.BackgroundFiles")
-                .and().doNotHaveFullyQualifiedName("touchline.transport.remote.RemoteStream$Session")
+                .and().doNotHaveFullyQualifiedName("touchline.transport.remote.FoxgloveSession")
                 .and().resideOutsideOfPackage("touchline.cli..")
                 .should().callMethod(System.class, "nanoTime")
                 .check(classes);
@@ -370,8 +370,9 @@ class ArchitectureTest {
             // viewing another Touchline: its status, and the certificate to trust
             "touchline.transport.remote.RemoteStatus", "touchline.transport.remote.RemoteStatus$State",
             "touchline.transport.remote.RemoteTrust",
-            // the robots behind Foxglove bridges: their status and parameters (the bridges are the core's: RosBridges)
+            // the robots behind Foxglove bridges: their status, parameters and service answers (the bridges are the core's: RosBridges)
             "touchline.transport.remote.BridgeStatus", "touchline.transport.remote.Bridge$Parameter",
+            "touchline.transport.remote.ServiceAnswer",
             // the NAO's values: what a face asks of a NaoSession/NaoCamera and what it answers (never
             // NaoLink, NaoCameraStream or NaoConnection: the link and the camera are the core's)
             "touchline.transport.nao.NaoCall", "touchline.transport.nao.CallOutcome",

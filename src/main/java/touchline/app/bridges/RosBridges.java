@@ -134,7 +134,7 @@ public final class RosBridges implements EnvelopeSink, AutoCloseable {
                 .orElseGet(() -> noBridge(robotId)));
     }
 
-    /** Publishes one JSON message on robot {@code robotId}'s {@code topic}; through the gate. */
+    /** Publishes one message typed as JSON on robot {@code robotId}'s {@code topic} (in CDR when the robot takes it); through the gate. */
     public SendResult publish(int robotId, String topic, String schemaName, String json) {
         return refused().orElseGet(() -> bridge(robotId).map(b -> b.publish(topic, schemaName, json))
                 .orElseGet(() -> noBridge(robotId)));
@@ -144,6 +144,11 @@ public final class RosBridges implements EnvelopeSink, AutoCloseable {
     public SendResult callService(int robotId, String service, String json) {
         return refused().orElseGet(() -> bridge(robotId).map(b -> b.callService(service, json))
                 .orElseGet(() -> noBridge(robotId)));
+    }
+
+    /** What robot {@code robotId} answered to the latest service calls (responses and failures), oldest first. */
+    public List<touchline.transport.remote.ServiceAnswer> serviceAnswers(int robotId) {
+        return bridge(robotId).map(Bridge::serviceAnswers).orElse(List.of());
     }
 
     /** The commands held for robot {@code robotId}, in words. */

@@ -29,6 +29,9 @@
  *     {@link touchline.protocol.ros2.MessageType}, {@link touchline.protocol.ros2.Field},
  *     {@link touchline.protocol.ros2.Primitive}; {@link touchline.protocol.ros2.CdrDecoder} and
  *     {@link touchline.protocol.ros2.JsonDecoder}, the two decoders.</li>
+ * <li>The other way, for a client publish: {@link touchline.protocol.ros2.CdrEncoder}{@code .encode(json)} →
+ *     {@link touchline.protocol.ros2.EncodeResult}: {@code Encoded(bytes)} (little-endian CDR, what
+ *     {@code mcap_ros2} writes) or {@code Refused(reason)} naming the field.</li>
  * </ul>
  * <b>The envelope shape</b> for such a message (replay of a bag today, a bridge's live data the
  * same way): {@code Envelope.ros()} holds the {@code RosMessage} (its component after

@@ -27,7 +27,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  * server made with the Foxglove SDK, an older {@code foxglove.websocket.v1} one): subscribes to
  * every channel it advertises and hands each message to {@code sink} as an envelope of robot
  * {@code robotId}. Reconnects by itself with a doubling backoff, like {@link RemoteStream}
- * (which it uses). Its commands — setting a parameter, publishing on a topic, calling a
+ * (both ride on {@link FoxgloveConnection}). Its commands — setting a parameter, publishing on a topic, calling a
  * service — ask {@code gate} first: held while match mode says so (the latest of each held
  * command goes out when {@link #sendHeld} finds the gate open again), refused when the gate
  * refuses for good.
@@ -50,12 +50,12 @@ public final class Bridge implements AutoCloseable {
     private final String name;
     private final int robotId;
     private final SendGate gate;
-    private final RemoteStream stream;
+    private final FoxgloveConnection stream;
     private final BridgeChannels channels;
     private final Map<String, Parameter> parameters = new TreeMap<>();
     private final Map<String, Held> held = new java.util.LinkedHashMap<>();
     private final Map<String, Integer> clientChannels = new TreeMap<>();
-    private final Map<String, JSONObject> services = new TreeMap<>();
+    private final BridgeServices services = new BridgeServices();
     private final AtomicInteger requests = new AtomicInteger();
     private volatile long parametersVersion;
     private volatile String lastCommand = "";
@@ -74,8 +74,8 @@ public final class Bridge implements AutoCloseable {
         InetSocketAddress peer = InetSocketAddress.createUnresolved(uri.getHost() == null ? "?" : uri.getHost(),
                 uri.getPort() < 0 ? 8765 : uri.getPort());
         this.channels = new BridgeChannels(robotId, peer, clock);
-        this.stream = new RemoteStream(uri, tls, channels, new Replies(), sink,
-                maxBackoff, RemoteStream.MAX_MESSAGE_BYTES, Duration.ofDays(1), RemoteStream.HANDSHAKE);
+        this.stream = new FoxgloveConnection(uri, tls, channels, new Replies(), sink,
+                maxBackoff, FoxgloveConnection.MAX_MESSAGE_BYTES, Duration.ofDays(1), FoxgloveConnection.HANDSHAKE);
     }
 
     public Bridge start() {
@@ -119,8 +119,13 @@ public final class Bridge implements AutoCloseable {
     }
 
     /** The services the server advertised, by name. */
-    public synchronized List<String> services() {
-        return new ArrayList<>(services.keySet());
+    public List<String> services() {
+        return services.names();
+    }
+
+    /** What the robot answered to the latest service calls (responses and failures), oldest first. */
+    public List<ServiceAnswer> serviceAnswers() {
+        return services.answers();
     }
 
     /** Asks for every parameter (the answer fills {@link #parameters}); reading passes no gate. */
@@ -143,38 +148,54 @@ public final class Bridge implements AutoCloseable {
         return command(new Held("parameter " + parameter, op, null, parameter + " = " + value));
     }
 
-    /** Publishes one JSON message on {@code topic} (client publish; the server must take JSON); passes the gate. */
+    /**
+     * Publishes one message on {@code topic} (client publish), the values typed as JSON: in CDR by
+     * the type's ROS 2 definition when the server takes CDR and the definition is known (or it
+     * takes nothing else), else as the JSON text (see {@link ClientEncoding}); passes the gate.
+     */
     public SendResult publish(String topic, String schemaName, String json) {
         if (!stream.offers("clientPublish")) {
             return SendResult.failed(name + " takes no client messages");
         }
+        Outgoing out = new ClientEncoding(stream.serverInfo()).write(schemaName, channels.ros2Schema(topic, schemaName),
+                "", json);
+        if (out instanceof Outgoing.Refused r) {
+            lastCommand = topic + ": " + r.reason();
+            return SendResult.failed(r.reason());
+        }
+        Outgoing.Ready m = (Outgoing.Ready) out;
         int channel;
         synchronized (this) {
             channel = clientChannels.computeIfAbsent(topic, t -> clientChannels.size() + 1);
         }
-        String advertise = new JSONObject().put("op", "advertise").put("channels", new JSONArray().put(new JSONObject()
-                .put("id", channel).put("topic", topic).put("encoding", "json").put("schemaName", schemaName))).toString();
-        byte[] payload = json.getBytes(StandardCharsets.UTF_8);
-        byte[] data = ByteBuffer.allocate(5 + payload.length).order(ByteOrder.LITTLE_ENDIAN).put((byte) 0x01)
-                .putInt(channel).put(payload).array();
-        return command(new Held("publish " + topic, advertise, data, topic + ": " + json));
+        JSONObject advertised = new JSONObject().put("id", channel).put("topic", topic).put("encoding", m.encoding())
+                .put("schemaName", m.schema() == null ? schemaName : m.schema().schemaName());
+        if (m.schema() != null) {
+            advertised.put("schemaEncoding", m.schema().schemaEncoding())
+                    .put("schema", new String(m.schema().schemaData(), StandardCharsets.UTF_8));
+        }
+        String advertise = new JSONObject().put("op", "advertise").put("channels", new JSONArray().put(advertised))
+                .toString();
+        byte[] data = ByteBuffer.allocate(5 + m.payload().length).order(ByteOrder.LITTLE_ENDIAN).put((byte) 0x01)
+                .putInt(channel).put(m.payload()).array();
+        return command(new Held("publish " + topic, advertise, data, topic + " (" + m.encoding() + "): " + json));
     }
 
-    /** Calls service {@code service} with a JSON request; passes the gate. */
+    /**
+     * Calls service {@code service} with a request typed as JSON, written as the service takes it
+     * (CDR by its request definition, or JSON); passes the gate. The answer arrives in
+     * {@link #serviceAnswers}.
+     */
     public SendResult callService(String service, String json) {
-        JSONObject s;
-        synchronized (this) {
-            s = services.get(service);
-        }
-        if (!stream.offers("services") || s == null) {
+        if (!stream.offers("services") || !services.has(service)) {
             return SendResult.failed(name + " offers no service " + service);
         }
-        byte[] encoding = "json".getBytes(StandardCharsets.US_ASCII);
-        byte[] payload = json.getBytes(StandardCharsets.UTF_8);
-        byte[] call = ByteBuffer.allocate(13 + encoding.length + payload.length).order(ByteOrder.LITTLE_ENDIAN)
-                .put((byte) 0x02).putInt(s.optInt("id")).putInt(requests.incrementAndGet()).putInt(encoding.length)
-                .put(encoding).put(payload).array();
-        return command(new Held("call " + service, null, call, service + "(" + json + ")"));
+        Outgoing out = services.call(service, json, stream.serverInfo());
+        if (out instanceof Outgoing.Refused r) {
+            lastCommand = service + ": " + r.reason();
+            return SendResult.failed(r.reason());
+        }
+        return command(new Held("call " + service, null, ((Outgoing.Ready) out).payload(), service + "(" + json + ")"));
     }
 
     /** A command through the gate: sent now, or held (the newest per key) until play stops. */
@@ -258,26 +279,9 @@ public final class Bridge implements AutoCloseable {
                     }
                     parametersVersion++;
                 }
-                case "advertiseServices" -> {
-                    JSONArray list = o.optJSONArray("services");
-                    synchronized (Bridge.this) {
-                        for (int i = 0; list != null && i < list.length(); i++) {
-                            JSONObject s = list.optJSONObject(i);
-                            if (s != null && !s.optString("name").isEmpty()) {
-                                services.put(s.getString("name"), s);
-                            }
-                        }
-                    }
-                }
-                case "unadvertiseServices" -> {
-                    JSONArray ids = o.optJSONArray("serviceIds");
-                    synchronized (Bridge.this) {
-                        for (int i = 0; ids != null && i < ids.length(); i++) {
-                            int id = ids.optInt(i, -1);
-                            services.values().removeIf(s -> s.optInt("id") == id);
-                        }
-                    }
-                }
+                case "advertiseServices" -> services.advertised(o.optJSONArray("services"));
+                case "unadvertiseServices" -> services.unadvertised(o.optJSONArray("serviceIds"));
+                case "serviceCallFailure" -> services.failure(o);
                 default -> { } // connection graph, playback state: not used
             }
         }
@@ -285,7 +289,7 @@ public final class Bridge implements AutoCloseable {
         @Override
         public boolean binary(int op, ByteBuffer rest) {
             if (op == 0x03) { // service call response: service id, call id, encoding, payload
-                lastCommand = "service answered (" + rest.remaining() + " bytes)";
+                services.response(rest);
                 return true;
             }
             return false;

@@ -24,7 +24,7 @@ final class BridgeChannels implements ChannelReader {
     private final MicrosClock clock;
     private final ChannelDecoders decoders = new ChannelDecoders();
     private final java.util.Map<String, BridgedSchema> schemas = new java.util.concurrent.ConcurrentHashMap<>();
-    /** The channels made, by topic (at most {@link RemoteStream#MAX_CHANNELS} a connection), for their counts. */
+    /** The channels made, by topic (at most {@link FoxgloveConnection#MAX_CHANNELS} a connection), for their counts. */
     private final java.util.Map<String, BridgedChannel> made = new java.util.concurrent.ConcurrentHashMap<>();
 
     BridgeChannels(int robotId, InetSocketAddress peer, MicrosClock clock) {
@@ -83,6 +83,20 @@ final class BridgeChannels implements ChannelReader {
             }
         });
         return out;
+    }
+
+    /**
+     * The ROS 2 definition a message of type {@code schemaName} on {@code topic} is written by: the
+     * topic's own when the server advertised it with a {@code ros2msg}/{@code ros2idl} schema, else
+     * that of any channel of the same type; null when none is known.
+     */
+    BridgedSchema ros2Schema(String topic, String schemaName) {
+        BridgedSchema own = schemas.get(topic);
+        if (own != null && own.isRos2()) {
+            return own;
+        }
+        return schemas.values().stream().filter(s -> s.isRos2() && s.schemaName().equals(schemaName)).findFirst()
+                .orElse(null);
     }
 
     /** The schema the server advertised for {@code topic}, or null. */

@@ -7,6 +7,11 @@ package touchline.transport.remote;
  */
 public record BridgedSchema(String messageEncoding, String schemaName, String schemaEncoding, byte[] schemaData) {
 
+    /** Whether the schema is a ROS 2 definition ({@code ros2msg} or {@code ros2idl}) a CDR message is written by. */
+    public boolean isRos2() {
+        return schemaEncoding.equals("ros2msg") || schemaEncoding.equals("ros2idl");
+    }
+
     /** Where a recorder finds a robot's channel's schema: by robot number and topic; null when none. */
     @FunctionalInterface
     public interface Source {

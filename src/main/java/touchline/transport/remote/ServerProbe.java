@@ -58,7 +58,7 @@ public final class ServerProbe {
             }
         };
         CompletableFuture<WebSocket> socket = b.build().newWebSocketBuilder()
-                .subprotocols(RemoteStream.SUBPROTOCOLS[0], RemoteStream.SUBPROTOCOLS[1]).connectTimeout(wait)
+                .subprotocols(FoxgloveConnection.SUBPROTOCOLS[0], FoxgloveConnection.SUBPROTOCOLS[1]).connectTimeout(wait)
                 .buildAsync(uri, listener);
         socket.whenComplete((ws, failure) -> {
             if (failure != null) {

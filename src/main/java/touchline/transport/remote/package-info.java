@@ -2,9 +2,12 @@
  * Foxglove WebSocket clients. {@code Bridge}: any server (a ROS 2 robot's {@code foxglove_bridge}, the Foxglove
  * SDK's, older {@code foxglove.websocket.v1} ones) read as one robot, every channel subscribed and decoded by its
  * encoding ({@code BridgeChannels}, {@code BridgedChannel}: cdr and json through {@code protocol.ros2}, protobuf by
- * its descriptor set), its parameters, client publish and services behind the send gate ({@code BridgeStatus});
- * {@code ServerProbe} asks a server its name. Both ride on {@code RemoteStream} (subprotocols, reconnection, limits;
- * {@code ChannelReader}, {@code StreamChannel}, {@code ServerReplies}).
+ * its descriptor set), its parameters, client publish and services behind the send gate ({@code BridgeStatus}; a message
+ * typed as JSON goes as CDR when the server takes it, {@code ClientEncoding}; the services and their answers,
+ * {@code BridgeServices}, {@code ServiceAnswer});
+ * {@code ServerProbe} asks a server its name. Both ride on the core {@code FoxgloveConnection} and its
+ * {@code FoxgloveSession} (subprotocols, reconnection, limits; {@code ChannelReader}, {@code StreamChannel},
+ * {@code ServerReplies}), as does the remote viewer's {@code RemoteStream}.
  * <p>
  * Touchline as a viewer of another Touchline: a Foxglove WebSocket client that subscribes to
  * the robot channels a {@code touchline serve} (or a window serving to viewers) advertises and

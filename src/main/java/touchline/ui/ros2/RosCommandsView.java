@@ -13,6 +13,7 @@ import javafx.scene.layout.VBox;
 import touchline.app.bridges.RosBridges;
 import touchline.transport.SendResult;
 import touchline.transport.remote.BridgeStatus;
+import touchline.transport.remote.ServiceAnswer;
 import touchline.ui.frame.FrameContext;
 import touchline.ui.frame.View;
 import touchline.ui.window.ViewContext;
@@ -20,11 +21,13 @@ import touchline.ui.window.ViewContext;
 import java.util.List;
 
 /**
- * A ROS 2 robot's topics and services from the window, beside its parameters: a JSON message
- * published on a topic (when its bridge offers {@code clientPublish}), or a service called
- * with a JSON request. Both pass the console's send gate like a parameter set: held during
- * play (the newest per topic goes out when play stops), refused on a viewing console; the
- * status line says which.
+ * A ROS 2 robot's topics and services from the window, beside its parameters: a message typed
+ * as JSON published on a topic (when its bridge offers {@code clientPublish}; in CDR by the
+ * type's definition when the robot takes CDR), or a service called with a request typed the
+ * same way. Both pass the console's send gate like a parameter set: held during play (the
+ * newest per topic goes out when play stops), refused on a viewing console; the status line
+ * says which. The robot's answers to service calls (decoded responses, failures with their
+ * reason) are listed below, newest last.
  */
 public final class RosCommandsView implements View {
 
@@ -43,6 +46,8 @@ public final class RosCommandsView implements View {
     private final TextField service = new TextField();
     private final TextArea json = new TextArea("{\"data\": \"hello\"}");
     private final Label status = new Label();
+    private final TextArea answers = new TextArea();
+    private List<ServiceAnswer> shown = List.of();
     private final BorderPane root = new BorderPane();
 
     public RosCommandsView(ViewContext context) {
@@ -66,15 +71,20 @@ public final class RosCommandsView implements View {
         call.setOnAction(e -> send("call " + service.getText().strip(), target() == null ? null
                 : bridges.callService(target().robotId(), service.getText().strip(), json.getText())));
         status.setId("ros-status");
+        answers.setId("ros-answers");
+        answers.setEditable(false);
+        answers.setPrefRowCount(4);
+        answers.setPromptText("the robot's answers to service calls");
         HBox publishRow = new HBox(8, new Label("Topic"), topic, type, publish);
         HBox callRow = new HBox(8, new Label("Service"), service, call);
         publishRow.setStyle("-fx-alignment: center-left;");
         callRow.setStyle("-fx-alignment: center-left;");
-        VBox top = new VBox(6, new HBox(8, new Label("Robot"), robot), publishRow, callRow, new Label("Message / request (JSON)"));
+        VBox top = new VBox(6, new HBox(8, new Label("Robot"), robot), publishRow, callRow,
+                new Label("Message / request (field values as JSON; sent as CDR when the robot takes it)"));
         top.setStyle("-fx-padding: 6 8 6 8;");
         root.setTop(top);
         root.setCenter(json);
-        root.setBottom(status);
+        root.setBottom(new VBox(4, status, new Label("Service answers"), answers));
     }
 
     private Target target() {
@@ -93,11 +103,17 @@ public final class RosCommandsView implements View {
     @Override
     public void refresh(FrameContext frame) {
         List<BridgeStatus> statuses = bridges.statuses();
-        if (statuses.size() == robot.getItems().size()) {
-            return;
+        if (statuses.size() != robot.getItems().size()) {
+            Target chosen = robot.getValue();
+            robot.setItems(FXCollections.observableArrayList(statuses.stream()
+                    .map(b -> new Target(b.robotId(), b.name())).toList()));
+            robot.setValue(chosen != null ? chosen : robot.getItems().isEmpty() ? null : robot.getItems().get(0));
         }
-        Target chosen = robot.getValue();
-        robot.setItems(FXCollections.observableArrayList(statuses.stream().map(b -> new Target(b.robotId(), b.name())).toList()));
-        robot.setValue(chosen != null ? chosen : robot.getItems().isEmpty() ? null : robot.getItems().get(0));
+        List<ServiceAnswer> now = target() == null ? List.of() : bridges.serviceAnswers(target().robotId());
+        if (!now.equals(shown)) {
+            shown = now;
+            answers.setText(String.join("\n", now.stream().map(ServiceAnswer::describe).toList()));
+            answers.positionCaret(answers.getLength());
+        }
     }
 }

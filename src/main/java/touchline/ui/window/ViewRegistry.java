@@ -73,8 +73,9 @@ public final class ViewRegistry {
             new ViewSpec("parameters", "Parameters", "The ROS 2 robots' parameters through their Foxglove bridges: "
                     + "Refresh reads them, Set writes a typed value, Space or a double-click toggles a bool; held during "
                     + "play like a debug option.", Set.of(), (c, s) -> new touchline.ui.ros2.ParametersView(c)),
-            new ViewSpec("ros-commands", "ROS 2 publish & call", "Publish a JSON message on a ROS 2 robot's topic or "
-                    + "call its service; held during play like a debug option.", Set.of(),
+            new ViewSpec("ros-commands", "ROS 2 publish & call", "Publish a message on a ROS 2 robot's topic (typed as "
+                    + "JSON; sent as CDR when the robot takes it) or call its service and read its answers; held during "
+                    + "play like a debug option.", Set.of(),
                     (c, s) -> new touchline.ui.ros2.RosCommandsView(c)),
             new ViewSpec(RAW, "Raw data", "The newest message of an option whose kind no view knows, as protobuf "
                     + "text.", Set.of(), RawDataView::new));

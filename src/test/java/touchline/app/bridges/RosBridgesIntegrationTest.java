@@ -214,14 +214,24 @@ class RosBridgesIntegrationTest {
             SendResult publish = console.bridges().publish(id, "/say", "std_msgs/msg/String", "{\"data\":\"after play\"}");
             assertEquals(SendResult.Outcome.HELD, set.outcome());
             assertEquals(SendResult.Outcome.HELD, publish.outcome());
+            // a type the robot advertises (/pose is a ros2msg PoseStamped) goes as CDR: held the same way
+            SendResult cdr = console.bridges().publish(id, "/goal_pose", "geometry_msgs/msg/PoseStamped",
+                    "{\"header\":{\"frame_id\":\"after play\"}}");
+            assertEquals(SendResult.Outcome.HELD, cdr.outcome());
+            assertEquals(set.reason(), cdr.reason());
             // the same words as a debug option held in play (the console's gate says them)
             assertEquals("match mode, " + console.referee().matchMode().play() + "; goes out when play stops", set.reason());
-            assertEquals(2, console.bridges().held(id).size());
+            assertEquals(3, console.bridges().held(id).size());
+            assertTrue(console.bridges().held(id).contains("/goal_pose (cdr): {\"header\":{\"frame_id\":\"after play\"}}"),
+                    console.bridges().held(id).toString());
+            assertFalse(robot.heard().contains("client advertised"), robot.heard());
 
             game.perform(new ToFinished());
             Await.until("play over", () -> !console.referee().matchMode().playIsOn());
             Await.until("the held commands sent", () -> console.bridges().held(id).isEmpty());
             Await.until("the robot heard the publish", () -> robot.heard().contains("{\"data\":\"after play\"}"));
+            Await.until("the robot read the CDR publish", () -> robot.heard().contains("(cdr) {\"header\": {\"frame_id\": "
+                    + "\"after play\""));
             Await.until("the robot's new value", () -> console.bridges().refreshParameters(id).isSent()
                     && console.bridges().parameters(id).stream().anyMatch(p -> p.name().equals("debug.draw_ball")
                     && Boolean.TRUE.equals(p.value())));

@@ -119,6 +119,61 @@ class BridgeTest {
         }
     }
 
+    @Test
+    void aCdrPublishIsWrittenByTheTypesDefinitionHeldDuringPlayAndReadByTheRobotsMcapRos2() throws Exception {
+        try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-4"); Bridge bridge = bridge(robot.url())) {
+            // the robot takes json and cdr and advertises /pose as a ros2msg PoseStamped: a goal pose goes as CDR
+            Await.until("the eight channels", () -> bridge.status().connection().channels() == 8
+                    && bridge.offers("clientPublish"));
+            hold.set(Optional.of(Hold.untilPlayStops("match mode, PLAYING")));
+            String goal = "{\"header\":{\"frame_id\":\"field\"},\"pose\":{\"position\":{\"x\":1.5,\"y\":-0.5},"
+                    + "\"orientation\":{\"w\":1.0}}}";
+            SendResult publish = bridge.publish("/goal_pose", "geometry_msgs/msg/PoseStamped", goal);
+            assertEquals(SendResult.Outcome.HELD, publish.outcome(), publish.describe());
+            assertEquals(List.of("/goal_pose (cdr): " + goal), bridge.held());
+            assertEquals(0, bridge.sendHeld(), "still held while the gate holds");
+
+            SendResult wrong = bridge.publish("/goal_pose", "geometry_msgs/msg/PoseStamped", "{\"pose\":{\"heading\":1}}");
+            assertEquals(SendResult.Outcome.FAILED, wrong.outcome(), "values that do not fit are refused, not held");
+            assertEquals("geometry_msgs/msg/PoseStamped: geometry_msgs/msg/Pose has no field pose.heading", wrong.reason());
+            assertEquals(1, bridge.held().size());
+            assertFalse(robot.heard().contains("client advertised /goal_pose"), robot.heard());
+
+            hold.set(Optional.empty());
+            assertEquals(1, bridge.sendHeld());
+            Await.until("the robot read the goal pose", () -> robot.heard().contains("(cdr) {\"header\": {\"frame_id\": "
+                    + "\"field\", \"stamp\": {\"nanosec\": 0, \"sec\": 0}}, \"pose\": {\"orientation\": {\"w\": 1.0, "
+                    + "\"x\": 0.0, \"y\": 0.0, \"z\": 0.0}, \"position\": {\"x\": 1.5, \"y\": -0.5, \"z\": 0.0}}}"));
+            assertTrue(robot.heard().contains("client advertised /goal_pose (cdr)"), robot.heard());
+            assertTrue(bridge.status().lastCommand().startsWith("/goal_pose (cdr): "), bridge.status().lastCommand());
+        }
+    }
+
+    @Test
+    void serviceAnswersAreKeptCdrDecodedByTheResponseDefinitionJsonAsSentAndFailuresWithTheirReason() throws Exception {
+        try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-5"); Bridge bridge = bridge(robot.url())) {
+            Await.until("the three services", () -> bridge.services().size() == 3);
+            for (String service : List.of("/booster-5/check", "/booster-5/say", "/booster-5/kick")) {
+                SendResult call = bridge.callService(service, "{}");
+                assertTrue(call.isSent(), service + ": " + call.describe());
+            }
+            Await.until("three answers", () -> bridge.serviceAnswers().size() == 3);
+            assertEquals("/booster-5/check #1: {success: true, message: \"all joints ready\"}", answer(bridge,
+                    "/booster-5/check").describe(), "CDR, decoded by the advertised Trigger_Response");
+            ServiceAnswer say = answer(bridge, "/booster-5/say");
+            assertTrue(say.ok());
+            assertEquals("{\"success\": true, \"message\": \"said\"}", say.text(), "JSON, as the robot sent it");
+            ServiceAnswer kick = answer(bridge, "/booster-5/kick");
+            assertFalse(kick.ok());
+            assertTrue(kick.describe().startsWith("/booster-5/kick #3 failed: ") && kick.text().contains("no ball in reach"),
+                    kick.describe());
+        }
+    }
+
+    private static ServiceAnswer answer(Bridge b, String service) {
+        return b.serviceAnswers().stream().filter(a -> a.service().equals(service)).findFirst().orElseThrow();
+    }
+
     private static Bridge.Parameter param(Bridge b, String name) {
         return b.parameters().stream().filter(p -> p.name().equals(name)).findFirst().orElseThrow();
     }

@@ -178,7 +178,7 @@ class RemoteStreamHostileServerTest {
         JSONObject unparsable = rosChannel(4, "/broken", "robot_msgs/msg/Broken", "float64 x y\n%%% nonsense");
         JSONObject hugeSchema = rosChannel(5, "/huge", "robot_msgs/msg/Huge",
                 "#" + "x".repeat(BridgeChannels.MAX_SCHEMA_CHARS));
-        JSONObject[] tooMany = new JSONObject[RemoteStream.MAX_CHANNELS + 100];
+        JSONObject[] tooMany = new JSONObject[FoxgloveConnection.MAX_CHANNELS + 100];
         for (int i = 0; i < tooMany.length; i++) {
             tooMany[i] = rosChannel(1000 + i, "/many/" + i, "geometry_msgs/msg/Pose2D", "float64 x\nfloat64 y\nfloat64 theta");
         }
@@ -189,7 +189,7 @@ class RemoteStreamHostileServerTest {
                 new Bad("encoding not supported", c -> c.text(advertise(unknownEncoding))),
                 new Bad("does not parse", c -> c.text(advertise(unparsable))),
                 new Bad("over the limit", c -> c.text(advertise(hugeSchema))),
-                new Bad("limit of " + RemoteStream.MAX_CHANNELS + " channels", c -> c.text(advertise(tooMany))),
+                new Bad("limit of " + FoxgloveConnection.MAX_CHANNELS + " channels", c -> c.text(advertise(tooMany))),
                 new Bad("op 127", c -> c.binary(garbage)));
         List<Envelope> heard = new CopyOnWriteArrayList<>();
         try (HostileFoxgloveServer server = new HostileFoxgloveServer(c -> {
@@ -237,7 +237,7 @@ class RemoteStreamHostileServerTest {
             RemoteStatus s = bridge.status().connection();
             assertEquals(RemoteStatus.State.CONNECTED, s.state());
             // the three refused channels count against the limit too: it bounds every id remembered
-            assertEquals(RemoteStream.MAX_CHANNELS - 3, s.channels(), "the channels beyond the limit are not read");
+            assertEquals(FoxgloveConnection.MAX_CHANNELS - 3, s.channels(), "the channels beyond the limit are not read");
             assertEquals(1, server.connections(), "bad input does not cost the connection");
             assertEquals(java.util.Map.of("/pose", 1L, "/values", 1L), bridge.status().undecodable(), "counted per channel");
             assertTrue(bridge.status().describe().contains("undecodable: /pose 1, /values 1"), bridge.status().describe());

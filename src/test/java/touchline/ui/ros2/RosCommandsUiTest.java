@@ -17,7 +17,11 @@ import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** The ROS 2 publish & call view on a simulated ROS 2 robot: a JSON message published from the window arrives. */
+/**
+ * The ROS 2 publish & call view on a simulated ROS 2 robot: a JSON message published from the
+ * window arrives, a message of a type the robot advertises goes as CDR and the robot reads it,
+ * and the robot's answers to service calls (JSON, CDR decoded, a failure) appear in the view.
+ */
 @Tag("ui")
 @Tag("interop")
 class RosCommandsUiTest {
@@ -52,12 +56,38 @@ class RosCommandsUiTest {
                 return !status.text().endsWith("offers no service /booster-1/say");
             });
             assertEquals("booster-1 call /booster-1/say: sent", ui.fx(status::text));
+            ui.await(30, () -> status.answers().contains("/booster-1/say #1: {\"success\": true, \"message\": \"said\"}"));
+
+            ui.fxRun(() -> {
+                ((TextInputControl) view.node().lookup("#ros-service")).setText("/booster-1/check");
+                ((TextInputControl) view.node().lookup("#ros-json")).setText("{}");
+                ((Button) view.node().lookup("#ros-call")).fire();
+                ((TextInputControl) view.node().lookup("#ros-service")).setText("/booster-1/kick");
+                ((Button) view.node().lookup("#ros-call")).fire();
+            });
+            ui.await(30, () -> status.answers().contains("/booster-1/check #2: {success: true, message: \"all joints ready\"}")
+                    && status.answers().contains("/booster-1/kick #3 failed: ")
+                    && status.answers().contains("no ball in reach"));
+
+            ui.fxRun(() -> {
+                ((TextInputControl) view.node().lookup("#ros-topic")).setText("/goal_pose");
+                ((TextInputControl) view.node().lookup("#ros-type")).setText("geometry_msgs/msg/PoseStamped");
+                ((TextInputControl) view.node().lookup("#ros-json")).setText("{\"pose\":{\"position\":{\"x\":2.5}}}");
+                ((Button) view.node().lookup("#ros-publish")).fire();
+            });
+            assertEquals("booster-1 publish on /goal_pose: sent", ui.fx(status::text));
+            ui.await(30, () -> robot.heard().contains("\"position\": {\"x\": 2.5, \"y\": 0.0, \"z\": 0.0}"));
+            assertTrue(robot.heard().contains("client advertised /goal_pose (cdr)"), robot.heard());
         }
     }
 
     private record Node(RosCommandsView view) {
         String text() {
             return ((Labeled) view.node().lookup("#ros-status")).getText();
+        }
+
+        String answers() {
+            return ((TextInputControl) view.node().lookup("#ros-answers")).getText();
         }
     }
 }
