@@ -112,7 +112,7 @@ public final class RosReadings {
     }
 
     /** A frame id as tf2 writes it: without ROS 1's leading slash. */
-    private static String frameId(Object id) {
+    static String frameId(Object id) {
         return id instanceof String s ? s.strip().replaceFirst("^/+", "") : "";
     }
 
