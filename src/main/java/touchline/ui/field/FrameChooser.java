@@ -35,6 +35,7 @@ final class FrameChooser {
         label.setMnemonicParsing(true);
         label.setLabelFor(choice);
         label.setMinWidth(Region.USE_PREF_SIZE);
+        choice.setMinWidth(Region.USE_PREF_SIZE); // "(automatic)" whole: the status line gives way
         choice.valueProperty().addListener((o, was, now) -> {
             if (now != null) {
                 model.choose(now.equals(AUTOMATIC) ? FramedField.AUTO : now);
