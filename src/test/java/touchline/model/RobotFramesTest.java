@@ -12,6 +12,7 @@ import java.net.InetSocketAddress;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static touchline.model.RosReadingsTest.msg;
 
 /**
  * A ROS 2 robot's frames as its messages tell them (trees as the CDR decoder makes them): TF links
@@ -21,16 +22,6 @@ import static org.junit.jupiter.api.Assertions.*;
 class RobotFramesTest {
 
     private static final double EPS = 1e-6;
-
-    static RosMessage msg(String type, Object... namesAndValues) {
-        String[] names = new String[namesAndValues.length / 2];
-        Object[] values = new Object[names.length];
-        for (int i = 0; i < names.length; i++) {
-            names[i] = (String) namesAndValues[2 * i];
-            values[i] = namesAndValues[2 * i + 1];
-        }
-        return new RosMessage(type, null, names, values);
-    }
 
     static RosMessage header(String frame) {
         return msg("std_msgs/msg/Header", "frame_id", frame);
