@@ -2,6 +2,7 @@ package touchline.model;
 
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
@@ -20,7 +21,16 @@ public final class FrameTree {
     public static final int MAX_FRAMES = 64;
     public static final FrameTree EMPTY = new FrameTree(Map.of(), 0);
 
-    private record Link(String parent, Transform2D transform) { }
+    private record Parent(String frame, Transform2D transform) { }
+
+    /** One TF link: {@code child} placed in {@code parent} (parent←child). */
+    public record Link(String parent, String child, Transform2D transform) {
+
+        boolean valid() {
+            return parent != null && child != null && !parent.isEmpty() && !child.isEmpty() && !parent.equals(child)
+                    && transform.isFinite();
+        }
+    }
 
     /** Where a lookup led: the transform target←source, or the frame the source's chain ended at. */
     public record Lookup(Transform2D transform, String endedAt) {
@@ -35,10 +45,10 @@ public final class FrameTree {
         }
     }
 
-    private final Map<String, Link> parents;
+    private final Map<String, Parent> parents;
     private final long dropped;
 
-    private FrameTree(Map<String, Link> parents, long dropped) {
+    private FrameTree(Map<String, Parent> parents, long dropped) {
         this.parents = parents;
         this.dropped = dropped;
     }
@@ -49,23 +59,34 @@ public final class FrameTree {
      * {@link #MAX_FRAMES} is counted as dropped.
      */
     public FrameTree with(String parent, String child, Transform2D transform) {
-        if (parent == null || child == null || parent.isEmpty() || child.isEmpty() || parent.equals(child)
-                || !transform.isFinite()) {
+        return with(List.of(new Link(parent, child, transform)));
+    }
+
+    /** This tree with every link of one message placed (in one copy: a huge message costs no more per link). */
+    public FrameTree with(List<Link> links) {
+        if (links.isEmpty()) {
             return this;
         }
-        if (!parents.containsKey(child) && parents.size() >= MAX_FRAMES) {
-            return new FrameTree(parents, dropped + 1);
+        Map<String, Parent> next = new HashMap<>(parents);
+        long refused = dropped;
+        for (Link l : links) {
+            if (!l.valid()) {
+                continue;
+            }
+            if (!next.containsKey(l.child()) && next.size() >= MAX_FRAMES) {
+                refused++;
+            } else {
+                next.put(l.child(), new Parent(l.parent(), l.transform()));
+            }
         }
-        Map<String, Link> next = new HashMap<>(parents);
-        next.put(child, new Link(parent, transform));
-        return new FrameTree(next, dropped);
+        return new FrameTree(next, refused);
     }
 
     /** Every frame named in the tree (parents and children), sorted. */
     public Set<String> frames() {
         Set<String> out = new TreeSet<>(parents.keySet());
-        for (Link l : parents.values()) {
-            out.add(l.parent());
+        for (Parent p : parents.values()) {
+            out.add(p.frame());
         }
         return out;
     }
@@ -92,8 +113,8 @@ public final class FrameTree {
             if (toSource != null) {
                 return new Lookup(fromTarget.get(at).inverse().then(toSource), top);
             }
-            Link l = parents.get(at);
-            at = l == null || !fromTarget.containsKey(l.parent()) ? null : l.parent();
+            Parent p = parents.get(at);
+            at = p == null || !fromTarget.containsKey(p.frame()) ? null : p.frame();
         }
         return new Lookup(null, top);
     }
@@ -108,12 +129,12 @@ public final class FrameTree {
         String at = frame;
         chain.put(at, acc);
         for (int depth = 0; depth < MAX_FRAMES; depth++) {
-            Link l = parents.get(at);
-            if (l == null || chain.containsKey(l.parent())) {
+            Parent p = parents.get(at);
+            if (p == null || chain.containsKey(p.frame())) {
                 break;
             }
-            acc = l.transform().then(acc);
-            at = l.parent();
+            acc = p.transform().then(acc);
+            at = p.frame();
             chain.put(at, acc);
         }
         return at;

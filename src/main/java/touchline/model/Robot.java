@@ -50,9 +50,7 @@ final class Robot {
 
     String take(Envelope e, RosReadings readings) {
         if (e.ros() != null) {
-            for (RosReadings.Link l : readings.links(e.ros())) {
-                frames = frames.with(l.parent(), l.child(), l.transform());
-            }
+            frames = frames.with(readings.links(e.ros()));
             var posed = readings.framedPose(e.kind(), e.ros());
             framedPose = posed.orElse(framedPose);
             status = read(status, e.kind(), e.ros(), readings, posed.map(p -> new RobotFrames(frames, p).fieldPose()));

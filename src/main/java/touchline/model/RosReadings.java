@@ -22,9 +22,6 @@ public final class RosReadings {
     /** A pose and the frame it is given in: {@code header.frame_id}, or "" for a message without one (Pose2D, Pose, a mapped topic). */
     public record FramedPose(String frame, Transform2D pose) { }
 
-    /** One TF link: {@code child} placed in {@code parent} (parent←child). */
-    public record Link(String parent, String child, Transform2D transform) { }
-
     /** One log line: the level's word (DEBUG … FATAL), the node, the text. */
     public record LogLine(String level, String node, String text) { }
 
@@ -87,28 +84,28 @@ public final class RosReadings {
     }
 
     /** The TF links of a {@code tf2_msgs/msg/TFMessage} ({@code /tf}, {@code /tf_static}) or a lone TransformStamped. */
-    public List<Link> links(RosMessage m) {
+    public List<FrameTree.Link> links(RosMessage m) {
         if (m.typeName().equals("geometry_msgs/msg/TransformStamped")) {
             return link(m).map(List::of).orElse(List.of());
         }
         if (!m.typeName().equals("tf2_msgs/msg/TFMessage") || !(m.get("transforms") instanceof RosMessage[] all)) {
             return List.of();
         }
-        List<Link> out = new ArrayList<>(all.length);
+        List<FrameTree.Link> out = new ArrayList<>(all.length);
         for (RosMessage t : all) {
             link(t).ifPresent(out::add);
         }
         return out;
     }
 
-    private static Optional<Link> link(RosMessage t) {
+    private static Optional<FrameTree.Link> link(RosMessage t) {
         Transform2D tf = Transform2D.of(t.number("transform.translation.x"), t.number("transform.translation.y"),
                 t.number("transform.rotation.x"), t.number("transform.rotation.y"), t.number("transform.rotation.z"),
                 t.number("transform.rotation.w"));
         String parent = frameId(t.at("header.frame_id"));
         String child = frameId(t.get("child_frame_id"));
         return tf.isFinite() && !parent.isEmpty() && !child.isEmpty()
-                ? Optional.of(new Link(parent, child, tf)) : Optional.empty();
+                ? Optional.of(new FrameTree.Link(parent, child, tf)) : Optional.empty();
     }
 
     /** A frame id as tf2 writes it: without ROS 1's leading slash. */

@@ -109,4 +109,16 @@ class FrameTreeTest {
         assertEquals(Math.PI / 4, Transform2D.of(0, 0, 0, 0, Math.sin(half), Math.cos(half)).yaw(), EPS);
         assertEquals(0, Transform2D.of(0, 0, 0, 0, 0, 0).yaw(), EPS);
     }
+
+    @Test
+    void aHugeMessageIsPlacedInOneGoAndStaysBounded() {
+        java.util.List<FrameTree.Link> links = new java.util.ArrayList<>();
+        for (int i = 0; i < 100_000; i++) {
+            links.add(new FrameTree.Link("map", "f" + i, new Transform2D(i, 0, 0)));
+        }
+        FrameTree t = FrameTree.EMPTY.with(links);
+        assertEquals(FrameTree.MAX_FRAMES + 1, t.frames().size());
+        assertEquals(100_000 - FrameTree.MAX_FRAMES, t.dropped());
+        assertPoint(3, 0, t.lookup("map", "f3"), 0, 0);
+    }
 }

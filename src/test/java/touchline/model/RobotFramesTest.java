@@ -50,7 +50,7 @@ class RobotFramesTest {
 
     @Test
     void tfMessagesGiveLinksWithoutRos1sSlashAndNonsenseLeftOut() {
-        List<RosReadings.Link> links = readings.links(tf(transform("/map", "odom", 1, 2, 0.5),
+        List<FrameTree.Link> links = readings.links(tf(transform("/map", "odom", 1, 2, 0.5),
                 transform("odom", "", 1, 1, 0), transform("odom", "base_link", Double.NaN, 0, 0)));
         assertEquals(1, links.size(), links.toString());
         assertEquals("map", links.get(0).parent());
