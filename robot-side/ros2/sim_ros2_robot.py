@@ -3,10 +3,12 @@
 with the Foxglove SDK (what foxglove_bridge is built on; it speaks foxglove.sdk.v1) publishing
 
   /rosout        rcl_interfaces/msg/Log             ros2msg / cdr
-  /pose          geometry_msgs/msg/PoseStamped      ros2msg / cdr   (field coordinates, metres)
+  /pose          geometry_msgs/msg/PoseStamped      ros2msg / cdr   (in map: field coordinates, metres)
+  /tf            tf2_msgs/msg/TFMessage             ros2msg / cdr   (map→odom, odom→base_link; 10 Hz)
+  /tf_static     tf2_msgs/msg/TFMessage             ros2msg / cdr   (base_link→camera; 1 Hz)
   /joint_states  sensor_msgs/msg/JointState         ros2msg / cdr   (24 joints)
   /camera/image/compressed  sensor_msgs/msg/CompressedImage  ros2msg / cdr  (a 64×48 JPEG, 5 Hz)
-  /markers       visualization_msgs/msg/MarkerArray ros2msg / cdr   (ball, path, circle, text; 5 Hz)
+  /markers       visualization_msgs/msg/MarkerArray ros2msg / cdr   (ball, path, circle in map; text in base_link; 5 Hz)
   /diagnostics   diagnostic_msgs/msg/DiagnosticArray ros2msg / cdr  (battery, temperature; 1 Hz)
   /robot_state   JSON (battery, temperature, the game state the robot believes)
   /heading       foxglove.Vector2                   protobuf
@@ -18,13 +20,16 @@ std_srvs/srv/Trigger response, /NAME/kick always fails), and says on /rosout wha
 it, so a test sees through the bridge that a parameter set or a publish arrived.
 
     python3 sim_ros2_robot.py --port 8765 --name booster-1 [--rate 20] [--seconds 0]
-                              [--camera-jpeg FILE] [--camera-hz 5]
+                              [--camera-jpeg FILE] [--camera-hz 5] [--centre X,Y] [--radius 1]
+                              [--odom X,Y,YAW]
 
 Prints "listening on port N" once it serves (port 0 takes a free one). Stops after --seconds
 (0: never) or on SIGTERM/SIGINT, and then prints "sent N": the messages it logged on channels a
 client had subscribed to (what a client that lost nothing received; the benchmark
 `./touchline bench bridges` compares them). --camera-jpeg sends that file's JPEG (e.g. 640×480)
-instead of the built-in 64×48 one, at --camera-hz.
+instead of the built-in 64×48 one, at --camera-hz. The robot walks an ellipse (1.2 m × 0.8 m times
+--radius; 0: it turns on the spot) around --centre of map; its odometry frame lies at --odom of map
+(metres, radians: how far its odometry drifted), so its TF tree is map→odom→base_link→camera.
 """
 import argparse
 import base64
@@ -79,6 +84,14 @@ MARKER_ARRAY = ("visualization_msgs/Marker[] markers\n"
                 + SEP + "MSG: geometry_msgs/Quaternion\nfloat64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n"
                 + SEP + "MSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n"
                 + SEP + "MSG: std_msgs/ColorRGBA\nfloat32 r\nfloat32 g\nfloat32 b\nfloat32 a\n")
+TF_MESSAGE = ("geometry_msgs/TransformStamped[] transforms\n"
+              + SEP + "MSG: geometry_msgs/TransformStamped\nstd_msgs/Header header\nstring child_frame_id\n"
+              "Transform transform\n"
+              + SEP + "MSG: std_msgs/Header\n" + HEADER
+              + SEP + "MSG: builtin_interfaces/Time\n" + TIME
+              + SEP + "MSG: geometry_msgs/Transform\nVector3 translation\nQuaternion rotation\n"
+              + SEP + "MSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n"
+              + SEP + "MSG: geometry_msgs/Quaternion\nfloat64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n")
 DIAGNOSTIC_ARRAY = ("std_msgs/Header header\ndiagnostic_msgs/DiagnosticStatus[] status\n"
                     + SEP + "MSG: std_msgs/Header\n" + HEADER
                     + SEP + "MSG: builtin_interfaces/Time\n" + TIME
@@ -203,8 +216,8 @@ def stamp(now):
     return {"sec": int(now), "nanosec": int((now % 1) * 1e9)}
 
 
-def marker(stamp_now, ns, ident, kind, position=(0.0, 0.0), scale=0.1, color=WHITE, points=(), text=""):
-    return {"header": {"stamp": stamp_now, "frame_id": "field"}, "ns": ns, "id": ident, "type": kind, "action": 0,
+def marker(stamp_now, ns, ident, kind, position=(0.0, 0.0), scale=0.1, color=WHITE, points=(), text="", frame="map"):
+    return {"header": {"stamp": stamp_now, "frame_id": frame}, "ns": ns, "id": ident, "type": kind, "action": 0,
             "pose": {"position": {"x": position[0], "y": position[1], "z": 0.0},
                      "orientation": {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}},
             "scale": {"x": scale, "y": scale, "z": scale}, "color": color,
@@ -215,10 +228,11 @@ def marker(stamp_now, ns, ident, kind, position=(0.0, 0.0), scale=0.1, color=WHI
 
 def sim_markers(now, x, y):
     """What the robot's world model draws: where it believes the ball (a sphere), its planned path (a line
-    strip), its kick range (a cylinder seen from above: a circle) and its intention (text)."""
+    strip), its kick range (a cylinder seen from above: a circle), all in map, and its intention (text) beside
+    it, in its own base_link."""
     s = stamp(now)
     ball = (x + 0.8, y * 0.5)
-    return [{"header": {"stamp": s, "frame_id": "field"}, "ns": "", "id": 0, "type": 0, "action": 3,
+    return [{"header": {"stamp": s, "frame_id": "map"}, "ns": "", "id": 0, "type": 0, "action": 3,
              "pose": {"position": {"x": 0.0, "y": 0.0, "z": 0.0}, "orientation": {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}},
              "scale": {"x": 0.0, "y": 0.0, "z": 0.0}, "color": WHITE, "lifetime": {"sec": 0, "nanosec": 0},
              "frame_locked": False, "points": [], "colors": [], "text": "", "mesh_resource": "",
@@ -226,7 +240,21 @@ def sim_markers(now, x, y):
             marker(s, "ball", 0, 2, position=ball, scale=0.1, color=ORANGE),
             marker(s, "path", 1, 4, points=[(x, y), ((x + ball[0]) / 2, y), ball]),
             marker(s, "kick", 2, 3, position=ball, scale=0.6, color=ORANGE),
-            marker(s, "intention", 3, 9, position=(x, y + 0.3), scale=0.2, text="go to ball")]
+            marker(s, "intention", 3, 9, position=(0.0, 0.3), scale=0.2, text="go to ball", frame="base_link")]
+
+
+def transform(stamp_now, parent, child, x, y, yaw):
+    return {"header": {"stamp": stamp_now, "frame_id": parent}, "child_frame_id": child,
+            "transform": {"translation": {"x": x, "y": y, "z": 0.0},
+                          "rotation": {"x": 0.0, "y": 0.0, "z": math.sin(yaw / 2), "w": math.cos(yaw / 2)}}}
+
+
+def in_odom(odom, x, y, theta):
+    """The pose (x, y, theta) of map in the odometry frame lying at odom = (ox, oy, oyaw) of map."""
+    ox, oy, oyaw = odom
+    dx, dy = x - ox, y - oy
+    c, s = math.cos(oyaw), math.sin(oyaw)
+    return c * dx + s * dy, -s * dx + c * dy, theta - oyaw
 
 
 def main():
@@ -239,8 +267,12 @@ def main():
     ap.add_argument("--camera-jpeg", help="a JPEG file to send as the camera image instead of the built-in 64×48 one")
     ap.add_argument("--camera-hz", type=float, default=5.0, help="camera images per second (at most --rate)")
     ap.add_argument("--centre", default="0,0", help="the centre of the robot's walk on the field, metres: X,Y")
+    ap.add_argument("--radius", type=float, default=1.0, help="the size of its walk (0: it turns on the spot)")
+    ap.add_argument("--odom", default="0.4,-0.3,0.15",
+                    help="where its odometry frame lies in map (its drift): X,Y metres, YAW radians")
     args = ap.parse_args()
     cx, cy = (float(v) for v in args.centre.split(","))
+    odom = tuple(float(v) for v in args.odom.split(","))
     jpeg = CAMERA_JPEG
     if args.camera_jpeg:
         with open(args.camera_jpeg, "rb") as f:
@@ -261,6 +293,8 @@ def main():
     heading = Vector2Channel("/heading")
     camera, encode_camera = ros2_channel("/camera/image/compressed", "sensor_msgs/msg/CompressedImage", COMPRESSED_IMAGE)
     markers, encode_markers = ros2_channel("/markers", "visualization_msgs/msg/MarkerArray", MARKER_ARRAY)
+    tf, encode_tf = ros2_channel("/tf", "tf2_msgs/msg/TFMessage", TF_MESSAGE)
+    tf_static, encode_tf_static = ros2_channel("/tf_static", "tf2_msgs/msg/TFMessage", TF_MESSAGE)
     diagnostics, encode_diagnostics = ros2_channel("/diagnostics", "diagnostic_msgs/msg/DiagnosticArray",
                                                    DIAGNOSTIC_ARRAY)
     print("listening on port %d" % server.port, flush=True)
@@ -273,8 +307,9 @@ def main():
         now = time.time()
         t = now - start
         angle = 0.4 * t
-        x, y, theta = cx + 1.2 * math.cos(angle), cy + 0.8 * math.sin(angle), angle + math.pi / 2
-        robot.log(pose, encode_pose({"header": {"stamp": stamp(now), "frame_id": "field"},
+        x, y = cx + 1.2 * args.radius * math.cos(angle), cy + 0.8 * args.radius * math.sin(angle)
+        theta = angle + math.pi / 2
+        robot.log(pose, encode_pose({"header": {"stamp": stamp(now), "frame_id": "map"},
                               "pose": {"position": {"x": x, "y": y, "z": 0.0},
                                        "orientation": {"x": 0.0, "y": 0.0, "z": math.sin(theta / 2),
                                                        "w": math.cos(theta / 2)}}}))
@@ -282,12 +317,17 @@ def main():
                                   "position": [0.3 * math.sin(t + i) for i in range(len(JOINTS))],
                                   "velocity": [0.0] * len(JOINTS), "effort": [1.0 + i for i in range(len(JOINTS))]}))
         robot.log(heading, Vector2(x=math.cos(theta), y=math.sin(theta)))
+        if n % max(1, int(args.rate / 10)) == 0:
+            robot.log(tf, encode_tf({"transforms": [transform(stamp(now), "map", "odom", *odom),
+                                                    transform(stamp(now), "odom", "base_link", *in_odom(odom, x, y, theta))]}))
         if n % max(1, int(args.rate / args.camera_hz)) == 0:
             header = {"stamp": stamp(now), "frame_id": "camera"}
             robot.log(camera, encode_camera({"header": header, "format": "jpeg", "data": jpeg}))
         if n % max(1, int(args.rate / 5)) == 0:
             robot.log(markers, encode_markers({"markers": sim_markers(now, x, y)}))
         if n % max(1, int(args.rate)) == 0:
+            robot.log(tf_static, encode_tf_static({"transforms": [
+                transform(stamp(now), "base_link", "camera", 0.05, 0.0, 0.0)]}))
             battery = max(0.0, 95.0 - t / 60.0)
             robot.log(diagnostics, encode_diagnostics({"header": {"stamp": stamp(now), "frame_id": ""}, "status": [
                 {"level": 0, "name": args.name + ": Battery", "message": "discharging", "hardware_id": "bms",

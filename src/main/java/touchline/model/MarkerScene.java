@@ -13,8 +13,9 @@ import java.util.Map;
  * on the field: markers are kept by namespace and id until a DELETE of theirs or a DELETEALL
  * (any namespace), as RViz keeps them. SPHERE and CYLINDER are circles, POINTS and
  * SPHERE_LIST dots, LINE_STRIP and LINE_LIST lines, TEXT_VIEW_FACING text; the other types
- * (arrows, cubes, meshes) are counted as not drawn. Positions are taken as field coordinates
- * (metres in ROS, millimetres on the field), moved and turned by the marker's pose; lifetimes
+ * (arrows, cubes, meshes) are counted as not drawn. Positions are in the marker's frame (kept with
+ * the shape: the field view moves it into the frame chosen there), metres in ROS and millimetres on
+ * the field, moved and turned by the marker's pose; lifetimes
  * are not aged out. Bounded: at most {@link #MAX_MARKERS} markers and
  * {@link #MAX_POINTS} points per marker. Not thread-safe: one writer.
  */
@@ -63,7 +64,8 @@ public final class MarkerScene {
 
     /** One marker as a shape on the field, or null for a type not drawn in 2D. */
     static Drawing.FieldShape shape(RosMessage m) {
-        Drawing.FieldShape.Builder s = Drawing.FieldShape.newBuilder().setArgb(argb(m));
+        Drawing.FieldShape.Builder s = Drawing.FieldShape.newBuilder().setArgb(argb(m))
+                .setFrame(RosReadings.frameId(m.at("header.frame_id")));
         double px = m.number("pose.position.x");
         double py = m.number("pose.position.y");
         double qz = m.number("pose.orientation.z");

@@ -6,6 +6,7 @@ import touchline.transport.Envelope;
 import touchline.transport.Origin;
 
 import java.net.InetSocketAddress;
+import java.util.Optional;
 
 /** The registry's mutable record of one robot. Guarded by the registry's lock. */
 final class Robot {
@@ -43,24 +44,38 @@ final class Robot {
     /** The hottest temperature its ROS 2 messages last reported, °C; NaN for none. */
     private double temperature = Double.NaN;
 
+    /** Its TF tree and its latest pose with the frame it was given in (a ROS 2 robot's; null: none yet). */
+    private FrameTree frames = FrameTree.EMPTY;
+    private RosReadings.FramedPose framedPose;
+
     String take(Envelope e, RosReadings readings) {
         if (e.ros() != null) {
-            status = read(status, e.kind(), e.ros(), readings);
+            frames = frames.with(readings.links(e.ros()));
+            var posed = readings.framedPose(e.kind(), e.ros());
+            framedPose = posed.orElse(framedPose);
+            status = read(status, e.kind(), e.ros(), readings, posed.map(p -> new RobotFrames(frames, p).fieldPose()));
             temperature = DIAGNOSTICS.temperature(e.ros()).orElse(temperature);
         }
         return take(e);
     }
 
-    /** The robot's status with what a ROS 2 message says of it (pose, battery, game state) put in. */
+    /** Its frames, for a view that draws it in a frame of its choice; null for a robot that told none. */
+    RobotFrames frames() {
+        return framedPose == null && frames == FrameTree.EMPTY ? null : new RobotFrames(frames, framedPose);
+    }
+
+    /**
+     * The robot's status with what a ROS 2 message says of it (pose, battery, game state) put in; its
+     * pose in {@value RobotFrames#FIELD} when its TF tree leads there, else as given.
+     */
     private static Fumanoid.Status read(Fumanoid.Status s, String topic, touchline.protocol.ros2.RosMessage m,
-                                        RosReadings readings) {
+                                        RosReadings readings, Optional<Transform2D> pose) {
         Fumanoid.Status.Builder b = null;
-        var pose = readings.pose(topic, m);
         if (pose.isPresent()) {
             b = s.toBuilder();
             // ROS 2 speaks metres (REP 103), the field and the small robots millimetres
             b.getRobotPositionBuilder().setX((float) (pose.get().x() * 1000)).setY((float) (pose.get().y() * 1000))
-                    .setTheta((float) pose.get().theta());
+                    .setTheta((float) pose.get().yaw());
         }
         var battery = readings.batteryPercent(topic, m);
         if (battery.isPresent() && (!s.hasBatteryPercent() || s.getBatteryPercent() != battery.get())) {

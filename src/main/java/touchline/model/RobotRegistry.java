@@ -253,6 +253,18 @@ public final class RobotRegistry {
         }
     }
 
+    /** The frames the ROS 2 robots of one stream told (their TF trees and framed poses), by robot. */
+    public synchronized Map<Integer, RobotFrames> frames(Origin origin) {
+        Map<Integer, RobotFrames> out = new TreeMap<>();
+        (origin == Origin.REPLAY ? replayed : robots).forEach((id, r) -> {
+            RobotFrames f = r.frames();
+            if (f != null) {
+                out.put(id, f);
+            }
+        });
+        return out;
+    }
+
     public synchronized List<SourceSnapshot> sources() {
         List<SourceSnapshot> out = new ArrayList<>();
         live.sources.forEach((a, s) -> out.add(new SourceSnapshot(a, s.packets, s.malformed, s.lastError, s.lastSeen,

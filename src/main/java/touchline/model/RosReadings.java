@@ -3,6 +3,8 @@ package touchline.model;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.ros2.RosMessage;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -16,6 +18,9 @@ public final class RosReadings {
 
     /** A robot's pose on the field: metres, radians. */
     public record Pose(double x, double y, double theta) { }
+
+    /** A pose and the frame it is given in: {@code header.frame_id}, or "" for a message without one (Pose2D, Pose, a mapped topic). */
+    public record FramedPose(String frame, Transform2D pose) { }
 
     /** One log line: the level's word (DEBUG … FATAL), the node, the text. */
     public record LogLine(String level, String node, String text) { }
@@ -57,6 +62,55 @@ public final class RosReadings {
         double qw = m.number(rotation + "w");
         double yaw = Math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz));
         return finite(m.number(position + "x"), m.number(position + "y"), yaw);
+    }
+
+    /**
+     * The pose a message gives ({@link #pose}) with the frame it is in: a stamped pose's or an
+     * odometry's {@code header.frame_id}, a transform's parent frame (the robot's base in it).
+     */
+    public Optional<FramedPose> framedPose(String topic, RosMessage m) {
+        Optional<Pose> pose = pose(topic, m);
+        if (pose.isEmpty()) {
+            return Optional.empty();
+        }
+        String header = switch (m.typeName()) {
+            case "geometry_msgs/msg/PoseStamped", "geometry_msgs/msg/PoseWithCovarianceStamped", "nav_msgs/msg/Odometry",
+                 "geometry_msgs/msg/TransformStamped" -> "header.frame_id";
+            case "tf2_msgs/msg/TFMessage" -> baseTransform(m).replace("transform.", "header.frame_id");
+            default -> null;
+        };
+        Pose p = pose.get();
+        return Optional.of(new FramedPose(header == null ? "" : frameId(m.at(header)), new Transform2D(p.x(), p.y(), p.theta())));
+    }
+
+    /** The TF links of a {@code tf2_msgs/msg/TFMessage} ({@code /tf}, {@code /tf_static}) or a lone TransformStamped. */
+    public List<FrameTree.Link> links(RosMessage m) {
+        if (m.typeName().equals("geometry_msgs/msg/TransformStamped")) {
+            return link(m).map(List::of).orElse(List.of());
+        }
+        if (!m.typeName().equals("tf2_msgs/msg/TFMessage") || !(m.get("transforms") instanceof RosMessage[] all)) {
+            return List.of();
+        }
+        List<FrameTree.Link> out = new ArrayList<>(all.length);
+        for (RosMessage t : all) {
+            link(t).ifPresent(out::add);
+        }
+        return out;
+    }
+
+    private static Optional<FrameTree.Link> link(RosMessage t) {
+        Transform2D tf = Transform2D.of(t.number("transform.translation.x"), t.number("transform.translation.y"),
+                t.number("transform.rotation.x"), t.number("transform.rotation.y"), t.number("transform.rotation.z"),
+                t.number("transform.rotation.w"));
+        String parent = frameId(t.at("header.frame_id"));
+        String child = frameId(t.get("child_frame_id"));
+        return tf.isFinite() && !parent.isEmpty() && !child.isEmpty()
+                ? Optional.of(new FrameTree.Link(parent, child, tf)) : Optional.empty();
+    }
+
+    /** A frame id as tf2 writes it: without ROS 1's leading slash. */
+    static String frameId(Object id) {
+        return id instanceof String s ? s.strip().replaceFirst("^/+", "") : "";
     }
 
     /** A mapped pose topic's shape: x, y, theta (null); a pose ({@code pose.}); or a bare position (""). */

@@ -7,7 +7,9 @@
  * the team-message budget guard ({@code TeamMessageBudget}); what a ROS 2 robot's messages say of it, by type and by
  * the user's mapping ({@code RosReadings}, {@code RosMapping}, {@code RosDiagnostics}: battery and temperature), and
  * its images, joint states, diagnostics and markers as a small robot's debug data for the views that show that
- * ({@code RosDebugData}, {@code RosTables}, {@code MarkerScene}). Each is an {@code EnvelopeSink} subscribed to the
+ * ({@code RosDebugData}, {@code RosTables}, {@code MarkerScene}); its frames ({@code FrameTree}, a TF tree in the
+ * plane of {@code Transform2D}s, and {@code RobotFrames}, kept per robot by the registry) and the field view's model of
+ * the frame chosen there ({@code FramedField}, pure, the view's thread). Each is an {@code EnvelopeSink} subscribed to the
  * stream.
  * <p>
  * May depend on: transport, security and protocol; not record (the two do not know each other).

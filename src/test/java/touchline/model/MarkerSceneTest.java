@@ -115,4 +115,16 @@ class MarkerSceneTest {
         RosDebugData.Data otherRobot = data.of(1002, "/markers", array(marker("ball", 1, 2, 0, 2, 2, 0, 0.1, ""))).orElseThrow();
         assertEquals(1, ((Drawing.FieldDrawing) otherRobot.data()).getShapesCount());
     }
+
+    @Test
+    void aMarkerKeepsItsFrameForTheFieldViewToMoveItThere() {
+        RosMessage inBase = msg("visualization_msgs/msg/Marker", new String[] {"header", "ns", "id", "type", "action", "pose",
+                "scale"}, msg("std_msgs/msg/Header", new String[] {"frame_id"}, "/base_link"), "ball", 0, 2, 0,
+                msg("geometry_msgs/msg/Pose", new String[] {"position"}, xyz(1, 0)),
+                msg("geometry_msgs/msg/Vector3", new String[] {"x", "y", "z"}, 0.1, 0.1, 0.1));
+        MarkerScene scene = new MarkerScene();
+        scene.apply(array(inBase, marker("say", 1, 9, 0, 0, 0, 0, 0.1, "hi")));
+        assertEquals("base_link", scene.drawing("/m").getShapes(0).getFrame(), "without ROS 1's slash");
+        assertEquals("", scene.drawing("/m").getShapes(1).getFrame(), "none given");
+    }
 }

@@ -11,7 +11,7 @@ import static org.junit.jupiter.api.Assertions.*;
 /** What a ROS 2 robot's messages say of it, by type and by the user's mapping (trees as the decoders make them). */
 class RosReadingsTest {
 
-    private static RosMessage msg(String type, Object... namesAndValues) {
+    static RosMessage msg(String type, Object... namesAndValues) {
         String[] names = new String[namesAndValues.length / 2];
         Object[] values = new Object[names.length];
         for (int i = 0; i < names.length; i++) {

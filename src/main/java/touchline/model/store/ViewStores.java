@@ -105,6 +105,11 @@ public final class ViewStores {
     /** The replay's stores, whatever the views show. */
     public Shelf replay() { return replay; }
 
+    /** Whether the views show the replay's stores (a replay is open) rather than the live ones. */
+    public boolean showsReplay() {
+        return showReplay.getAsBoolean();
+    }
+
     private Shelf shown() {
         return showReplay.getAsBoolean() ? replay : live;
     }

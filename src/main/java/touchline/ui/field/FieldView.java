@@ -10,7 +10,9 @@ import javafx.scene.shape.Circle;
 import javafx.scene.shape.Line;
 import javafx.scene.shape.Rectangle;
 import javafx.scene.text.Text;
+import touchline.model.FramedField;
 import touchline.model.RobotSnapshot;
+import touchline.transport.Origin;
 import touchline.model.store.Latest;
 import touchline.proto.Fumanoid;
 import touchline.ui.frame.FrameContext;
@@ -57,6 +59,10 @@ public final class FieldView extends SourcedView {
     private double cy;
     private double scale;
     private String objectsNote = "";
+    /** The frame the ROS 2 robots are drawn in, and where they are in it: the view's model. */
+    private final FramedField frames = new FramedField();
+    private final FrameChooser chooser = new FrameChooser(frames, () -> dirty = true);
+    private touchline.proto.Drawing.FieldDrawing drawnMarkers;
 
     public FieldView(ViewContext context, ViewSource source) {
         super(context.field(), Set.of(Fumanoid.DebugKind.FIELD_VALUE), source);
@@ -68,7 +74,31 @@ public final class FieldView extends SourcedView {
         clip.heightProperty().bind(robotLayer.heightProperty());
         robotLayer.setClip(clip); // a robot off the field's edge stays inside the view
         root.setCenter(new StackPane(canvas, robotLayer));
+        bar.add(chooser.label, chooser.choice);
     }
+
+    /** The frame the ROS 2 robots' poses and markers are drawn in, and the field as last placed in it. */
+    public FramedField frames() {
+        return frames;
+    }
+
+    /** The source, and the frame when one was chosen: {@code frame=odom@1001//markers}. */
+    @Override
+    public String layoutState() {
+        String f = frames.chosen();
+        return f.isEmpty() || !f.matches("[^\\s@]+") ? null : FRAME_PREFIX + f + "@" + bar.selected().encode();
+    }
+
+    @Override
+    public void restoreLayoutState(String state) {
+        int at = state == null ? -1 : state.indexOf('@');
+        if (state != null && state.startsWith(FRAME_PREFIX) && at > FRAME_PREFIX.length()) {
+            chooser.select(state.substring(FRAME_PREFIX.length(), at));
+            bar.select(ViewSource.decode(state.substring(at + 1)));
+        }
+    }
+
+    private static final String FRAME_PREFIX = "frame=";
 
     /** Robots with a position drawn in the last frame (for tests). */
     public int drawnRobots() {
@@ -78,6 +108,7 @@ public final class FieldView extends SourcedView {
     @Override
     public void refresh(FrameContext frame) {
         bar.refresh();
+        chooser.refresh();
         long rv = field.robots().version();
         ViewSource s = bar.selected();
         Optional<Latest> objects = s.isSet() ? stores().latest().get(s.robotId(), s.option()) : Optional.empty();
@@ -88,8 +119,12 @@ public final class FieldView extends SourcedView {
         seenRobots = rv;
         // every datagram moves the robots' version: show only what moved of them
         List<RobotSnapshot> robots = field.robots().robots();
-        List<Mark> marks = marks(robots);
-        boolean field = dirty || ov != seenObjects;
+        FramedField.Picture picture = frames.place(robots, field.robots().frames(Origin.LIVE),
+                field.robots().frames(Origin.REPLAY), objects.map(Latest::data).filter(
+                        touchline.proto.Drawing.FieldDrawing.class::isInstance).map(touchline.proto.Drawing.FieldDrawing.class::cast)
+                        .orElse(null), s.robotId(), stores().showsReplay());
+        List<Mark> marks = marks(picture);
+        boolean field = dirty || ov != seenObjects || !java.util.Objects.equals(picture.markers(), drawnMarkers);
         if (!field && marks.equals(drawnMarks)) {
             return;
         }
@@ -101,6 +136,7 @@ public final class FieldView extends SourcedView {
         drawnMarks = marks;
         paints++;
         if (field) {
+            drawnMarkers = picture.markers();
             paintField(objects.orElse(null));
         }
         status(place(marks));
@@ -118,10 +154,12 @@ public final class FieldView extends SourcedView {
         }
     }
 
-    private static List<Mark> marks(List<RobotSnapshot> robots) {
-        List<Mark> out = new java.util.ArrayList<>(robots.size());
-        for (RobotSnapshot r : robots) {
-            out.add(new Mark(r.id(), r.hasPosition(), r.x(), r.y(), r.theta(), r.online(), r.role()));
+    /** The robots placed in the frame, and a mark without a position for each left out. */
+    private static List<Mark> marks(FramedField.Picture picture) {
+        List<Mark> out = new java.util.ArrayList<>(picture.robots().size());
+        for (FramedField.Placed p : picture.robots()) {
+            RobotSnapshot r = p.robot();
+            out.add(new Mark(r.id(), true, p.x(), p.y(), p.theta(), r.online(), r.role()));
         }
         return out;
     }
@@ -181,8 +219,9 @@ public final class FieldView extends SourcedView {
                 g.fillText(o.getLabel(), sx + 7, sy + 4);
                 objectCount++;
             }
-        } else if (objects != null && objects.data() instanceof touchline.proto.Drawing.FieldDrawing d) {
-            objectCount = new FieldDrawingPainter().paint(g, d, cx, cy, scale); // a ROS 2 robot's markers
+        } else if (objects != null && drawnMarkers != null) {
+            // a ROS 2 robot's markers, moved into the chosen frame
+            objectCount = new FieldDrawingPainter().paint(g, drawnMarkers, cx, cy, scale);
         }
         objectsNote = objects != null ? " · " + objectCount + " objects from " + objects.option() : "";
     }
@@ -214,8 +253,10 @@ public final class FieldView extends SourcedView {
             return true;
         });
         drawnRobots = drawn;
-        return drawn + " robots on the field" + (noPosition > 0 ? " · " + noPosition + " without a position" : "")
-                + objectsNote;
+        FramedField.Picture p = frames.picture();
+        noPosition += p.withoutPosition();
+        return drawn + " robots " + (p.frame().isEmpty() ? "on the field" : "in " + p.frame())
+                + (noPosition > 0 ? " · " + noPosition + " without a position" : "") + p.note() + objectsNote;
     }
 
     /** One robot on the field: a disc (hollow when offline), its heading and its ID and role. */

@@ -51,6 +51,21 @@ public final class SourceBar extends HBox {
         setStyle("-fx-padding: 4 8 4 8; -fx-alignment: center-left;");
     }
 
+    /** Puts a view's own controls (e.g. the field's frame) after the source, before the status. */
+    public void add(javafx.scene.Node... controls) {
+        getChildren().addAll(getChildren().indexOf(status), List.of(controls));
+    }
+
+    /** Selects {@code source} (a saved layout's), listed even while its robot is absent. */
+    public void select(ViewSource source) {
+        if (source.isSet()) {
+            if (!choice.getItems().contains(source)) {
+                choice.getItems().add(source);
+            }
+            choice.getSelectionModel().select(source);
+        }
+    }
+
     public ViewSource selected() {
         ViewSource s = choice.getValue();
         return s == null ? ViewSource.NONE : s;

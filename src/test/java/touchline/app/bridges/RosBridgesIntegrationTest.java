@@ -99,7 +99,7 @@ class RosBridgesIntegrationTest {
 
             assertTrue(console.referee().matchMode().playIsOn(), "the PLAYING the robot reports is play: " + console.referee().matchMode().notice());
             BridgeStatus s = console.bridges().statuses().get(0);
-            assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 8 channels"),
+            assertTrue(s.describe().startsWith("booster-1 ws://127.0.0.1:" + robot.port() + "/ connected (foxglove.sdk.v1, 10 channels"),
                     s.describe());
         }
     }
@@ -127,14 +127,14 @@ class RosBridgesIntegrationTest {
              SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1")) {
             console.recordings().start(file);
             int id = console.bridges().connect(BridgeAddress.parse("booster-1=" + robot.url()), null);
-            // its log line in the debug console too: the robot's eight channels reach 60 messages before its first log
+            // its log line in the debug console too: the robot's ten channels reach 60 messages before its first log
             Await.until("a pose, a log line and joints heard", () -> console.field().robots().robot(id)
                     .map(RobotSnapshot::packets).orElse(0L) > 60
                     && !console.field().stores().text().since(-1, id, 10).isEmpty());
             console.recordings().stop();
         }
         String out = touchline.testing.PythonMcap.run(READ_ROS2, file);
-        assertEquals("['/bridge/1001/joint_states', '/bridge/1001/pose', '/bridge/1001/rosout'] cdr field 0.0 "
+        assertEquals("['/bridge/1001/joint_states', '/bridge/1001/pose', '/bridge/1001/rosout'] cdr map 0.0 "
                 + "booster-1/behavior", out.trim());
     }
 

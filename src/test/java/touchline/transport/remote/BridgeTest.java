@@ -48,7 +48,7 @@ class BridgeTest {
     @Test
     void theFoxgloveSdkServerIsReadOnItsOwnSubprotocolEveryChannelAsTheRobots() throws Exception {
         try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-1"); Bridge bridge = bridge(robot.url())) {
-            Await.until("the eight channels", () -> bridge.status().connection().channels() == 8);
+            Await.until("the ten channels", () -> bridge.status().connection().channels() == 10);
             BridgeStatus s = bridge.status();
             assertEquals("foxglove.sdk.v1", s.subprotocol());
             assertEquals("booster-1", s.serverName());
@@ -73,7 +73,7 @@ class BridgeTest {
             assertNull(pose.error(), pose.toString());
             assertEquals("geometry_msgs/msg/PoseStamped", pose.ros().typeName());
             assertTrue(Double.isFinite(pose.ros().number("pose.position.x")));
-            assertEquals("field", pose.ros().at("header.frame_id"));
+            assertEquals("map", pose.ros().at("header.frame_id"));
             Envelope log = on("/rosout").orElseThrow();
             assertTrue(String.valueOf(log.ros().at("msg")).startsWith("walking to"), log.ros().toString());
             Envelope state = on("/robot_state").orElseThrow();
