@@ -123,7 +123,7 @@ class BridgeTest {
     void aCdrPublishIsWrittenByTheTypesDefinitionHeldDuringPlayAndReadByTheRobotsMcapRos2() throws Exception {
         try (SimulatedRos2Robot robot = new SimulatedRos2Robot("booster-4"); Bridge bridge = bridge(robot.url())) {
             // the robot takes json and cdr and advertises /pose as a ros2msg PoseStamped: a goal pose goes as CDR
-            Await.until("the eight channels", () -> bridge.status().connection().channels() == 8
+            Await.until("the ten channels", () -> bridge.status().connection().channels() == 10
                     && bridge.offers("clientPublish"));
             hold.set(Optional.of(Hold.untilPlayStops("match mode, PLAYING")));
             String goal = "{\"header\":{\"frame_id\":\"field\"},\"pose\":{\"position\":{\"x\":1.5,\"y\":-0.5},"
