@@ -48,9 +48,7 @@ public final class FieldView extends SourcedView {
     private final Map<Integer, RobotMark> shapes = new HashMap<>();
     private long seenRobots = -1;
     private long seenObjects = -1;
-    private int drawnRobots;
     private List<Mark> drawnMarks = List.of();
-    private long paints;
     private long fieldPaints;
     /** Where the field lies on the canvas: its centre and millimetres to pixels, as last painted. */
     private double cx;
@@ -68,11 +66,6 @@ public final class FieldView extends SourcedView {
         clip.heightProperty().bind(robotLayer.heightProperty());
         robotLayer.setClip(clip); // a robot off the field's edge stays inside the view
         root.setCenter(new StackPane(canvas, robotLayer));
-    }
-
-    /** Robots with a position drawn in the last frame (for tests). */
-    public int drawnRobots() {
-        return drawnRobots;
     }
 
     @Override
@@ -99,7 +92,6 @@ public final class FieldView extends SourcedView {
         seenObjects = ov;
         dirty = false;
         drawnMarks = marks;
-        paints++;
         if (field) {
             paintField(objects.orElse(null));
         }
@@ -126,11 +118,6 @@ public final class FieldView extends SourcedView {
         return out;
     }
 
-    /** Times the field or a robot on it was drawn anew (for tests: a frame without a change draws nothing). */
-    public long paints() {
-        return paints;
-    }
-
     /** Times the field itself (lines, goals, objects) was painted: a resize or new objects, not a robot moving. */
     public long fieldPaints() {
         return fieldPaints;
@@ -138,7 +125,6 @@ public final class FieldView extends SourcedView {
 
     @Override
     protected String draw(Latest latest) {
-        paints++;
         paintField(latest);
         return place(drawnMarks);
     }
@@ -213,7 +199,6 @@ public final class FieldView extends SourcedView {
             robotLayer.getChildren().remove(e.getValue());
             return true;
         });
-        drawnRobots = drawn;
         return drawn + " robots on the field" + (noPosition > 0 ? " · " + noPosition + " without a position" : "")
                 + objectsNote;
     }
