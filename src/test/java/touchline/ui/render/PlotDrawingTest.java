@@ -84,6 +84,7 @@ class PlotDrawingTest {
                 }
             }
             assertTrue(lit > 20, "the y labels' glyphs left of the axis: " + lit + " pixels");
+            assertTrue(lit < 50 * shown.getHeight() / 2, "the plot's background around them: " + lit + " pixels lit");
             return null;
         });
     }
