@@ -52,17 +52,6 @@ final class NewestLines extends Region implements LogList.Glance<String> {
         setClip(clip);
     }
 
-    /** The lines shown, oldest first (for tests and the user guide's screenshots). */
-    List<String> shown() {
-        List<String> out = new ArrayList<>();
-        for (Text t : texts) {
-            if (!t.getText().isEmpty()) {
-                out.add(t.getText());
-            }
-        }
-        return out;
-    }
-
     @Override
     public void restart(List<String> newest) {
         lines.clear();

@@ -50,9 +50,7 @@ public final class FieldView extends SourcedView {
     private final Map<Integer, RobotMark> shapes = new HashMap<>();
     private long seenRobots = -1;
     private long seenObjects = -1;
-    private int drawnRobots;
     private List<Mark> drawnMarks = List.of();
-    private long paints;
     private long fieldPaints;
     /** Where the field lies on the canvas: its centre and millimetres to pixels, as last painted. */
     private double cx;
@@ -100,11 +98,6 @@ public final class FieldView extends SourcedView {
 
     private static final String FRAME_PREFIX = "frame=";
 
-    /** Robots with a position drawn in the last frame (for tests). */
-    public int drawnRobots() {
-        return drawnRobots;
-    }
-
     @Override
     public void refresh(FrameContext frame) {
         bar.refresh();
@@ -134,7 +127,6 @@ public final class FieldView extends SourcedView {
         seenObjects = ov;
         dirty = false;
         drawnMarks = marks;
-        paints++;
         if (field) {
             drawnMarkers = picture.markers();
             paintField(objects.orElse(null));
@@ -164,11 +156,6 @@ public final class FieldView extends SourcedView {
         return out;
     }
 
-    /** Times the field or a robot on it was drawn anew (for tests: a frame without a change draws nothing). */
-    public long paints() {
-        return paints;
-    }
-
     /** Times the field itself (lines, goals, objects) was painted: a resize or new objects, not a robot moving. */
     public long fieldPaints() {
         return fieldPaints;
@@ -176,7 +163,6 @@ public final class FieldView extends SourcedView {
 
     @Override
     protected String draw(Latest latest) {
-        paints++;
         paintField(latest);
         return place(drawnMarks);
     }
@@ -252,7 +238,6 @@ public final class FieldView extends SourcedView {
             robotLayer.getChildren().remove(e.getValue());
             return true;
         });
-        drawnRobots = drawn;
         FramedField.Picture p = frames.picture();
         noPosition += p.withoutPosition();
         return drawn + " robots " + (p.frame().isEmpty() ? "on the field" : "in " + p.frame())

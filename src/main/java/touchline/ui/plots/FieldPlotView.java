@@ -126,7 +126,7 @@ public final class FieldPlotView implements View {
         root.setCenter(plot.node());
     }
 
-    /** The model behind the plot (for tests). */
+    /** The series plotted: {@code touchline screenshots} adds the user guide's picture's series through it. */
     public FieldPlot fields() {
         return fields;
     }

@@ -19,7 +19,6 @@ import touchline.ui.render.PlotDrawing;
 public final class PlotView extends SourcedView {
 
     private final PlotDrawing plot = new PlotDrawing(() -> dirty = true);
-    private long draws;
     /** The last snapshot drawn, whose arrays the next one reuses. */
     private PlotStore.Snapshot last;
 
@@ -27,26 +26,6 @@ public final class PlotView extends SourcedView {
         super(context.field(), Set.of(Fumanoid.DebugKind.PLOT_VALUE), source);
         plot.node().setId("plot-canvas");
         root.setCenter(plot.node());
-    }
-
-    /** Points in the window over all series (for tests). */
-    public int points() {
-        return plot.points();
-    }
-
-    /** Points actually drawn after per-column decimation (for tests). */
-    public int drawnPoints() {
-        return plot.drawnPoints();
-    }
-
-    /** How often the plot was redrawn (for tests: no new data, no redraw). */
-    public long draws() {
-        return draws;
-    }
-
-    /** How often the plot's pane changed size (each change may cause one redraw without new data). */
-    public long resizes() {
-        return plot.node().resizes();
     }
 
     @Override
@@ -61,7 +40,6 @@ public final class PlotView extends SourcedView {
             return "no plot data";
         }
         last = s; // drawn below and not kept: the next draw copies into its arrays
-        draws++;
         int total = plot.draw(s.series());
         StringBuilder out = new StringBuilder(s.series().size() + " series · " + total + " points");
         if (s.skippedNonFinite() > 0) {

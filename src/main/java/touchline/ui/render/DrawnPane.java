@@ -11,23 +11,11 @@ import javafx.scene.layout.Pane;
  */
 public abstract class DrawnPane extends Pane {
 
-    private long resizes;
-
     protected DrawnPane(Runnable onResize) {
         getStyleClass().add("canvas-pane"); // opaque, one pixel beyond the pane: touchline.css
-        widthProperty().addListener((o, a, b) -> resized(onResize));
-        heightProperty().addListener((o, a, b) -> resized(onResize));
+        widthProperty().addListener((o, a, b) -> onResize.run());
+        heightProperty().addListener((o, a, b) -> onResize.run());
         setMinSize(50, 50);
         setPrefSize(480, 360);
-    }
-
-    private void resized(Runnable onResize) {
-        resizes++;
-        onResize.run();
-    }
-
-    /** How often the width or the height changed (a redraw without new data is due then). */
-    public long resizes() {
-        return resizes;
     }
 }

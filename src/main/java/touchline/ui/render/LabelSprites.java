@@ -32,7 +32,6 @@ public final class LabelSprites {
             return size() > KEPT;
         }
     };
-    private long rendered;
 
     public LabelSprites(Font font) {
         text.setFont(font);
@@ -43,13 +42,7 @@ public final class LabelSprites {
         return kept.computeIfAbsent(new Key(s, Raster.opaque(colour), scale), k -> render(s, colour, scale));
     }
 
-    /** How many labels were rendered (not found among the kept ones) so far. */
-    long rendered() {
-        return rendered;
-    }
-
     private Raster.Sprite render(String s, Color colour, double scale) {
-        rendered++;
         text.setText(s);
         text.setFill(colour);
         SnapshotParameters p = new SnapshotParameters();

@@ -51,8 +51,6 @@ public final class PlotDrawing {
     private final ColumnSpans spans = new ColumnSpans();
     private double[] sx = new double[256];
     private double[] sy = new double[256];
-    private int points;
-    private int drawnPoints;
     private boolean axisPerSeries;
     private YAxes axes = new YAxes(List.of(), new int[0], false);
 
@@ -65,41 +63,14 @@ public final class PlotDrawing {
         return pane;
     }
 
-    /** Points in the window over all series at the last draw. */
-    public int points() {
-        return points;
-    }
-
-    /** Points drawn after per-column decimation at the last draw. */
-    public int drawnPoints() {
-        return drawnPoints;
-    }
-
-    /** The raster drawn last (for tests). */
-    Raster raster() {
-        return raster;
-    }
-
-    /** The labels rendered so far (for tests: a label seen before is not rendered again). */
-    long labelsRendered() {
-        return labels.rendered();
-    }
-
     /** One y axis per series rather than one per unit (drawn from the next frame). */
     public void axisPerSeries(boolean on) {
         axisPerSeries = on;
     }
 
-    /** The y axes of the last draw (for tests). */
-    YAxes axes() {
-        return axes;
-    }
-
     public void empty() {
         raster.begin(pane, BACKGROUND_ARGB);
         raster.show(pane);
-        points = 0;
-        drawnPoints = 0;
     }
 
     /** Draws the series' last {@link #WINDOW_SECONDS} (x oldest first); returns the points in the window. */
@@ -130,18 +101,14 @@ public final class PlotDrawing {
             from = 0;
         }
         drawAxes(from, newest, pw, ph);
-        int drawn = 0;
         for (int k = 0; k < starts.length; k++) {
             PlotStore.SeriesData d = series.get(k);
             YAxes.Axis axis = axes.of(k);
             decimation.run(d.x(), d.y(), starts[k], d.count(), from, newest, (int) Math.ceil(pw));
-            drawn += decimation.size();
             drawSeries(PALETTE_ARGB[k % PALETTE.length], from, newest, axis.y0(), axis.y1(), pw, ph);
         }
         drawLegend(series, w);
         raster.show(pane);
-        points = total;
-        drawnPoints = drawn;
         return total;
     }
 

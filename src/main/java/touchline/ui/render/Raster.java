@@ -76,16 +76,6 @@ public final class Raster {
         return scale;
     }
 
-    /** The pixels, row by row ({@link #width()} a row; the array may be longer). */
-    int[] pixels() {
-        return pixels;
-    }
-
-    /** One device pixel (for tests). */
-    int pixel(int x, int y) {
-        return pixels[y * width + x];
-    }
-
     void fill(int argb) {
         Arrays.fill(pixels, 0, width * height, argb);
     }

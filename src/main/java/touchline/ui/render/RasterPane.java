@@ -25,7 +25,6 @@ public final class RasterPane extends DrawnPane {
     private int back;
     private int width;
     private int height;
-    private long shown;
 
     public RasterPane(Runnable onResize) {
         super(onResize);
@@ -61,16 +60,5 @@ public final class RasterPane extends DrawnPane {
         view.setFitWidth(scale == 1 ? 0 : width / scale);
         view.setFitHeight(scale == 1 ? 0 : height / scale);
         back ^= 1;
-        shown++;
-    }
-
-    /** How often new pixels were shown (for tests). */
-    public long shown() {
-        return shown;
-    }
-
-    /** The image on screen (for tests), null before the first {@link #showBack}. */
-    public WritableImage image() {
-        return shown == 0 ? null : images[back ^ 1];
     }
 }

@@ -70,10 +70,6 @@ final class TimelineCanvas {
         }
     }
 
-    List<TimelineEvent> events() {
-        return events;
-    }
-
     /** The x of {@code micros} on a bar {@code width} wide. */
     static double xAt(long micros, long start, long end, double width) {
         double f = end <= start ? 0 : (double) (micros - start) / (end - start);
@@ -86,8 +82,8 @@ final class TimelineCanvas {
         return start + Math.round(Math.max(0, Math.min(1, f)) * (end - start));
     }
 
-    /** The screen x of a time on this canvas now (for tests that click an event). */
-    double xOf(long micros) {
+    /** The x of a time on this canvas now. */
+    private double xOf(long micros) {
         return state == null ? PAD : xAt(micros, state.startMicros(), state.endMicros(), pane.getWidth());
     }
 

@@ -37,11 +37,6 @@ final class NameDialog {
         });
     }
 
-    /** The dialog, for tests and for a caller that shows it without waiting. */
-    TextInputDialog dialog() {
-        return dialog;
-    }
-
     /** Shows it without blocking; {@code onName} gets the name given, stripped, when OK closes it (not on Cancel or blank). */
     void ask(Consumer<String> onName) {
         dialog.setOnHidden(e -> Optional.ofNullable(dialog.getResult()).map(String::strip).filter(n -> !n.isEmpty())

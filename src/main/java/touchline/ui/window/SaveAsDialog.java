@@ -41,11 +41,6 @@ public final class SaveAsDialog {
         });
     }
 
-    /** The dialog, for tests. */
-    public TextInputDialog dialog() {
-        return dialog;
-    }
-
     /** Shows it without blocking; {@code onChosen} gets the path given when OK closes it (nothing on Cancel). */
     public void ask(Consumer<Path> onChosen) {
         dialog.setOnHidden(e -> {

@@ -7,6 +7,7 @@ import touchline.app.ConsoleConfig;
 import touchline.record.PlayerState;
 import touchline.record.ReplayNotes;
 import touchline.record.TimelineEvent;
+import touchline.testing.Await;
 import touchline.transport.UdpConfig;
 
 import java.nio.file.Path;
@@ -31,31 +32,42 @@ class ReplayViewModelTest {
         assertEquals(Optional.empty(), ReplayViewModel.refusal(sample));
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start()) {
-            ReplayViewModel model = new ReplayViewModel(console.replays());
-            assertTrue(model.current().isEmpty());
-            model.open(SessionFiles.parse(sample));
-            assertTrue(model.current().isPresent(), "the typed recording is open");
-            assertEquals(List.of(), ReplayViewModel.alignedFiles(model.current().get()), "one file: nothing aligned");
-            model.closeReplay();
-            assertTrue(model.current().isEmpty());
+            try (ReplayViewModel model = new ReplayViewModel(console.replays(), console.teamSchemas())) {
+                assertTrue(model.current().isEmpty());
+                model.open(sample);
+                assertEquals(new ReplayViewModel.Message("Opening demo-team.mcap …", false), model.message());
+                Await.until("the typed recording is open, and said so", () -> {
+                    model.refresh();
+                    return model.hasReplay() && model.message().text().equals("Opened demo-team.mcap.");
+                });
+                assertEquals(List.of(), model.alignedFiles(), "one file: nothing aligned");
+                model.closeReplay();
+                Await.until("the replay closed, and its message with it", () -> model.refresh() == ReplayViewModel.Pulled.NEW_REPLAY);
+                assertTrue(model.current().isEmpty());
+                assertEquals(new ReplayViewModel.Message("", false), model.message());
+                assertEquals("No recording open.", model.positionLine());
+
+                model.open(" ");
+                assertEquals(new ReplayViewModel.Message("Type or choose a recording to open.", true), model.message());
+            }
         }
     }
 
     @Test
     void loopBNeedsAAndADifferentTimeAndLoopsEitherWay() {
-        ReplayViewModel model = new ReplayViewModel(null);
+        LoopMarks model = new LoopMarks();
         assertEquals("Set A first", model.markB(at(5_000_000, true, -1, -1)).refusal());
         assertEquals("A at 0:09.0, now set B", model.markA(at(10_000_000, true, -1, -1)));
         assertEquals(Optional.empty(), model.loopLine(at(10_000_000, true, 2_000_000, 3_000_000)), "marking: no loop line");
         assertEquals("A and B are the same time", model.markB(at(10_000_000, true, -1, -1)).refusal());
-        ReplayViewModel.LoopB b = model.markB(at(4_000_000, true, -1, -1));
+        LoopMarks.LoopB b = model.markB(at(4_000_000, true, -1, -1));
         assertNull(b.refusal());
         assertEquals(4_000_000, b.fromMicros());
         assertEquals(10_000_000, b.toMicros());
         assertEquals("Set A first", model.markB(at(6_000_000, true, -1, -1)).refusal(), "a loop set forgets A");
         assertEquals(Optional.of("Loop 0:03.0–0:09.0"), model.loopLine(at(6_000_000, true, 4_000_000, 10_000_000)));
         model.markA(at(7_000_000, true, -1, -1));
-        model.clearMark();
+        model.clear();
         assertEquals("Set A first", model.markB(at(8_000_000, true, -1, -1)).refusal());
     }
 

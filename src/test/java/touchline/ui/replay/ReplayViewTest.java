@@ -30,6 +30,7 @@ import touchline.ui.frame.ViewSource;
 import javax.imageio.ImageIO;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Random;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
@@ -92,11 +93,10 @@ class ReplayViewTest {
     @Test
     void aSeekWhilePausedShowsTheStateAtThePlayHead() throws Exception {
         openFile(SAMPLE);
-        await(20, () -> !view.shownEvents().isEmpty());
+        List<TimelineEvent> events = shownEvents();
         robot.clickOn("#replay-live"); // replay alone
         robot.clickOn("#replay-next-goal");
-        TimelineEvent goal = fx(() -> view.shownEvents().stream()
-                .filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow());
+        TimelineEvent goal = events.stream().filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow();
         await(5, () -> state().positionMicros() == goal.timeMicros());
         assertFalse(state().playing(), "never played");
         await(20, () -> console.field().robots().robots().size() == 3);
@@ -109,11 +109,12 @@ class ReplayViewTest {
     @Test
     void theSamplePlaysIntoTheModelAndSeeksToTheGoal() throws Exception {
         openFile(SAMPLE);
-        await(20, () -> !view.shownEvents().isEmpty());
-        assertTrue(fx(() -> view.shownEvents().stream().map(TimelineEvent::type).distinct().count()) == 3,
-                "goal, state changes and the robot drop-out are on the timeline");
-        TimelineEvent goal = fx(() -> view.shownEvents().stream()
-                .filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow());
+        List<TimelineEvent> events = shownEvents();
+        List<String> ticks = fx(() -> events.stream().map(this::tickSeen).toList());
+        assertEquals(java.util.Set.of("GOAL", "STATE_CHANGE", "ROBOT_LOST"), ticks.stream().filter(t -> t.startsWith("yes "))
+                        .map(t -> t.split(" ")[1]).collect(java.util.stream.Collectors.toSet()),
+                () -> "goal, state changes and the robot drop-out are on the timeline, each in its colour: " + ticks);
+        TimelineEvent goal = events.stream().filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow();
 
         robot.clickOn("#replay-live"); // replay alone: the model's clock follows the replay
         assertFalse(console.field().liveListening());
@@ -128,7 +129,7 @@ class ReplayViewTest {
         await(5, () -> !state().playing());
 
         // click the very left of the timeline: back to the start
-        Bounds b = fx(() -> view.timeline().node().localToScreen(view.timeline().node().getBoundsInLocal()));
+        Bounds b = fx(() -> timeline().localToScreen(timeline().getBoundsInLocal()));
         robot.clickOn(new Point2D(b.getMinX() + TimelineCanvas.PAD, b.getCenterY()));
         await(5, () -> state().positionMicros() == state().startMicros());
 
@@ -140,21 +141,20 @@ class ReplayViewTest {
         // playing, "next state change" lands on the event (plus at most a frame's worth of play); the
         // event is 5 s before the end, so the replay then plays to its end and stops by itself (a
         // click to pause could come after the end on a loaded machine and start it again)
-        TimelineEvent finished = fx(() -> view.shownEvents().stream().filter(e -> e.type() == TimelineEvent.Type.STATE_CHANGE
-                && e.timeMicros() > goal.timeMicros()).findFirst().orElseThrow());
+        TimelineEvent finished = events.stream().filter(e -> e.type() == TimelineEvent.Type.STATE_CHANGE
+                && e.timeMicros() > goal.timeMicros()).findFirst().orElseThrow();
         robot.clickOn("#replay-play");
         robot.clickOn("#replay-next-state");
         await(20, () -> state().positionMicros() >= finished.timeMicros());
         await(20, () -> !state().playing());
 
         // loop A at the goal, B ten seconds later
-        robot.clickOn(new Point2D(fx(() -> view.timeline().node().localToScreen(
-                view.timeline().xOf(goal.timeMicros()), 0).getX()), b.getCenterY()));
+        robot.clickOn(new Point2D(fx(() -> timeline().localToScreen(xOf(goal.timeMicros()), 0).getX()), b.getCenterY()));
         await(5, () -> Math.abs(state().positionMicros() - goal.timeMicros()) < 2_000_000);
         long a = state().positionMicros();
         robot.clickOn("#replay-loop-a");
-        robot.clickOn(new Point2D(fx(() -> view.timeline().node().localToScreen(
-                view.timeline().xOf(goal.timeMicros() + 10_000_000), 0).getX()), b.getCenterY()));
+        robot.clickOn(new Point2D(fx(() -> timeline().localToScreen(xOf(goal.timeMicros() + 10_000_000), 0).getX()),
+                b.getCenterY()));
         await(5, () -> state().positionMicros() > a + 5_000_000);
         long bTime = state().positionMicros();
         robot.clickOn("#replay-loop-b");
@@ -210,7 +210,7 @@ class ReplayViewTest {
         Files.write(cut, java.util.Arrays.copyOf(whole, whole.length / 2));
         openFile(cut);
         await(20, () -> !robot.lookup("#replay-problems").queryAs(ListView.class).getItems().isEmpty());
-        await(20, () -> !view.shownEvents().isEmpty());
+        assertFalse(shownEvents().isEmpty());
         assertTrue(window.scene().getWindow().isShowing());
     }
 
@@ -264,7 +264,7 @@ class ReplayViewTest {
         robot.clickOn("#record-toggle");
         await(10, () -> robot.lookup("#record-counters").queryAs(Label.class).getText().startsWith("Recording:"));
         openFile(SAMPLE);
-        await(20, () -> !view.shownEvents().isEmpty());
+        shownEvents();
         chooseSpeed(50.0);
         robot.clickOn("#replay-play");
         // the recorder takes the live stream, never the replay (issue 38): the field's traffic goes on
@@ -323,15 +323,14 @@ class ReplayViewTest {
         awaitShown();
         robot.clickOn("#replay-live");
         openFile(Path.of("samples/demo-team.mcap")); // relative, as a user would type it
-        await(20, () -> !view.shownEvents().isEmpty());
+        List<TimelineEvent> events = shownEvents();
         chooseSpeed(50.0);
         robot.clickOn("#replay-play");
         await(20, () -> state().positionMicros() - state().startMicros() > 60_000_000L);
         robot.clickOn("#replay-play");
         await(5, () -> !state().playing());
         // a loop around the goal, then play on at normal speed from just before it
-        long goal = fx(() -> view.shownEvents().stream().filter(e -> e.type() == TimelineEvent.Type.GOAL)
-                .findFirst().orElseThrow().timeMicros());
+        long goal = events.stream().filter(e -> e.type() == TimelineEvent.Type.GOAL).findFirst().orElseThrow().timeMicros();
         clickTimeline(goal - 20_000_000);
         robot.clickOn("#replay-loop-a");
         clickTimeline(goal + 15_000_000);
@@ -381,18 +380,59 @@ class ReplayViewTest {
     }
 
     private void clickTimeline(long micros) throws Exception {
-        Point2D p = fx(() -> view.timeline().node().localToScreen(view.timeline().xOf(micros),
-                view.timeline().node().getLayoutBounds().getHeight() / 2));
+        Point2D p = fx(() -> timeline().localToScreen(xOf(micros), timeline().getLayoutBounds().getHeight() / 2));
         robot.clickOn(p);
     }
 
-    /** Types {@code text} into the file field and opens it (as Enter in the field does). */
+    /** Types {@code text} into the file field and presses Enter in it. */
     private void openText(String text) throws Exception {
         fx(() -> {
-            robot.lookup("#replay-path").queryAs(TextField.class).setText(text);
-            view.open();
+            TextField field = robot.lookup("#replay-path").queryAs(TextField.class);
+            field.setText(text);
+            field.fireEvent(new javafx.event.ActionEvent());
             return null;
         });
+    }
+
+    /**
+     * The open replay's events once the timeline shows them: the position line counts them then (it
+     * says "reading events…" while the scan thread reads them).
+     */
+    private List<TimelineEvent> shownEvents() throws Exception {
+        await(20, () -> robot.lookup("#replay-position").queryAs(Label.class).getText().matches(".*  ·  [1-9][0-9,]* events"));
+        return console.replays().current().orElseThrow().events();
+    }
+
+    private javafx.scene.layout.Region timeline() {
+        return robot.lookup("#replay-timeline").queryAs(javafx.scene.layout.Region.class);
+    }
+
+    /** The x of a time on the timeline now (FX thread), as the timeline maps it. */
+    private double xOf(long micros) throws Exception {
+        PlayerState s = state();
+        return TimelineCanvas.xAt(micros, s.startMicros(), s.endMicros(), timeline().getWidth());
+    }
+
+    /** What the timeline shows at the event's tick: "yes"/"no" and the colours seen (FX thread). */
+    private String tickSeen(TimelineEvent e) {
+        try {
+            javafx.scene.layout.Region node = timeline();
+            int x = (int) Math.round(xOf(e.timeMicros()));
+            int y = e.type() == TimelineEvent.Type.ROBOT_LOST ? (int) node.getHeight() - 4 : 4;
+            javafx.scene.image.PixelReader pixels = node.snapshot(null, null).getPixelReader();
+            javafx.scene.paint.Color want = TimelineCanvas.colour(e.type());
+            StringBuilder seen = new StringBuilder();
+            boolean found = false;
+            for (int dx = -1; dx <= 1; dx++) {
+                javafx.scene.paint.Color c = pixels.getColor(x + dx, y);
+                seen.append(' ').append(c);
+                found |= Math.abs(c.getRed() - want.getRed()) < 0.05 && Math.abs(c.getGreen() - want.getGreen()) < 0.05
+                        && Math.abs(c.getBlue() - want.getBlue()) < 0.05;
+            }
+            return (found ? "yes " : "no ") + e.type() + " at " + x + "," + y + " want " + want + " saw" + seen;
+        } catch (Exception ex) {
+            throw new AssertionError(ex);
+        }
     }
 
     private void openFile(Path file) throws Exception {

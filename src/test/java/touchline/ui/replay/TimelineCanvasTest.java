@@ -27,9 +27,9 @@ class TimelineCanvasTest {
         assertEquals("0:00.0", TimelineCanvas.clock(0));
         assertEquals("2:00.5", TimelineCanvas.clock(120_500_000L));
         assertEquals("1:00:01", TimelineCanvas.clock(3_601_000_000L));
-        assertEquals("50×", ReplayView.speedText(50));
-        assertEquals("0.1×", ReplayView.speedText(0.1));
-        assertEquals("0.25×", ReplayView.speedText(0.25));
+        assertEquals("50×", ReplayViewModel.speedText(50));
+        assertEquals("0.1×", ReplayViewModel.speedText(0.1));
+        assertEquals("0.25×", ReplayViewModel.speedText(0.25));
         assertEquals("2.5 MiB", RecordPanel.bytes(2_621_440));
     }
 }

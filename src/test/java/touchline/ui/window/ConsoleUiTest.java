@@ -113,7 +113,7 @@ class ConsoleUiTest {
             ui.await(10, () -> ui.view(PlotView.class) != null);
             PlotView plot = ui.view(PlotView.class);
             assertEquals(new ViewSource(3, "demo.plotter"), ui.fx(plot::source));
-            ui.await(10, () -> plot.points() > 0);
+            ui.await(10, () -> ui.plottedPoints(plot) > 0);
 
             // the same with the keyboard only: select, Space, Enter
             ui.fxRun(() -> ui.window.open("options", ViewSource.NONE));

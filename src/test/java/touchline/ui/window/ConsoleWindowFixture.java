@@ -176,6 +176,21 @@ public final class ConsoleWindowFixture implements AutoCloseable {
                 .map(type::cast).findFirst().orElse(null));
     }
 
+    /**
+     * The points a plot shows, as its status line says them ("1 series · 3 points"); -1 before it
+     * says (FX thread; the line changes at most twice a second).
+     */
+    public int plottedPoints(View plot) {
+        String status = robot.from(plot.node()).lookup(".source-status").queryLabeled().getText();
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d+) points").matcher(status);
+        return m.find() ? Integer.parseInt(m.group(1)) : -1;
+    }
+
+    /** The robots' shapes on a field view (FX thread): one per robot placed. */
+    public int robotsOnTheField() {
+        return ((javafx.scene.Parent) robot.lookup("#field-robots").query()).getChildrenUnmodifiable().size();
+    }
+
     @Override
     public void close() throws Exception {
         fxRun(() -> {

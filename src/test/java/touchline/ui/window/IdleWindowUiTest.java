@@ -50,7 +50,7 @@ class IdleWindowUiTest {
                 List.of(new LayoutNode.Entry("field", ""))))));
         ui.console.field().bus().accept(status(ui, 100));
         FieldView field = ui.view(FieldView.class);
-        ui.await(10, () -> field.drawnRobots() == 1);
+        ui.await(10, () -> ui.robotsOnTheField() == 1);
         return field;
     }
 
@@ -62,23 +62,24 @@ class IdleWindowUiTest {
             PlotView plot = ui.view(PlotView.class);
             FramePulse pulse = ui.window.pulse();
             ui.console.field().bus().accept(StoreEnvelopes.plot(ui.console.field().clock().nowMicros(), ROBOT, "calm.plot", "a", 1, 2, 3));
-            ui.await(10, () -> plot.points() == 3);
+            ui.await(10, () -> ui.plottedPoints(plot) == 3);
             // quiet from here: the pulse pulls a few catch-up frames, then stops and says so
             ui.await(30, () -> !pulse.running());
             assertTrue(ui.fx(() -> ui.robot.lookup("#status-bar").queryAs(StatusBar.class).getChildren().stream()
                     .anyMatch(n -> n instanceof javafx.scene.control.Label l && "idle".equals(l.getText()))));
-            long[] before = ui.fx(() -> new long[] {plot.draws(), plot.resizes(), pulse.workFrames()});
+            PlotRedraws counted = ui.fx(() -> new PlotRedraws(plot.node()));
+            long workFrames = ui.fx(pulse::workFrames);
             // a datagram that moves the robot registry but not the plot's data: the idle watch wakes
             // the pulse, the views pull, the plot does not redraw (a resize would be a reason to)
             ui.console.field().bus().accept(StoreEnvelopes.text(ui.console.field().clock().nowMicros(), ROBOT, "demo.text", "hello"));
-            ui.await(10, () -> pulse.workFrames() > before[2]);
+            ui.await(10, () -> pulse.workFrames() > workFrames);
             ui.await(30, () -> !pulse.running());
-            long redraws = ui.fx(plot::draws) - before[0];
-            long resized = ui.fx(plot::resizes) - before[1];
+            long redraws = ui.fx(counted::draws);
+            long resized = ui.fx(counted::resizes);
             assertTrue(redraws <= resized, "redrawn " + redraws + " times without new data, resized " + resized + " times");
             // new data for the plot: woken again, and drawn
             ui.console.field().bus().accept(StoreEnvelopes.plot(ui.console.field().clock().nowMicros(), ROBOT, "calm.plot", "a", 4));
-            ui.await(10, () -> plot.draws() > before[0]); // (older points may have left its 10-s window)
+            ui.await(10, () -> counted.draws() > redraws); // (older points may have left its 10-s window)
         }
     }
 
@@ -90,25 +91,25 @@ class IdleWindowUiTest {
                     .getChildrenUnmodifiable().get(0));
             double at100 = ui.fx(shape::getLayoutX);
             long fieldPaints = ui.fx(field::fieldPaints);
-            long paints = ui.fx(field::paints);
             ui.console.field().bus().accept(status(ui, 900)); // 800 mm towards the opponent goal
-            ui.await(10, () -> ui.fx(shape::getLayoutX) > at100 + 1);
-            assertTrue(ui.fx(field::paints) > paints, "the robot drawn where it is now");
+            ui.await(10, () -> ui.fx(shape::getLayoutX) > at100 + 1); // the robot drawn where it is now
             assertEquals(fieldPaints, (long) ui.fx(field::fieldPaints), "the field itself is not painted again");
-            assertEquals(1, (int) ui.fx(field::drawnRobots));
+            assertEquals(1, (int) ui.fx(ui::robotsOnTheField));
         }
     }
 
     @Test
     void aMinimisedWindowDoesNoFrameWorkAndCatchesUpWhenShownAgain() throws Exception {
         try (ConsoleWindowFixture ui = new ConsoleWindowFixture(layouts)) {
-            FieldView field = fieldWith(ui);
+            fieldWith(ui);
             FramePulse pulse = ui.window.pulse();
             Stage stage = (Stage) ui.window.scene().getWindow();
             ui.fxRun(() -> stage.setIconified(true));
             ui.await(10, () -> stage.isIconified() && !pulse.running());
             long frames = ui.fx(pulse::frames);
-            long paints = ui.fx(field::paints);
+            javafx.scene.Node shape = ui.fx(() -> ((javafx.scene.Parent) ui.robot.lookup("#field-robots").query())
+                    .getChildrenUnmodifiable().get(0));
+            double at100 = ui.fx(shape::getLayoutX);
             ui.console.field().bus().accept(status(ui, 900)); // the robot moves while the window is minimised
             // JavaFX goes on pulsing (a timer of the test's own counts 60 pulses): the console's pulse does nothing
             AtomicLong otherPulses = new AtomicLong();
@@ -123,10 +124,10 @@ class IdleWindowUiTest {
                     .map(r -> r.x() == 900).orElse(false));
             ui.fxRun(counter::stop);
             assertEquals(frames, (long) ui.fx(pulse::frames), "no frame while minimised");
-            assertEquals(paints, (long) ui.fx(field::paints));
+            assertEquals(at100, (double) ui.fx(shape::getLayoutX), "the robot still drawn where it was");
             assertFalse(ui.fx(pulse::running));
             ui.fxRun(() -> stage.setIconified(false));
-            ui.await(10, () -> field.paints() > paints);
+            ui.await(10, () -> shape.getLayoutX() > at100 + 1); // drawn where it is now
         }
     }
 
