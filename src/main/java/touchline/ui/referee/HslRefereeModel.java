@@ -13,13 +13,13 @@ import touchline.game.hsl.HslPlayState;
 import touchline.game.hsl.HslPlayer;
 import touchline.game.hsl.HslState;
 import touchline.game.hsl.HslTeam;
-import touchline.game.hsl.Penalize;
+import touchline.game.hsl.HslPenalize;
 import touchline.game.hsl.SetPlay;
-import touchline.game.hsl.StartSetPlay;
+import touchline.game.hsl.HslStartSetPlay;
 import touchline.game.hsl.StopPlay;
 import touchline.game.hsl.SwitchHalf;
-import touchline.game.hsl.Timeout;
-import touchline.game.hsl.Unpenalize;
+import touchline.game.hsl.HslTimeout;
+import touchline.game.hsl.HslUnpenalize;
 import touchline.game.hsl.WaitForSetPlay;
 import touchline.protocol.gamecontroller.HslPenalty;
 
@@ -120,7 +120,7 @@ public final class HslRefereeModel {
      */
     public HslAction ready() {
         int kicking = state.kickingTeam();
-        return new StartSetPlay(kicking == HslState.NO_TEAM ? teamNumber(0) : kicking, SetPlay.KICK_OFF);
+        return new HslStartSetPlay(kicking == HslState.NO_TEAM ? teamNumber(0) : kicking, SetPlay.KICK_OFF);
     }
 
     public HslAction set() {
@@ -152,11 +152,11 @@ public final class HslRefereeModel {
     }
 
     public HslAction refereeTimeout() {
-        return new Timeout(Timeout.REFEREE);
+        return new HslTimeout(HslTimeout.REFEREE);
     }
 
     public HslAction setPlay(int side, SetPlay kind) {
-        return new StartSetPlay(teamNumber(side), kind);
+        return new HslStartSetPlay(teamNumber(side), kind);
     }
 
     public HslAction goal(int side) {
@@ -164,7 +164,7 @@ public final class HslRefereeModel {
     }
 
     public HslAction timeout(int side) {
-        return new Timeout(teamNumber(side));
+        return new HslTimeout(teamNumber(side));
     }
 
     // ---- penalties: the call first, then the robot ----------------------------------------
@@ -202,7 +202,7 @@ public final class HslRefereeModel {
     public boolean penaltyLegal(HslPenalty call) {
         for (int side = 0; side < 2; side++) {
             for (int n = 1; n <= playersPerTeam(); n++) {
-                if (legal(new Penalize(teamNumber(side), n, call))) {
+                if (legal(new HslPenalize(teamNumber(side), n, call))) {
                     return true;
                 }
             }
@@ -221,7 +221,7 @@ public final class HslRefereeModel {
      */
     public HslAction robotAction(int side, int player) {
         int team = teamNumber(side);
-        return chosen != null ? new Penalize(team, player, chosen) : new Unpenalize(team, player, false);
+        return chosen != null ? new HslPenalize(team, player, chosen) : new HslUnpenalize(team, player, false);
     }
 
     public Outcome pressRobot(int side, int player) {
