@@ -44,9 +44,14 @@ public final class Game implements RefereedGame {
         return engine.now();
     }
 
-    /** Lets time-driven changes happen (then checks legality), applies the action, notifies. */
-    public Outcome perform(Action action) {
-        return engine.perform(action);
+    /**
+     * Lets time-driven changes happen (then checks legality), applies the action, notifies; an
+     * {@link Action} or one every league shares, else refused.
+     */
+    @Override
+    public Outcome perform(LeagueAction<?> action) {
+        LeagueAction<? super GameState> own = RefereeAction.of(action, Action.class);
+        return own == null ? RefereeAction.refused(action) : engine.perform(own);
     }
 
     /** Applies changes that happen as time passes (penalties ending, half-time switch). */
@@ -67,8 +72,9 @@ public final class Game implements RefereedGame {
         return engine.undoList();
     }
 
-    public boolean isLegal(Action action) {
-        return engine.read((s, now) -> action.isLegal(s));
+    public boolean isLegal(LeagueAction<?> action) {
+        LeagueAction<? super GameState> own = RefereeAction.of(action, Action.class);
+        return own != null && engine.read((s, now) -> own.isLegal(s));
     }
 
     @Override

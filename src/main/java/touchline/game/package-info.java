@@ -4,7 +4,8 @@
  * {@code League} strategy ({@code HlLeague} here, {@code hsl.HslLeague}). The Humanoid League (and SPL) rules:
  * a refereed {@code Game} over a {@code GameState} (teams, players,
  * penalties, clocks) changed only by {@code Action}s ({@code ToReady}, {@code ToSet}, {@code ToPlaying}, {@code
- * Penalize}, {@code StartSetPlay}, ...), each answering an {@code Outcome}; league parameters
+ * Penalize}, {@code StartSetPlay}, ...) and by the {@code RefereeAction}s every league shares ({@code Goal}),
+ * which ask a league's state through {@code RefereeState}; each answers an {@code Outcome}; league parameters
  * ({@code LeagueParams}), the text form of actions for the CLI and scripts ({@code ActionSyntax}) and undo ({@code
  * UndoHistory}). Time comes in through {@code GameClock}; {@code RefereedGame} is what senders and receivers need
  * of any league's game.
@@ -16,9 +17,11 @@
  * <tr><td>goal</td><td>legal in PLAYING for a team of the game, in a shoot-out only for the kicking
  * team; score +1; in a shoot-out the shot is marked in singleShots and over; else READY with the
  * other team's kick-off</td><td>HSL: no goal counts for a team marked for illegal communication; the
- * mercy rule ends the game; a stoppage starts (a timeout gives READY/SET back). HL: a shot over is
- * FINISHED, HSL: FINISHED with the other team to shoot</td><td>not yet one class: the
- * differences are each league's state, not parameters; see below</td></tr>
+ * mercy rule (10 goals) ends the game, HL has none; READY starts a stoppage (a timeout gives
+ * READY/SET back). A shot over is FINISHED, in HSL with the other team to shoot</td><td>one class,
+ * {@code Goal} (a {@code RefereeAction}): the rule once, each difference a question to the league's
+ * {@code RefereeState} ({@code countGoal}, {@code mercyGoals}, {@code shotScored}, {@code
+ * readyForKickOff})</td></tr>
  * <tr><td>penalty shoot-out</td><td>legal when the second half (HSL: or extra time) ended level and
  * no shoot-out runs; INITIAL; shot counters 0</td><td>HL: the team that kicked off the game shoots
  * first and the players stay; HSL: the referee names the first team, every player becomes a

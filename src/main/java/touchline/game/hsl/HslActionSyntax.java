@@ -1,5 +1,7 @@
 package touchline.game.hsl;
 
+import touchline.game.Goal;
+import touchline.game.LeagueAction;
 import touchline.protocol.gamecontroller.HslPenalty;
 
 import java.util.Locale;
@@ -18,7 +20,7 @@ public final class HslActionSyntax {
      * @param action the action, null on error
      * @param error  the error text, null when parsed
      */
-    public record Parsed(HslAction action, String error) {
+    public record Parsed(LeagueAction<? super HslState> action, String error) {
         static Parsed error(String text) {
             return new Parsed(null, text);
         }
@@ -108,7 +110,7 @@ public final class HslActionSyntax {
         }
     }
 
-    private static Parsed args(String[] w, int expected, HslAction a) {
+    private static Parsed args(String[] w, int expected, LeagueAction<? super HslState> a) {
         return w.length - 1 == expected ? new Parsed(a, null)
                 : Parsed.error("'" + w[0] + "' takes " + expected + " argument(s), got " + (w.length - 1));
     }

@@ -1,7 +1,9 @@
 package touchline.game.hsl;
 
 import touchline.game.GameClock;
+import touchline.game.LeagueAction;
 import touchline.game.Outcome;
+import touchline.game.RefereeAction;
 import touchline.game.RefereeEngine;
 import touchline.game.RefereedGame;
 import touchline.protocol.gamecontroller.GameControlData;
@@ -67,9 +69,14 @@ public final class HslGame implements RefereedGame {
         return engine.now();
     }
 
-    /** Lets time pass, checks legality, applies the action (also to the robots' held copy), notifies. */
-    public Outcome perform(HslAction action) {
-        return engine.perform(action);
+    /**
+     * Lets time pass, checks legality, applies the action (also to the robots' held copy), notifies;
+     * an {@link HslAction} or one every league shares, else refused.
+     */
+    @Override
+    public Outcome perform(LeagueAction<?> action) {
+        LeagueAction<? super HslState> own = RefereeAction.of(action, HslAction.class);
+        return own == null ? RefereeAction.refused(action) : engine.perform(own);
     }
 
     @Override
@@ -88,10 +95,11 @@ public final class HslGame implements RefereedGame {
         return engine.undoList();
     }
 
-    public boolean isLegal(HslAction action) {
-        return engine.read((s, now) -> {
+    public boolean isLegal(LeagueAction<?> action) {
+        LeagueAction<? super HslState> own = RefereeAction.of(action, HslAction.class);
+        return own != null && engine.read((s, now) -> {
             s.advance(now);
-            return action.isLegal(s);
+            return own.isLegal(s);
         });
     }
 

@@ -1,5 +1,6 @@
 package touchline.game.hsl;
 
+import touchline.game.RefereeState;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.RobotInfo;
@@ -20,7 +21,7 @@ import java.util.List;
  * which of them run in which state, the next expiry among them and what an expiry changes are
  * one rule of the official GameController: split apart, each part would ask the others the state.
  */
-public final class HslState {
+public final class HslState implements RefereeState {
 
     /** {@link #kickingTeam} when no team kicks (dropped ball, FINISHED, open play). */
     public static final int NO_TEAM = -1;
@@ -128,6 +129,7 @@ public final class HslState {
     }
 
     /** Team number of the kicking team, or {@link #NO_TEAM}. */
+    @Override
     public int kickingTeam() {
         return kickingTeam;
     }
@@ -306,6 +308,50 @@ public final class HslState {
         } else if (secondary == SecondaryTimer.SET_PLAY) {
             endSetPlay();
         }
+    }
+
+    // ---- what the actions every league shares ask (RefereeState) -------------------------
+
+    @Override
+    public boolean playing() {
+        return state == HslPlayState.PLAYING;
+    }
+
+    @Override
+    public boolean inShootout() {
+        return phase == HslPhase.PENALTY_SHOOT_OUT;
+    }
+
+    @Override
+    public int mercyGoals() {
+        return rules.mercyGoals();
+    }
+
+    /** Not for a team marked for illegal communication. */
+    @Override
+    public void countGoal(int team) {
+        HslTeam t = team(team);
+        t.score += t.illegalCommunication ? 0 : 1;
+    }
+
+    @Override
+    public void shotScored(int team, long nowMs) {
+        HslTeam t = team(team);
+        t.singleShots |= 1 << (t.penaltyShot - 1);
+        endShot();
+    }
+
+    @Override
+    public void endGame(long nowMs) {
+        firstHalf = false;
+        finish();
+    }
+
+    /** READY after a stoppage (a timeout gives the time since back). */
+    @Override
+    public void readyForKickOff(int team, long nowMs) {
+        beginStoppage();
+        enterReady(SetPlay.KICK_OFF, team);
     }
 
     // ---- changes shared by actions -----------------------------------------------------
