@@ -86,6 +86,7 @@ public final class GameState implements RefereeState {
         return state;
     }
 
+    @Override
     public boolean firstHalf() {
         return firstHalf;
     }
@@ -190,6 +191,16 @@ public final class GameState implements RefereeState {
         return kickOffTeam;
     }
 
+    @Override
+    public boolean finished() {
+        return state == PlayState.FINISHED;
+    }
+
+    @Override
+    public int gameKickOffTeam() {
+        return firstHalfKickOffTeam;
+    }
+
     /** None: the HL GameController ends no game early. */
     @Override
     public int mercyGoals() {
@@ -213,6 +224,18 @@ public final class GameState implements RefereeState {
     public void endGame(long nowMs) {
         firstHalf = false;
         enter(PlayState.FINISHED, nowMs);
+    }
+
+    /** Secondary state PENALTYSHOOT, the clock restarted and penalties lifted; each kick is SET, PLAYING, FINISHED. */
+    @Override
+    public void beginShootout(int first, long nowMs) {
+        secondary = SecondaryState.PENALTYSHOOT;
+        kickOffTeam = first;
+        for (TeamState t : teams) {
+            t.penaltyShot = 0;
+            t.singleShots = 0;
+        }
+        restartClock(nowMs);
     }
 
     /** READY with the ready countdown, any set play over, no ball-free countdown. */

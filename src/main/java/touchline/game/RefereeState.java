@@ -35,6 +35,14 @@ public interface RefereeState {
         return teamOnSide(teamOnSide(0).number() == number ? 1 : 0).number();
     }
 
+    /** FINISHED (a half, a shot or the game). */
+    boolean finished();
+
+    boolean firstHalf();
+
+    /** Team number of the team that kicked off the game. */
+    int gameKickOffTeam();
+
     /** The goal difference that ends the game at once (the mercy rule), 0 for none. */
     int mercyGoals();
 
@@ -51,6 +59,9 @@ public interface RefereeState {
 
     /** The game is over (no half-time, no second half). */
     void endGame(long nowMs);
+
+    /** The penalty shoot-out begins with {@code first} to shoot: INITIAL, both teams' shot counters 0. */
+    void beginShootout(int first, long nowMs);
 
     /** Play stopped for a kick-off of {@code team}: READY. */
     void readyForKickOff(int team, long nowMs);

@@ -4,7 +4,8 @@
  * {@code League} strategy ({@code HlLeague} here, {@code hsl.HslLeague}). The Humanoid League (and SPL) rules:
  * a refereed {@code Game} over a {@code GameState} (teams, players,
  * penalties, clocks) changed only by {@code Action}s ({@code ToReady}, {@code ToSet}, {@code ToPlaying}, {@code
- * Penalize}, {@code StartSetPlay}, ...) and by the {@code RefereeAction}s every league shares ({@code Goal}),
+ * Penalize}, {@code StartSetPlay}, ...) and by the {@code RefereeAction}s every league shares ({@code Goal},
+ * {@code StartPenaltyShootout}),
  * which ask a league's state through {@code RefereeState}; each answers an {@code Outcome}; league parameters
  * ({@code LeagueParams}), the text form of actions for the CLI and scripts ({@code ActionSyntax}) and undo ({@code
  * UndoHistory}). Time comes in through {@code GameClock}; {@code RefereedGame} is what senders and receivers need
@@ -26,7 +27,8 @@
  * no shoot-out runs; INITIAL; shot counters 0</td><td>HL: the team that kicked off the game shoots
  * first and the players stay; HSL: the referee names the first team, every player becomes a
  * substitute until its team selects a shooter ({@code hsl.SelectShooter}), the shot clock is set</td>
- * <td>not yet one class: see below</td></tr>
+ * <td>one class, {@code StartPenaltyShootout}: the first shooter a parameter ({@code GAME_KICK_OFF} or a
+ * team), the shoot-out itself the league's {@code RefereeState.beginShootout}</td></tr>
  * <tr><td>penalise</td><td>a team's valid player without a penalty; never NONE or SUBSTITUTE</td>
  * <td>HL: the timer of a timed penalty starts with the call and ends it by itself ({@code
  * LeagueParams.penaltySeconds}). HSL: the operator starts the timer when the robot is outside,

@@ -2,6 +2,7 @@ package touchline.game.hsl;
 
 import touchline.game.Goal;
 import touchline.game.LeagueAction;
+import touchline.game.StartPenaltyShootout;
 import touchline.protocol.gamecontroller.HslPenalty;
 
 import java.util.Locale;

@@ -119,6 +119,7 @@ public final class HslState implements RefereeState {
         return stopped;
     }
 
+    @Override
     public boolean firstHalf() {
         return firstHalf;
     }
@@ -323,6 +324,16 @@ public final class HslState implements RefereeState {
     }
 
     @Override
+    public boolean finished() {
+        return state == HslPlayState.FINISHED;
+    }
+
+    @Override
+    public int gameKickOffTeam() {
+        return firstKickOffTeam;
+    }
+
+    @Override
     public int mercyGoals() {
         return rules.mercyGoals();
     }
@@ -345,6 +356,28 @@ public final class HslState implements RefereeState {
     public void endGame(long nowMs) {
         firstHalf = false;
         finish();
+    }
+
+    /**
+     * As the official GameController: the shot's clock set, every player off as a substitute and no
+     * goalkeeper until each team selects its player ({@link SelectShooter}).
+     */
+    @Override
+    public void beginShootout(int first, long nowMs) {
+        phase = HslPhase.PENALTY_SHOOT_OUT;
+        state = HslPlayState.INITIAL;
+        kickingTeam = first;
+        clockMs = rules.penaltyShotMs();
+        switchHalfMs = -1;
+        startSecondary(SecondaryTimer.NONE, 0);
+        for (HslTeam t : teams) {
+            t.goalkeeper = 0;
+            t.penaltyShot = 0;
+            t.singleShots = 0;
+            for (HslPlayer p : t.players) {
+                p.penalise(HslPenalty.SUBSTITUTE, 0, false);
+            }
+        }
     }
 
     /** READY after a stoppage (a timeout gives the time since back). */

@@ -8,10 +8,14 @@ import touchline.game.LeagueParams;
 import touchline.game.ManualClock;
 import touchline.game.Outcome;
 import touchline.game.RefereedGame;
+import touchline.game.StartPenaltyShootout;
+import touchline.game.ToFinished;
 import touchline.game.ToPlaying;
 import touchline.game.ToReady;
 import touchline.game.ToSet;
 import touchline.protocol.gamecontroller.GameControlData;
+import touchline.protocol.gamecontroller.HslPenalty;
+import touchline.protocol.gamecontroller.RobotInfo;
 
 import java.util.List;
 
@@ -84,5 +88,54 @@ class SharedActionsTest {
         assertFalse(o.applied());
         assertEquals("kick off 5 is not an action of this game's rules", o.message());
         assertFalse(hsl.perform(new ToReady()).applied());
+    }
+
+    @Test
+    void oneShootOutStartsWhereBothLeaguesAgreeTheFirstShooterIsAParameterThePlayersTheLeagues() {
+        StartPenaltyShootout gameKickOff = new StartPenaltyShootout();
+        for (LeagueAction<?> a : List.of(new ToReady(), new ToSet(), new ToPlaying(), new ToFinished(),
+                new ToReady(), new ToSet(), new ToPlaying())) {
+            ok(hl, a);
+        }
+        for (LeagueAction<?> a : List.of(new HslStartSetPlay(5, SetPlay.KICK_OFF), new WaitForSetPlay(),
+                new FreeSetPlay(), new FinishHalf(), new SwitchHalf(), new HslStartSetPlay(14, SetPlay.KICK_OFF),
+                new WaitForSetPlay(), new FreeSetPlay())) {
+            ok(hsl, a);
+        }
+        assertFalse(hl.perform(gameKickOff).applied(), "HL: not before the second half finished");
+        assertFalse(hsl.perform(gameKickOff).applied(), "HSL: not before the second half finished");
+        ok(hl, new ToFinished());
+        ok(hsl, new FinishHalf());
+
+        ok(hl, gameKickOff);
+        ok(hsl, gameKickOff);
+        assertFalse(hl.perform(gameKickOff).applied(), "HL: one shoot-out");
+        assertFalse(hsl.perform(gameKickOff).applied(), "HSL: one shoot-out");
+
+        GameControlData l = hl.trueData();
+        GameControlData h = hsl.trueData();
+        for (GameControlData d : List.of(l, h)) {
+            assertEquals(GameControlData.STATE_INITIAL, d.state());
+            assertEquals(5, d.kickOffTeam(), "the team that kicked off the game shoots first");
+        }
+        assertEquals(1, l.secondaryState(), "HL: secondary state PENALTYSHOOT");
+        assertEquals(1, h.gamePhase(), "HSL: game phase PENALTY_SHOOT_OUT");
+        RobotInfo hlPlayer = l.team(5).players().get(0);
+        RobotInfo hslPlayer = h.team(5).players().get(0);
+        assertEquals(0, hlPlayer.penalty(), "HL: the players stay on");
+        assertEquals(HslPenalty.SUBSTITUTE.neutral(), hslPlayer.penalty(), "HSL: off until the team selects its shooter");
+        assertEquals(List.of("penaltyshootout", "finish"), hl.undoList().subList(0, 2));
+    }
+
+    @Test
+    void theRefereeNamesTheFirstShooter() {
+        for (LeagueAction<?> a : List.of(new HslStartSetPlay(5, SetPlay.KICK_OFF), new FinishHalf(), new SwitchHalf(),
+                new HslStartSetPlay(14, SetPlay.KICK_OFF), new FinishHalf())) {
+            ok(hsl, a);
+        }
+        assertFalse(hsl.perform(new StartPenaltyShootout(99)).applied(), "not a team of the game");
+        ok(hsl, new StartPenaltyShootout(14));
+        assertEquals(14, hsl.trueData().kickOffTeam());
+        assertEquals("penalty shoot-out, 14 first", hsl.undoList().get(0), "as the HSL undo list always named it");
     }
 }
