@@ -38,6 +38,9 @@ public final class GameState implements RefereeState {
     int blockSeconds;
 
     GameState(LeagueParams params, int teamA, int colourA, int teamB, int colourB, long nowMs) {
+        if (teamA == teamB) {
+            throw new IllegalArgumentException("the two teams need different numbers");
+        }
         this.params = params;
         teams[0] = new TeamState(teamA, colourA, params.playersPerTeam());
         teams[1] = new TeamState(teamB, colourB, params.playersPerTeam());

@@ -53,6 +53,13 @@ public final class HslState implements RefereeState {
 
     HslState(HslRules rules, int leftTeam, TeamColour[] leftColours, int rightTeam, TeamColour[] rightColours,
              long nowMs) {
+        if (leftTeam == rightTeam) {
+            throw new IllegalArgumentException("the two teams need different numbers");
+        }
+        String bad = HslGame.colourConflict(leftColours, rightColours);
+        if (bad != null) {
+            throw new IllegalArgumentException(bad);
+        }
         this.rules = rules;
         teams = new HslTeam[]{new HslTeam(leftTeam, leftColours[0], leftColours[1], rules),
                 new HslTeam(rightTeam, rightColours[0], rightColours[1], rules)};
