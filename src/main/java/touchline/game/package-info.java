@@ -1,7 +1,8 @@
 /**
  * The referee's game as a library, pure. One engine for every league, {@code RefereeEngine}: a state changed
  * only by {@code LeagueAction}s (legality, undo, listeners), with what differs between leagues in a
- * {@code League} strategy ({@code HlLeague} here, {@code hsl.HslLeague}). The Humanoid League (and SPL) rules:
+ * {@code League} strategy ({@code HlLeague} here, {@code hsl.HslLeague}); {@code LeagueGame} is that engine with
+ * a league, taking the league's own actions and those every league shares. The Humanoid League (and SPL) rules:
  * a refereed {@code Game} over a {@code GameState} (teams, players,
  * penalties, clocks) changed only by {@code Action}s ({@code ToReady}, {@code ToSet}, {@code ToPlaying}, {@code
  * Penalize}, {@code StartSetPlay}, ...) and by the {@code RefereeAction}s every league shares ({@code Goal},
@@ -42,12 +43,13 @@
  * substitutes stay out</td><td>two classes, {@code Unpenalize} and {@code hsl.HslUnpenalize}: the
  * HSL press is a two-step procedure HL does not have</td></tr>
  * <tr><td>timeout</td><td>a team timeout outside PLAYING while the team has one left</td><td>HL:
- * INITIAL with secondary TIMEOUT, only when no set play or other timeout runs; {@code ToReady} ends
+ * INITIAL with secondary TIMEOUT, from INITIAL, READY or SET with secondary state NORMAL; {@code ToReady} ends
  * it. HSL: a state of its own; also a referee timeout (also in play); penalty timers stop, time
  * since the last stoppage is given back, a timeout in a timeout adds to it, the other team kicks
  * off after it</td><td>two classes, {@code Timeout} and {@code hsl.HslTimeout}: different
  * procedures</td></tr>
- * <tr><td>set play</td><td>for a team of the game, starts from PLAYING</td><td>HL: every set play
+ * <tr><td>set play</td><td>for a team of the game, from PLAYING (HSL's kick-off: from INITIAL or a
+ * timeout)</td><td>HL: every set play
  * (penalty kick included) stays in PLAYING with the half clock stopped and the sub-modes READY,
  * PREPARE, EXECUTE ({@code SetPlayStep}). HSL: a kick-off (from INITIAL or a timeout) and a penalty
  * kick go to READY and SET; the others stop play, their 45 s count from "resume"</td><td>two
