@@ -20,6 +20,8 @@ import java.util.List;
  * Over 400 lines because its timers (game clock, shot, secondary time, players' penalties),
  * which of them run in which state, the next expiry among them and what an expiry changes are
  * one rule of the official GameController: split apart, each part would ask the others the state.
+ * It also answers the actions every league shares ({@link RefereeState}, some 80 lines): what a
+ * goal, the mercy rule and a shoot-out change here touches the same timers.
  */
 public final class HslState implements RefereeState {
 
