@@ -16,7 +16,7 @@ public final class ActionSyntax {
      * @param action the action, null on error
      * @param error  what is wrong with the line, null when parsed
      */
-    public record Parsed(Action action, String error) {
+    public record Parsed(LeagueAction<? super GameState> action, String error) {
         static Parsed error(String text) {
             return new Parsed(null, text);
         }
@@ -87,7 +87,7 @@ public final class ActionSyntax {
         }
     }
 
-    private static Parsed args(String[] w, int expected, Action a) {
+    private static Parsed args(String[] w, int expected, LeagueAction<? super GameState> a) {
         return w.length - 1 == expected ? new Parsed(a, null)
                 : Parsed.error("'" + w[0] + "' takes " + expected + " argument(s), got " + (w.length - 1));
     }

@@ -2,21 +2,13 @@ package touchline.game;
 
 import touchline.protocol.gamecontroller.GameControlData;
 
-import java.util.List;
-
 /**
- * One refereed game under the Humanoid League (or SPL) rules: the one {@link RefereeEngine} with
- * the {@link HlLeague}'s way of running time, over a {@link GameState}.
- * In the console its one owner is {@code app.game.GameRuntime}, which calls every method on its
- * thread; access is serialised all the same. Listeners hear about every change (action, undo, or
- * a change that happened by itself in {@link #advance()}) on the thread that made it.
+ * One refereed game under the Humanoid League (or SPL) rules: a {@link LeagueGame} with the
+ * {@link HlLeague}'s way of running time, over a {@link GameState}, taking {@link Action}s and the
+ * actions every league shares. An undo reverts the last action (timers keep running as if it had
+ * never happened).
  */
-public final class Game implements RefereedGame {
-
-    /** How many actions can be undone. */
-    public static final int UNDO_DEPTH = RefereeEngine.UNDO_DEPTH;
-
-    private final RefereeEngine<GameState> engine;
+public final class Game extends LeagueGame<GameState> {
 
     /**
      * @param params  league rules
@@ -27,69 +19,24 @@ public final class Game implements RefereedGame {
      * @param clock   the time source
      */
     public Game(LeagueParams params, int teamA, int colourA, int teamB, int colourB, GameClock clock) {
-        if (teamA == teamB) {
-            throw new IllegalArgumentException("the two teams need different numbers");
-        }
-        this.engine = new RefereeEngine<>(new HlLeague(),
-                new GameState(params, teamA, colourA, teamB, colourB, clock.millis()), clock);
-    }
-
-    @Override
-    public void addListener(Runnable onChange) {
-        engine.addListener(onChange);
-    }
-
-    @Override
-    public long now() {
-        return engine.now();
-    }
-
-    /** Lets time-driven changes happen (then checks legality), applies the action, notifies. */
-    public Outcome perform(Action action) {
-        return engine.perform(action);
-    }
-
-    /** Applies changes that happen as time passes (penalties ending, half-time switch). */
-    @Override
-    public boolean advance() {
-        return engine.advance();
-    }
-
-    /** Reverts the last applied action (timers keep running as if it had never happened). */
-    @Override
-    public Outcome undo() {
-        return engine.undo();
-    }
-
-    /** Descriptions of the undoable actions, most recent first. */
-    @Override
-    public List<String> undoList() {
-        return engine.undoList();
-    }
-
-    public boolean isLegal(Action action) {
-        return engine.read((s, now) -> action.isLegal(s));
-    }
-
-    @Override
-    public boolean hasTeam(int number) {
-        return engine.read((s, now) -> s.team(number) != null);
+        super(new HlLeague(), new GameState(params, teamA, colourA, teamB, colourB, clock.millis()), clock,
+                Action.class);
     }
 
     /** A copy of the current state, safe to read on any thread. */
     public GameState snapshot() {
-        return engine.read((s, now) -> s.copy());
+        return read((s, now) -> s.copy());
     }
 
     /** The packet content right now (packetNumber 0). */
     @Override
     public GameControlData controlData() {
-        return engine.read(GameState::toControlData);
+        return read(GameState::toControlData);
     }
 
     /** One line such as {@code PLAYING 1st half, 512 s, kick-off 7, 1:0}. */
     @Override
     public String describe() {
-        return engine.read(GameState::describe);
+        return read(GameState::describe);
     }
 }

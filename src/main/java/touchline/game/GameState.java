@@ -15,7 +15,7 @@ import java.util.List;
  * like the Java GameController). {@code teams[0]} is the left side as the operator sees it;
  * the teams swap sides at half time. Not thread-safe: {@link Game} serialises access.
  */
-public final class GameState {
+public final class GameState implements RefereeState {
 
     final LeagueParams params;
     PlayState state = PlayState.INITIAL;
@@ -38,6 +38,9 @@ public final class GameState {
     int blockSeconds;
 
     GameState(LeagueParams params, int teamA, int colourA, int teamB, int colourB, long nowMs) {
+        if (teamA == teamB) {
+            throw new IllegalArgumentException("the two teams need different numbers");
+        }
         this.params = params;
         teams[0] = new TeamState(teamA, colourA, params.playersPerTeam());
         teams[1] = new TeamState(teamB, colourB, params.playersPerTeam());
@@ -86,6 +89,7 @@ public final class GameState {
         return state;
     }
 
+    @Override
     public boolean firstHalf() {
         return firstHalf;
     }
@@ -171,6 +175,79 @@ public final class GameState {
             default:
                 return 0;
         }
+    }
+
+    // ---- what the actions every league shares ask (RefereeState) -------------------------
+
+    @Override
+    public boolean playing() {
+        return state == PlayState.PLAYING;
+    }
+
+    @Override
+    public boolean inShootout() {
+        return isPenaltyShootout();
+    }
+
+    @Override
+    public int kickingTeam() {
+        return kickOffTeam;
+    }
+
+    @Override
+    public boolean finished() {
+        return state == PlayState.FINISHED;
+    }
+
+    @Override
+    public int gameKickOffTeam() {
+        return firstHalfKickOffTeam;
+    }
+
+    /** None: the HL GameController ends no game early. */
+    @Override
+    public int mercyGoals() {
+        return 0;
+    }
+
+    @Override
+    public void countGoal(int team) {
+        team(team).score++;
+    }
+
+    /** The shot over: FINISHED (the next one begins with {@code ToSet}). */
+    @Override
+    public void shotScored(int team, long nowMs) {
+        TeamState t = team(team);
+        t.singleShots |= 1 << (t.penaltyShot - 1);
+        enter(PlayState.FINISHED, nowMs);
+    }
+
+    @Override
+    public void endGame(long nowMs) {
+        firstHalf = false;
+        enter(PlayState.FINISHED, nowMs);
+    }
+
+    /** Secondary state PENALTYSHOOT, the clock restarted and penalties lifted; each kick is SET, PLAYING, FINISHED. */
+    @Override
+    public void beginShootout(int first, long nowMs) {
+        secondary = SecondaryState.PENALTYSHOOT;
+        kickOffTeam = first;
+        for (TeamState t : teams) {
+            t.penaltyShot = 0;
+            t.singleShots = 0;
+        }
+        restartClock(nowMs);
+    }
+
+    /** READY with the ready countdown, any set play over, no ball-free countdown. */
+    @Override
+    public void readyForKickOff(int team, long nowMs) {
+        kickOffTeam = team;
+        endSetPlay();
+        block(0, nowMs);
+        enter(PlayState.READY, nowMs);
     }
 
     // ---- changes shared by actions -----------------------------------------------------

@@ -25,7 +25,7 @@ final class HlLeague implements League<GameState> {
     }
 
     @Override
-    public void apply(GameState s, LeagueAction<GameState> action, long nowMs) {
+    public void apply(GameState s, LeagueAction<? super GameState> action, long nowMs) {
         action.apply(s, nowMs);
         s.syncClock(nowMs);
     }

@@ -21,7 +21,7 @@ public interface League<S> {
     }
 
     /** Applies a legal action. */
-    default void apply(S s, LeagueAction<S> action, long nowMs) {
+    default void apply(S s, LeagueAction<? super S> action, long nowMs) {
         action.apply(s, nowMs);
     }
 

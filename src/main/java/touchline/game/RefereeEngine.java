@@ -39,7 +39,7 @@ public final class RefereeEngine<S> {
     }
 
     /** Lets time pass, checks legality, applies the action, notifies. */
-    public Outcome perform(LeagueAction<S> action) {
+    public Outcome perform(LeagueAction<? super S> action) {
         Outcome outcome;
         synchronized (this) {
             long now = clock.millis();

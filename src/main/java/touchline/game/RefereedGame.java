@@ -30,6 +30,9 @@ public interface RefereedGame {
     /** Whether a team with this number plays in this game. */
     boolean hasTeam(int number);
 
+    /** Performs the action when it is one of this game's league (its own, or one every league shares), else refuses it. */
+    Outcome perform(LeagueAction<?> action);
+
     Outcome undo();
 
     /** Descriptions of the undoable actions, most recent first. */

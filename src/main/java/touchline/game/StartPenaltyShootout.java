@@ -1,30 +1,38 @@
 package touchline.game;
 
 /**
- * Starts a penalty shoot-out after a drawn second half: INITIAL with secondary state
- * PENALTYSHOOT, the team that kicked off the game shoots first, shot counters start at zero.
- * Each kick is then SET → PLAYING (kick countdown) → goal or FINISHED.
+ * Starts the penalty shoot-out, one rule for every league: legal once the second half (HSL: or
+ * extra time) has finished level and no shoot-out runs; {@code team} shoots first, or with
+ * {@link #GAME_KICK_OFF} the team that kicked off the game (HL's rule; the official HSL
+ * GameController names the home team, which did). What a shoot-out is in the league (HL: secondary
+ * state PENALTYSHOOT, each kick SET → PLAYING → goal or FINISHED; HSL: every player a substitute
+ * until each team selects its shooter, 3 shots each and up to 3 more) is the league's
+ * {@link RefereeState#beginShootout}.
  */
-public record StartPenaltyShootout() implements Action {
-    @Override
-    public boolean isLegal(GameState s) {
-        return s.state == PlayState.FINISHED && !s.firstHalf && !s.isPenaltyShootout()
-                && s.teams[0].score == s.teams[1].score;
+public record StartPenaltyShootout(int team) implements RefereeAction {
+
+    /** {@link #team} for the team that kicked off the game. */
+    public static final int GAME_KICK_OFF = 0;
+
+    /** The team that kicked off the game shoots first (the HL GameController's only way). */
+    public StartPenaltyShootout() {
+        this(GAME_KICK_OFF);
     }
 
     @Override
-    public void apply(GameState s, long nowMs) {
-        s.secondary = SecondaryState.PENALTYSHOOT;
-        s.kickOffTeam = s.firstHalfKickOffTeam;
-        for (TeamState t : s.teams) {
-            t.penaltyShot = 0;
-            t.singleShots = 0;
-        }
-        s.restartClock(nowMs);
+    public boolean isLegal(RefereeState s) {
+        return (team == GAME_KICK_OFF || s.hasTeam(team)) && s.finished() && !s.firstHalf() && !s.inShootout()
+                && s.goalDifference() == 0;
     }
 
+    @Override
+    public void apply(RefereeState s, long nowMs) {
+        s.beginShootout(team == GAME_KICK_OFF ? s.gameKickOffTeam() : team, nowMs);
+    }
+
+    /** {@code penaltyshootout} (HL), {@code penalty shoot-out, 5 first} (HSL), as each league's undo list has it. */
     @Override
     public String describe() {
-        return "penaltyshootout";
+        return team == GAME_KICK_OFF ? "penaltyshootout" : "penalty shoot-out, " + team + " first";
     }
 }

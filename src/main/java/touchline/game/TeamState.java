@@ -5,7 +5,7 @@ package touchline.game;
  * its {@value LeagueParams#MAX_PLAYERS} player slots (player n at index n-1). Mutable; owned by
  * a {@link GameState}.
  */
-public final class TeamState {
+public final class TeamState implements RefereeState.Team {
 
     final int number;
     final int colour;

@@ -12,7 +12,7 @@ class ActionSyntaxTest {
     private final ManualClock clock = new ManualClock(0);
     private final Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock);
 
-    private Action parse(String line) {
+    private LeagueAction<? super GameState> parse(String line) {
         ActionSyntax.Parsed p = syntax.parse(line, game.snapshot());
         assertNull(p.error(), line);
         return p.action();

@@ -22,12 +22,12 @@ class GameTest {
         game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock);
     }
 
-    private void ok(Action a) {
+    private void ok(LeagueAction<? super GameState> a) {
         Outcome o = game.perform(a);
         assertTrue(o.applied(), o.message());
     }
 
-    private void refused(Action a) {
+    private void refused(LeagueAction<? super GameState> a) {
         game.advance(); // perform() lets time-driven changes happen first
         GameState before = game.snapshot();
         Outcome o = game.perform(a);

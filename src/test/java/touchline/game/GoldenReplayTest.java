@@ -23,9 +23,10 @@ class GoldenReplayTest {
     private record Step(String file, long clockMs, Consumer<Game> commands) {
     }
 
-    private static Consumer<Game> act(Action... actions) {
+    @SafeVarargs
+    private static Consumer<Game> act(LeagueAction<? super GameState>... actions) {
         return g -> {
-            for (Action a : actions) {
+            for (LeagueAction<? super GameState> a : actions) {
                 Outcome o = g.perform(a);
                 assertTrue(o.applied(), o.message());
             }

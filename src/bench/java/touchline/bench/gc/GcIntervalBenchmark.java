@@ -14,7 +14,7 @@ import touchline.game.hsl.HslAction;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
 import touchline.game.hsl.SetPlay;
-import touchline.game.hsl.StartSetPlay;
+import touchline.game.hsl.HslStartSetPlay;
 import touchline.game.hsl.StopPlay;
 import touchline.game.hsl.WaitForSetPlay;
 import touchline.protocol.gamecontroller.HlGameState12;
@@ -138,7 +138,7 @@ public final class GcIntervalBenchmark {
                      new touchline.app.SystemClock())) {
             owner.addListener(snapshot -> sender.changed(snapshot.robots().stopped()));
             owner.start();
-            for (HslAction a : List.<HslAction>of(new StartSetPlay(5, SetPlay.KICK_OFF), new WaitForSetPlay(),
+            for (HslAction a : List.<HslAction>of(new HslStartSetPlay(5, SetPlay.KICK_OFF), new WaitForSetPlay(),
                     new FreeSetPlay())) {
                 owner.perform(a).join();
             }

@@ -2,12 +2,9 @@ package touchline.app.game;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import touchline.game.Action;
-import touchline.game.Game;
+import touchline.game.LeagueAction;
 import touchline.game.Outcome;
 import touchline.game.RefereedGame;
-import touchline.game.hsl.HslAction;
-import touchline.game.hsl.HslGame;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -79,16 +76,9 @@ public final class GameRuntime implements AutoCloseable {
         listeners.add(onChange);
     }
 
-    /** Enqueues an HL/SPL action; refused in an HSL game. */
-    public CompletableFuture<Outcome> perform(Action action) {
-        return submit(() -> game instanceof Game g ? g.perform(action)
-                : new Outcome(false, action.describe() + " is not an action of this game's rules"));
-    }
-
-    /** Enqueues an HSL action; refused in an HL/SPL game. */
-    public CompletableFuture<Outcome> perform(HslAction action) {
-        return submit(() -> game instanceof HslGame g ? g.perform(action)
-                : new Outcome(false, action.describe() + " is not an action of this game's rules"));
+    /** Enqueues an action; the game refuses one of another league's rules (an HSL action in an HL game). */
+    public CompletableFuture<Outcome> perform(LeagueAction<?> action) {
+        return submit(() -> game.perform(action));
     }
 
     /** Enqueues an undo of the last action. */

@@ -6,7 +6,9 @@ import touchline.game.LeagueAction;
  * One thing the referee (or, for team messages, the network) does to an HSL game, in the
  * manner of the official GameController's actions: {@link #isLegal} says whether the rules
  * allow it now, {@link #apply} changes the state. Time is not an argument: timers are
- * durations that {@link HslState} runs down before an action is checked.
+ * durations that {@link HslState} runs down before an action is checked. The actions whose rule
+ * every league shares ({@code game.Goal}, {@code game.StartPenaltyShootout}) are
+ * {@link touchline.game.RefereeAction}s instead.
  */
 public interface HslAction extends LeagueAction<HslState> {
 

@@ -1,5 +1,8 @@
 package touchline.game.hsl;
 
+import touchline.game.Goal;
+import touchline.game.LeagueAction;
+import touchline.game.StartPenaltyShootout;
 import touchline.protocol.gamecontroller.HslPenalty;
 
 import java.util.Locale;
@@ -18,7 +21,7 @@ public final class HslActionSyntax {
      * @param action the action, null on error
      * @param error  the error text, null when parsed
      */
-    public record Parsed(HslAction action, String error) {
+    public record Parsed(LeagueAction<? super HslState> action, String error) {
         static Parsed error(String text) {
             return new Parsed(null, text);
         }
@@ -67,24 +70,24 @@ public final class HslActionSyntax {
         }
         try {
             return switch (w[0]) {
-                case "kickoff" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.KICK_OFF));
+                case "kickoff" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.KICK_OFF));
                 case "set" -> args(w, 0, new WaitForSetPlay());
                 case "play", "playing" -> args(w, 0, new FreeSetPlay());
                 case "stop" -> args(w, 0, new StopPlay(false));
                 case "resume" -> args(w, 0, new StopPlay(true));
-                case "directfreekick" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.DIRECT_FREE_KICK));
-                case "indirectfreekick" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.INDIRECT_FREE_KICK));
-                case "throwin" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.THROW_IN));
-                case "goalkick" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.GOAL_KICK));
-                case "corner", "cornerkick" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.CORNER_KICK));
-                case "penaltykick" -> args(w, 1, new StartSetPlay(num(w[1]), SetPlay.PENALTY_KICK));
+                case "directfreekick" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.DIRECT_FREE_KICK));
+                case "indirectfreekick" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.INDIRECT_FREE_KICK));
+                case "throwin" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.THROW_IN));
+                case "goalkick" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.GOAL_KICK));
+                case "corner", "cornerkick" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.CORNER_KICK));
+                case "penaltykick" -> args(w, 1, new HslStartSetPlay(num(w[1]), SetPlay.PENALTY_KICK));
                 case "ballfree" -> args(w, 0, new FinishSetPlay());
                 case "goal" -> args(w, 1, new Goal(num(w[1])));
-                case "timeout" -> args(w, 1, new Timeout(w[1].equals("referee") ? Timeout.REFEREE : num(w[1])));
+                case "timeout" -> args(w, 1, new HslTimeout(w[1].equals("referee") ? HslTimeout.REFEREE : num(w[1])));
                 case "droppedball", "gamestuck" -> args(w, 0, new GlobalGameStuck());
                 case "penalize", "penalise" -> penalize(w);
-                case "caution" -> args(w, 2, new Penalize(num(w[1]), num(w[2]), HslPenalty.CAUTIONED));
-                case "sendoff" -> args(w, 2, new Penalize(num(w[1]), num(w[2]), HslPenalty.SENT_OFF));
+                case "caution" -> args(w, 2, new HslPenalize(num(w[1]), num(w[2]), HslPenalty.CAUTIONED));
+                case "sendoff" -> args(w, 2, new HslPenalize(num(w[1]), num(w[2]), HslPenalty.SENT_OFF));
                 case "unpenalize", "unpenalise" -> unpenalize(w);
                 case "additionalminute", "addtime", "extraminute" -> args(w, 0, new AddAdditionalTime());
                 case "finish", "finishhalf" -> args(w, 0, new FinishHalf());
@@ -108,7 +111,7 @@ public final class HslActionSyntax {
         }
     }
 
-    private static Parsed args(String[] w, int expected, HslAction a) {
+    private static Parsed args(String[] w, int expected, LeagueAction<? super HslState> a) {
         return w.length - 1 == expected ? new Parsed(a, null)
                 : Parsed.error("'" + w[0] + "' takes " + expected + " argument(s), got " + (w.length - 1));
     }
@@ -122,7 +125,7 @@ public final class HslActionSyntax {
         if (w.length > 3 && call == null) {
             return Parsed.error("unknown call '" + w[3] + "'");
         }
-        return args(w, 3, call == null ? null : new Penalize(num(w[1]), num(w[2]), call));
+        return args(w, 3, call == null ? null : new HslPenalize(num(w[1]), num(w[2]), call));
     }
 
     /** The penalty a call names (official spellings, and caution / send_off / arms_hands). */
@@ -150,7 +153,7 @@ public final class HslActionSyntax {
             return Parsed.error("usage: unpenalize TEAM PLAYER [force]");
         }
         boolean force = w.length == 4;
-        return w.length == 3 || w.length == 4 ? new Parsed(new Unpenalize(num(w[1]), num(w[2]), force), null)
+        return w.length == 3 || w.length == 4 ? new Parsed(new HslUnpenalize(num(w[1]), num(w[2]), force), null)
                 : Parsed.error("usage: unpenalize TEAM PLAYER [force]");
     }
 }

@@ -1,26 +1,20 @@
 package touchline.game.hsl;
 
 import touchline.game.GameClock;
-import touchline.game.Outcome;
-import touchline.game.RefereeEngine;
-import touchline.game.RefereedGame;
+import touchline.game.LeagueGame;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.TeamColour;
 
-import java.util.List;
+import java.util.function.BiFunction;
 
 /**
- * One refereed HSL game: the one {@link RefereeEngine} with the {@link HslLeague}'s way of running
- * time and actions (an action during the robots' delay after a PLAYING whistle is applied to the
- * held copy too when it is legal there, and ends the delay when it is not), over an {@link HslState}. In the console its one owner is {@code app.game.GameRuntime};
- * access is serialised all the same; listeners hear about every change.
+ * One refereed HSL game: a {@link LeagueGame} with the {@link HslLeague}'s way of running time and
+ * actions (an action during the robots' delay after a PLAYING whistle is applied to the held copy
+ * too when it is legal there, and ends the delay when it is not; an undo runs time since again on
+ * the restored state), over an {@link HslState}, taking {@link HslAction}s and the actions every
+ * league shares. Its readers see time run on first.
  */
-public final class HslGame implements RefereedGame {
-
-    /** How many actions can be undone. */
-    public static final int UNDO_DEPTH = RefereeEngine.UNDO_DEPTH;
-
-    private final RefereeEngine<HslState> engine;
+public final class HslGame extends LeagueGame<HslState> {
 
     /**
      * @param rules       release and competition
@@ -32,15 +26,8 @@ public final class HslGame implements RefereedGame {
      */
     public HslGame(HslRules rules, int leftTeam, TeamColour[] leftColours, int rightTeam, TeamColour[] rightColours,
                    GameClock clock) {
-        String bad = colourConflict(leftColours, rightColours);
-        if (leftTeam == rightTeam) {
-            throw new IllegalArgumentException("the two teams need different numbers");
-        }
-        if (bad != null) {
-            throw new IllegalArgumentException(bad);
-        }
-        this.engine = new RefereeEngine<>(new HslLeague(),
-                new HslState(rules, leftTeam, leftColours, rightTeam, rightColours, clock.millis()), clock);
+        super(new HslLeague(), new HslState(rules, leftTeam, leftColours, rightTeam, rightColours, clock.millis()),
+                clock, HslAction.class);
     }
 
     /**
@@ -57,78 +44,32 @@ public final class HslGame implements RefereedGame {
         return null;
     }
 
+    /** Runs time on to now first: the HSL timers are durations the state runs down. */
     @Override
-    public void addListener(Runnable onChange) {
-        engine.addListener(onChange);
-    }
-
-    @Override
-    public long now() {
-        return engine.now();
-    }
-
-    /** Lets time pass, checks legality, applies the action (also to the robots' held copy), notifies. */
-    public Outcome perform(HslAction action) {
-        return engine.perform(action);
-    }
-
-    @Override
-    public boolean advance() {
-        return engine.advance();
-    }
-
-    /** Reverts the last action; time since then is run again on the restored state. */
-    @Override
-    public Outcome undo() {
-        return engine.undo();
-    }
-
-    @Override
-    public List<String> undoList() {
-        return engine.undoList();
-    }
-
-    public boolean isLegal(HslAction action) {
-        return engine.read((s, now) -> {
+    protected <R> R read(BiFunction<HslState, Long, R> read) {
+        return super.read((s, now) -> {
             s.advance(now);
-            return action.isLegal(s);
+            return read.apply(s, now);
         });
     }
 
     /** A copy of the current state, safe to read on any thread. */
     public HslState snapshot() {
-        return engine.read((s, now) -> {
-            s.advance(now);
-            return s.copy();
-        });
+        return read((s, now) -> s.copy());
     }
 
     @Override
     public GameControlData controlData() {
-        return engine.read((s, now) -> {
-            s.advance(now);
-            return s.robotData();
-        });
+        return read((s, now) -> s.robotData());
     }
 
     @Override
     public GameControlData trueData() {
-        return engine.read((s, now) -> {
-            s.advance(now);
-            return s.trueData();
-        });
-    }
-
-    @Override
-    public boolean hasTeam(int number) {
-        return engine.read((s, now) -> s.team(number) != null);
+        return read((s, now) -> s.trueData());
     }
 
     @Override
     public String describe() {
-        return engine.read((s, now) -> {
-            s.advance(now);
-            return s.describe();
-        });
+        return read((s, now) -> s.describe());
     }
 }

@@ -22,7 +22,7 @@ final class HslLeague implements League<HslState> {
     }
 
     @Override
-    public void apply(HslState s, LeagueAction<HslState> action, long nowMs) {
+    public void apply(HslState s, LeagueAction<? super HslState> action, long nowMs) {
         HslState held = s.delayed;
         boolean legalForRobots = held != null && action.isLegal(held);
         action.apply(s, nowMs);

@@ -1,5 +1,6 @@
 package touchline.game.hsl;
 
+import touchline.game.RefereeState;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.RobotInfo;
@@ -19,8 +20,10 @@ import java.util.List;
  * Over 400 lines because its timers (game clock, shot, secondary time, players' penalties),
  * which of them run in which state, the next expiry among them and what an expiry changes are
  * one rule of the official GameController: split apart, each part would ask the others the state.
+ * It also answers the actions every league shares ({@link RefereeState}, some 80 lines): what a
+ * goal, the mercy rule and a shoot-out change here touches the same timers.
  */
-public final class HslState {
+public final class HslState implements RefereeState {
 
     /** {@link #kickingTeam} when no team kicks (dropped ball, FINISHED, open play). */
     public static final int NO_TEAM = -1;
@@ -52,6 +55,13 @@ public final class HslState {
 
     HslState(HslRules rules, int leftTeam, TeamColour[] leftColours, int rightTeam, TeamColour[] rightColours,
              long nowMs) {
+        if (leftTeam == rightTeam) {
+            throw new IllegalArgumentException("the two teams need different numbers");
+        }
+        String bad = HslGame.colourConflict(leftColours, rightColours);
+        if (bad != null) {
+            throw new IllegalArgumentException(bad);
+        }
         this.rules = rules;
         teams = new HslTeam[]{new HslTeam(leftTeam, leftColours[0], leftColours[1], rules),
                 new HslTeam(rightTeam, rightColours[0], rightColours[1], rules)};
@@ -118,6 +128,7 @@ public final class HslState {
         return stopped;
     }
 
+    @Override
     public boolean firstHalf() {
         return firstHalf;
     }
@@ -128,6 +139,7 @@ public final class HslState {
     }
 
     /** Team number of the kicking team, or {@link #NO_TEAM}. */
+    @Override
     public int kickingTeam() {
         return kickingTeam;
     }
@@ -306,6 +318,82 @@ public final class HslState {
         } else if (secondary == SecondaryTimer.SET_PLAY) {
             endSetPlay();
         }
+    }
+
+    // ---- what the actions every league shares ask (RefereeState) -------------------------
+
+    @Override
+    public boolean playing() {
+        return state == HslPlayState.PLAYING;
+    }
+
+    @Override
+    public boolean inShootout() {
+        return phase == HslPhase.PENALTY_SHOOT_OUT;
+    }
+
+    @Override
+    public boolean finished() {
+        return state == HslPlayState.FINISHED;
+    }
+
+    @Override
+    public int gameKickOffTeam() {
+        return firstKickOffTeam;
+    }
+
+    @Override
+    public int mercyGoals() {
+        return rules.mercyGoals();
+    }
+
+    /** Not for a team marked for illegal communication. */
+    @Override
+    public void countGoal(int team) {
+        HslTeam t = team(team);
+        t.score += t.illegalCommunication ? 0 : 1;
+    }
+
+    @Override
+    public void shotScored(int team, long nowMs) {
+        HslTeam t = team(team);
+        t.singleShots |= 1 << (t.penaltyShot - 1);
+        endShot();
+    }
+
+    @Override
+    public void endGame(long nowMs) {
+        firstHalf = false;
+        finish();
+    }
+
+    /**
+     * As the official GameController: the shot's clock set, every player off as a substitute and no
+     * goalkeeper until each team selects its player ({@link SelectShooter}).
+     */
+    @Override
+    public void beginShootout(int first, long nowMs) {
+        phase = HslPhase.PENALTY_SHOOT_OUT;
+        state = HslPlayState.INITIAL;
+        kickingTeam = first;
+        clockMs = rules.penaltyShotMs();
+        switchHalfMs = -1;
+        startSecondary(SecondaryTimer.NONE, 0);
+        for (HslTeam t : teams) {
+            t.goalkeeper = 0;
+            t.penaltyShot = 0;
+            t.singleShots = 0;
+            for (HslPlayer p : t.players) {
+                p.penalise(HslPenalty.SUBSTITUTE, 0, false);
+            }
+        }
+    }
+
+    /** READY after a stoppage (a timeout gives the time since back). */
+    @Override
+    public void readyForKickOff(int team, long nowMs) {
+        beginStoppage();
+        enterReady(SetPlay.KICK_OFF, team);
     }
 
     // ---- changes shared by actions -----------------------------------------------------

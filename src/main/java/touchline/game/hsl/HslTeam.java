@@ -1,5 +1,6 @@
 package touchline.game.hsl;
 
+import touchline.game.RefereeState;
 import touchline.protocol.gamecontroller.TeamColour;
 
 /**
@@ -7,7 +8,7 @@ import touchline.protocol.gamecontroller.TeamColour;
  * whether it communicated illegally, which zeroes and freezes its score), timeouts left,
  * shoot-out shots and its 20 jerseys.
  */
-public final class HslTeam {
+public final class HslTeam implements RefereeState.Team {
 
     final int number;
     final TeamColour fieldColour;

@@ -15,6 +15,7 @@ import touchline.game.Card;
 import touchline.game.DropBall;
 import touchline.game.GameState;
 import touchline.game.Goal;
+import touchline.game.LeagueAction;
 import touchline.game.LeagueParams;
 import touchline.game.Outcome;
 import touchline.game.Penalize;
@@ -96,7 +97,7 @@ public final class GameControllerView implements View {
         refresh(null);
     }
 
-    private Button button(String id, String text, java.util.function.Supplier<Action> action) {
+    private Button button(String id, String text, java.util.function.Supplier<LeagueAction<? super GameState>> action) {
         Button b = new Button(text);
         b.setId(id);
         b.setMinHeight(40);

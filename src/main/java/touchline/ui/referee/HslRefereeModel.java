@@ -6,20 +6,20 @@ import touchline.game.hsl.FinishHalf;
 import touchline.game.hsl.FinishSetPlay;
 import touchline.game.hsl.FreeSetPlay;
 import touchline.game.hsl.GlobalGameStuck;
-import touchline.game.hsl.Goal;
-import touchline.game.hsl.HslAction;
+import touchline.game.Goal;
+import touchline.game.LeagueAction;
 import touchline.app.game.GameRuntime;
 import touchline.game.hsl.HslPlayState;
 import touchline.game.hsl.HslPlayer;
 import touchline.game.hsl.HslState;
 import touchline.game.hsl.HslTeam;
-import touchline.game.hsl.Penalize;
+import touchline.game.hsl.HslPenalize;
 import touchline.game.hsl.SetPlay;
-import touchline.game.hsl.StartSetPlay;
+import touchline.game.hsl.HslStartSetPlay;
 import touchline.game.hsl.StopPlay;
 import touchline.game.hsl.SwitchHalf;
-import touchline.game.hsl.Timeout;
-import touchline.game.hsl.Unpenalize;
+import touchline.game.hsl.HslTimeout;
+import touchline.game.hsl.HslUnpenalize;
 import touchline.game.hsl.WaitForSetPlay;
 import touchline.protocol.gamecontroller.HslPenalty;
 
@@ -69,12 +69,12 @@ public final class HslRefereeModel {
     // ---- actions -------------------------------------------------------------------------
 
     /** Whether the rules allow {@code action} now (on this frame's snapshot). */
-    public boolean legal(HslAction action) {
+    public boolean legal(LeagueAction<? super HslState> action) {
         return action.isLegal(state);
     }
 
     /** Dispatches {@code action} to the game; the outcome (or why it was refused) is {@link #message()}. */
-    public Outcome perform(HslAction action) {
+    public Outcome perform(LeagueAction<? super HslState> action) {
         Outcome o = GameRuntime.outcome(game.perform(action));
         show(o);
         return o;
@@ -106,7 +106,7 @@ public final class HslRefereeModel {
     }
 
     /** Stop play, or resume it when stopped (the big button, Space). */
-    public HslAction stopOrResume() {
+    public LeagueAction<? super HslState> stopOrResume() {
         return new StopPlay(state.stopped());
     }
 
@@ -118,53 +118,53 @@ public final class HslRefereeModel {
      * The kick-off due now: READY for the team whose kick-off it is (the official "Ready"),
      * or, when no team kicks off, the left team's (then refused with the reason).
      */
-    public HslAction ready() {
+    public LeagueAction<? super HslState> ready() {
         int kicking = state.kickingTeam();
-        return new StartSetPlay(kicking == HslState.NO_TEAM ? teamNumber(0) : kicking, SetPlay.KICK_OFF);
+        return new HslStartSetPlay(kicking == HslState.NO_TEAM ? teamNumber(0) : kicking, SetPlay.KICK_OFF);
     }
 
-    public HslAction set() {
+    public LeagueAction<? super HslState> set() {
         return new WaitForSetPlay();
     }
 
-    public HslAction play() {
+    public LeagueAction<? super HslState> play() {
         return new FreeSetPlay();
     }
 
-    public HslAction ballFree() {
+    public LeagueAction<? super HslState> ballFree() {
         return new FinishSetPlay();
     }
 
-    public HslAction droppedBall() {
+    public LeagueAction<? super HslState> droppedBall() {
         return new GlobalGameStuck();
     }
 
-    public HslAction additionalMinute() {
+    public LeagueAction<? super HslState> additionalMinute() {
         return new AddAdditionalTime();
     }
 
-    public HslAction finishHalf() {
+    public LeagueAction<? super HslState> finishHalf() {
         return new FinishHalf();
     }
 
-    public HslAction secondHalf() {
+    public LeagueAction<? super HslState> secondHalf() {
         return new SwitchHalf();
     }
 
-    public HslAction refereeTimeout() {
-        return new Timeout(Timeout.REFEREE);
+    public LeagueAction<? super HslState> refereeTimeout() {
+        return new HslTimeout(HslTimeout.REFEREE);
     }
 
-    public HslAction setPlay(int side, SetPlay kind) {
-        return new StartSetPlay(teamNumber(side), kind);
+    public LeagueAction<? super HslState> setPlay(int side, SetPlay kind) {
+        return new HslStartSetPlay(teamNumber(side), kind);
     }
 
-    public HslAction goal(int side) {
+    public LeagueAction<? super HslState> goal(int side) {
         return new Goal(teamNumber(side));
     }
 
-    public HslAction timeout(int side) {
-        return new Timeout(teamNumber(side));
+    public LeagueAction<? super HslState> timeout(int side) {
+        return new HslTimeout(teamNumber(side));
     }
 
     // ---- penalties: the call first, then the robot ----------------------------------------
@@ -202,7 +202,7 @@ public final class HslRefereeModel {
     public boolean penaltyLegal(HslPenalty call) {
         for (int side = 0; side < 2; side++) {
             for (int n = 1; n <= playersPerTeam(); n++) {
-                if (legal(new Penalize(teamNumber(side), n, call))) {
+                if (legal(new HslPenalize(teamNumber(side), n, call))) {
                     return true;
                 }
             }
@@ -219,9 +219,9 @@ public final class HslRefereeModel {
      * penalty; else on a penalised robot the official unpenalise button (start the timer, or
      * let it back in once the timer ran out).
      */
-    public HslAction robotAction(int side, int player) {
+    public LeagueAction<? super HslState> robotAction(int side, int player) {
         int team = teamNumber(side);
-        return chosen != null ? new Penalize(team, player, chosen) : new Unpenalize(team, player, false);
+        return chosen != null ? new HslPenalize(team, player, chosen) : new HslUnpenalize(team, player, false);
     }
 
     public Outcome pressRobot(int side, int player) {

@@ -15,7 +15,8 @@ import javafx.scene.layout.GridPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.VBox;
 import touchline.app.LiveField;
-import touchline.game.hsl.HslAction;
+import touchline.game.LeagueAction;
+import touchline.game.hsl.HslState;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.app.game.EmbeddedGameController;
 import touchline.ui.frame.FrameContext;
@@ -168,7 +169,7 @@ public final class HslRefereeView implements View {
             buttons.act(() -> model.choose(null));
             e.consume();
         } else if (key != null && key.action(model) != null) {
-            HslAction action = key.action(model);
+            LeagueAction<? super HslState> action = key.action(model);
             buttons.act(() -> model.perform(action));
             e.consume();
         }

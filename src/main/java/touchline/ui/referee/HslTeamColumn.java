@@ -9,7 +9,8 @@ import javafx.scene.layout.GridPane;
 import javafx.scene.layout.HBox;
 import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
-import touchline.game.hsl.HslAction;
+import touchline.game.LeagueAction;
+import touchline.game.hsl.HslState;
 import touchline.game.hsl.SetPlay;
 import touchline.protocol.gamecontroller.TeamColour;
 
@@ -81,7 +82,7 @@ final class HslTeamColumn {
                 SetPlay.THROW_IN, SetPlay.GOAL_KICK, SetPlay.CORNER_KICK, SetPlay.PENALTY_KICK, null};
         for (int i = 0; i < kinds.length; i++) {
             SetPlay kind = setPlays[i];
-            Supplier<HslAction> action = kind != null ? () -> model.setPlay(side, kind)
+            Supplier<LeagueAction<? super HslState>> action = kind != null ? () -> model.setPlay(side, kind)
                     : kinds[i][0].equals("goal") ? () -> model.goal(side) : () -> model.timeout(side);
             Button b = buttons.button("gc-" + kinds[i][0] + "-" + side, kinds[i][1], action);
             b.setPrefWidth(140);

@@ -1,7 +1,8 @@
 package touchline.ui.referee;
 
 import javafx.scene.control.Button;
-import touchline.game.hsl.HslAction;
+import touchline.game.LeagueAction;
+import touchline.game.hsl.HslState;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -15,7 +16,7 @@ import java.util.function.Supplier;
 final class RefereeButtons {
 
     /** A button and the action it dispatches, enabled when that action is legal. */
-    private record Bound(Button button, Supplier<HslAction> action) {
+    private record Bound(Button button, Supplier<LeagueAction<? super HslState>> action) {
     }
 
     private final HslRefereeModel model;
@@ -35,7 +36,7 @@ final class RefereeButtons {
     }
 
     /** A button that performs {@code action} (built when pressed, for the team on that side then). */
-    Button button(String id, String text, Supplier<HslAction> action) {
+    Button button(String id, String text, Supplier<LeagueAction<? super HslState>> action) {
         Button b = new Button(text);
         b.setId(id);
         b.setOnAction(e -> act(() -> model.perform(action.get())));
@@ -44,7 +45,7 @@ final class RefereeButtons {
     }
 
     /** A button that does something of its own but is enabled when {@code legalWhen} is legal. */
-    Button button(String id, String text, Supplier<HslAction> legalWhen, Runnable press) {
+    Button button(String id, String text, Supplier<LeagueAction<? super HslState>> legalWhen, Runnable press) {
         Button b = button(id, text, legalWhen);
         b.setOnAction(e -> act(press));
         return b;

@@ -1,7 +1,8 @@
 package touchline.ui.referee;
 
 import javafx.scene.input.KeyCode;
-import touchline.game.hsl.HslAction;
+import touchline.game.LeagueAction;
+import touchline.game.hsl.HslState;
 
 import java.util.Arrays;
 import java.util.Optional;
@@ -25,9 +26,9 @@ public enum RefereeKey {
     private final KeyCode code;
     private final String keys;
     private final String what;
-    private final Function<HslRefereeModel, HslAction> action;
+    private final Function<HslRefereeModel, LeagueAction<? super HslState>> action;
 
-    RefereeKey(KeyCode code, String keys, String what, Function<HslRefereeModel, HslAction> action) {
+    RefereeKey(KeyCode code, String keys, String what, Function<HslRefereeModel, LeagueAction<? super HslState>> action) {
         this.code = code;
         this.keys = keys;
         this.what = what;
@@ -45,7 +46,7 @@ public enum RefereeKey {
     }
 
     /** The action the key asks of the game now (null for {@link #FORGET_CALL}, which acts on the tab). */
-    HslAction action(HslRefereeModel model) {
+    LeagueAction<? super HslState> action(HslRefereeModel model) {
         return action.apply(model);
     }
 

@@ -9,6 +9,7 @@ import touchline.game.hsl.Competition;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslPlayState;
 import touchline.game.hsl.HslRules;
+import touchline.game.hsl.HslState;
 import touchline.game.hsl.SetPlay;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
@@ -45,7 +46,7 @@ class HslRefereeModelTest {
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, clock));
     }
 
-    private void ok(touchline.game.hsl.HslAction a) {
+    private void ok(touchline.game.LeagueAction<? super HslState> a) {
         assertTrue(model.perform(a).applied(), model.message());
     }
 

@@ -6,12 +6,12 @@ import java.util.Locale;
 
 /**
  * Calls a penalty on a player. A removal penalty waits for the operator to start its timer
- * ({@link Unpenalize}); motion in set (in SET only) starts at once and ends by itself; motion
+ * ({@link HslUnpenalize}); motion in set (in SET only) starts at once and ends by itself; motion
  * in stop can only be called while play is stopped; pick-up (also in FINISHED) has no time
  * in INITIAL, a timeout or FINISHED. A caution (7.x) is a removal penalty that counts, and a second caution sends the
  * player off; cautions and send-offs can be given to penalised players.
  */
-public record Penalize(int team, int player, HslPenalty call) implements HslAction {
+public record HslPenalize(int team, int player, HslPenalty call) implements HslAction {
     @Override
     public boolean isLegal(HslState s) {
         HslTeam t = s.team(team);

@@ -10,7 +10,7 @@ import touchline.protocol.gamecontroller.HslPenalty;
  * in the half-time break) adds to it. After a team timeout the other team kicks off; after a
  * referee timeout the kick-off stands if one was due, else the ball is dropped.
  */
-public record Timeout(int team) implements HslAction {
+public record HslTimeout(int team) implements HslAction {
 
     public static final int REFEREE = 0;
 

@@ -5,7 +5,7 @@ package touchline.game.hsl;
  * kick-off it is) and a penalty kick (during play) go to READY; the others keep PLAYING and
  * stop play, their 45 s beginning only when the referee resumes.
  */
-public record StartSetPlay(int team, SetPlay kind) implements HslAction {
+public record HslStartSetPlay(int team, SetPlay kind) implements HslAction {
     @Override
     public boolean isLegal(HslState s) {
         if (s.team(team) == null || s.phase == HslPhase.PENALTY_SHOOT_OUT) {

@@ -5,7 +5,7 @@ package touchline.game.hsl;
  * robot is outside), a press after the timer reached 0 lets the robot back in. {@code force}
  * lets it back at once. A sent-off player and a substitute stay out.
  */
-public record Unpenalize(int team, int player, boolean force) implements HslAction {
+public record HslUnpenalize(int team, int player, boolean force) implements HslAction {
     @Override
     public boolean isLegal(HslState s) {
         HslTeam t = s.team(team);
