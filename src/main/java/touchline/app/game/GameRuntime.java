@@ -31,8 +31,11 @@ public final class GameRuntime implements AutoCloseable {
 
     /** The owner thread's name. */
     public static final String THREAD = "gc-game";
-    /** How long a face waits for the outcome of its own event ({@link #outcome}). */
-    private static final long ANSWER_MS = 2_000;
+    /**
+     * How long an event may wait for its outcome before a face says the owner did not answer
+     * ({@link #outcome}, {@link #unanswered}).
+     */
+    public static final long ANSWER_MS = 2_000;
     private static final Logger LOG = LoggerFactory.getLogger(GameRuntime.class);
 
     private final RefereedGame game;
@@ -107,20 +110,26 @@ public final class GameRuntime implements AutoCloseable {
     }
 
     /**
-     * A face's wait for its own event's outcome: the owner works in memory only, so this is the
-     * events ahead in the queue; a stopped or stuck owner is an outcome, not a hang.
+     * A command's wait for its own event's outcome (the CLI's; a view never waits, it takes the
+     * outcome at a frame once the future is done): the owner works in memory only, so this is
+     * the events ahead in the queue; a stopped or stuck owner is an outcome, not a hang.
      */
     public static Outcome outcome(CompletableFuture<Outcome> pending) {
         try {
             return pending.get(ANSWER_MS, TimeUnit.MILLISECONDS);
         } catch (TimeoutException e) {
-            return new Outcome(false, "the GameController did not answer within " + ANSWER_MS + " ms");
+            return unanswered();
         } catch (ExecutionException e) {
             return new Outcome(false, "failed: " + e.getCause());
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             return new Outcome(false, "interrupted");
         }
+    }
+
+    /** What a face says of an event the owner has not answered within {@link #ANSWER_MS}. */
+    public static Outcome unanswered() {
+        return new Outcome(false, "the GameController did not answer within " + ANSWER_MS + " ms");
     }
 
     private CompletableFuture<Outcome> submit(Supplier<Outcome> event) {

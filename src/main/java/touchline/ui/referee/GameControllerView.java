@@ -39,20 +39,22 @@ import touchline.ui.frame.View;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * The referee's GameController tab: the clock and state in large type, big buttons for every
  * action (keys R S P F D for ready/set/play/finish/dropped ball, Ctrl+Z undo), per team its
  * set plays and each robot's penalty, countdown, cards and liveness with a penalise/unpenalise
- * button. Buttons only build actions and enqueue them to the game's {@link GameRuntime} (the
- * outcome is shown as soon as its owner answered); the frame pulse pulls the owner's snapshot,
- * so the view never receives callbacks from network threads. A second GameController
+ * button. Buttons only build actions and enqueue them to the game's {@link GameRuntime}; the
+ * frame pulse pulls the owner's snapshot and the outcome once the owner answered, so the JavaFX
+ * thread never waits for the game and the view never receives callbacks from network threads. A second GameController
  * on the network shows as a red banner.
  */
 public final class GameControllerView implements View {
 
     private final GameRuntime game;
     private final EmbeddedGameController gc;
+    private final RefereeOutcomes outcomes;
     private final VBox root = new VBox(8);
     private final Label warning = new Label();
     private final Label clock = new Label();
@@ -68,6 +70,7 @@ public final class GameControllerView implements View {
     public GameControllerView(GameRuntime game, EmbeddedGameController gc) {
         this.game = game;
         this.gc = gc;
+        this.outcomes = new RefereeOutcomes(game::now);
         root.setPadding(new Insets(8));
         root.setId("gamecontroller");
         warning.setId("gc-warning");
@@ -89,7 +92,7 @@ public final class GameControllerView implements View {
                 button("gc-abort", "Abort", () -> new SetPlayStep(SetPlayStep.Step.ABORT)));
         Button undo = new Button("Undo (Ctrl+Z)");
         undo.setId("gc-undo");
-        undo.setOnAction(e -> show(GameRuntime.outcome(game.undo())));
+        undo.setOnAction(e -> ask(game.undo()));
         states.getChildren().add(undo);
         HBox teams = new HBox(24, teamColumn(0), teamColumn(1));
         root.getChildren().addAll(warning, clock, states, teams, message);
@@ -102,7 +105,7 @@ public final class GameControllerView implements View {
         b.setId(id);
         b.setMinHeight(40);
         b.setStyle("-fx-font-size: 15px;");
-        b.setOnAction(e -> show(GameRuntime.outcome(game.perform(action.get()))));
+        b.setOnAction(e -> ask(game.perform(action.get())));
         return b;
     }
 
@@ -134,9 +137,9 @@ public final class GameControllerView implements View {
             l.setStyle("-fx-font-family: monospace;");
             Button pen = new Button();
             pen.setId("gc-robot-" + side + "-" + n);
-            pen.setOnAction(e -> show(GameRuntime.outcome(game.perform(togglePenalty(side, player)))));
+            pen.setOnAction(e -> ask(game.perform(togglePenalty(side, player))));
             Button yellow = new Button("Yellow");
-            yellow.setOnAction(e -> show(GameRuntime.outcome(game.perform(new Card(team(side), player, Card.Kind.YELLOW)))));
+            yellow.setOnAction(e -> ask(game.perform(new Card(team(side), player, Card.Kind.YELLOW))));
             robots.addRow(n - 1, l, pen, yellow);
             labels.add(l);
             buttons.add(pen);
@@ -159,7 +162,7 @@ public final class GameControllerView implements View {
     private void key(KeyEvent e) {
         Action a = null;
         if (e.isShortcutDown() && e.getCode() == KeyCode.Z) {
-            show(GameRuntime.outcome(game.undo()));
+            ask(game.undo());
             e.consume();
             return;
         }
@@ -172,14 +175,14 @@ public final class GameControllerView implements View {
             default -> { }
         }
         if (a != null) {
-            show(GameRuntime.outcome(game.perform(a)));
+            ask(game.perform(a));
             e.consume();
         }
     }
 
-    private void show(Outcome o) {
-        message.setText(o.message());
-        message.setStyle(o.applied() ? "" : "-fx-text-fill: #c00;");
+    /** An action just enqueued: its outcome is shown by the frame after the owner answered. */
+    private void ask(CompletableFuture<Outcome> outcome) {
+        outcomes.expect(outcome);
         refresh(null);
     }
 
@@ -195,6 +198,12 @@ public final class GameControllerView implements View {
 
     @Override
     public void refresh(FrameContext frame) {
+        outcomes.pull(); // first: the snapshot is published before an outcome comes
+        String style = outcomes.refused() ? "-fx-text-fill: #c00;" : "";
+        if (!outcomes.message().equals(message.getText()) || !style.equals(message.getStyle())) {
+            message.setText(outcomes.message());
+            message.setStyle(style);
+        }
         RefereeSnapshot snapshot = game.snapshot();
         GameState s = snapshot.hl();
         long now = game.now();

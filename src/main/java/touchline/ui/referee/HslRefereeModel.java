@@ -1,6 +1,5 @@
 package touchline.ui.referee;
 
-import touchline.game.Outcome;
 import touchline.game.hsl.AddAdditionalTime;
 import touchline.game.hsl.FinishHalf;
 import touchline.game.hsl.FinishSetPlay;
@@ -33,19 +32,21 @@ import java.util.Locale;
  * now (the action's own {@code isLegal}); the texts of the clocks, teams and robots; the
  * penalty the referee has chosen and is about to give to a robot (as in the official
  * GameController, the call first, then the robot); and the outcome of the last action, which
- * says why an illegal one was refused. The view only binds to it.
+ * says why an illegal one was refused. An action only enqueues: its outcome is taken at the
+ * frame after the owner answered ({@code RefereeOutcomes}), so the JavaFX thread never waits.
+ * The view only binds to it.
  */
 public final class HslRefereeModel {
 
     private final GameRuntime game;
     private HslState state;
+    private final RefereeOutcomes outcomes;
     private HslPenalty chosen;
-    private String message = "";
-    private boolean refused;
 
     /** @param game the owner of an HSL game: actions are enqueued to it, frames read its snapshot */
     public HslRefereeModel(GameRuntime game) {
         this.game = game;
+        this.outcomes = new RefereeOutcomes(game::now);
         this.state = game.snapshot().hslAt(game.now());
     }
 
@@ -54,8 +55,12 @@ public final class HslRefereeModel {
         return game.now();
     }
 
-    /** Takes this frame's snapshot of the game (time run on to now, on a copy); everything else reads it. */
+    /**
+     * Takes the outcomes that came and this frame's snapshot of the game (time run on to now, on a
+     * copy); everything else reads it.
+     */
     public void refresh() {
+        outcomes.pull(); // first: the snapshot is published before an outcome comes
         state = game.snapshot().hslAt(game.now());
         if (chosen != null && !penaltyLegal(chosen)) {
             chosen = null;
@@ -73,32 +78,31 @@ public final class HslRefereeModel {
         return action.isLegal(state);
     }
 
-    /** Dispatches {@code action} to the game; the outcome (or why it was refused) is {@link #message()}. */
-    public Outcome perform(LeagueAction<? super HslState> action) {
-        Outcome o = GameRuntime.outcome(game.perform(action));
-        show(o);
-        return o;
+    /**
+     * Enqueues {@code action} to the game; its outcome (or why it was refused) is {@link #message()}
+     * from the first {@link #refresh()} after the owner answered.
+     */
+    public void perform(LeagueAction<? super HslState> action) {
+        outcomes.expect(game.perform(action));
     }
 
-    public Outcome undo() {
-        Outcome o = GameRuntime.outcome(game.undo());
-        show(o);
-        return o;
-    }
-
-    private void show(Outcome o) {
-        message = o.message();
-        refused = !o.applied();
-        refresh();
+    /** Enqueues an undo of the last action, as {@link #perform}. */
+    public void undo() {
+        outcomes.expect(game.undo());
     }
 
     /** The last outcome: what was done, or why it was refused. */
     public String message() {
-        return message;
+        return outcomes.message();
     }
 
     public boolean refused() {
-        return refused;
+        return outcomes.refused();
+    }
+
+    /** Whether an action enqueued has not been answered yet (as of the last {@link #refresh()}). */
+    public boolean waiting() {
+        return outcomes.waiting();
     }
 
     public int teamNumber(int side) {
@@ -185,12 +189,10 @@ public final class HslRefereeModel {
     public void choose(HslPenalty call) {
         chosen = call == null || call == chosen ? null : call;
         if (chosen != null && !penaltyLegal(chosen)) {
-            message = "no robot can get " + label(chosen) + " now (" + state.describe() + ")";
-            refused = true;
+            outcomes.say("no robot can get " + label(chosen) + " now (" + state.describe() + ")", true);
             chosen = null;
         } else {
-            message = chosen == null ? "" : label(chosen) + ": now press the robot";
-            refused = false;
+            outcomes.say(chosen == null ? "" : label(chosen) + ": now press the robot", false);
         }
     }
 
@@ -224,12 +226,19 @@ public final class HslRefereeModel {
         return chosen != null ? new HslPenalize(team, player, chosen) : new HslUnpenalize(team, player, false);
     }
 
-    public Outcome pressRobot(int side, int player) {
-        Outcome o = perform(robotAction(side, player));
-        if (o.applied()) {
-            chosen = null;
-        }
-        return o;
+    /**
+     * Enqueues what pressing the robot does ({@link #robotAction}). A call is used once: it is
+     * given back when its outcome says the robot could not get it (and no other was chosen since).
+     */
+    public void pressRobot(int side, int player) {
+        LeagueAction<? super HslState> action = robotAction(side, player);
+        HslPenalty call = chosen;
+        chosen = null;
+        outcomes.expect(game.perform(action), o -> {
+            if (!o.applied() && chosen == null) {
+                chosen = call;
+            }
+        });
     }
 
     /** The robot button's text; the same width whatever it says, so the row never moves. */

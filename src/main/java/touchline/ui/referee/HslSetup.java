@@ -13,24 +13,21 @@ import touchline.transport.gamecontroller.GcProfile;
 
 /**
  * The setup of an HSL game in the tab: the competition, each team's field player and
- * goalkeeper colour (the official launcher's defaults) and the monitors' port, shown only for
- * the HSL formats. The
- * colours are checked by the official clash rule of {@link HslGame#colourConflict}.
+ * goalkeeper colour and the monitors' port, shown only for the HSL formats. What they hold is a
+ * {@link GameSetup}'s; the colours are checked when the game starts ({@link HslGame#colourConflict}).
  */
 final class HslSetup {
 
     private final ComboBox<Competition> competition = new ComboBox<>();
-    private final ComboBox<TeamColour> fieldA = colours("gc-colour-a", TeamColour.RED);
-    private final ComboBox<TeamColour> keeperA = colours("gc-goalkeeper-colour-a", TeamColour.PURPLE);
-    private final ComboBox<TeamColour> fieldB = colours("gc-colour-b", TeamColour.BLUE);
-    private final ComboBox<TeamColour> keeperB = colours("gc-goalkeeper-colour-b", TeamColour.YELLOW);
-    private final javafx.scene.control.TextField monitorPort = new javafx.scene.control.TextField(
-            Integer.toString(touchline.protocol.gamecontroller.MonitorRequest.PORT));
+    private final ComboBox<TeamColour> fieldA = colours("gc-colour-a");
+    private final ComboBox<TeamColour> keeperA = colours("gc-goalkeeper-colour-a");
+    private final ComboBox<TeamColour> fieldB = colours("gc-colour-b");
+    private final ComboBox<TeamColour> keeperB = colours("gc-goalkeeper-colour-b");
+    private final javafx.scene.control.TextField monitorPort = new javafx.scene.control.TextField();
     private final FlowPane pane;
 
     HslSetup() {
         competition.getItems().addAll(Competition.values());
-        competition.setValue(Competition.MIDDLE_ADVANCED);
         competition.setId("gc-competition");
         competition.setConverter(lowerCase(Competition.class));
         pane = new FlowPane(16, 8, new HBox(8, new Label("Competition"), competition),
@@ -60,10 +57,9 @@ final class HslSetup {
         };
     }
 
-    private static ComboBox<TeamColour> colours(String id, TeamColour initial) {
+    private static ComboBox<TeamColour> colours(String id) {
         ComboBox<TeamColour> box = new ComboBox<>();
         box.getItems().addAll(TeamColour.values());
-        box.setValue(initial);
         box.setId(id);
         box.setConverter(lowerCase(TeamColour.class));
         return box;
@@ -80,62 +76,38 @@ final class HslSetup {
         pane.setManaged(on);
     }
 
+    /** Shows {@code setup}'s HSL values. */
+    void fill(GameSetup setup) {
+        competition.setValue(setup.competition());
+        fieldA.setValue(setup.fieldA());
+        keeperA.setValue(setup.keeperA());
+        fieldB.setValue(setup.fieldB());
+        keeperB.setValue(setup.keeperB());
+        monitorPort.setText(setup.monitorPort());
+    }
+
     Competition competition() {
         return competition.getValue();
     }
 
-    TeamColour[] coloursA() {
-        return new TeamColour[]{fieldA.getValue(), keeperA.getValue()};
+    TeamColour fieldA() {
+        return fieldA.getValue();
     }
 
-    TeamColour[] coloursB() {
-        return new TeamColour[]{fieldB.getValue(), keeperB.getValue()};
+    TeamColour keeperA() {
+        return keeperA.getValue();
     }
 
-    /**
-     * The port where monitor applications (the official TeamCommunicationMonitor, a console with
-     * --gc-monitor) register, as with the official GameController; null for none (left empty).
-     *
-     * @throws NumberFormatException when it is not a whole number
-     */
-    Integer monitorPort() {
-        String t = monitorPort.getText().strip();
-        return t.isEmpty() ? null : Integer.parseInt(t);
+    TeamColour fieldB() {
+        return fieldB.getValue();
     }
 
-    /** Why these colours cannot play each other, or null. */
-    String conflict() {
-        return HslGame.colourConflict(coloursA(), coloursB());
+    TeamColour keeperB() {
+        return keeperB.getValue();
     }
 
-    /** Values to remember, by key. */
-    java.util.Map<String, String> values() {
-        return java.util.Map.of("competition", competition().name(), "colourA", fieldA.getValue().name(),
-                "goalkeeperColourA", keeperA.getValue().name(), "colourB", fieldB.getValue().name(),
-                "goalkeeperColourB", keeperB.getValue().name(), "monitorPort", monitorPort.getText().strip());
-    }
-
-    /** Restores remembered values; a value that no longer names anything is left as it is. */
-    void restore(java.util.function.Function<String, String> remembered) {
-        set(competition, Competition.class, remembered.apply("competition"));
-        set(fieldA, TeamColour.class, remembered.apply("colourA"));
-        set(keeperA, TeamColour.class, remembered.apply("goalkeeperColourA"));
-        set(fieldB, TeamColour.class, remembered.apply("colourB"));
-        set(keeperB, TeamColour.class, remembered.apply("goalkeeperColourB"));
-        String port = remembered.apply("monitorPort");
-        if (port != null) {
-            monitorPort.setText(port);
-        }
-    }
-
-    private static <E extends Enum<E>> void set(ComboBox<E> box, Class<E> type, String name) {
-        if (name == null) {
-            return;
-        }
-        try {
-            box.setValue(Enum.valueOf(type, name));
-        } catch (IllegalArgumentException e) {
-            // edited by hand or from another release: keep the default
-        }
+    /** The monitors' port as typed. */
+    String monitorPort() {
+        return monitorPort.getText();
     }
 }

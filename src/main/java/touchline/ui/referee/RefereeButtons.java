@@ -9,9 +9,10 @@ import java.util.List;
 import java.util.function.Supplier;
 
 /**
- * The referee box's buttons and the actions they dispatch: each press goes through the
- * {@link HslRefereeModel} and is shown at once (the next button is enabled without waiting a
- * frame); each frame enables exactly the buttons whose action the rules allow now.
+ * The referee box's buttons and the actions they dispatch: each press only enqueues through the
+ * {@link HslRefereeModel} and redraws the box at once (a chosen call, the outcomes that came);
+ * each frame takes the owner's answers and enables exactly the buttons whose action the rules
+ * allow now.
  */
 final class RefereeButtons {
 
@@ -29,7 +30,7 @@ final class RefereeButtons {
         this.show = show;
     }
 
-    /** Does what the referee asked and shows it at once. */
+    /** Does what the referee asked (enqueues an action, or chooses a call) and redraws the box. */
     void act(Runnable referee) {
         referee.run();
         show.run();

@@ -15,6 +15,8 @@ import touchline.game.ManualClock;
 import touchline.game.Penalty;
 import touchline.game.PlayState;
 
+import java.util.concurrent.TimeUnit;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static touchline.testing.FxStep.fx;
@@ -27,9 +29,22 @@ class GameControllerViewTest {
         FxToolkit.registerPrimaryStage();
     }
 
-    private static void click(GameControllerView view, String id) throws Exception {
+    private static void click(GameRuntime owner, GameControllerView view, String id) throws Exception {
         fx(() -> {
             ((Button) view.node().lookup("#" + id)).fire();
+            return null;
+        });
+        answered(owner, view);
+    }
+
+    /**
+     * A click only enqueues: the owner answers in arrival order, so once a timer event enqueued
+     * after it is done (the clock stands still: nothing else changes), so is the click; then a frame.
+     */
+    private static void answered(GameRuntime owner, GameControllerView view) throws Exception {
+        owner.tick().get(30, TimeUnit.SECONDS);
+        fx(() -> {
+            view.refresh(null);
             return null;
         });
     }
@@ -46,21 +61,22 @@ class GameControllerViewTest {
             return v;
         });
         assertTrue(fx(() -> clockText(view)).startsWith("INITIAL"));
-        click(view, "gc-ready");
+        click(owner, view, "gc-ready");
         assertEquals(PlayState.READY, game.snapshot().state());
         fx(() -> {
             Event.fireEvent(view.node(), new KeyEvent(KeyEvent.KEY_PRESSED, "", "", KeyCode.S, false, false, false,
                     false));
             return null;
         });
+        answered(owner, view);
         assertEquals(PlayState.SET, game.snapshot().state());
-        click(view, "gc-play");
-        click(view, "gc-goal-1");
+        click(owner, view, "gc-play");
+        click(owner, view, "gc-goal-1");
         assertEquals(1, game.snapshot().team(7).score());
         assertTrue(fx(() -> clockText(view)).contains("13 0:1 7"), fx(() -> clockText(view)));
-        click(view, "gc-play"); // illegal in READY: refused, shown, nothing changes
+        click(owner, view, "gc-play"); // illegal in READY: refused, shown, nothing changes
         assertEquals(PlayState.READY, game.snapshot().state());
-        click(view, "gc-robot-0-2");
+        click(owner, view, "gc-robot-0-2");
         assertEquals(Penalty.PHYSICAL_CONTACT, game.snapshot().team(13).player(2).penalty());
         clock.advance(12_000);
         fx(() -> {
@@ -68,9 +84,9 @@ class GameControllerViewTest {
             return null;
         });
         assertTrue(fx(() -> view.robotText(0, 2)).contains("physical_contact 18s"), fx(() -> view.robotText(0, 2)));
-        click(view, "gc-robot-0-2");
+        click(owner, view, "gc-robot-0-2");
         assertEquals(Penalty.NONE, game.snapshot().team(13).player(2).penalty());
-        click(view, "gc-undo");
+        click(owner, view, "gc-undo");
         assertEquals(Penalty.PHYSICAL_CONTACT, game.snapshot().team(13).player(2).penalty());
         assertTrue(fx(() -> view.robotText(1, 5)).contains("substitute"));
         owner.close();

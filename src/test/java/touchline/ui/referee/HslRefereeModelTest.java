@@ -13,6 +13,7 @@ import touchline.game.hsl.HslState;
 import touchline.game.hsl.SetPlay;
 import touchline.protocol.gamecontroller.HslPenalty;
 import touchline.protocol.gamecontroller.TeamColour;
+import touchline.testing.Await;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -46,11 +47,31 @@ class HslRefereeModelTest {
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, clock));
     }
 
-    private void ok(touchline.game.LeagueAction<? super HslState> a) {
-        assertTrue(model.perform(a).applied(), model.message());
+    /**
+     * Frames until the owner answered every action enqueued, as the view's pulse takes them: an
+     * action only enqueues, its outcome comes at the frame after the owner's answer.
+     */
+    private static void settle(HslRefereeModel m) throws InterruptedException {
+        Await.until("the GameController's answer", () -> {
+            m.refresh();
+            return !m.waiting();
+        });
     }
 
-    private void kickOffAndPlay() {
+    private void ok(touchline.game.LeagueAction<? super HslState> a) throws InterruptedException {
+        model.perform(a);
+        settle(model);
+        assertFalse(model.refused(), model.message());
+    }
+
+    /** Presses robot {@code player} on {@code side} and takes the outcome: whether it was applied. */
+    private boolean press(int side, int player) throws InterruptedException {
+        model.pressRobot(side, player);
+        settle(model);
+        return !model.refused();
+    }
+
+    private void kickOffAndPlay() throws InterruptedException {
         ok(model.ready());
         ok(model.set());
         ok(model.play());
@@ -73,7 +94,7 @@ class HslRefereeModelTest {
     }
 
     @Test
-    void kickOffReadySetPlayingThenStopAndResume() {
+    void kickOffReadySetPlayingThenStopAndResume() throws Exception {
         ok(model.ready());
         assertEquals(HslPlayState.READY, model.state().state());
         assertEquals("  0:45", model.secondaryClock());
@@ -92,7 +113,7 @@ class HslRefereeModelTest {
     }
 
     @Test
-    void setPlaysWithoutReadyStopPlayAndBallFreeEndsThem() {
+    void setPlaysWithoutReadyStopPlayAndBallFreeEndsThem() throws Exception {
         kickOffAndPlay();
         assertTrue(model.legal(model.setPlay(1, SetPlay.CORNER_KICK)));
         ok(model.setPlay(1, SetPlay.CORNER_KICK));
@@ -105,14 +126,52 @@ class HslRefereeModelTest {
     }
 
     @Test
-    void anIllegalActionIsRefusedWithTheReason() {
-        assertFalse(model.perform(model.goal(0)).applied());
+    void anIllegalActionIsRefusedWithTheReason() throws Exception {
+        model.perform(model.goal(0));
+        settle(model);
+        assertTrue(model.refused());
+        assertTrue(model.message().startsWith("illegal now: goal 5"), model.message());
+    }
+
+    /**
+     * The owner held inside its listener (the sender's wake-up, on the owner thread) after READY:
+     * a goal pressed meanwhile only enqueues; unanswered past {@link GameRuntime#ANSWER_MS} on the
+     * game's clock the line says so, and once the owner goes on the goal's refusal is shown.
+     */
+    @Test
+    void anActionOnlyEnqueuesAndItsOutcomeComesAtAFrameAfterTheOwnerAnswered() throws Exception {
+        java.util.concurrent.CountDownLatch held = new java.util.concurrent.CountDownLatch(1);
+        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+        owners.get(0).addListener(s -> {
+            held.countDown();
+            try {
+                release.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        try {
+            model.perform(model.ready());
+            held.await();
+            model.perform(model.goal(0)); // no goal in READY
+            model.refresh();
+            assertTrue(model.waiting());
+            assertEquals("", model.message(), "nothing answered yet");
+            clock.advance(GameRuntime.ANSWER_MS);
+            model.refresh();
+            assertTrue(model.refused());
+            assertEquals("the GameController did not answer within " + GameRuntime.ANSWER_MS + " ms", model.message());
+        } finally {
+            release.countDown();
+        }
+        settle(model);
+        assertEquals(HslPlayState.READY, model.state().state());
         assertTrue(model.refused());
         assertTrue(model.message().startsWith("illegal now: goal 5"), model.message());
     }
 
     @Test
-    void aGoalCountsAndGivesTheOtherTeamTheKickOff() {
+    void aGoalCountsAndGivesTheOtherTeamTheKickOff() throws Exception {
         kickOffAndPlay();
         ok(model.goal(0));
         assertEquals("1", model.score(0));
@@ -121,30 +180,30 @@ class HslRefereeModelTest {
     }
 
     @Test
-    void thePenaltyIsChosenFirstThenTheRobotThenItsTimerStartsAndItComesBack() {
+    void thePenaltyIsChosenFirstThenTheRobotThenItsTimerStartsAndItComesBack() throws Exception {
         kickOffAndPlay();
         assertFalse(model.legal(model.robotAction(1, 3)), "no call chosen: a playing robot has nothing to undo");
         assertEquals("Playing", model.robotButtonText(1, 3));
         model.choose(HslPenalty.PUSHING);
         assertEquals(HslPenalty.PUSHING, model.chosen());
         assertEquals("Penalise", model.robotButtonText(1, 3));
-        assertTrue(model.pressRobot(1, 3).applied(), model.message());
+        assertTrue(press(1, 3), model.message());
         assertNull(model.chosen(), "a call is used once");
         assertEquals(HslPenalty.PUSHING, model.state().teamOnSide(1).player(3).penalty());
         assertEquals("Start timer", model.robotButtonText(1, 3));
         assertTrue(model.robotText(1, 3, "online").contains("pushing wait"), model.robotText(1, 3, "online"));
-        assertTrue(model.pressRobot(1, 3).applied(), "the robot is outside: its timer starts");
+        assertTrue(press(1, 3), "the robot is outside: its timer starts");
         assertEquals("Running", model.robotButtonText(1, 3));
         assertFalse(model.legal(model.robotAction(1, 3)), "not back before the time is served");
         clock.advance(45_000);
         model.refresh();
         assertEquals("Back in", model.robotButtonText(1, 3));
-        assertTrue(model.pressRobot(1, 3).applied());
+        assertTrue(press(1, 3));
         assertFalse(model.state().teamOnSide(1).player(3).isPenalised());
     }
 
     @Test
-    void motionInStopOnlyWhileStoppedAndMotionInSetOnlyInSet() {
+    void motionInStopOnlyWhileStoppedAndMotionInSetOnlyInSet() throws Exception {
         kickOffAndPlay();
         assertFalse(model.penaltyLegal(HslPenalty.MOTION_IN_STOP));
         assertFalse(model.penaltyLegal(HslPenalty.MOTION_IN_SET));
@@ -156,20 +215,20 @@ class HslRefereeModelTest {
     }
 
     @Test
-    void aSecondCautionSendsOff() {
+    void aSecondCautionSendsOff() throws Exception {
         kickOffAndPlay();
         model.choose(HslPenalty.CAUTIONED);
-        assertTrue(model.pressRobot(0, 2).applied());
+        assertTrue(press(0, 2));
         assertEquals(1, model.state().teamOnSide(0).player(2).cautions());
         model.choose(HslPenalty.CAUTIONED);
-        assertTrue(model.pressRobot(0, 2).applied());
+        assertTrue(press(0, 2));
         assertEquals(HslPenalty.SENT_OFF, model.state().teamOnSide(0).player(2).penalty());
         assertEquals("Out", model.robotButtonText(0, 2));
         assertFalse(model.legal(model.robotAction(0, 2)));
     }
 
     @Test
-    void choosingTheSameCallAgainCancelsIt() {
+    void choosingTheSameCallAgainCancelsIt() throws Exception {
         kickOffAndPlay();
         model.choose(HslPenalty.PUSHING);
         model.choose(HslPenalty.PUSHING);
@@ -177,7 +236,7 @@ class HslRefereeModelTest {
     }
 
     @Test
-    void additionalMinuteAfterAMinuteOutsidePlayAddsBudget() {
+    void additionalMinuteAfterAMinuteOutsidePlayAddsBudget() throws Exception {
         kickOffAndPlay();
         assertFalse(model.legal(model.additionalMinute()), "not during PLAYING");
         clock.advance(70_000);

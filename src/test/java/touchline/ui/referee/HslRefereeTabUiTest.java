@@ -253,11 +253,12 @@ class HslRefereeTabUiTest {
         gc.press("#gc-call-pushing");
         gc.press("#gc-robot-1-3");
         awaitHeard(d -> HslPenalty.ofNeutral(d.team(7).player(3).penalty()) == HslPenalty.PUSHING);
-        assertTrue(text(tab, "#gc-robot-text-1-3").contains("pushing wait"), text(tab, "#gc-robot-text-1-3"));
+        // a press only enqueues: the box shows what the owner published at its next frame
+        ui.await(30, () -> text(tab, "#gc-robot-text-1-3").contains("pushing wait"));
 
         gc.press("#gc-goal-0");
         awaitHeard(d -> d.team(13).score() == 1 && d.state() == GameControlData.STATE_READY && d.kickOffTeam() == 7);
-        assertEquals("1", text(tab, "#gc-score-0"));
+        ui.await(30, () -> "1".equals(text(tab, "#gc-score-0")));
 
         gc.press("#gc-call-cautioned");
         gc.press("#gc-robot-0-2");
