@@ -20,7 +20,7 @@ import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslPlayState;
 import touchline.game.hsl.HslRules;
 import touchline.game.hsl.SetPlay;
-import touchline.game.hsl.StartSetPlay;
+import touchline.game.hsl.HslStartSetPlay;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.testing.Await;
 import touchline.ui.frame.View;
@@ -124,7 +124,7 @@ class RefereeClickTest {
                 new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, clock));
         HslRefereeView view = shown(() -> new HslRefereeView(new HslRefereeModel(game), null, null));
-        game.perform(new StartSetPlay(5, SetPlay.KICK_OFF)); // READY, as if a key had been pressed
+        game.perform(new HslStartSetPlay(5, SetPlay.KICK_OFF)); // READY, as if a key had been pressed
         held.await();
         // the box last drew INITIAL, where Ready is allowed: a second Ready, refused by the rules
         pressThenLetGo(view, "gc-ready");
