@@ -39,7 +39,7 @@ public final class Recordings {
      */
     public synchronized Recorder start(Path file, EnvelopeWriter.Options options) throws IOException {
         stop();
-        recorder = new Recorder(file, options.withBridgedSchemas(bridged));
+        recorder = new Recorder(file, options.withBridgedSchemas(bridged)).start();
         subscription = bus.subscribe(recorder);
         return recorder;
     }
