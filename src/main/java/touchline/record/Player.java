@@ -24,6 +24,8 @@ import java.util.Optional;
  * envelope is delivered, so what was built from the replay can start again from there; after a
  * seek, playing or paused, the state at the play head ({@link PlayHead}: the newest envelope of
  * each kind at or before it) is delivered first, so the views show that moment at once.
+ * Over 400 lines because the controls, the paced pump and the unpaced run share one position,
+ * one cursor and one lock, and the order of a jump against a batch in flight is kept by that lock.
  */
 public final class Player implements AutoCloseable {
 
