@@ -40,10 +40,10 @@ class CloseWhileRecordingUiTest {
             ui.fxRun(() -> stage.fireEvent(new WindowEvent(stage, WindowEvent.WINDOW_CLOSE_REQUEST)));
             // the FX thread is free again while the finish is held: a step on it sees the window as it is now
             boolean showing = ui.fx(stage::isShowing);
-            String said = ui.fx(() -> ui.robot.lookup("#status-message").queryAs(Label.class).getText());
-            assertTrue(ui.console.recordings().current().isPresent(), "the finish is still held");
+            String said = ui.fx(() -> ((Label) ui.window.status().lookup("#status-message")).getText());
             assertTrue(showing, "the window stays while its recording is being finished");
             assertEquals("finishing recording…", said);
+            assertTrue(ui.console.recordings().current().isPresent(), "the finish is still held");
 
             disk.release();
             ui.await(30, () -> !stage.isShowing());
