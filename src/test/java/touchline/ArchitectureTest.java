@@ -157,15 +157,6 @@ class ArchitectureTest {
     }
 
     /**
-     * Constructors the threading rule (docs/architecture.md, "Threads") still waits for, each to
-     * leave this list with the work of issue 38 that rewrites it — never to grow: the
-     * GameController's listeners (item 2: one runtime owns the game and its one listener on
-     * 3838) and the recorder's file thread (item 3: live and replay streams).
-     */
-    private static final java.util.Set<String> STARTING_IN_CONSTRUCTOR_FOR_NOW = java.util.Set.of(
-            "touchline.transport.gamecontroller.GcListener", "touchline.record.BackgroundFiles");
-
-    /**
      * Nothing starts a thread in a constructor: making an object starts nothing, its owner (the
      * composition root, {@code Console}) calls its {@code start()}. A constructor calls no
      * {@code Thread.start}, no {@code start()} of any kind, and hands no task to an executor (a lambda
@@ -174,9 +165,6 @@ class ArchitectureTest {
     @Test
     void noConstructorStartsAThread() {
         com.tngtech.archunit.lang.syntax.ArchRuleDefinition.constructors()
-                .that(com.tngtech.archunit.base.DescribedPredicate.describe("not yet under the rule",
-                        (com.tngtech.archunit.core.domain.JavaConstructor c) ->
-                                !STARTING_IN_CONSTRUCTOR_FOR_NOW.contains(c.getOwner().getName())))
                 .should(new com.tngtech.archunit.lang.ArchCondition<com.tngtech.archunit.core.domain.JavaConstructor>(
                         "start no thread") {
                     @Override

@@ -19,7 +19,7 @@ public final class Recordings {
 
     private final LiveStream bus;
     private final BridgedSchema.Source bridged;
-    private Recorder recorder;
+    private volatile Recorder recorder;    // written under this; read without it (current())
     private AutoCloseable subscription;
 
     /** @param bridged a bridged robot's channel's own encoding and schema, which its recorded channel keeps */
@@ -39,7 +39,7 @@ public final class Recordings {
      */
     public synchronized Recorder start(Path file, EnvelopeWriter.Options options) throws IOException {
         stop();
-        recorder = new Recorder(file, options.withBridgedSchemas(bridged));
+        recorder = new Recorder(file, options.withBridgedSchemas(bridged)).start();
         subscription = bus.subscribe(recorder);
         return recorder;
     }
@@ -79,9 +79,22 @@ public final class Recordings {
         return !finishing.isAlive();
     }
 
-    /** The running recording's figures, if one runs. */
-    public synchronized Optional<RecorderStats> current() {
-        return recorder == null ? Optional.empty() : Optional.of(recorder.stats());
+    /**
+     * As {@link #finish}, without waiting: the file is finished on a thread of its own, which then
+     * tells {@code done} whether it was finished within the bound (what the window's close does,
+     * off the JavaFX thread).
+     */
+    public void finishThen(long timeoutMillis, java.util.function.Consumer<Boolean> done) {
+        new Thread(() -> done.accept(finish(timeoutMillis)), "touchline-finish-recording-wait").start();
+    }
+
+    /**
+     * The running recording's figures, if one runs (until its file is finished). Does not wait
+     * for a recording being finished, so a frame may ask.
+     */
+    public Optional<RecorderStats> current() {
+        Recorder r = recorder;
+        return r == null ? Optional.empty() : Optional.of(r.stats());
     }
 
     void close() {

@@ -80,7 +80,7 @@ public final class Referee {
         }
         try {
             watch = new GameStateWatch(new InetSocketAddress(config.udp().bindAddress(), config.gameControllerPort()),
-                    live, matchMode, monitorRegistrations, sources, clock);
+                    live, matchMode, monitorRegistrations, sources, clock).start();
             // started in the middle of a game, the console must hear the GameController before it talks
             listeningSinceMicros = clock.nowMicros();
             matchMode.listenFirst(MatchMode.LISTEN_FIRST_MS);
@@ -100,7 +100,7 @@ public final class Referee {
         }
         try {
             monitor = new GcMonitor(config.gcMonitor(), new InetSocketAddress(config.udp().bindAddress(),
-                    config.gcForwardPort()), monitorRegistrations, live, clock);
+                    config.gcForwardPort()), monitorRegistrations, live, clock).start();
         } catch (IOException e) {
             LOG.warn("cannot monitor the GameController at {}: {}", config.gcMonitor(), e.toString());
         }

@@ -88,8 +88,8 @@ public final class Replay implements AutoCloseable {
 
     /**
      * The player's state now, without taking the player's lock: the model's clock reads this
-     * while holding model locks, and the player holds its lock while delivering into the model,
-     * so waiting for the player here would deadlock. The state is refreshed by the pump thread
+     * while holding model locks, and a control holds the player's lock while its jump empties the
+     * model, so waiting for the player here could deadlock. The state is refreshed by the pump thread
      * (every 20 ms at most) and by every control; while playing, the position is extrapolated
      * from the last refresh at the current speed.
      */

@@ -36,7 +36,7 @@ public final class TeamBudget {
         budget = new TeamMessageBudget(field.modelClock(), profile, team);
         budgetSubscription = field.bus().subscribe(budget);
         field.matchRule().use(MatchDebugRule.Limits.of(profile));
-        listener = new TeamMessageListener(bind, field::acceptTeamMessage, field.clock());
+        listener = new TeamMessageListener(bind, field::acceptTeamMessage, field.clock()).start();
         return budget;
     }
 

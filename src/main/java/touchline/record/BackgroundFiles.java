@@ -49,12 +49,24 @@ final class BackgroundFiles implements AutoCloseable {
     private FileChannel unsynced;          // the file written since the last sync (file thread only)
     private long unsyncedSince;
 
-    /** @param tick run on the file thread about every 100 ms while idle; may write through streams of this */
+    /**
+     * Makes the queue; the file thread starts with {@link #start()} (writes queued before then wait).
+     *
+     * @param tick run on the file thread about every 100 ms while idle; may write through streams of this
+     */
     BackgroundFiles(String threadName, Runnable tick) {
         this.tick = tick;
         this.thread = new Thread(this::run, threadName);
         thread.setDaemon(true);
-        thread.start();
+    }
+
+    /** Starts the file thread (once; later calls do nothing). */
+    void start() {
+        synchronized (thread) {
+            if (thread.getState() == Thread.State.NEW) {
+                thread.start();
+            }
+        }
     }
 
     /** Creates (or truncates) {@code file} now, on the calling thread, so a bad path fails at once. */
@@ -200,9 +212,13 @@ final class BackgroundFiles implements AutoCloseable {
         }
     }
 
-    /** Performs everything queued, closes the files it was asked to, and ends the thread. */
+    /**
+     * Performs everything queued, closes the files it was asked to, and ends the thread (started
+     * now if it never was, so nothing queued is lost).
+     */
     @Override
     public void close() {
+        start();
         jobs.add(new Stop());
         try {
             thread.join();

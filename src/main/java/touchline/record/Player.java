@@ -3,6 +3,7 @@ package touchline.record;
 import touchline.transport.Envelope;
 import touchline.transport.EnvelopeSink;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 
@@ -11,7 +12,11 @@ import java.util.Optional;
  * {@code EnvelopeBus}) paced by a clock: play, pause, speed 0.1x to 50x, seek by time or to
  * an event, loop a range, or everything as fast as possible ({@link #runToEnd()}). Controls
  * are thread-safe and may be called from the UI thread; envelopes are delivered on the
- * player's own thread ({@link #start()}) or on whichever thread calls {@link #pump()}.
+ * player's own thread ({@link #start()}) or on whichever thread calls {@link #pump()}, one
+ * delivering thread at a time. A batch is taken under the player's lock and delivered outside
+ * it, so a control never waits for a subscriber: a jump while a batch is delivered ends that
+ * batch after the envelope in hand, and its {@code jumped} callback then runs on the delivering
+ * thread, after that envelope and before anything from the new position.
  * The position advances with the clock: recording time = anchor + wall time elapsed x speed.
  * Every envelope it delivers is marked {@linkplain Envelope#asReplayed() replayed}, so nothing
  * that acts on the live field reacts to it. Whenever the position jumps (a seek, a loop going
@@ -19,6 +24,8 @@ import java.util.Optional;
  * envelope is delivered, so what was built from the replay can start again from there; after a
  * seek, playing or paused, the state at the play head ({@link PlayHead}: the newest envelope of
  * each kind at or before it) is delivered first, so the views show that moment at once.
+ * Over 400 lines because the controls, the paced pump and the unpaced run share one position,
+ * one cursor and one lock, and the order of a jump against a batch in flight is kept by that lock.
  */
 public final class Player implements AutoCloseable {
 
@@ -34,10 +41,19 @@ public final class Player implements AutoCloseable {
     private final EnvelopeSink sink;
     private final PlaybackClock clock;
     private final Runnable jumped;
+    /** What a batch delivers: an envelope from its file, or the {@link #JUMP} of a loop going round. */
+    private record Due(Envelope envelope, String source) { }
+
+    private static final Due JUMP = new Due(null, "");
+
     private ReplaySession.Cursor cursor;
     private Envelope pending;
     private String pendingSource = "";
-    private String delivering = "";
+    private volatile String delivering = "";
+    /** A batch is being delivered outside the lock (by one thread at a time). */
+    private boolean inFlight;
+    /** The position jumped while a batch was in flight: {@code jumped} runs when it ends. */
+    private boolean jumpDue;
     private long position;
     private long anchorRecording;
     private long anchorWall;
@@ -46,14 +62,15 @@ public final class Player implements AutoCloseable {
     private double speed = 1;
     private long loopFrom = -1;
     private long loopTo = -1;
-    private long emitted;
+    private volatile long emitted;     // written by the one delivering thread
     /** A seek's position whose state ({@link PlayHead}) is still to be delivered, or -1. */
     private long headDue = -1;
     /**
      * Moves on each jump and each unpaced run: a state read before is stale and not delivered (an
-     * unpaced run, {@link #runFor}, plays from the position for a headless tool and wants no state).
+     * unpaced run, {@link #runFor}, plays from the position for a headless tool and wants no state);
+     * a batch in flight stops when it moves. Written under the lock.
      */
-    private long headEpoch;
+    private volatile long headEpoch;
     private boolean closed;
     private Thread thread;
 
@@ -62,8 +79,9 @@ public final class Player implements AutoCloseable {
     }
 
     /**
-     * @param jumped run (under the player's lock, before anything from the new position is
-     *               delivered) each time the position jumps instead of advancing
+     * @param jumped run each time the position jumps instead of advancing, before anything from
+     *               the new position is delivered: at once by the control (under the player's lock),
+     *               or, while a batch is in flight, by the delivering thread when that batch ends
      */
     public Player(Recording recording, EnvelopeSink sink, PlaybackClock clock, Runnable jumped) {
         this(ReplaySession.of(recording), sink, clock, jumped);
@@ -94,9 +112,15 @@ public final class Player implements AutoCloseable {
     }
 
     private void loop() {
-        synchronized (this) {
-            while (!closed) {
-                long waitNanos = pump();
+        while (true) {
+            long waitNanos = pump(); // delivers outside the lock
+            synchronized (this) {
+                if (closed) {
+                    return;
+                }
+                if (headDue >= 0) {
+                    continue; // a seek came while pumping
+                }
                 try {
                     long w = playing ? Math.max(1_000_000L, Math.min(waitNanos, MAX_WAIT_NANOS)) : 0;
                     if (w == 0) {
@@ -130,7 +154,7 @@ public final class Player implements AutoCloseable {
         long at;
         long jump;
         synchronized (this) {
-            if (headDue < 0) {
+            if (headDue < 0 || inFlight) {
                 return;
             }
             at = headDue;
@@ -138,32 +162,53 @@ public final class Player implements AutoCloseable {
             headDue = -1;
         }
         List<PlayHead.Newest> state = new PlayHead(session).at(at);
+        List<Due> batch = new ArrayList<>(state.size());
         synchronized (this) {
-            if (jump != headEpoch || closed) {
+            if (jump != headEpoch || closed || inFlight) {
                 return;
             }
             for (PlayHead.Newest n : state) {
-                deliver(n.envelope(), n.source());
+                batch.add(new Due(n.envelope(), n.source()));
             }
             cursor = session.cursor(at + 1); // what the state delivered does not play again
             pending = null;
+            inFlight = true;
         }
+        deliverOutsideTheLock(batch, jump);
     }
 
-    private synchronized long pumpDue() {
-        if (!playing) {
-            return Long.MAX_VALUE;
+    /** Takes the envelopes due by now under the lock, then delivers them outside it. */
+    private long pumpDue() {
+        List<Due> batch = new ArrayList<>();
+        long wait;
+        long epoch;
+        synchronized (this) {
+            if (!playing || inFlight) {
+                return playing ? MAX_WAIT_NANOS : Long.MAX_VALUE;
+            }
+            wait = takeDue(batch);
+            epoch = headEpoch;
+            if (batch.isEmpty()) {
+                return wait;
+            }
+            inFlight = true;
         }
+        deliverOutsideTheLock(batch, epoch);
+        return wait;
+    }
+
+    /** Under the lock: moves what is due by now into {@code batch}; returns the wait until the next is due. */
+    private long takeDue(List<Due> batch) {
         long target = targetPosition();
-        int delivered = 0;
+        int taken = 0;
         int laps = 0;
-        while (delivered < BATCH && laps < MAX_LAPS_PER_PUMP) {
+        while (taken < BATCH && laps < MAX_LAPS_PER_PUMP) {
             if (pending == null) {
                 pending = cursor.next();
                 pendingSource = cursor.source();
                 if (pending == null) {
                     if (loopFrom >= 0) {
-                        target = wrap(target, Math.min(loopTo, session.endMicros()));
+                        target = wrap(target, Math.min(loopTo, session.endMicros()), batch);
                         laps++;
                         continue;
                     }
@@ -174,28 +219,81 @@ public final class Player implements AutoCloseable {
                 }
             }
             if (loopTo >= 0 && pending.timeMicros() > loopTo && target >= loopTo) {
-                target = wrap(target, loopTo);
+                target = wrap(target, loopTo, batch);
                 laps++;
                 continue;
             }
             if (pending.timeMicros() > target) {
                 break;
             }
-            deliver(pending, pendingSource);
+            batch.add(new Due(pending, pendingSource));
             pending = null;
-            delivered++;
+            taken++;
         }
         position = Math.max(position, Math.min(target, session.endMicros()));
-        if (delivered >= BATCH || pending == null) {
+        if (taken >= BATCH || pending == null) {
             return 0;
         }
         return (long) ((pending.timeMicros() - target) * 1000 / speed);
     }
 
-    /** Jumps back to the loop start, carrying over the time played past {@code end}; returns the new target. */
-    private long wrap(long target, long end) {
+    /**
+     * Delivers a batch taken under the lock (which this thread no longer holds), stopping when the
+     * position jumps or the player closes; then runs a jump that came meanwhile, and lets the next
+     * batch be taken. Returns how many envelopes it delivered.
+     */
+    private int deliverOutsideTheLock(List<Due> batch, long epoch) {
+        int n = 0;
+        try {
+            for (Due d : batch) {
+                if (headEpoch != epoch) {
+                    break; // the rest is from before a jump (or a close)
+                }
+                if (d == JUMP) {
+                    jumped.run();
+                } else {
+                    deliver(d.envelope(), d.source());
+                    n++;
+                }
+            }
+        } finally {
+            settle();
+        }
+        return n;
+    }
+
+    /** After a batch: the jumps announced while it was in flight, on this thread, then the batch is over. */
+    private void settle() {
+        while (true) {
+            synchronized (this) {
+                if (!jumpDue) {
+                    inFlight = false;
+                    notifyAll();
+                    return;
+                }
+                jumpDue = false;
+            }
+            jumped.run();
+        }
+    }
+
+    /** Under the lock, after a control moved the position: {@code jumped} now, or when the batch in flight ends. */
+    private void announceJump() {
+        if (inFlight) {
+            jumpDue = true;
+        } else {
+            jumped.run();
+        }
+    }
+
+    /**
+     * Jumps back to the loop start, carrying over the time played past {@code end}; the jump is
+     * announced in the batch, after what it took before; returns the new target.
+     */
+    private long wrap(long target, long end, List<Due> batch) {
         long excess = Math.max(0, target - end);
         reposition(loopFrom);
+        batch.add(JUMP);
         anchorWall -= (long) (excess * 1000 / speed);
         return loopFrom + excess;
     }
@@ -226,12 +324,12 @@ public final class Player implements AutoCloseable {
         pending = null;
         headEpoch++;
         reanchor();
-        jumped.run();
     }
 
     public synchronized void play() {
         if (finished) {
             reposition(loopFrom >= 0 ? loopFrom : session.startMicros());
+            announceJump();
             finished = false;
         }
         if (!playing) {
@@ -252,6 +350,7 @@ public final class Player implements AutoCloseable {
     /** Jumps to {@code timeMicros} (clamped to the recording); playing continues from there. */
     public synchronized void seek(long timeMicros) {
         reposition(timeMicros);
+        announceJump();
         headDue = position;
         finished = false;
         notifyAll();
@@ -289,6 +388,7 @@ public final class Player implements AutoCloseable {
         loopTo = toMicros;
         if (position < fromMicros || position > toMicros) {
             reposition(fromMicros);
+            announceJump();
         }
         notifyAll();
     }
@@ -314,28 +414,44 @@ public final class Player implements AutoCloseable {
             headEpoch++;
         }
         while (true) {
+            List<Due> batch = new ArrayList<>();
+            long epoch;
+            boolean ended = false;
             synchronized (this) {
-                int batch = 0;
-                if (pending != null) {
-                    deliver(pending, pendingSource);
-                    pending = null;
-                    n++;
+                while (inFlight) { // another thread delivers: after it
+                    try {
+                        wait();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        return n;
+                    }
                 }
-                int limit = (int) Math.min(BATCH, max - n);
-                for (Envelope e = null; batch < limit && (e = cursor.next()) != null; batch++) {
-                    deliver(e, cursor.source());
+                long taking = n;
+                if (pending != null) {
+                    batch.add(new Due(pending, pendingSource));
+                    pending = null;
+                    taking++;
+                }
+                int limit = (int) Math.min(BATCH, max - taking);
+                int taken = 0;
+                for (Envelope e = null; taken < limit && (e = cursor.next()) != null; taken++) {
+                    batch.add(new Due(e, cursor.source()));
                     position = e.timeMicros();
                 }
-                n += batch;
-                if (n >= max) {
-                    return n;
-                }
-                if (batch < limit) {
+                if (taking + taken < max && taken < limit) {
                     finished = true;
                     playing = false;
                     position = session.endMicros();
-                    return n;
+                    ended = true;
                 }
+                epoch = headEpoch;
+                inFlight = !batch.isEmpty();
+            }
+            if (!batch.isEmpty()) {
+                n += deliverOutsideTheLock(batch, epoch);
+            }
+            if (n >= max || ended) {
+                return n;
             }
         }
     }
@@ -363,7 +479,7 @@ public final class Player implements AutoCloseable {
      * The name of the file the envelope being delivered comes from ("" for a single file);
      * valid inside the sink, on the delivering thread.
      */
-    public synchronized String deliveringSource() {
+    public String deliveringSource() {
         return delivering;
     }
 
@@ -373,6 +489,7 @@ public final class Player implements AutoCloseable {
         synchronized (this) {
             closed = true;
             playing = false;
+            headEpoch++; // a batch in flight stops after the envelope in hand
             notifyAll();
             t = thread;
         }

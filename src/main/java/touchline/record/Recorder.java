@@ -17,8 +17,8 @@ import java.util.concurrent.atomic.AtomicLong;
  * waits for the disk. When the disk falls behind by more than {@link #MAX_PENDING_BYTES},
  * envelopes are refused and counted as dropped, so the file stays consistent. The open chunk
  * is written at least every {@link #MAX_CHUNK_AGE_NANOS} plus one tick, so a killed process
- * loses at most about a second. Subscribe it to the {@code EnvelopeBus}; close it to finish
- * the file.
+ * loses at most about a second. Start it ({@link #start()}: the disk thread), subscribe it to
+ * the {@code EnvelopeBus}; close it to finish the file.
  */
 public final class Recorder implements EnvelopeSink, AutoCloseable {
 
@@ -33,7 +33,6 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
     private long written;                  // guarded by writer
     private volatile long writtenSoFar;
     private volatile boolean stopping;
-    private volatile boolean ready;
     private volatile String failure;
     private volatile long bytes;
 
@@ -53,7 +52,12 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
             throw e;
         }
         this.writer = w;
-        ready = true; // published to the disk thread (volatile): its tick may use the writer from now on
+    }
+
+    /** Starts the disk thread (its owner does, once it has made the recorder); returns this. */
+    public Recorder start() {
+        disk.start();
+        return this;
     }
 
     /** Test hook: the disk thread writes nothing until {@code release} opens. */
@@ -84,10 +88,8 @@ public final class Recorder implements EnvelopeSink, AutoCloseable {
 
     /** On the disk thread: writes an old open chunk, refreshes the byte count, picks up disk errors. */
     private void tick() {
-        if (!ready) {
-            // the disk thread starts before the constructor has made the writer (it opens its
-            // file through that thread); a tick then found "writer" null and stopped the
-            // recording for good on a loaded machine (RecordingEndsUiTest caught it)
+        if (writer == null) {
+            // only when the constructor failed: its close drains what the writer had queued
             return;
         }
         synchronized (writer) {

@@ -11,6 +11,7 @@ import java.net.InetSocketAddress;
  * envelope with its sender and its exact size. The content is the team's own format and is not
  * decoded. The port is shared (SO_REUSEADDR), so robots and other consoles on the same host
  * still hear it; datagrams up to 64 KiB arrive whole, so an oversized message is measured, not cut.
+ * The port is bound when made; it listens from {@link #start()}.
  */
 public final class TeamMessageListener implements AutoCloseable {
 
@@ -28,6 +29,12 @@ public final class TeamMessageListener implements AutoCloseable {
         this.listener = new GcListener(bind, (data, from) -> sink.accept(new Envelope(clock.nowMicros(), Direction.IN,
                 Channel.TEAM_MESSAGE, from, Envelope.NO_ROBOT, "team.message", null, data, null)),
                 "team-messages", 65_536);
+    }
+
+    /** Starts listening; returns this. */
+    public TeamMessageListener start() {
+        listener.start();
+        return this;
     }
 
     public static int portOf(int team) {

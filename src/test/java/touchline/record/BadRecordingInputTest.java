@@ -42,7 +42,7 @@ class BadRecordingInputTest {
         List<Envelope> sent = RecordingFixture.team(2, 6);
         Path file = dir.resolve("live.mcap");
         // small chunks: each is handed to the disk as soon as it is full
-        try (Recorder recorder = new Recorder(file, new EnvelopeWriter.Options(0, 0, 2048, List.of()))) {
+        try (Recorder recorder = new Recorder(file, new EnvelopeWriter.Options(0, 0, 2048, List.of())).start()) {
             List<Envelope> first = sent.subList(0, sent.size() / 2);
             first.forEach(recorder::accept);
             Await.until("chunks on disk", () -> readableNow(file) > 0);

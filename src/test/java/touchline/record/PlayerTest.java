@@ -226,4 +226,62 @@ class PlayerTest {
             threaded.close();
         }
     }
+
+    /**
+     * Issue 38: the player delivers outside its lock. While a subscriber is held inside a
+     * delivery, speed, pause and seek return without waiting for it; the seek's jump is announced
+     * when that delivery ends, nothing else of the batch from before the seek follows it, and the
+     * state at the new play head comes next.
+     */
+    @Test
+    void aControlWhileASubscriberIsHeldInsideADeliveryReturnsWithoutWaitingForIt() throws Exception {
+        CountDownLatch inside = new CountDownLatch(1);
+        CountDownLatch release = new CountDownLatch(1);
+        List<Envelope> held = new CopyOnWriteArrayList<>();
+        List<Integer> heldJumps = new CopyOnWriteArrayList<>();
+        Player p = new Player(recording, e -> {
+            held.add(e);
+            if (held.size() == 1) {
+                inside.countDown();
+                try {
+                    release.await();
+                } catch (InterruptedException interrupted) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }, now::get, () -> heldJumps.add(held.size()));
+        java.util.concurrent.ExecutorService delivering = java.util.concurrent.Executors.newSingleThreadExecutor();
+        java.util.concurrent.ExecutorService controlling = java.util.concurrent.Executors.newSingleThreadExecutor();
+        long target = recording.startMicros() + 30_000_000L;
+        try {
+            p.play();
+            now.addAndGet(2_000_000_000L); // two seconds of envelopes due: one batch
+            java.util.concurrent.Future<Long> pumping = delivering.submit(p::pump);
+            assertTrue(inside.await(Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS), "the subscriber holds the first envelope");
+            java.util.concurrent.Future<?> controls = controlling.submit(() -> {
+                p.setSpeed(2);
+                p.pause();
+                p.seek(target);
+            });
+            try {
+                controls.get(Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS);
+            } catch (java.util.concurrent.TimeoutException waited) {
+                throw new AssertionError("a control waited for the subscriber held inside a delivery", waited);
+            }
+            assertEquals(List.of(), heldJumps, "the jump waits for the delivery in hand");
+            assertEquals(target, p.snapshot().positionMicros());
+
+            release.countDown();
+            pumping.get(Await.FLOOR_MILLIS, TimeUnit.MILLISECONDS);
+            assertEquals(List.of(1), heldJumps, "announced when that delivery ended");
+            assertEquals(1, held.size(), "nothing of the batch from before the seek after the jump");
+            p.pump();
+            assertEquals(newestOfEachKindUpTo(target), held.subList(1, held.size()), "then the state at the play head");
+        } finally {
+            release.countDown();
+            p.close();
+            delivering.shutdownNow();
+            controlling.shutdownNow();
+        }
+    }
 }

@@ -25,7 +25,7 @@ class RecorderTest {
         List<Envelope> sent = RecordingFixture.team(3, 30);
         Path file = dir.resolve("bus.mcap");
         EnvelopeBus bus = new EnvelopeBus();
-        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
+        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults()).start();
         try (AutoCloseable ignored = bus.subscribe(recorder)) {
             sent.forEach(bus::accept);
         }
@@ -45,7 +45,7 @@ class RecorderTest {
     void aRecorderThatIsNeverClosedHasItsDataOnDiskWithinASecond() throws Exception {
         List<Envelope> sent = RecordingFixture.team(2, 5);
         Path file = dir.resolve("killed.mcap");
-        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults());
+        Recorder recorder = new Recorder(file, EnvelopeWriter.Options.defaults()).start();
         sent.forEach(recorder::accept);
         // like kill -9: nobody closes the recorder; the time-based chunk flush must put it on disk
         long deadline = System.nanoTime() + 5_000_000_000L;
@@ -71,7 +71,7 @@ class RecorderTest {
         Path file = dir.resolve("drops.mcap");
         // tiny chunks: every envelope hands a chunk to the disk thread, which is held
         EnvelopeWriter.Options options = new EnvelopeWriter.Options(0, 0, 64, List.of());
-        Recorder recorder = new Recorder(file, options, 4096);
+        Recorder recorder = new Recorder(file, options, 4096).start();
         java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
         recorder.holdDisk(release);
         sent.forEach(recorder::accept); // returns although nothing reaches the disk

@@ -156,10 +156,19 @@ public final class EmbeddedGameController implements AutoCloseable {
         runtime.addListener(s -> sender.changed(s.robots().stopped()));
     }
 
-    /** Starts the game's owner, then the sender; from now on other GameControllers heard are rivals. */
+    /**
+     * Starts the game's owner, its listeners (return packets; its own 3838 watch, if it made one),
+     * then the sender; from now on other GameControllers heard are rivals.
+     */
     public void start() {
         states.referee(own);
         runtime.start();
+        if (returns != null) {
+            returns.start();
+        }
+        if (ownsWatch && watch != null) {
+            watch.start();
+        }
         sender.start();
     }
 

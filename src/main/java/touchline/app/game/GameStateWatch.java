@@ -16,6 +16,7 @@ import java.net.InetSocketAddress;
  * field's GameController, publishes each game state as an IN envelope and counts what it refuses
  * in {@link #badPackets()}, never thrown and never believed. While this console referees, the same
  * listener hears the rivals of its GameController (and, on the 2014 profiles, its return packets).
+ * The port is bound when made; it listens from {@link #start()}.
  */
 public final class GameStateWatch implements AutoCloseable {
 
@@ -56,6 +57,12 @@ public final class GameStateWatch implements AutoCloseable {
     public GameStateWatch(InetSocketAddress bind, GameControllerStates states) throws IOException {
         this.states = states;
         this.listener = new GcListener(bind, states::datagram, "gc-watch");
+    }
+
+    /** Starts listening (the thread that hands each datagram to the states); returns this. */
+    public GameStateWatch start() {
+        listener.start();
+        return this;
     }
 
     /** What this listener feeds: the one source of GameController states. */

@@ -14,8 +14,9 @@ import java.util.Arrays;
 /**
  * A UDP socket with its own thread that hands every datagram to a handler: used for return
  * packets (3939, or 3838 in the 2014 profile) and for hearing other GameControllers on 3838.
- * Binds with SO_REUSEADDR so robot stubs or monitors can share the port. A failing handler is
- * logged and the next datagram is still delivered.
+ * Binds with SO_REUSEADDR so robot stubs or monitors can share the port (when made, so a port in
+ * use fails at once); its thread starts with {@link #start()}, which its owner calls. A failing
+ * handler is logged and the next datagram is still delivered.
  */
 public final class GcListener implements AutoCloseable {
 
@@ -46,7 +47,16 @@ public final class GcListener implements AutoCloseable {
         channel.bind(bind);
         thread = new Thread(this::loop, name);
         thread.setDaemon(true);
-        thread.start();
+    }
+
+    /** Starts the thread that receives; datagrams that arrived since the socket was bound wait in it. */
+    public GcListener start() {
+        synchronized (thread) {
+            if (thread.getState() == Thread.State.NEW && running) {
+                thread.start();
+            }
+        }
+        return this;
     }
 
     public InetSocketAddress localAddress() throws IOException {

@@ -33,6 +33,7 @@ import java.util.concurrent.TimeUnit;
  * decode (a bad address prefix, a bad return packet), are counted with their reason, per
  * source up to {@link BadPackets#MAX_SOURCES} and together beyond.
  * The official GameController refuses a host that itself sent return packets as a monitor.
+ * Its port is bound when made; it requests and listens from {@link #start()}.
  */
 public final class GcMonitor implements AutoCloseable {
 
@@ -61,6 +62,7 @@ public final class GcMonitor implements AutoCloseable {
     private final RobotLiveness liveness = new RobotLiveness();
     private final BadPackets badPackets = new BadPackets();
     private final Map<RobotLiveness.RobotKey, Seen> lastSeen = new ConcurrentHashMap<>();
+    private boolean started;
 
     /**
      * @param gameController the GameController's monitor-request address (HOST:3636)
@@ -88,7 +90,16 @@ public final class GcMonitor implements AutoCloseable {
             t.setDaemon(true);
             return t;
         });
-        ticker.scheduleAtFixedRate(this::sendRequest, 0, REQUEST_INTERVAL_MS, TimeUnit.MILLISECONDS);
+    }
+
+    /** Starts monitoring: the first request at once, then every {@link #REQUEST_INTERVAL_MS}; returns this. */
+    public synchronized GcMonitor start() {
+        if (!started) {
+            started = true;
+            forwarded.start();
+            ticker.scheduleAtFixedRate(this::sendRequest, 0, REQUEST_INTERVAL_MS, TimeUnit.MILLISECONDS);
+        }
+        return this;
     }
 
     private void sendRequest() {

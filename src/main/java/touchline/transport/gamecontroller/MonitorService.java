@@ -118,11 +118,12 @@ public final class MonitorService implements AutoCloseable {
         }
     }
 
-    /** Starts the thread that sends to the monitors. */
+    /** Starts the threads that hear the monitors' requests and send to the monitors. */
     public synchronized void start() {
         if (sender != null) {
             return;
         }
+        listener.start();
         sender = new Thread(this::sendLoop, "gc-monitor-sender");
         sender.setDaemon(true);
         sender.start();

@@ -126,6 +126,8 @@ public final class ConsoleWindow {
         if (!viewsAfterShown) {
             restore.run();
         }
+        RecordingOnClose recording = new RecordingOnClose(context.recordings(), status::say, FINISH_RECORDING_MILLIS);
+        stage.setOnCloseRequest(e -> recording.request(e, stage));
         stage.setOnHiding(e -> {
             if (restored[0]) { // closed before its views were built: the saved "last" layout stays as it was
                 saveQuietly("last");
@@ -134,9 +136,7 @@ public final class ConsoleWindow {
             input.close();
             f1.close();
             serving.close();
-            // closing the window ends a recording as its Stop button does: the file is finished
-            // (summary, footer) before the process can exit, however the window was closed
-            context.recordings().finish(FINISH_RECORDING_MILLIS);
+            recording.hiding(); // the recording is finished off the FX thread, however the window was closed
         });
         // light on the laptop: a minimised window does no frame work; a touched one wakes up
         stage.iconifiedProperty().addListener((o, was, minimised) -> pulse.iconified(minimised));

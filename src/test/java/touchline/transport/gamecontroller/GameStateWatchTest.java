@@ -31,7 +31,7 @@ class GameStateWatchTest {
         Game official = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, new touchline.app.SystemClock());
         SplGameState18 format = new SplGameState18();
         try (GameStateWatch watch = new GameStateWatch(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0),
-                envelopes::add, matchMode, new touchline.app.SystemClock(), new touchline.app.SystemClock());
+                envelopes::add, matchMode, new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(format.encode(official.controlData()), watch.localAddress());
             gc.send(new byte[]{'R', 'G', 'm', 'e', 99}, watch.localAddress());

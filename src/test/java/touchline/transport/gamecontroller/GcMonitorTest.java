@@ -36,7 +36,7 @@ class GcMonitorTest {
         AtomicLong now = new AtomicLong(1000);
         try (LoopbackReceiver gameController = new LoopbackReceiver();
              GcMonitor monitor = new GcMonitor(gameController.address(), ANY_LOOPBACK_PORT, registrations,
-                     envelopes::add, () -> now.get() * 1000)) {
+                     envelopes::add, () -> now.get() * 1000).start()) {
             assertTrue(registrations.isRegisteredWith(InetAddress.getLoopbackAddress()));
             LoopbackReceiver.Received request = gameController.receive(2000);
             assertNotNull(request, "monitor request sent");
@@ -73,7 +73,7 @@ class GcMonitorTest {
         try (LoopbackReceiver gameController = new LoopbackReceiver();
              java.net.DatagramSocket stranger = new java.net.DatagramSocket(new InetSocketAddress("127.0.0.2", 0));
              GcMonitor monitor = new GcMonitor(gameController.address(), ANY_LOOPBACK_PORT, new MonitorRegistrations(),
-                     e -> { }, () -> 1_000_000)) {
+                     e -> { }, () -> 1_000_000).start()) {
             byte[] madeUp = forwarded(10, 0, 14, 20, FALLEN);
             stranger.send(new java.net.DatagramPacket(madeUp, madeUp.length, monitor.forwardAddress()));
             gameController.send(forwarded(10, 0, 5, 12, UPRIGHT), monitor.forwardAddress());
@@ -92,7 +92,7 @@ class GcMonitorTest {
         List<LoopbackReceiver> senders = new java.util.ArrayList<>();
         try (LoopbackReceiver gameController = new LoopbackReceiver();
              GcMonitor monitor = new GcMonitor(gameController.address(), ANY_LOOPBACK_PORT, new MonitorRegistrations(),
-                     e -> { }, () -> 1_000_000)) {
+                     e -> { }, () -> 1_000_000).start()) {
             for (int i = 0; i < sources; i++) {
                 LoopbackReceiver s = new LoopbackReceiver();
                 senders.add(s);

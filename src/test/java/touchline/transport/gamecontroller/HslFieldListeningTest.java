@@ -49,7 +49,7 @@ class HslFieldListeningTest {
     @Test
     void theOfficialVersion20PlayingSilencesTheConsole() throws Exception {
         try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock(),
-                new touchline.app.SystemClock());
+                new touchline.app.SystemClock()).start();
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(golden("00-initial.bin"), watch.localAddress());
             Await.until(() -> envelopes.size() == 1, 2000, "INITIAL heard");
@@ -71,7 +71,7 @@ class HslFieldListeningTest {
         List<String> reasons = List.of("expected 158 bytes, got 157", "version byte 21", "got 118",
                 "did not register as its monitor", "state 5 not in 0..4");
         try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, new touchline.app.SystemClock(),
-                new touchline.app.SystemClock());
+                new touchline.app.SystemClock()).start();
              LoopbackReceiver gc = new LoopbackReceiver()) {
             gc.send(golden("00-initial.bin"), watch.localAddress());
             for (byte[] b : bad) {
@@ -95,7 +95,7 @@ class HslFieldListeningTest {
         MonitorRegistrations registrations = new MonitorRegistrations();
         registrations.requested(InetAddress.getLoopbackAddress());
         try (GameStateWatch watch = new GameStateWatch(ANY_LOOPBACK_PORT, envelopes::add, matchMode, registrations,
-                new touchline.app.SystemClock(), new touchline.app.SystemClock());
+                new touchline.app.SystemClock(), new touchline.app.SystemClock()).start();
              LoopbackReceiver gc = new LoopbackReceiver()) {
             // during the 10 s after the whistle robots see SET, the monitor copy says PLAYING
             gc.send(golden("05-playing-delayed.monitor.bin"), watch.localAddress());
