@@ -155,7 +155,7 @@ public final class RosReadings {
             var level = new RosDiagnostics().batteryPercent(m); // a "Battery" key/value
             return level.isPresent() ? Optional.of((int) Math.round(level.getAsDouble())) : Optional.empty();
         }
-        if (path == null) {
+        if (path == null && m.namesContain("battery")) { // every message of every robot passes here: no paths built for most
             for (String p : m.numericPaths()) {
                 String l = p.toLowerCase(Locale.ROOT);
                 if (l.contains("battery") && l.contains("percent")) {

@@ -16,6 +16,11 @@ public final class RosTables {
 
     static final String[] LEVELS = {"OK", "WARN", "ERROR", "STALE"};
 
+    /** Whether messages of {@code typeName} are tables here. */
+    public static boolean isTable(String typeName) {
+        return typeName.equals("sensor_msgs/msg/JointState") || typeName.equals("diagnostic_msgs/msg/DiagnosticArray");
+    }
+
     /** The table {@code m} on {@code topic} is, if it is one of the two types. */
     public Optional<Fumanoid.DebugTable> table(String topic, RosMessage m) {
         return switch (m.typeName()) {

@@ -45,6 +45,20 @@ class RosReadingsTest {
     }
 
     @Test
+    void aBatteryFieldIsFoundByNameInNestedMessagesAndArraysOfThemAndNotElsewhere() {
+        RosMessage nested = msg("my/Power", "supply", msg("my/Supply", "Battery", msg("my/Level", "PerCent", 64.0)));
+        assertEquals(64, readings.batteryPercent("/power", nested).orElseThrow());
+        RosMessage packs = msg("my/Packs", "packs", new RosMessage[] {msg("my/Pack", "voltage", 24.0),
+                msg("my/Pack", "battery_percentage", 0.5)});
+        assertEquals(50, readings.batteryPercent("/packs", packs).orElseThrow());
+        assertTrue(readings.batteryPercent("/joints", msg("sensor_msgs/msg/JointState", "position", new double[] {0.5}))
+                .isEmpty());
+        assertTrue(readings.batteryPercent("/s", msg("x", "percent", 40.0)).isEmpty(), "a percent of no battery");
+        assertTrue(packs.namesContain("BATTERY"));
+        assertFalse(packs.namesContain("temperature"));
+    }
+
+    @Test
     void batteryGameStateAndLogByTypeAndByName() {
         assertEquals(87, readings.batteryPercent("/battery", msg("sensor_msgs/msg/BatteryState", "percentage", 0.87f))
                 .orElseThrow());

@@ -31,6 +31,28 @@ public final class LatestValues implements EnvelopeSink {
     private final Map<Key, Integer> translatedKinds = new ConcurrentHashMap<>();
     private final touchline.model.RosDebugData rosData = new touchline.model.RosDebugData();
     private final touchline.model.Utf8Names names = new touchline.model.Utf8Names();
+    /**
+     * ROS 2 joint states and diagnostics as they came, the newest per robot and topic, made into
+     * their tables only when a view reads them: eight robots' joints at 30 Hz each, 72 numbers
+     * formatted per message, took a third of what the window allocated, for tables mostly in tabs
+     * nobody looked at (docs/archive/benchmarks-sessions.md, "Window CPU with eight bridges").
+     */
+    private final Map<Key, Untranslated> untranslated = new ConcurrentHashMap<>();
+    private final java.util.function.BiFunction<String, touchline.protocol.ros2.RosMessage,
+            Optional<Fumanoid.DebugTable>> tables;
+
+    /** A ROS 2 message kept for its table, with the version it took when it came. */
+    private record Untranslated(Envelope envelope, long version) { }
+
+    public LatestValues() {
+        this(new touchline.model.RosTables()::table);
+    }
+
+    /** @param tables what makes a ROS 2 message its table (the tests count how often it is asked) */
+    LatestValues(java.util.function.BiFunction<String, touchline.protocol.ros2.RosMessage,
+            Optional<Fumanoid.DebugTable>> tables) {
+        this.tables = tables;
+    }
 
     @Override
     public void accept(Envelope e) {
@@ -73,8 +95,25 @@ public final class LatestValues implements EnvelopeSink {
      * images, tables, markers), if it is one of those types.
      */
     synchronized void acceptRos(Envelope e) {
-        if (e.robotId() >= 0 && e.ros() != null) {
-            rosData.of(e.robotId(), e.kind(), e.ros()).ifPresent(d -> keepTranslated(e, d.data(), d.debugKind()));
+        if (e.robotId() < 0 || e.ros() == null) {
+            return;
+        }
+        if (touchline.model.RosTables.isTable(e.ros().typeName())) {
+            Key key = new Key(e.robotId(), e.kind());
+            untranslated.put(key, new Untranslated(e, version.incrementAndGet()));
+            translatedKinds.put(key, Fumanoid.DebugKind.TABLE_VALUE);
+            return;
+        }
+        rosData.of(e.robotId(), e.kind(), e.ros()).ifPresent(d -> keepTranslated(e, d.data(), d.debugKind()));
+    }
+
+    /** Makes {@code u} its table for the readers; a newer value kept meanwhile stays. */
+    private void translate(Key key, Untranslated u) {
+        Envelope e = u.envelope();
+        Optional<Fumanoid.DebugTable> table = tables.apply(e.kind(), e.ros());
+        if (untranslated.remove(key, u) && table.isPresent()) {
+            Latest l = new Latest(e.robotId(), key.option(), e.kind(), table.get(), e.timeMicros(), u.version());
+            latest.merge(key, l, (was, now) -> was.version() > now.version() ? was : now);
         }
     }
 
@@ -103,11 +142,21 @@ public final class LatestValues implements EnvelopeSink {
     }
 
     public Optional<Latest> get(int robotId, String option) {
-        return Optional.ofNullable(latest.get(new Key(robotId, option)));
+        Key key = new Key(robotId, option);
+        Untranslated u = untranslated.get(key);
+        if (u != null) {
+            translate(key, u);
+        }
+        return Optional.ofNullable(latest.get(key));
     }
 
     /** Every robot's newest value of messages of one kind (e.g. {@code fieldObjects}). */
     public List<Latest> ofKind(String kind) {
+        untranslated.forEach((key, u) -> {
+            if (u.envelope().kind().equals(kind)) {
+                translate(key, u);
+            }
+        });
         List<Latest> out = new ArrayList<>();
         for (Latest l : latest.values()) {
             if (l.kind().equals(kind)) {
@@ -124,6 +173,7 @@ public final class LatestValues implements EnvelopeSink {
     /** Drops every value; the version goes on counting, so a view notices the next value. */
     public void clear() {
         latest.clear();
+        untranslated.clear();
         translatedKinds.clear();
         synchronized (this) {
             rosData.forget();

@@ -191,6 +191,41 @@ public final class RosMessage {
         numbers("", sink, 0);
     }
 
+    /**
+     * Whether a field name of this message or of one nested in it (as far as {@link #forEachNumber}
+     * goes) contains {@code word}, ignoring case: no path it enumerates can contain the word otherwise.
+     * Builds no path, so a reader can skip enumerating them for every message.
+     */
+    public boolean namesContain(String word) {
+        return namesContain(word, 0);
+    }
+
+    private boolean namesContain(String word, int depth) {
+        if (depth >= MAX_DEPTH) {
+            return false;
+        }
+        for (int i = 0; i < names.length; i++) {
+            String name = names[i];
+            for (int k = 0; k + word.length() <= name.length(); k++) {
+                if (name.regionMatches(true, k, word, 0, word.length())) {
+                    return true;
+                }
+            }
+            Object v = values[i];
+            if (v instanceof RosMessage m && m.namesContain(word, depth + 1)) {
+                return true;
+            }
+            if (v instanceof Object[] a && !(v instanceof String[])) {
+                for (int k = 0; k < Math.min(a.length, MAX_ENUMERATED_ELEMENTS); k++) {
+                    if (a[k] instanceof RosMessage m && m.namesContain(word, depth + 1)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
     /** The paths {@link #forEachNumber} enumerates, in its order. */
     public List<String> numericPaths() {
         List<String> out = new ArrayList<>();

@@ -23,6 +23,42 @@ class LatestValuesTest {
         assertTrue(latest.get(3, "demo.image").isEmpty());
     }
 
+    private static touchline.protocol.ros2.RosMessage joints(double position) {
+        return new touchline.protocol.ros2.RosMessage("sensor_msgs/msg/JointState", null,
+                new String[] {"name", "position"}, new Object[] {new String[] {"head_yaw"}, new double[] {position}});
+    }
+
+    @Test
+    void aRosTableIsMadeOnceWhenReadFromTheNewestMessageNotForEveryMessage() {
+        java.util.concurrent.atomic.AtomicInteger made = new java.util.concurrent.atomic.AtomicInteger();
+        touchline.model.RosTables tables = new touchline.model.RosTables();
+        LatestValues latest = new LatestValues((topic, m) -> {
+            made.incrementAndGet();
+            return tables.table(topic, m);
+        });
+        for (int i = 1; i <= 100; i++) {
+            latest.acceptRos(StoreEnvelopes.ros(i, 1001, "/joint_states", joints(i)));
+        }
+        assertEquals(0, made.get(), "nothing read yet");
+        assertEquals(100, latest.version(), "every message is a change the views notice");
+        assertEquals(java.util.List.of(new LatestValues.Key(1001, "/joint_states")),
+                latest.translatedSources(java.util.Set.of(Fumanoid.DebugKind.TABLE_VALUE)), "a table view's source at once");
+
+        Latest l = latest.get(1001, "/joint_states").orElseThrow();
+        assertEquals(java.util.List.of("head_yaw", "100.000", "", ""), ((Fumanoid.DebugTable) l.data()).getRows(0).getCellsList());
+        assertEquals(100, l.timeMicros());
+        assertEquals(100, l.version());
+        assertEquals("/joint_states", l.kind());
+        latest.get(1001, "/joint_states");
+        assertEquals(1, latest.ofKind("/joint_states").size());
+        assertEquals(1, made.get(), "made once, from the newest");
+
+        latest.acceptRos(StoreEnvelopes.ros(101, 1001, "/joint_states", joints(-2)));
+        assertEquals("-2.000", ((Fumanoid.DebugTable) latest.get(1001, "/joint_states").orElseThrow().data()).getRows(0).getCells(1));
+        latest.clear();
+        assertTrue(latest.get(1001, "/joint_states").isEmpty(), "cleared, the untranslated too");
+    }
+
     @Test
     void viewStoresFeedEveryStoreFromOneEnvelope() {
         ViewStores stores = new ViewStores(100, 100, 100, 0);

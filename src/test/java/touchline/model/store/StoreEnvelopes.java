@@ -18,6 +18,12 @@ public final class StoreEnvelopes {
                 robot, kind, m, m.toByteArray(), null);
     }
 
+    /** A ROS 2 robot's message {@code m} on {@code topic}, as a bridge hands it on. */
+    public static Envelope ros(long timeMicros, int robot, String topic, touchline.protocol.ros2.RosMessage m) {
+        return new Envelope(timeMicros, Direction.IN, Channel.BRIDGE, new InetSocketAddress("127.0.0.1", 8765), robot, topic,
+                null, new byte[0], null, touchline.transport.Origin.LIVE, touchline.security.Authenticity.NOT_CHECKED, m);
+    }
+
     public static Envelope text(long t, int robot, String option, String text) {
         return in(t, robot, "debugText", Fumanoid.Message.newBuilder().setRobotID(robot)
                 .setExtension(Fumanoid.debugText, Fumanoid.DebugText.newBuilder().setOption(option).setText(text).build())

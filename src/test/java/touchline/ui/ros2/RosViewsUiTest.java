@@ -52,7 +52,14 @@ class RosViewsUiTest {
 
             ui.fxRun(() -> ui.window.open("table", new ViewSource(id, "/joint_states")));
             TableDataView table = ui.view(TableDataView.class);
-            ui.await(30, () -> ((TableView<?>) table.node().lookup("#data-table")).getItems().size() == 24);
+            TableView<?> joints = (TableView<?>) table.node().lookup("#data-table");
+            ui.await(30, () -> joints.getItems().size() == 24);
+            // the next joint states change the cells of the rows there are; the rows stay (set afresh, each
+            // message re-styled and laid out every cell of the table)
+            Object firstRow = ui.fx(() -> joints.getItems().get(0));
+            String position = ui.fx(() -> joints.getColumns().get(1).getCellData(0).toString());
+            ui.await(30, () -> !position.equals(String.valueOf(joints.getColumns().get(1).getCellData(0))));
+            assertSame(firstRow, ui.fx(() -> joints.getItems().get(0)), "the same row, its cells changed");
 
             ui.fxRun(() -> ui.window.open("field", new ViewSource(id, "/markers")));
             FieldView field = ui.view(FieldView.class);
