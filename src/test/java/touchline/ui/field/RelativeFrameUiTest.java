@@ -76,4 +76,20 @@ class RelativeFrameUiTest {
             ui.await(10, () -> ballAt(again, -300, -800));
         }
     }
+
+    /** A small robot's relative positions are drawn as before: its objects, and no frame to choose. */
+    @Test
+    @Tag("integration")
+    void aSmallRobotsObjectsAreDrawnAsBeforeWithoutAFrame() throws Exception {
+        touchline.testing.Requirement.robotSide("touchline-robot");
+        try (touchline.testing.RobotProcess robot = touchline.testing.RobotProcess.robot(3, ui.port()).start()) {
+            ui.await(15, () -> ui.console.field().options().options(3).option("demo.relative").isPresent());
+            ui.console.optionSwitches().set(3, "demo.relative", true);
+            ui.fxRun(() -> ui.window.shell().restore(List.of(new LayoutNode.Leaf(0,
+                    List.of(new LayoutNode.Entry("relative", new ViewSource(3, "demo.relative").encode()))))));
+            RelativePositionsView view = ui.view(RelativePositionsView.class);
+            ui.await(15, () -> ((Label) view.node().lookup(".source-status")).getText().matches("\\d+ objects.*"));
+            assertFalse(ui.fx(() -> view.node().lookup("#relative-frame").isVisible()), "no frame for a small robot");
+        }
+    }
 }
