@@ -3,7 +3,6 @@ package touchline.model;
 import org.junit.jupiter.api.Test;
 import touchline.proto.Drawing;
 import touchline.proto.Fumanoid;
-import touchline.security.Authenticity;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
@@ -28,9 +27,7 @@ class RobotCentredTest {
     private final RobotCentred centred = new RobotCentred();
 
     private void send(int robot, String topic, touchline.protocol.ros2.RosMessage m) {
-        registry.live().accept(new Envelope(1_000_000, Direction.IN, Channel.BRIDGE,
-                InetSocketAddress.createUnresolved("robot", 8765), robot, topic, null, new byte[1], null, Origin.LIVE,
-                Authenticity.NOT_CHECKED, m));
+        FramedFieldTest.bridged(registry, robot, topic, m);
     }
 
     /** A small robot reporting (x, y) millimetres of the field. */
