@@ -164,12 +164,13 @@ public final class RelativePositionsView extends SourcedView {
             g.setFill(Color.WHITE);
             g.fillText(d.label() + String.format(" (%.0f, %.0f)", d.x(), d.y()), sx + 10, sy + 4);
         }
+        self();
         int noPosition = p.withoutPosition();
         return a.robots().size() + " robots in " + a.frame() + (noPosition > 0 ? " · " + noPosition + " without a position" : "")
                 + (a.markers() == null ? "" : " · " + shapes + " markers") + a.note();
     }
 
-    /** Paints the background, the rings every metre up to {@code range} millimetres and the robot; returns pixels per millimetre. */
+    /** Paints the background and the rings every metre up to {@code range} millimetres; returns pixels per millimetre. */
     private double around(double range) {
         GraphicsContext g = canvas.canvas().getGraphicsContext2D();
         double w = canvas.getWidth();
@@ -190,9 +191,16 @@ public final class RelativePositionsView extends SourcedView {
         g.setFill(Color.gray(0.45));
         CrispLines.vertical(g::fillRect, cx, 0, h);
         CrispLines.horizontal(g::fillRect, 0, w, cy);
+        return scale;
+    }
+
+    /** Paints the robot itself at the middle, looking up, over what lies around it. */
+    private void self() {
+        double cx = canvas.getWidth() / 2;
+        double cy = canvas.getHeight() / 2;
+        GraphicsContext g = canvas.canvas().getGraphicsContext2D();
         g.setFill(Color.LIGHTSKYBLUE);
         g.fillPolygon(new double[] {cx, cx - 8, cx + 8}, new double[] {cy - 14, cy + 8, cy + 8}, 3);
-        return scale;
     }
 
     @Override
@@ -208,6 +216,7 @@ public final class RelativePositionsView extends SourcedView {
             }
         }
         double scale = around(range);
+        self();
         double cx = canvas.getWidth() / 2;
         double cy = canvas.getHeight() / 2;
         GraphicsContext g = canvas.canvas().getGraphicsContext2D();
