@@ -21,7 +21,7 @@ it, so a test sees through the bridge that a parameter set or a publish arrived.
 
     python3 sim_ros2_robot.py --port 8765 --name booster-1 [--rate 20] [--seconds 0]
                               [--camera-jpeg FILE] [--camera-hz 5] [--centre X,Y] [--radius 1]
-                              [--odom X,Y,YAW]
+                              [--odom X,Y,YAW] [--heading YAW]
 
 Prints "listening on port N" once it serves (port 0 takes a free one). Stops after --seconds
 (0: never) or on SIGTERM/SIGINT, and then prints "sent N": the messages it logged on channels a
@@ -30,6 +30,7 @@ client had subscribed to (what a client that lost nothing received; the benchmar
 instead of the built-in 64×48 one, at --camera-hz. The robot walks an ellipse (1.2 m × 0.8 m times
 --radius; 0: it turns on the spot) around --centre of map; its odometry frame lies at --odom of map
 (metres, radians: how far its odometry drifted), so its TF tree is map→odom→base_link→camera.
+--heading holds its heading in map (radians) rather than turning with its walk.
 """
 import argparse
 import base64
@@ -270,6 +271,7 @@ def main():
     ap.add_argument("--radius", type=float, default=1.0, help="the size of its walk (0: it turns on the spot)")
     ap.add_argument("--odom", default="0.4,-0.3,0.15",
                     help="where its odometry frame lies in map (its drift): X,Y metres, YAW radians")
+    ap.add_argument("--heading", type=float, help="a fixed heading in map, radians (default: it turns with its walk)")
     args = ap.parse_args()
     cx, cy = (float(v) for v in args.centre.split(","))
     odom = tuple(float(v) for v in args.odom.split(","))
@@ -308,7 +310,7 @@ def main():
         t = now - start
         angle = 0.4 * t
         x, y = cx + 1.2 * args.radius * math.cos(angle), cy + 0.8 * args.radius * math.sin(angle)
-        theta = angle + math.pi / 2
+        theta = angle + math.pi / 2 if args.heading is None else args.heading
         robot.log(pose, encode_pose({"header": {"stamp": stamp(now), "frame_id": "map"},
                               "pose": {"position": {"x": x, "y": y, "z": 0.0},
                                        "orientation": {"x": 0.0, "y": 0.0, "z": math.sin(theta / 2),

@@ -126,7 +126,7 @@ public final class FramedField {
     }
 
     /** The picture with the markers moved into {@code frame} by their robot's tree. */
-    private static Picture moved(String frame, List<Placed> placed, int without, int notIn, String why,
+    static Picture moved(String frame, List<Placed> placed, int without, int notIn, String why,
                                  Drawing.FieldDrawing markers, FrameTree tree) {
         if (frame.isEmpty()) {
             return new Picture(frame, placed, without, notIn, why, markers, 0, "");

@@ -9,7 +9,8 @@
  * its images, joint states, diagnostics and markers as a small robot's debug data for the views that show that
  * ({@code RosDebugData}, {@code RosTables}, {@code MarkerScene}); its frames ({@code FrameTree}, a TF tree in the
  * plane of {@code Transform2D}s, and {@code RobotFrames}, kept per robot by the registry) and the field view's model of
- * the frame chosen there ({@code FramedField}, pure, the view's thread). Each is an {@code EnvelopeSink} subscribed to the
+ * the frame chosen there ({@code FramedField}) and the relative positions view's of one robot's own frame
+ * ({@code RobotCentred}; both pure, the view's thread). Each is an {@code EnvelopeSink} subscribed to the
  * stream.
  * <p>
  * May depend on: transport, security and protocol; not record (the two do not know each other).

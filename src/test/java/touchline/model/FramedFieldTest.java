@@ -26,6 +26,11 @@ class FramedFieldTest {
     private final FramedField field = new FramedField();
 
     private void send(int robot, String topic, touchline.protocol.ros2.RosMessage m) {
+        bridged(registry, robot, topic, m);
+    }
+
+    /** Robot {@code robot}'s ROS 2 message {@code m} on {@code topic}, as its bridge hands it to the registry. */
+    static void bridged(RobotRegistry registry, int robot, String topic, touchline.protocol.ros2.RosMessage m) {
         registry.live().accept(new Envelope(1_000_000, Direction.IN, Channel.BRIDGE,
                 InetSocketAddress.createUnresolved("robot", 8765), robot, topic, null, new byte[1], null, Origin.LIVE,
                 Authenticity.NOT_CHECKED, m));

@@ -59,7 +59,9 @@ public final class FieldView extends SourcedView {
     private String objectsNote = "";
     /** The frame the ROS 2 robots are drawn in, and where they are in it: the view's model. */
     private final FramedField frames = new FramedField();
-    private final FrameChooser chooser = new FrameChooser(frames, () -> dirty = true);
+    private final FrameChooser chooser = new FrameChooser("field-frame", "The frame the ROS 2 robots' poses and markers "
+            + "are drawn in, through each robot's TF tree; automatic: map, else the one frame the poses are in",
+            frames::choose, frames::frames, () -> dirty = true);
     private touchline.proto.Drawing.FieldDrawing drawnMarkers;
 
     public FieldView(ViewContext context, ViewSource source) {
@@ -83,20 +85,14 @@ public final class FieldView extends SourcedView {
     /** The source, and the frame when one was chosen: {@code frame=odom@1001//markers}. */
     @Override
     public String layoutState() {
-        String f = frames.chosen();
-        return f.isEmpty() || !f.matches("[^\\s@]+") ? null : FRAME_PREFIX + f + "@" + bar.selected().encode();
+        return FrameChooser.layoutState(frames.chosen(), bar.selected());
     }
 
     @Override
     public void restoreLayoutState(String state) {
-        int at = state == null ? -1 : state.indexOf('@');
-        if (state != null && state.startsWith(FRAME_PREFIX) && at > FRAME_PREFIX.length()) {
-            chooser.select(state.substring(FRAME_PREFIX.length(), at));
-            bar.select(ViewSource.decode(state.substring(at + 1)));
-        }
+        chooser.restore(state, bar);
     }
 
-    private static final String FRAME_PREFIX = "frame=";
 
     @Override
     public void refresh(FrameContext frame) {

@@ -22,6 +22,7 @@ public final class SourceBar extends HBox {
 
     private final LiveField field;
     private final Set<Integer> kinds;
+    private final Set<Integer> rosKinds;
     private final ComboBox<ViewSource> choice = new ComboBox<>();
     private final Label status = new Label();
     private final PacedText paced = new PacedText();
@@ -32,10 +33,12 @@ public final class SourceBar extends HBox {
     /** The least time between two reads caused by the robot registry alone. */
     public static final long REREAD_MICROS = 500_000;
 
-    SourceBar(LiveField field, Set<Integer> kinds, ViewSource initial) {
+    /** Lists the robots' options of {@code kinds} and the ROS 2 robots' topics shown as data of {@code rosKinds}. */
+    SourceBar(LiveField field, Set<Integer> kinds, Set<Integer> rosKinds, ViewSource initial) {
         super(8);
         this.field = field;
         this.kinds = kinds;
+        this.rosKinds = rosKinds;
         getStyleClass().add("source-bar");
         choice.setPromptText("choose robot · option");
         choice.setPrefWidth(260);
@@ -107,7 +110,7 @@ public final class SourceBar extends HBox {
                 }
             }
         }
-        for (var k : field.stores().latest().translatedSources(kinds)) {
+        for (var k : field.stores().latest().translatedSources(rosKinds)) {
             if (!found.contains(new ViewSource(k.robotId(), k.option()))) {
                 found.add(new ViewSource(k.robotId(), k.option()));
             }

@@ -25,8 +25,13 @@ public abstract class SourcedView implements View {
     protected boolean dirty;
 
     protected SourcedView(LiveField field, Set<Integer> kinds, ViewSource initial) {
+        this(field, kinds, kinds, initial);
+    }
+
+    /** A view listing the robots' options of {@code kinds} and the ROS 2 robots' topics shown as data of {@code rosKinds}. */
+    protected SourcedView(LiveField field, Set<Integer> kinds, Set<Integer> rosKinds, ViewSource initial) {
         this.field = field;
-        this.bar = new SourceBar(field, kinds, initial);
+        this.bar = new SourceBar(field, kinds, rosKinds, initial);
         root.setTop(bar);
     }
 

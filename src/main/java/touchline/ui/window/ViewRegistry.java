@@ -51,7 +51,8 @@ public final class ViewRegistry {
                     (c, s) -> new touchline.ui.plots.FieldPlotView(c)),
             new ViewSpec("table", "Table", "An option's table as the robot sends it.",
                     Set.of(DebugKind.TABLE_VALUE), TableDataView::new),
-            new ViewSpec("relative", "Relative positions", "Objects around the robot, robot-centred (x forward).",
+            new ViewSpec("relative", "Relative positions", "Objects around the robot, robot-centred (x forward); a ROS 2 robot's "
+                    + "markers and the other robots in its own frame (base_link, or one chosen).",
                     Set.of(DebugKind.RELATIVE_POSITIONS_VALUE), RelativePositionsView::new),
             new ViewSpec("image", "Image", "An option's image (GRAY8, RGB888, colour classes, JPEG, PNG); images "
                     + "that do not decode are marked.", Set.of(DebugKind.IMAGE_VALUE), ImageDataView::new),
