@@ -7,6 +7,12 @@
  * what may be sent now ({@code SendGate} and its {@code Hold}, {@code SendResult}) and the counts and clocks every layer above shares
  * ({@code TrafficCounters}, {@code MicrosClock}, {@code MonotonicClock}).
  * <p>
+ * One owner per fact: a host and port typed by a user is a {@code HostPort} (never a name lookup while parsing), a
+ * recording's peer text a {@code PeerText}; the game state an envelope carries is read by {@code GameStateReader}
+ * over {@code KnownGameStateFormats}. The two ingest threads run on different cores ({@code CoreSplit}, Linux, two
+ * or more CPUs; {@code -Dtouchline.udp.cores=shared} leaves them free); a thread inherits its starter's CPUs, so
+ * nothing starts a thread from either: executors the publishers feed start theirs when made.
+ * <p>
  * May depend on: protocol and security (it tags and checks datagrams).
  */
 package touchline.transport;

@@ -4,7 +4,8 @@
  * format-neutral {@code GameControlData} / {@code TeamInfo} / {@code RobotInfo}, recognised by {@code
  * KnownGameStateFormats}; return packets ({@code ReturnPacket}, {@code ReturnPacketDecoder}, {@code
  * ForwardedReturnPacket}) and the HSL monitor request ({@code MonitorRequest}). A rejected datagram is a {@code
- * Decoded} value with its {@code DecodeFailure}, never an exception.
+ * Decoded} value with its {@code DecodeFailure}, never an exception. The state names and which states are play
+ * have one owner: {@code GameControlData.stateName}, {@code stateCode}, {@code isPlay}.
  * <p>
  * May depend on: nothing of Touchline's (the protocol layer); pure.
  */
