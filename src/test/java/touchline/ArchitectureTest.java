@@ -159,8 +159,9 @@ class ArchitectureTest {
     /**
      * Nothing starts a thread in a constructor: making an object starts nothing, its owner (the
      * composition root, {@code Console}) calls its {@code start()}. A constructor calls no
-     * {@code Thread.start}, no {@code start()} of any kind, and hands no task to an executor (a lambda
-     * it makes, run later, may).
+     * {@code Thread.start}, no {@code start()} of any kind, hands no task to an executor (JDK or
+     * Netty) nor prestarts its threads, and binds or connects no Netty bootstrap (which starts the
+     * event loops); a lambda it makes, run later, may.
      */
     @Test
     void noConstructorStartsAThread() {
@@ -183,13 +184,30 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    /**
+     * Matched by the call's owner <em>name</em>, not its resolved type: the importer does not
+     * resolve JDK and Netty classes (archunit.properties), so a type check would not see an
+     * executor's or a bootstrap's call at all.
+     */
     private static boolean startsAThread(com.tngtech.archunit.core.domain.JavaClass owner, String method) {
-        if (method.equals("start") && (owner.getName().startsWith("java.lang.Thread") || owner.getPackageName().startsWith("touchline"))) {
+        String name = owner.getName();
+        if (method.equals("start") && (name.startsWith("java.lang.Thread") || owner.getPackageName().startsWith("touchline"))) {
             return true;
         }
-        return owner.isAssignableTo(java.util.concurrent.Executor.class)
-                && (method.equals("execute") || method.equals("submit") || method.startsWith("schedule") || method.startsWith("invoke"));
+        if (name.matches("io\\.netty\\.bootstrap\\.\\w*Bootstrap") && (method.equals("bind") || method.equals("connect"))) {
+            return true; // binding or connecting starts the group's event loops
+        }
+        boolean executor = EXECUTOR_NAMES.matcher(name).matches()
+                || owner.isAssignableTo(java.util.concurrent.Executor.class);
+        return executor && (method.equals("execute") || method.equals("submit") || method.startsWith("schedule")
+                || method.startsWith("invoke") || method.startsWith("prestart"));
     }
+
+    /** The JDK's executors and Netty's event executors and loops, by name. */
+    private static final java.util.regex.Pattern EXECUTOR_NAMES = java.util.regex.Pattern.compile(
+            "java\\.util\\.concurrent\\.(Executor|ExecutorService|ScheduledExecutorService|AbstractExecutorService"
+                    + "|ThreadPoolExecutor|ScheduledThreadPoolExecutor|ForkJoinPool)"
+                    + "|io\\.netty\\.util\\.concurrent\\.\\w*EventExecutor\\w*|io\\.netty\\.channel\\.\\w*EventLoop\\w*");
 
     /** The benchmarks use no harness: none is on the class path the product is built and tested with. */
     @Test

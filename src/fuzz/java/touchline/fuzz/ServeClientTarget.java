@@ -113,7 +113,7 @@ final class ServeClientTarget implements FuzzTarget {
 
     private Viewer connected() throws InterruptedException {
         if (server == null) {
-            server = new FoxgloveServer(ServeConfig.defaults().withPort(0), new MessageKinds(), new SystemClock());
+            server = new FoxgloveServer(ServeConfig.defaults().withPort(0), new MessageKinds(), new SystemClock()).start();
             new SyntheticTeam(3, 1_760_000_000_000_000L, 42).generate(1, server::accept); // channels to subscribe to
             http = HttpClient.newHttpClient();
         }

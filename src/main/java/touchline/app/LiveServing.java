@@ -53,6 +53,15 @@ public final class LiveServing {
         stop();
         Serving s = new Serving(config, field.kinds(), field.clock(), replay ? field.replayStream() : field.bus(),
                 stateChannels());
+        boolean started = false;
+        try {
+            s.start();
+            started = true;
+        } finally {
+            if (!started) { // a port in use: nothing is left half-started
+                s.close();
+            }
+        }
         if (!replay) {
             s.server().offerOptionSwitches(switches::switchAsAsked);
         }

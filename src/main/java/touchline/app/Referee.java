@@ -44,6 +44,8 @@ public final class Referee {
     /** When the GameController port was opened (the console's clock), for {@link #awaitFirstListen}. */
     private volatile long listeningSinceMicros;
     private EmbeddedGameController gameController;
+    /** The close {@link #stopInBackground} runs; done when nothing is closing. */
+    private java.util.concurrent.CompletableFuture<Void> closing = java.util.concurrent.CompletableFuture.completedFuture(null);
 
     Referee(ConsoleConfig config, EnvelopeSink live, MatchMode matchMode, MicrosClock clock, SystemClock realClock,
             BooleanSupplier commandsOff) {
@@ -211,11 +213,40 @@ public final class Referee {
         return Optional.ofNullable(gameController);
     }
 
+    /** Stops the running GameController and waits for it (and for one stopping in the background). */
     public synchronized void stop() {
         if (gameController != null) {
             gameController.close();
             gameController = null;
         }
+        closing.join();
+    }
+
+    /**
+     * Stops the running GameController without waiting (the window's Stop, on the FX thread): it
+     * is no longer the running one at once, its close (which joins {@code gc-game}) runs on a
+     * {@code gc-stop} thread; the future completes when it is closed.
+     */
+    public synchronized java.util.concurrent.CompletableFuture<Void> stopInBackground() {
+        EmbeddedGameController gc = gameController;
+        if (gc == null) {
+            return closing;
+        }
+        gameController = null;
+        java.util.concurrent.CompletableFuture<Void> done = new java.util.concurrent.CompletableFuture<>();
+        Thread t = new Thread(() -> {
+            try {
+                gc.close();
+                done.complete(null);
+            } catch (RuntimeException e) {
+                LOG.warn("stopping the GameController failed: {}", e.toString());
+                done.completeExceptionally(e);
+            }
+        }, "gc-stop");
+        t.setDaemon(true);
+        closing = done;
+        t.start();
+        return done;
     }
 
     /** A claim of play expires with time: held requests go out then. */

@@ -67,17 +67,16 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     private final AtomicLong stateFailures = new AtomicLong();
     private final AccessToken token;
     private final io.netty.handler.ssl.SslContext tls; // null: plain ws://
-    private final EventLoopGroup group;
-    private final Channel server;
-    private final ScheduledFuture<?> timeTicker;
+    private volatile EventLoopGroup group; // these three are set by start()
+    private volatile Channel server;
+    private volatile ScheduledFuture<?> timeTicker;
     private final java.util.List<ServedState> states = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     /**
-     * Binds and starts serving. Throws IllegalArgumentException (a message for the user) when
-     * the address is not loopback and no token is given, and the bind's own exception (e.g. a
-     * {@link java.net.BindException} for a port in use) when the port cannot be had.
+     * A server not yet serving: {@link #start()} binds. Throws IllegalArgumentException (a message
+     * for the user) when the address is not loopback and no token is given, or the TLS files do not load.
      */
-    public FoxgloveServer(ServeConfig config, MessageKinds kinds, MicrosClock clock) throws InterruptedException {
+    public FoxgloveServer(ServeConfig config, MessageKinds kinds, MicrosClock clock) {
         if (!config.loopbackOnly() && (config.token() == null || config.token().isEmpty())) {
             throw new IllegalArgumentException("serving on " + config.bindAddress()
                     + " lets other machines watch: a token is required (--token, or let serve generate one)");
@@ -91,9 +90,20 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
         this.frames = new FoxgloveFrames("Touchline", Long.toString(clock.nowMicros()));
         this.admission = new Admission(config.limits(), refusals);
         this.tls = config.tls() ? tlsContext(config) : null;
-        this.group = new MultiThreadIoEventLoopGroup(EVENT_LOOPS, NioIoHandler.newFactory());
+    }
+
+    /**
+     * Binds (starting the event loops) and starts the time ticker; once. Throws the bind's own
+     * exception (e.g. a {@link java.net.BindException} for a port in use) when the port cannot be had.
+     */
+    public synchronized FoxgloveServer start() throws InterruptedException {
+        if (group != null) {
+            throw new IllegalStateException("the server was started already");
+        }
+        standard.start();
+        EventLoopGroup loops = new MultiThreadIoEventLoopGroup(EVENT_LOOPS, NioIoHandler.newFactory());
         try {
-            this.server = new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
+            server = new ServerBootstrap().group(loops).channel(NioServerSocketChannel.class)
                     .childOption(ChannelOption.TCP_NODELAY, true)
                     .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK, new WriteBufferWaterMark(256 * 1024, 1024 * 1024))
                     .childHandler(new ChannelInitializer<SocketChannel>() {
@@ -106,11 +116,13 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
                     })
                     .bind(new InetSocketAddress(config.bindAddress(), config.port())).sync().channel();
         } catch (Exception e) { // also the BindException Netty throws without declaring it
-            group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
+            loops.shutdownGracefully(0, 1, TimeUnit.SECONDS);
             throw e;
         }
-        this.timeTicker = group.next().scheduleAtFixedRate(this::tick, config.timeEveryMillis(),
+        group = loops;
+        timeTicker = group.next().scheduleAtFixedRate(this::tick, config.timeEveryMillis(),
                 config.timeEveryMillis(), TimeUnit.MILLISECONDS);
+        return this;
     }
 
     /** The server's TLS context from the PEM files; IllegalArgumentException (for the user) when they do not load. */
@@ -202,6 +214,10 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
 
     /** The port listened on (the one given, or the one picked for port 0). */
     public int port() {
+        Channel server = this.server;
+        if (server == null) {
+            throw new IllegalStateException("the server is not started");
+        }
         return ((InetSocketAddress) server.localAddress()).getPort();
     }
 
@@ -247,7 +263,11 @@ public final class FoxgloveServer implements EnvelopeSink, AutoCloseable {
     }
 
     @Override
-    public void close() {
+    public synchronized void close() {
+        if (group == null) { // never started: nothing to stop
+            standard.close();
+            return;
+        }
         if (group.isShuttingDown()) {
             return;
         }

@@ -15,25 +15,32 @@ import touchline.transport.MicrosClock;
 public final class Serving implements AutoCloseable {
 
     private final FoxgloveServer server;
-    private final AutoCloseable subscription;
-    private final HeapHeadroom headroom;
+    private final EnvelopeSource stream;
+    private AutoCloseable subscription; // these two are set by start()
+    private HeapHeadroom headroom;
 
     /**
-     * Binds and starts serving; IllegalArgumentException (a sentence for the user) for a
-     * configuration that cannot be served (no token beyond loopback, a certificate that does
-     * not load), the bind's own exception when the port cannot be had. {@code states}: the
+     * Serving not yet started ({@link #start()} binds); IllegalArgumentException (a sentence for
+     * the user) for a configuration that cannot be served (no token beyond loopback, a
+     * certificate that does not load). {@code states}: the
      * console's state served as JSON channels (match mode, the budget meter; the core's
      * {@code app.LiveServing} hands them in, as the server does not know the core).
      */
     public Serving(ServeConfig config, MessageKinds kinds, MicrosClock clock, EnvelopeSource stream,
-                   java.util.List<JsonChannel> states)
-            throws InterruptedException {
+                   java.util.List<JsonChannel> states) {
         server = new FoxgloveServer(config, kinds, clock);
+        this.stream = stream;
         for (JsonChannel s : states) {
             server.serveJson(s);
         }
+    }
+
+    /** Binds and starts serving; the bind's own exception when the port cannot be had. */
+    public synchronized Serving start() throws InterruptedException {
+        server.start();
         subscription = stream.subscribe(server);
         headroom = new HeapHeadroom(HeapHeadroom.WHILE_SERVING); // more heap while serving: issue 16
+        return this;
     }
 
     public FoxgloveServer server() {
@@ -42,7 +49,11 @@ public final class Serving implements AutoCloseable {
 
     /** Stops serving: unsubscribes first, so nothing is queued for viewers being closed. */
     @Override
-    public void close() {
+    public synchronized void close() {
+        if (subscription == null) { // never started (or its bind failed)
+            server.close();
+            return;
+        }
         try {
             subscription.close();
         } catch (Exception e) {

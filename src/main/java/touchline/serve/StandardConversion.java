@@ -31,8 +31,14 @@ final class StandardConversion implements AutoCloseable {
             t.setDaemon(true);
             return t;
         }, (r, executor) -> dropped.incrementAndGet());
-        // started here, not at the first offer: a thread started from touchline-decode would
-        // inherit the CPU that thread is kept on (transport.CoreSplit)
+    }
+
+    /**
+     * Starts the conversion's thread, from the server's {@code start()}: here, not at the first
+     * offer, since a thread started from touchline-decode would inherit the CPU that thread is
+     * kept on (transport.CoreSplit).
+     */
+    void start() {
         thread.prestartCoreThread();
     }
 

@@ -365,4 +365,20 @@ class FoxgloveServerTest {
                         new touchline.protocol.MessageKinds(), new touchline.app.SystemClock()));
         assertTrue(e.getMessage().contains("token"), e.getMessage());
     }
+
+    /**
+     * Issue 38: making the server binds nothing (its owner calls {@code start()}), so a server
+     * made for a port in use is no error until it is started.
+     */
+    @Test
+    void makingTheServerBindsNothingStartingItDoes() throws Exception {
+        touchline.protocol.MessageKinds kinds = new touchline.protocol.MessageKinds();
+        touchline.app.SystemClock clock = new touchline.app.SystemClock();
+        try (FoxgloveServer first = new FoxgloveServer(ServeConfig.defaults().withPort(0), kinds, clock).start();
+             FoxgloveServer second = new FoxgloveServer(ServeConfig.defaults().withPort(first.port()), kinds, clock)) {
+            assertThrows(IllegalStateException.class, second::port, "a server not started has no port");
+            assertThrows(java.net.BindException.class, second::start);
+            assertThrows(IllegalStateException.class, first::start, "a server starts once");
+        }
+    }
 }

@@ -208,7 +208,7 @@ class RemoteViewerIntegrationTest {
             Await.until("lost", () -> second.remote().stream().orElseThrow().status().state() == RemoteStatus.State.LOST);
             assertTrue(second.remote().stream().orElseThrow().status().describe().contains("reconnecting"));
             try (FoxgloveServer again = new FoxgloveServer(ServeConfig.defaults().withPort(port),
-                    field.console().field().kinds(), field.console().field().clock());
+                    field.console().field().kinds(), field.console().field().clock()).start();
                  AutoCloseable sub = field.console().field().bus().subscribe(again)) {
                 Await.until("reconnected and subscribed", () -> {
                     field.publish(ServedField.text(2, "a", "after"), "debugText");

@@ -95,7 +95,7 @@ class ReplayStaysOffTheLiveStreamIntegrationTest {
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                      .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
              Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.field().kinds(), console.field().clock(),
-                     console.field().bus(), console.serving().stateChannels());
+                     console.field().bus(), console.serving().stateChannels()).start();
              FoxgloveTestClient viewer = new FoxgloveTestClient(serving.server().port());
              DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             console.recordings().start(recorded);

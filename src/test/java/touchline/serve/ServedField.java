@@ -31,7 +31,7 @@ final class ServedField implements AutoCloseable {
     ServedField(ServeConfig config) throws Exception {
         console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0))).start();
-        server = new FoxgloveServer(config, console.field().kinds(), console.field().clock());
+        server = new FoxgloveServer(config, console.field().kinds(), console.field().clock()).start();
         console.serving().stateChannels().forEach(server::serveJson); // as Serving does
         subscription = console.field().bus().subscribe(server);
         robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));

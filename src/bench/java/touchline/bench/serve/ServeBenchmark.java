@@ -68,7 +68,7 @@ public final class ServeBenchmark implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "serve benchmark: %d rounds x %d s at %d envelopes/s (%d envelopes of a six-robot "
                 + "team cycled), %d viewers%s%n", rounds, seconds, rate, team.size(), viewerCount, stalled ? " (one stalled)" : "");
         EnvelopeBus bus = new EnvelopeBus();
-        try (FoxgloveServer server = new FoxgloveServer(ServeConfig.defaults().withPort(0), new MessageKinds(), clock)) {
+        try (FoxgloveServer server = new FoxgloveServer(ServeConfig.defaults().withPort(0), new MessageKinds(), clock).start()) {
             bus.subscribe(server);
             for (Envelope e : team) {
                 bus.accept(e); // every channel exists before the viewers come

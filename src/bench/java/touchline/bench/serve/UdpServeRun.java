@@ -62,7 +62,7 @@ final class UdpServeRun implements Callable<Integer> {
         try (Console console = new Console(ConsoleConfig.defaults().withGameControllerPort(0)
                 .withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0)), clock).start();
              Serving serving = new Serving(ServeConfig.defaults().withPort(0), console.field().kinds(), clock, console.field().bus(),
-                     console.serving().stateChannels())) {
+                     console.serving().stateChannels()).start()) {
             for (Envelope e : team) {
                 if (!robots.containsKey(e.robotId())) {
                     robots.put(e.robotId(), new DatagramSocket(new InetSocketAddress("127.0.0.1", 0)));

@@ -65,6 +65,7 @@ public final class GameControllerTab implements View {
         teamB.setPrefColumnCount(4);
         Button start = new Button("Start GameController");
         start.setId("gc-start");
+        setupMessage.setId("gc-setup-message");
         start.setDefaultButton(true);
         start.setOnAction(e -> start());
         // on by default (Linux, root or CAP_SYS_NICE; where it is not granted the running tab says why)
@@ -164,6 +165,7 @@ public final class GameControllerTab implements View {
 
     @Override
     public void refresh(FrameContext frame) {
+        model.stopped().ifPresent(setupMessage::setText);
         if (model.follow()) {
             if (model.shown() == null) {
                 referee = null;

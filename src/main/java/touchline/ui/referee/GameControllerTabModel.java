@@ -34,6 +34,7 @@ final class GameControllerTabModel {
     private final IntSupplier requestsWaiting;
     private final RememberedSetup remembered;
     private EmbeddedGameController shown;
+    private java.util.concurrent.CompletableFuture<Void> stopping; // null: no stop asked for here
     /** Where monitors register, or why not; empty for a GameController started elsewhere. */
     private String monitorLine = "";
 
@@ -59,6 +60,9 @@ final class GameControllerTabModel {
      * when it does not start, with the reason.
      */
     Optional<String> start(GameSetup setup) {
+        if (stopping != null && !stopping.isDone()) {
+            return Optional.of("cannot start yet: the GameController is still stopping");
+        }
         try {
             GcProfile profile = setup.profile();
             if (profile == null) {
@@ -124,11 +128,24 @@ final class GameControllerTabModel {
         }
     }
 
-    /** Stops the running GameController; the tab shows the form again with the returned line. */
+    /**
+     * Asks the running GameController to stop and returns at once; the tab shows the form again
+     * with the returned line, and {@link #stopped()} says when the stop is done.
+     */
     String stop() {
-        referee.stop();
+        stopping = referee.stopInBackground();
         shown = null;
-        return "stopped";
+        return "stopping…";
+    }
+
+    /** At a frame: the line once a stop asked for here is done (once), else empty. */
+    Optional<String> stopped() {
+        if (stopping == null || !stopping.isDone()) {
+            return Optional.empty();
+        }
+        String line = stopping.isCompletedExceptionally() ? "stopped, with an error (see the log)" : "stopped";
+        stopping = null;
+        return Optional.of(line);
     }
 
     /** The GameController the tab shows; null while it shows the form. */

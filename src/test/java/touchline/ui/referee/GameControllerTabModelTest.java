@@ -103,10 +103,11 @@ class GameControllerTabModelTest {
             DatagramPacket p = new DatagramPacket(new byte[2048], 2048);
             robots.receive(p);
             assertEquals(688, p.getLength(), "HL v12 as chosen");
-            assertEquals("stopped", model.stop());
+            assertEquals("stopping…", model.stop(), "a stop only asks");
             assertTrue(referee.gameController().isEmpty());
             assertNull(model.shown());
             assertFalse(model.follow());
+            Await.until("the stop's line", () -> model.stopped().map("stopped"::equals).orElse(false));
         }
     }
 

@@ -8,6 +8,8 @@ import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.testing.Await;
+import touchline.testing.HeldListener;
 import touchline.testing.UiTest;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
@@ -102,10 +104,45 @@ class GameControllerTabTest {
                 String notice = ((javafx.scene.control.Label) tab.node().lookup("#match-notice")).getText();
                 assertTrue(notice.contains("game is PLAYING (this console's GameController)"), notice);
                 assertTrue(notice.endsWith("held back since play began (retries included); 0 requests waiting now"), notice);
-                ((Button) tab.node().lookup("#gc-stop")).fire();
                 return null;
             });
-            assertTrue(console.referee().gameController().isEmpty());
+
+            // Stop only asks: with the game's thread held (so the runtime's close cannot end), the
+            // FX thread comes back at once and the tab says "stopping…" until the close is done
+            HeldListener<touchline.app.game.RefereeSnapshot> owner = new HeldListener<>();
+            console.referee().gameController().orElseThrow().runtime().addListener(owner);
+            try {
+                fx(() -> {
+                    ((Button) tab.node().lookup("#gc-undo")).fire(); // a change: the listener holds gc-game
+                    return null;
+                });
+                assertTrue(owner.awaitHeld(), "the game's thread is held");
+                String asked = fx(() -> {
+                    ((Button) tab.node().lookup("#gc-stop")).fire();
+                    tab.refresh(null);
+                    return setupMessage(tab);
+                });
+                assertEquals("stopping…", asked, "Stop returned while the runtime's close was held");
+                assertTrue(console.referee().gameController().isEmpty(), "no longer the running GameController");
+            } finally {
+                owner.release();
+            }
+            Await.until("the stop done", () -> "stopped".equals(onFx(() -> {
+                tab.refresh(null);
+                return setupMessage(tab);
+            })));
+        }
+    }
+
+    private static String setupMessage(GameControllerTab tab) {
+        return ((javafx.scene.control.Label) tab.node().lookup("#gc-setup-message")).getText();
+    }
+
+    private static String onFx(java.util.concurrent.Callable<String> step) {
+        try {
+            return fx(step);
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
         }
     }
 }

@@ -140,19 +140,11 @@ class HslRefereeModelTest {
      */
     @Test
     void anActionOnlyEnqueuesAndItsOutcomeComesAtAFrameAfterTheOwnerAnswered() throws Exception {
-        java.util.concurrent.CountDownLatch held = new java.util.concurrent.CountDownLatch(1);
-        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
-        owners.get(0).addListener(s -> {
-            held.countDown();
-            try {
-                release.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
+        touchline.testing.HeldListener<touchline.app.game.RefereeSnapshot> owner = new touchline.testing.HeldListener<>();
+        owners.get(0).addListener(owner);
         try {
             model.perform(model.ready());
-            held.await();
+            assertTrue(owner.awaitHeld(), "the owner is held");
             model.perform(model.goal(0)); // no goal in READY
             model.refresh();
             assertTrue(model.waiting());
@@ -162,7 +154,7 @@ class HslRefereeModelTest {
             assertTrue(model.refused());
             assertEquals("the GameController did not answer within " + GameRuntime.ANSWER_MS + " ms", model.message());
         } finally {
-            release.countDown();
+            owner.release();
         }
         settle(model);
         assertEquals(HslPlayState.READY, model.state().state());
