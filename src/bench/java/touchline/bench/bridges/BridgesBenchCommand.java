@@ -110,6 +110,8 @@ public final class BridgesBenchCommand implements Callable<Integer> {
             System.out.println();
             System.out.println(Delivery.header());
             deliveries.forEach(d -> System.out.println(d.row()));
+            console.bridges().statuses().stream().filter(s -> s.connection().unusable() > 0 || !s.undecodable().isEmpty())
+                    .forEach(s -> System.out.println("  " + s.describe())); // why: the last unusable, undecodable by topic
             long lost = deliveries.stream().mapToLong(Delivery::lost).sum();
             System.out.printf(Locale.ROOT, "lost %d of %d; load average at the end %.1f%n", lost,
                     deliveries.stream().mapToLong(Delivery::sent).sum(),
@@ -153,7 +155,8 @@ public final class BridgesBenchCommand implements Callable<Integer> {
         List<Delivery> out = new ArrayList<>();
         for (BridgeStatus s : console.bridges().statuses()) {
             int robot = Integer.parseInt(s.name().substring("booster-".length()));
-            out.add(new Delivery(s.name(), sent.get(robot - 1), s.connection().received(), seconds));
+            out.add(new Delivery(s.name(), sent.get(robot - 1), s.connection().received(), s.connection().unusable(),
+                    s.undecodable().values().stream().mapToLong(Long::longValue).sum(), seconds));
         }
         return out;
     }

@@ -8,14 +8,22 @@ class DeliveryTest {
 
     @Test
     void lostIsWhatTheRobotSentToSubscribersAndTheConsoleDidNotCount() {
-        Delivery d = new Delivery("booster-1", 6_180, 6_150, 60);
+        Delivery d = new Delivery("booster-1", 6_180, 6_150, 0, 0, 60);
         assertEquals(30, d.lost());
-        assertEquals("| booster-1 | 6180 | 6150 | 30 | 102.5 |", d.row());
+        assertEquals("| booster-1 | 6180 | 6150 | 30 | 0 | 0 | 102.5 |", d.row());
+    }
+
+    @Test
+    void theRowSaysWhatTheConsoleCountedButCouldNotUseBesideTheLoss() {
+        Delivery d = new Delivery("booster-3", 6_180, 6_177, 3, 2, 60);
+        assertEquals(3, d.lost());
+        assertEquals("| booster-3 | 6180 | 6177 | 3 | 3 | 2 | 103.0 |", d.row());
+        assertEquals(d.row().split("\\|").length, Delivery.header().lines().findFirst().orElseThrow().split("\\|").length);
     }
 
     @Test
     void aMessageCountedInBeforeTheRobotCountedItsSubscriptionIsNotALoss() {
-        assertEquals(0, new Delivery("booster-2", 100, 101, 1).lost());
+        assertEquals(0, new Delivery("booster-2", 100, 101, 0, 0, 1).lost());
     }
 
     @Test
