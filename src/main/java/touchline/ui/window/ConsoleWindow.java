@@ -4,7 +4,6 @@ import atlantafx.base.theme.PrimerDark;
 import atlantafx.base.theme.PrimerLight;
 import javafx.application.Application;
 import javafx.scene.Scene;
-import javafx.scene.control.Alert;
 import javafx.scene.control.Menu;
 import javafx.scene.control.MenuBar;
 import javafx.scene.control.MenuItem;
@@ -17,8 +16,6 @@ import javafx.stage.Stage;
 import touchline.app.Console;
 import touchline.model.OptionState;
 import touchline.model.RobotSnapshot;
-import touchline.ui.window.LayoutNode;
-import touchline.ui.window.LayoutStore;
 
 import java.io.IOException;
 import java.util.HashSet;
@@ -45,15 +42,11 @@ public final class ConsoleWindow {
     private final FramePulse pulse;
     private final LayoutStore layouts;
     private final WindowPlaces places;
-    /** Save, Default, Rename, Delete and a separator: the saved layouts follow them. */
-    private static final int LAYOUT_MENU_FIXED = 5;
-    private final Menu renameMenu = new Menu("_Rename layout");
-    private final Menu deleteMenu = new Menu("De_lete layout");
     private final BorderPane root = new BorderPane();
     private final Set<String> demoSwitched = new HashSet<>();
-    private final Menu layoutMenu = new Menu("_Layout");
     private final ServeToggle serving;
-    private final HelpWindow help;
+    private final LayoutMenu layoutMenu;
+    private final HelpMenu helpMenu;
     private Shortcuts shortcuts;
     private Stage stage;
     private boolean dark;
@@ -64,7 +57,6 @@ public final class ConsoleWindow {
         this.layouts = new LayoutStore(settings.layoutDir());
         this.places = settings.windowPlaces();
         this.dark = settings.dark();
-        this.help = new HelpWindow(places);
         // the wanted debug options belong to the user: kept beside the layouts, wanted again now
         console.optionSwitches().rememberWanted(settings.layoutDir().resolve("wanted-options.properties"));
         Shell[] holder = new Shell[1];
@@ -79,6 +71,8 @@ public final class ConsoleWindow {
                 new ConsoleChanges(context.field(), context.referee().matchMode(), context.status(), serving::server)::read,
                 settings.frameCap());
         shell.onChange(pulse::input);
+        this.layoutMenu = new LayoutMenu(layouts, shell, status, places, () -> this.stage);
+        this.helpMenu = new HelpMenu(shell, context, places, () -> this.stage, () -> shortcuts);
         MenuBar bar = menus();
         shortcuts = new Shortcuts(bar);
         root.setTop(bar);
@@ -86,10 +80,10 @@ public final class ConsoleWindow {
         root.setBottom(status);
     }
 
-    /** Shows the window on {@code stage} with the demo layout, the "last" layout or the default. */
     /** How long closing the window waits for the recording's file to be finished (a stuck disk must not hang it). */
     static final long FINISH_RECORDING_MILLIS = 20_000;
 
+    /** Shows the window on {@code stage} with the demo layout, the "last" layout or the default. */
     public ConsoleWindow show(Stage stage) {
         return show(stage, false);
     }
@@ -111,11 +105,11 @@ public final class ConsoleWindow {
         EveryWindow<javafx.scene.input.InputEvent> input = new EveryWindow<>(javafx.scene.input.InputEvent.ANY,
                 (e, w) -> pulse.input());
         EveryWindow<javafx.scene.input.KeyEvent> f1 = new EveryWindow<>(javafx.scene.input.KeyEvent.KEY_PRESSED,
-                this::helpKey);
+                helpMenu::key);
         places.keep(stage, "main", 1400, 900);
         stage.setTitle(context.remote().status().map(r -> context.field().runtime().version().title() + " — viewing " + r.url())
                 .orElse(context.field().runtime().version().title() + " — UDP port " + context.field().port()));
-        Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : loadQuietly("last");
+        Optional<List<LayoutNode>> last = settings.demo() ? Optional.empty() : layoutMenu.loadQuietly("last");
         boolean[] restored = new boolean[1];
         Runnable restore = () -> {
             if (stage.isShowing() || !viewsAfterShown) {
@@ -130,7 +124,7 @@ public final class ConsoleWindow {
         stage.setOnCloseRequest(e -> recording.request(e, stage));
         stage.setOnHiding(e -> {
             if (restored[0]) { // closed before its views were built: the saved "last" layout stays as it was
-                saveQuietly("last");
+                layoutMenu.saveQuietly("last");
             }
             pulse.close();
             input.close();
@@ -189,53 +183,21 @@ public final class ConsoleWindow {
     }
 
     public void saveLayout(String name) throws IOException {
-        layouts.save(name, shell.capture());
-        status.say("layout \"" + name + "\" saved in " + layouts.dir());
-        rebuildLayoutMenu();
+        layoutMenu.save(name);
     }
 
     /** Renames a saved layout; the status line says what happened or why not. */
     public void renameLayout(String from, String to) {
-        try {
-            layouts.rename(from, to);
-            status.say("layout \"" + from + "\" is now \"" + to + "\"");
-        } catch (IOException e) {
-            status.say("could not rename layout \"" + from + "\": " + e.getMessage());
-        }
-        rebuildLayoutMenu();
+        layoutMenu.rename(from, to);
     }
 
     /** Deletes a saved layout; the status line says so. */
     public void deleteLayout(String name) {
-        try {
-            status.say(layouts.delete(name) ? "layout \"" + name + "\" deleted" : "no layout \"" + name + "\"");
-        } catch (IOException e) {
-            status.say("could not delete layout \"" + name + "\": " + e.getMessage());
-        }
-        rebuildLayoutMenu();
+        layoutMenu.delete(name);
     }
 
     public boolean loadLayout(String name) throws IOException {
-        Optional<List<LayoutNode>> l = layouts.load(name);
-        l.ifPresent(shell::restore);
-        status.say(l.isPresent() ? "layout \"" + name + "\" restored" : "no layout \"" + name + "\"");
-        return l.isPresent();
-    }
-
-    private Optional<List<LayoutNode>> loadQuietly(String name) {
-        try {
-            return layouts.load(name).filter(w -> !w.isEmpty());
-        } catch (IOException e) {
-            return Optional.empty();
-        }
-    }
-
-    private void saveQuietly(String name) {
-        try {
-            layouts.save(name, shell.capture());
-        } catch (IOException e) {
-            org.slf4j.LoggerFactory.getLogger(ConsoleWindow.class).warn("could not save layout: {}", e.toString());
-        }
+        return layoutMenu.load(name);
     }
 
     public void setDark(boolean dark) {
@@ -252,48 +214,12 @@ public final class ConsoleWindow {
 
     /** F1: the help of the view that has the keyboard (every view's when none has). */
     public Stage helpForFocusedView() {
-        return helpFor(stage.getScene().getFocusOwner(), stage); // a menu item of the shown window: both exist
-    }
-
-    private Stage helpFor(javafx.scene.Node focused, javafx.stage.Window owner) {
-        Optional<Shell.OpenView> view = shell.containing(focused);
-        if (view.isPresent()) {
-            ViewSpec spec = view.get().spec();
-            return help.show(owner, spec.title(), HelpWindow.text(spec, shortcuts));
-        }
-        return helpForViews(owner);
-    }
-
-    /**
-     * F1 in a window other than the main one (whose menu answers it): a view dragged out into its
-     * own window gives its help, Ctrl+K and the dialogs every view's.
-     */
-    private void helpKey(javafx.scene.input.KeyEvent e, javafx.stage.Window w) {
-        if (e.getCode() != KeyCode.F1 || w == stage || w == null
-                || (w instanceof Stage s && s.getTitle() != null && s.getTitle().startsWith(HelpWindow.TITLE))) {
-            return;
-        }
-        e.consume();
-        helpFor(w.getScene().getFocusOwner(), w);
+        return helpMenu.forFocusedView();
     }
 
     /** Help → Keyboard shortcuts (Ctrl+/): the sheet, read from the menus' accelerators. */
     public Stage shortcutSheet() {
-        return help.show(stage, "Keyboard shortcuts", shortcuts.sheet(registry));
-    }
-
-    private Stage helpForViews() {
-        return helpForViews(stage);
-    }
-
-    private Stage helpForViews(javafx.stage.Window owner) {
-        StringBuilder s = new StringBuilder();
-        for (ViewSpec v : registry.all()) {
-            s.append(v.title()).append(": ").append(v.help()).append("\n\n");
-        }
-        s.append("Ctrl+K opens any view. F1 gives the help of the view that has the keyboard, Ctrl+/ every "
-                + "shortcut. Drag a tab to split or move it, or out of the window.");
-        return help.show(owner, "Views", s.toString());
+        return helpMenu.shortcutSheet();
     }
 
     public void quickOpen() {
@@ -318,23 +244,6 @@ public final class ConsoleWindow {
     }
 
     private MenuBar menus() {
-        MenuItem save = new MenuItem("_Save layout as…");
-        save.setOnAction(e -> new NameDialog(stage, places, "Save layout", "Name of the layout", "my layout").ask(
-                name -> {
-                    try {
-                        saveLayout(name);
-                    } catch (IOException ex) {
-                        new Alert(Alert.AlertType.ERROR, "Could not save: " + ex.getMessage()).show();
-                    }
-                }));
-        MenuItem demo = new MenuItem("_Default layout");
-        demo.setOnAction(e -> shell.restore(DemoLayout.standard()));
-        renameMenu.setId("menu-rename-layout");
-        deleteMenu.setId("menu-delete-layout");
-        layoutMenu.getItems().addAll(save, demo, renameMenu, deleteMenu, new SeparatorMenuItem());
-        layoutMenu.setOnShowing(e -> rebuildLayoutMenu());
-        rebuildLayoutMenu();
-
         Menu views = new Menu("_View");
         for (ViewSpec s : registry.all()) {
             if (s.id().equals(ViewRegistry.RAW)) {
@@ -364,68 +273,6 @@ public final class ConsoleWindow {
         lightItem.setOnAction(e -> setDark(false));
         theme.getItems().addAll(darkItem, lightItem);
 
-        Menu helpMenu = new Menu("_Help");
-        MenuItem forView = new MenuItem("Help for this _view");
-        forView.setAccelerator(new KeyCodeCombination(KeyCode.F1));
-        forView.setOnAction(e -> helpForFocusedView());
-        MenuItem keys = new MenuItem("_Keyboard shortcuts");
-        keys.setAccelerator(new KeyCodeCombination(KeyCode.SLASH, KeyCombination.SHORTCUT_DOWN));
-        keys.setOnAction(e -> shortcutSheet());
-        MenuItem about = new MenuItem("_Views…");
-        about.setOnAction(e -> helpForViews());
-        MenuItem aboutTouchline = new MenuItem("_About Touchline…");
-        aboutTouchline.setId("help-about");
-        aboutTouchline.setOnAction(e -> {
-            touchline.app.RuntimeReport report = context.field().runtime();
-            Alert a = new Alert(Alert.AlertType.INFORMATION);
-            a.initOwner(stage);
-            a.setTitle("About Touchline");
-            a.setHeaderText(report.version().title());
-            javafx.scene.control.Label text = new javafx.scene.control.Label(
-                    String.join("\n", report.lines().subList(1, report.lines().size())));
-            text.setId("help-about-text");
-            text.setWrapText(true);
-            a.getDialogPane().setContent(text);
-            a.setResizable(true);
-            places.keep((Stage) a.getDialogPane().getScene().getWindow(), "about", 560, 260);
-            a.show();
-        });
-        helpMenu.getItems().addAll(forView, keys, about, aboutTouchline);
-        return new MenuBar(layoutMenu, views, theme, helpMenu);
-    }
-
-    private void rebuildLayoutMenu() {
-        layoutMenu.getItems().remove(LAYOUT_MENU_FIXED, layoutMenu.getItems().size());
-        renameMenu.getItems().clear();
-        deleteMenu.getItems().clear();
-        renameMenu.setDisable(layouts.names().isEmpty()); // nothing saved yet: nothing to rename or delete
-        deleteMenu.setDisable(layouts.names().isEmpty());
-        for (String name : layouts.names()) {
-            MenuItem rename = new MenuItem("\"" + name + "\"…");
-            rename.setOnAction(e -> new NameDialog(stage, places, "Rename layout", "New name of \"" + name + "\"", name)
-                    .ask(to -> {
-                        if (!to.equals(name)) {
-                            renameLayout(name, to);
-                        }
-                    }));
-            renameMenu.getItems().add(rename);
-            MenuItem delete = new MenuItem("\"" + name + "\"…");
-            delete.setOnAction(e -> confirmDelete(name));
-            deleteMenu.getItems().add(delete);
-            MenuItem item = new MenuItem("Open \"" + name + "\"");
-            item.setOnAction(e -> {
-                try {
-                    loadLayout(name);
-                } catch (IOException ex) {
-                    status.say("could not read layout " + name + ": " + ex.getMessage());
-                }
-            });
-            layoutMenu.getItems().add(item);
-        }
-    }
-
-    private void confirmDelete(String name) {
-        new ConfirmDialog(stage, places, "Delete layout", "Delete the layout \"" + name + "\"? Its file in "
-                + layouts.dir() + " is removed.").ask(() -> deleteLayout(name));
+        return new MenuBar(layoutMenu.menu(), views, theme, helpMenu.menu());
     }
 }
