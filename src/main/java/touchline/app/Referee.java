@@ -43,7 +43,8 @@ public final class Referee {
     private GcMonitor monitor;
     /** When the GameController port was opened (the console's clock), for {@link #awaitFirstListen}. */
     private volatile long listeningSinceMicros;
-    private EmbeddedGameController gameController;
+    /** Read without the lock: a frame asking for it never waits for a start or stop in progress. */
+    private volatile EmbeddedGameController gameController;
     /** The close {@link #stopInBackground} runs; done when nothing is closing. */
     private java.util.concurrent.CompletableFuture<Void> closing = java.util.concurrent.CompletableFuture.completedFuture(null);
 
@@ -209,7 +210,28 @@ public final class Referee {
         return gc;
     }
 
-    public synchronized Optional<EmbeddedGameController> gameController() {
+    /**
+     * Starts as {@link #start(RefereedGame, GcConfig, SetUp)} without waiting (the window's Start,
+     * on the FX thread): the stop of a running one, the sockets and the threads are done on a
+     * {@code gc-start} thread; the future completes with the running GameController, or with
+     * why it did not start.
+     */
+    public java.util.concurrent.CompletableFuture<EmbeddedGameController> startInBackground(RefereedGame game,
+            GcConfig gcConfig, SetUp setUp) {
+        java.util.concurrent.CompletableFuture<EmbeddedGameController> done = new java.util.concurrent.CompletableFuture<>();
+        Thread t = new Thread(() -> {
+            try {
+                done.complete(start(game, gcConfig, setUp));
+            } catch (IOException | RuntimeException e) {
+                done.completeExceptionally(e);
+            }
+        }, "gc-start");
+        t.setDaemon(true);
+        t.start();
+        return done;
+    }
+
+    public Optional<EmbeddedGameController> gameController() {
         return Optional.ofNullable(gameController);
     }
 

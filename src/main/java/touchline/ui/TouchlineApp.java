@@ -21,6 +21,15 @@ public final class TouchlineApp extends Application {
 
     private Console console;
 
+    /** As JavaFX's launcher makes it: the console starts in {@link #start}. */
+    public TouchlineApp() {
+    }
+
+    /** Around a console already started (tests). */
+    TouchlineApp(Console console) {
+        this.console = console;
+    }
+
     @Override
     public void start(Stage stage) throws Exception {
         Map<String, String> p = getParameters().getNamed();
@@ -35,10 +44,18 @@ public final class TouchlineApp extends Application {
         new ConsoleWindow(console, new UiSettings(layouts, !light, demo)).show(stage);
     }
 
+    /**
+     * JavaFX calls this on its own thread: the console's close (the recording finished, sockets
+     * closed, threads joined) runs on a non-daemon {@code touchline-close} thread and this returns;
+     * the JVM exits when that thread ends.
+     */
     @Override
     public void stop() {
-        if (console != null) {
-            console.close();
+        Console c = console;
+        if (c != null) {
+            Thread closing = new Thread(c::close, "touchline-close");
+            closing.setDaemon(false);
+            closing.start();
         }
     }
 }

@@ -122,7 +122,7 @@ public final class GameControllerTab implements View {
     }
 
     private void start() {
-        model.start(form()).ifPresentOrElse(setupMessage::setText, () -> show(model.shown()));
+        setupMessage.setText(model.start(form()));
     }
 
     /** Shows the referee controls of a running GameController (started here or elsewhere). */
@@ -166,6 +166,12 @@ public final class GameControllerTab implements View {
     @Override
     public void refresh(FrameContext frame) {
         model.stopped().ifPresent(setupMessage::setText);
+        model.started().ifPresent(line -> {
+            setupMessage.setText(line);
+            if (model.shown() != null) {
+                show(model.shown());
+            }
+        });
         if (model.follow()) {
             if (model.shown() == null) {
                 referee = null;

@@ -35,6 +35,9 @@ final class GameControllerTabModel {
     private final RememberedSetup remembered;
     private EmbeddedGameController shown;
     private java.util.concurrent.CompletableFuture<Void> stopping; // null: no stop asked for here
+    private java.util.concurrent.CompletableFuture<EmbeddedGameController> starting; // null: no start asked for here
+    /** The monitors line of the start in progress, written on its thread before it completes. */
+    private volatile String startingMonitorLine = "";
     /** Where monitors register, or why not; empty for a GameController started elsewhere. */
     private String monitorLine = "";
 
@@ -55,18 +58,22 @@ final class GameControllerTabModel {
     }
 
     /**
-     * Starts refereeing the game {@code setup} describes (a running one is stopped first) and
-     * remembers the setup; then {@link #shown()} is it. Returns the message for under the form
-     * when it does not start, with the reason.
+     * Asks to start refereeing the game {@code setup} describes (a running one is stopped first)
+     * and remembers the setup; returns at once with the line for under the form: "starting…",
+     * or why it cannot start. {@link #started()} says, at a later frame, when it runs (then
+     * {@link #shown()} is it) or why it did not.
      */
-    Optional<String> start(GameSetup setup) {
+    String start(GameSetup setup) {
         if (stopping != null && !stopping.isDone()) {
-            return Optional.of("cannot start yet: the GameController is still stopping");
+            return "cannot start yet: the GameController is still stopping";
+        }
+        if (starting != null) {
+            return "cannot start yet: the GameController is still starting";
         }
         try {
             GcProfile profile = setup.profile();
             if (profile == null) {
-                return Optional.of("choose a format");
+                return "choose a format";
             }
             List<InetSocketAddress> dests = new ArrayList<>();
             for (String d : setup.destinations().split(",")) {
@@ -75,7 +82,7 @@ final class GameControllerTabModel {
                 }
             }
             if (dests.isEmpty()) {
-                return Optional.of("give at least one destination");
+                return "give at least one destination";
             }
             int a = Integer.parseInt(setup.teamA().strip());
             int b = Integer.parseInt(setup.teamB().strip());
@@ -89,7 +96,7 @@ final class GameControllerTabModel {
                 String wrong = a == b ? "the two teams need different numbers"
                         : HslGame.colourConflict(setup.coloursA(), setup.coloursB());
                 if (wrong != null) {
-                    return Optional.of("cannot start: " + wrong);
+                    return "cannot start: " + wrong;
                 }
                 game = new HslGame(HslRules.forVersion(profile.hslVersion(), setup.competition()), a, setup.coloursA(),
                         b, setup.coloursB(), referee.gameClock());
@@ -98,14 +105,37 @@ final class GameControllerTabModel {
             }
             Integer monitorPort = profile.hsl() ? monitorPort(setup) : null;
             remembered.save(setup);
-            EmbeddedGameController gc = referee.start(game, config);
-            monitorLine = monitorPort == null ? "" : serveMonitors(gc, monitorPort);
-            shown = gc;
-            return Optional.empty();
+            startingMonitorLine = "";
+            starting = referee.startInBackground(game, config, gc -> {
+                if (monitorPort != null) {
+                    startingMonitorLine = serveMonitors(gc, monitorPort);
+                }
+            });
+            return "starting…";
         } catch (NumberFormatException e) {
-            return Optional.of("team numbers and ports are whole numbers: " + e.getMessage());
-        } catch (IOException | RuntimeException e) {
-            return Optional.of("cannot start: " + e.getMessage());
+            return "team numbers and ports are whole numbers: " + e.getMessage();
+        } catch (RuntimeException e) {
+            return "cannot start: " + e.getMessage();
+        }
+    }
+
+    /**
+     * At a frame: once a start asked for here is done (once), the line for under the form: empty
+     * when it runs (then {@link #shown()} is it), else why it did not start.
+     */
+    Optional<String> started() {
+        if (starting == null || !starting.isDone()) {
+            return Optional.empty();
+        }
+        java.util.concurrent.CompletableFuture<EmbeddedGameController> done = starting;
+        starting = null;
+        try {
+            shown = done.join();
+            monitorLine = startingMonitorLine;
+            return Optional.of("");
+        } catch (java.util.concurrent.CompletionException e) {
+            Throwable why = e.getCause() == null ? e : e.getCause();
+            return Optional.of("cannot start: " + why.getMessage());
         }
     }
 
@@ -156,9 +186,12 @@ final class GameControllerTabModel {
     /**
      * At a frame: whether the running GameController is no longer the one shown (started or
      * stopped elsewhere); then it becomes the one shown, without a monitors line (whoever
-     * started it serves monitors or not).
+     * started it serves monitors or not). Not while a start asked for here is in progress.
      */
     boolean follow() {
+        if (starting != null) {
+            return false; // the start asked for here is shown with its monitors line by started()
+        }
         EmbeddedGameController running = referee.gameController().orElse(null);
         if (running == shown) {
             return false;

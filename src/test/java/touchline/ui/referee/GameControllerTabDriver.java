@@ -49,6 +49,8 @@ public final class GameControllerTabDriver {
         press("#gc-start");
         if (expectRunning) {
             ui.await(30, () -> ui.console.referee().gameController().isPresent());
+            // the start runs off the FX thread: the tab shows the running GameController at a later frame
+            ui.await(30, () -> tab.lookup("#gc-stop") != null);
         }
     }
 

@@ -60,6 +60,14 @@ class GameControllerTabModelTest {
                 d.competition(), d.fieldA(), d.keeperA(), d.fieldB(), d.keeperB(), "0");
     }
 
+    /** Asks {@code model} to start {@code setup}, then waits for the frame it runs at: its line. */
+    private static String run(GameControllerTabModel model, GameSetup setup) throws InterruptedException {
+        assertEquals("starting…", model.start(setup), "a start only asks");
+        java.util.concurrent.atomic.AtomicReference<Optional<String>> line = new java.util.concurrent.atomic.AtomicReference<>();
+        Await.until("the start's line", () -> line.updateAndGet(was -> model.started()).isPresent());
+        return line.get().orElseThrow();
+    }
+
     private static GameSetup with(GameSetup s, String teamA, String destinations, TeamColour fieldB) {
         return new GameSetup(s.format(), teamA, s.teamB(), destinations, s.returnPort(), s.realtime(), s.competition(),
                 s.fieldA(), s.keeperA(), fieldB, s.keeperB(), s.monitorPort());
@@ -76,13 +84,13 @@ class GameControllerTabModelTest {
         GameControllerTabModel model = model();
         try (DatagramSocket robots = robots()) {
             GameSetup hsl = towards(robots, "hsl20");
-            assertEquals(Optional.of("choose a format"), model.start(towards(robots, "hl99")));
-            assertEquals(Optional.of("give at least one destination"), model.start(with(hsl, "13", " , ", TeamColour.BLUE)));
-            assertEquals(Optional.of("team numbers and ports are whole numbers: For input string: \"x\""),
+            assertEquals("choose a format", model.start(towards(robots, "hl99")));
+            assertEquals("give at least one destination", model.start(with(hsl, "13", " , ", TeamColour.BLUE)));
+            assertEquals("team numbers and ports are whole numbers: For input string: \"x\"",
                     model.start(with(hsl, "x", hsl.destinations(), TeamColour.BLUE)));
-            assertEquals(Optional.of("cannot start: the two teams need different numbers"),
+            assertEquals("cannot start: the two teams need different numbers",
                     model.start(with(hsl, "7", hsl.destinations(), TeamColour.BLUE)));
-            assertEquals(Optional.of("cannot start: a team's field players wear the other goalkeeper's colour"),
+            assertEquals("cannot start: a team's field players wear the other goalkeeper's colour",
                     model.start(with(hsl, "13", hsl.destinations(), TeamColour.PURPLE)));
             assertTrue(referee.gameController().isEmpty());
             assertNull(model.shown());
@@ -94,7 +102,7 @@ class GameControllerTabModelTest {
     void startsAnHlGameTowardsTheRobotsShowsItAndStops() throws Exception {
         GameControllerTabModel model = model();
         try (DatagramSocket robots = robots()) {
-            assertEquals(Optional.empty(), model.start(towards(robots, "hl12")));
+            assertEquals("", run(model, towards(robots, "hl12")));
             EmbeddedGameController gc = referee.gameController().orElseThrow();
             assertSame(gc, model.shown());
             assertFalse(model.follow(), "started here: already shown");
@@ -115,7 +123,7 @@ class GameControllerTabModelTest {
     void aGameControllerStartedOrStoppedElsewhereIsFollowedWithoutAMonitorsLine() throws Exception {
         GameControllerTabModel model = model();
         try (DatagramSocket robots = robots()) {
-            assertEquals(Optional.empty(), model.start(towards(robots, "hsl20")));
+            assertEquals("", run(model, towards(robots, "hsl20")));
             assertTrue(model.monitors().startsWith("monitors register on UDP "), model.monitors());
             GcConfig config = new GcConfig(GcProfile.HL12, false,
                     List.of(new InetSocketAddress("127.0.0.1", robots.getLocalPort())), null,
@@ -138,7 +146,7 @@ class GameControllerTabModelTest {
         try (DatagramSocket robots = robots(); DatagramSocket taken = new DatagramSocket(
                 new InetSocketAddress("127.0.0.1", 0))) {
             GameSetup s = towards(robots, "hsl20");
-            assertEquals(Optional.empty(), model.start(s));
+            assertEquals("", run(model, s));
             String port = model.monitors().substring("monitors register on UDP ".length()).split(";")[0];
             assertNotEquals("0", port, "the port the system chose");
             Await.until("the monitors' count", () -> model.monitors().contains("; "));
@@ -146,7 +154,7 @@ class GameControllerTabModelTest {
             GameSetup busy = new GameSetup(s.format(), s.teamA(), s.teamB(), s.destinations(), s.returnPort(),
                     s.realtime(), s.competition(), s.fieldA(), s.keeperA(), s.fieldB(), s.keeperB(),
                     Integer.toString(taken.getLocalPort()));
-            assertEquals(Optional.empty(), model.start(busy), "the game starts without monitors");
+            assertEquals("", run(model, busy), "the game starts without monitors");
             assertTrue(model.monitors().startsWith("no monitors: cannot listen on UDP " + taken.getLocalPort() + " ("),
                     model.monitors());
         }
@@ -159,7 +167,7 @@ class GameControllerTabModelTest {
             GameSetup d = towards(robots, "hsl19");
             GameSetup s = new GameSetup("hsl19", "21", "22", d.destinations(), "0", false, Competition.LARGE_FOUNDATION,
                     TeamColour.GREEN, TeamColour.ORANGE, TeamColour.WHITE, TeamColour.BLACK, "0");
-            assertEquals(Optional.empty(), model().start(s));
+            assertEquals("", run(model(), s));
             GameSetup again = model().initialSetup();
             assertEquals(new GameSetup("hsl19", "21", "22", d.destinations(), "0", true, Competition.LARGE_FOUNDATION,
                     TeamColour.GREEN, TeamColour.ORANGE, TeamColour.WHITE, TeamColour.BLACK, "0"), again,

@@ -8,18 +8,24 @@ import org.junit.jupiter.api.Test;
 import org.testfx.api.FxToolkit;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
+import touchline.app.game.EmbeddedGameController;
+import touchline.game.Game;
+import touchline.game.LeagueParams;
 import touchline.testing.Await;
 import touchline.testing.HeldListener;
 import touchline.testing.UiTest;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
 import touchline.transport.UdpConfig;
+import touchline.transport.gamecontroller.GcConfig;
+import touchline.transport.gamecontroller.GcProfile;
 import touchline.ui.window.ViewContext;
 import touchline.ui.window.ViewRegistry;
 
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 import static org.junit.jupiter.api.Assertions.*;
@@ -44,7 +50,6 @@ class GameControllerTabTest {
     }
 
     @Test
-    @SuppressWarnings("unchecked")
     void refereesAGameFromTheTab() throws Exception {
         ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
         try (Console console = new Console(config).start(); DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
@@ -55,26 +60,16 @@ class GameControllerTabTest {
                     published.set(true);
                 }
             });
-            ViewContext context = new ViewContext(console.field(), console.optionSwitches(),
-                    console.referee(), console.naos(), console.recordings(), console.replays(), console.teamSchemas(),
-                    console.teamBudget(), console.remote(), console.bridges(), new ViewRegistry(), (s, src) -> { }, null,
-                    new touchline.ui.viewers.ServeToggle(console.serving()));
-            GameControllerTab tab = fx(() -> {
-                GameControllerTab t = new GameControllerTab(context, null);
-                new Scene((javafx.scene.Parent) t.node());
-                ((TextField) t.node().lookup("#gc-dest")).setText("127.0.0.1:" + robot.getLocalPort());
-                // hsl20 is the tab's default since the 2026 season; this test referees an HL game
-                ((javafx.scene.control.ComboBox<String>) t.node().lookup("#gc-format")).setValue("hl12");
-                return t;
-            });
+            GameControllerTab tab = tab(console, robot);
             fx(() -> {
-                // return packets on an OS-chosen port: tests never bind the fixed 3939
-                ((TextField) ((javafx.scene.Parent) tab.node()).lookupAll(".text-field").stream()
-                        .filter(n -> "default".equals(((TextField) n).getPromptText())).findFirst().orElseThrow()).setText("0");
                 ((Button) tab.node().lookup("#gc-start")).fire();
                 return null;
             });
             byte[] first = receive(robot);
+            Await.until("the running GameController shown", () -> onFx(() -> {
+                tab.refresh(null);
+                return tab.node().lookup("#gc-ready") != null;
+            }));
             assertEquals(688, first.length, "HL v12 as chosen");
             assertEquals('R', first[0]);
             assertEquals(0, first[9], "INITIAL");
@@ -134,11 +129,66 @@ class GameControllerTabTest {
         }
     }
 
+    @Test
+    void startOnlyAsksWhileTheStopBeforeItIsHeld() throws Exception {
+        ConsoleConfig config = ConsoleConfig.defaults().withUdp(UdpConfig.defaults().withBindAddress("127.0.0.1").withListenPort(0));
+        try (Console console = new Console(config).start(); DatagramSocket robot = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            GameControllerTab tab = tab(console, robot);
+            // a GameController started elsewhere with its game's thread held: the stop a start
+            // begins with (which joins that thread) cannot end
+            GcConfig elsewhereConfig = new GcConfig(GcProfile.HL12, false,
+                    List.of(new InetSocketAddress("127.0.0.1", robot.getLocalPort())), null,
+                    new InetSocketAddress("127.0.0.1", 0), null, GcConfig.INTERVAL_MS, false);
+            EmbeddedGameController elsewhere = console.referee().start(
+                    new Game(LeagueParams.hlSimulationKidSize(), 3, 1, 4, 0, console.referee().gameClock()), elsewhereConfig);
+            HeldListener<touchline.app.game.RefereeSnapshot> owner = new HeldListener<>();
+            elsewhere.runtime().addListener(owner);
+            try {
+                elsewhere.runtime().perform(new touchline.game.ToReady()); // a change: the listener holds gc-game
+                assertTrue(owner.awaitHeld(), "the game's thread is held");
+                String asked = fx(() -> {
+                    ((Button) tab.node().lookup("#gc-start")).fire();
+                    tab.refresh(null);
+                    // the form is gone when Start waited for the stop and showed the running one
+                    return tab.node().lookup("#gc-setup-message") == null ? "shown by Start itself" : setupMessage(tab);
+                });
+                assertEquals("starting…", asked, "Start returned while the stop before it was held");
+            } finally {
+                owner.release();
+            }
+            Await.until("the started GameController shown", () -> onFx(() -> {
+                tab.refresh(null);
+                return tab.node().lookup("#gc-stop") != null;
+            }));
+            assertNotSame(elsewhere, console.referee().gameController().orElseThrow(), "the tab's own runs");
+        }
+    }
+
+    /** The tab on its own scene, set up to send HL v12 to {@code robot}, returns on a port the system chooses. */
+    @SuppressWarnings("unchecked")
+    private static GameControllerTab tab(Console console, DatagramSocket robot) throws Exception {
+        ViewContext context = new ViewContext(console.field(), console.optionSwitches(),
+                console.referee(), console.naos(), console.recordings(), console.replays(), console.teamSchemas(),
+                console.teamBudget(), console.remote(), console.bridges(), new ViewRegistry(), (s, src) -> { }, null,
+                new touchline.ui.viewers.ServeToggle(console.serving()));
+        return fx(() -> {
+            GameControllerTab t = new GameControllerTab(context, null);
+            new Scene((javafx.scene.Parent) t.node());
+            ((TextField) t.node().lookup("#gc-dest")).setText("127.0.0.1:" + robot.getLocalPort());
+            // hsl20 is the tab's default since the 2026 season; this test referees an HL game
+            ((javafx.scene.control.ComboBox<String>) t.node().lookup("#gc-format")).setValue("hl12");
+            // return packets on an OS-chosen port: tests never bind the fixed 3939
+            ((TextField) ((javafx.scene.Parent) t.node()).lookupAll(".text-field").stream()
+                    .filter(n -> "default".equals(((TextField) n).getPromptText())).findFirst().orElseThrow()).setText("0");
+            return t;
+        });
+    }
+
     private static String setupMessage(GameControllerTab tab) {
         return ((javafx.scene.control.Label) tab.node().lookup("#gc-setup-message")).getText();
     }
 
-    private static String onFx(java.util.concurrent.Callable<String> step) {
+    private static <T> T onFx(java.util.concurrent.Callable<T> step) {
         try {
             return fx(step);
         } catch (Exception e) {
