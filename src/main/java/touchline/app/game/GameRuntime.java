@@ -23,6 +23,8 @@ import java.util.function.Supplier;
  * packets and the sender's timer only enqueue events ({@link #perform}, {@link #undo},
  * {@link #tick}); the owner applies them one at a time in the order they came and, after each,
  * publishes an immutable {@link RefereeSnapshot} that the sender, the views and the CLI read.
+ * The sender never waits for the owner: a periodic send runs the newest snapshot's time on to
+ * its own instant ({@link #timed()}).
  * Listeners hear of every change on the owner thread and must only hand it on (the sender's
  * wake-up). Events enqueued before {@link #start()} wait for it; after {@link #close()} they are
  * refused at once.
@@ -42,6 +44,8 @@ public final class GameRuntime implements AutoCloseable {
     private final Deque<Runnable> events = new ArrayDeque<>();
     private final List<Consumer<RefereeSnapshot>> listeners = new CopyOnWriteArrayList<>();
     private volatile RefereeSnapshot snapshot;
+    /** The timer event {@link #timed()} enqueued last; a new one only once it ran. */
+    private volatile CompletableFuture<RefereeSnapshot> lastTimer = CompletableFuture.completedFuture(null);
     /** Set by the game's own listener; read and cleared by the owner after each event. */
     private volatile boolean changed;
     private Thread owner;
@@ -107,6 +111,22 @@ public final class GameRuntime implements AutoCloseable {
             done.complete(snapshot);
         }
         return done;
+    }
+
+    /**
+     * The sender's timer (a periodic send): the newest snapshot with time run on to the game
+     * clock's now ({@link RefereeSnapshot#at}), computed on the caller's thread. It never waits
+     * for the owner, so a real-time sender keeps its grid however busy the owner is (listeners,
+     * events queued ahead, a thread of lower priority); the owner's own timer event ({@link
+     * #tick}) is enqueued too, unless the last one has not run yet, so the owner publishes what
+     * time changed and its listeners hear of it. One caller: the sender's thread.
+     */
+    public RefereeSnapshot timed() {
+        if (lastTimer.isDone()) {
+            lastTimer = tick();
+        }
+        RefereeSnapshot s = snapshot; // before the clock: time is only ever run on
+        return s.at(game.now());
     }
 
     /**

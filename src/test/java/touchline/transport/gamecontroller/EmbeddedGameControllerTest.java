@@ -6,6 +6,7 @@ import org.junit.jupiter.api.Test;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
+import touchline.game.ManualClock;
 import touchline.app.game.MatchMode;
 import touchline.game.Penalty;
 import touchline.game.ToPlaying;
@@ -21,6 +22,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -165,6 +167,44 @@ class EmbeddedGameControllerTest {
             gc.runtime().perform(new ToPlaying()).join();
             Await.until(() -> !matchMode.mayConsoleSend(), 2000, "console silenced");
             assertTrue(matchMode.hold("debug option request"));
+        }
+    }
+
+    @Test
+    void periodicSendGoesOutWithItsOwnTimeWhileTheOwnerIsHeld() throws Exception {
+        ManualClock clock = new ManualClock(1_000_000);
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock);
+        try (LoopbackReceiver robot = new LoopbackReceiver();
+             EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,
+                     List.of(robot.address()), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 50, false),
+                     envelopes::add, null, new touchline.app.SystemClock())) {
+            gc.start();
+            gc.runtime().perform(new ToReady()).join();
+            gc.runtime().perform(new ToSet()).join();
+            CountDownLatch held = new CountDownLatch(1);
+            CountDownLatch release = new CountDownLatch(1);
+            gc.runtime().addListener(s -> {
+                held.countDown();
+                try {
+                    release.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+            try {
+                // the owner publishes PLAYING, then its listener holds it: no event runs from now on
+                gc.runtime().perform(new ToPlaying());
+                held.await();
+                int atHold = gc.runtime().snapshot().robots().secsRemaining();
+                clock.advance(5_000);
+                // the sender's grid goes on with the game's time run on to each send, not the held owner's last state
+                Await.until(() -> envelopes.stream().anyMatch(e -> e.direction() == Direction.OUT
+                                && new HlGameState12().decode(e.raw()).value().secsRemaining() == atHold - 5),
+                        10_000, "a periodic datagram 5 s on while the owner is held");
+                assertEquals(1, release.getCount(), "the owner was held all along");
+            } finally {
+                release.countDown();
+            }
         }
     }
 }
