@@ -14,6 +14,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 
@@ -44,12 +46,12 @@ public final class GameRuntime implements AutoCloseable {
     private final Deque<Runnable> events = new ArrayDeque<>();
     private final List<Consumer<RefereeSnapshot>> listeners = new CopyOnWriteArrayList<>();
     private volatile RefereeSnapshot snapshot;
-    /** The timer event {@link #timed()} enqueued last; a new one only once it ran. */
-    private volatile CompletableFuture<RefereeSnapshot> lastTimer = CompletableFuture.completedFuture(null);
+    /** Set by {@link #timed()}, cleared by the owner when it runs the timer event (before the queue's next). */
+    private final AtomicBoolean timerDue = new AtomicBoolean();
     /** Set by the game's own listener; read and cleared by the owner after each event. */
     private volatile boolean changed;
-    private Thread owner;
-    private boolean closed;
+    private volatile Thread owner;
+    private volatile boolean closed;
 
     /** @param game the game this runtime owns from now on: nobody else calls its actions */
     public GameRuntime(RefereedGame game) {
@@ -119,11 +121,11 @@ public final class GameRuntime implements AutoCloseable {
      * for the owner, so a real-time sender keeps its grid however busy the owner is (listeners,
      * events queued ahead, a thread of lower priority); the owner's own timer event ({@link
      * #tick}) is enqueued too, unless the last one has not run yet, so the owner publishes what
-     * time changed and its listeners hear of it. One caller: the sender's thread.
+     * time changed and its listeners hear of it. It takes no lock the owner holds.
      */
     public RefereeSnapshot timed() {
-        if (lastTimer.isDone()) {
-            lastTimer = tick();
+        if (!timerDue.getAndSet(true)) {
+            LockSupport.unpark(owner); // no lock: the owner may hold the queue's while it is not scheduled
         }
         RefereeSnapshot s = snapshot; // before the clock: time is only ever run on
         return s.at(game.now());
@@ -169,33 +171,45 @@ public final class GameRuntime implements AutoCloseable {
         return done;
     }
 
-    private synchronized boolean enqueue(Runnable event) {
-        if (closed) {
-            return false;
+    private boolean enqueue(Runnable event) {
+        synchronized (this) {
+            if (closed) {
+                return false;
+            }
+            events.addLast(event);
         }
-        events.addLast(event);
-        notifyAll();
+        LockSupport.unpark(owner);
         return true;
     }
 
-    private synchronized Runnable take() throws InterruptedException {
-        while (events.isEmpty() && !closed) {
-            wait();
+    /** The next event: the sender's timer when it is due, else the queue's first; null once closed and empty. */
+    private Runnable take() {
+        while (true) {
+            if (timerDue.getAndSet(false)) {
+                return this::timer;
+            }
+            synchronized (this) {
+                Runnable e = events.pollFirst();
+                if (e != null || closed) {
+                    return e;
+                }
+            }
+            LockSupport.park(this);
         }
-        return events.pollFirst();
+    }
+
+    private void timer() {
+        game.advance();
+        publish();
     }
 
     private void run() {
-        try {
-            for (Runnable event = take(); event != null; event = take()) {
-                try {
-                    event.run();
-                } catch (RuntimeException e) {
-                    LOG.error("a GameController event failed; the game goes on", e);
-                }
+        for (Runnable event = take(); event != null; event = take()) {
+            try {
+                event.run();
+            } catch (RuntimeException e) {
+                LOG.error("a GameController event failed; the game goes on", e);
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
         }
     }
 
@@ -218,9 +232,9 @@ public final class GameRuntime implements AutoCloseable {
         Thread t;
         synchronized (this) {
             closed = true;
-            notifyAll();
             t = owner;
         }
+        LockSupport.unpark(t);
         if (t != null && t != Thread.currentThread()) {
             try {
                 t.join(ANSWER_MS);

@@ -182,4 +182,16 @@ class GameRuntimeTest {
             assertEquals(owners.description(), sent.description(), "step " + step);
         }
     }
+
+    @Test
+    void theSendersTimerTakesNoLockTheOwnerHolds() throws Exception {
+        try (GameRuntime owner = new GameRuntime(game(new ManualClock(0)))) {
+            owner.start();
+            CompletableFuture<RefereeSnapshot> timed = new CompletableFuture<>();
+            synchronized (owner) { // as the owner holds it taking its next event, then is not scheduled
+                new Thread(() -> timed.complete(owner.timed()), "gc-sender").start();
+                Await.until("the sender's timer while the owner holds its queue", timed::isDone);
+            }
+        }
+    }
 }
