@@ -15,6 +15,7 @@ import touchline.game.ToSet;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.HlGameState12;
 import touchline.protocol.gamecontroller.ReturnPacket;
+import touchline.testing.HeldOwner;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 
@@ -22,7 +23,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.CountDownLatch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -181,29 +181,17 @@ class EmbeddedGameControllerTest {
             gc.start();
             gc.runtime().perform(new ToReady()).join();
             gc.runtime().perform(new ToSet()).join();
-            CountDownLatch held = new CountDownLatch(1);
-            CountDownLatch release = new CountDownLatch(1);
-            gc.runtime().addListener(s -> {
-                held.countDown();
-                try {
-                    release.await();
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            });
-            try {
+            try (HeldOwner held = new HeldOwner(gc.runtime())) {
                 // the owner publishes PLAYING, then its listener holds it: no event runs from now on
                 gc.runtime().perform(new ToPlaying());
-                held.await();
+                held.awaitHeld();
                 int atHold = gc.runtime().snapshot().robots().secsRemaining();
                 clock.advance(5_000);
                 // the sender's grid goes on with the game's time run on to each send, not the held owner's last state
                 Await.until(() -> envelopes.stream().anyMatch(e -> e.direction() == Direction.OUT
                                 && new HlGameState12().decode(e.raw()).value().secsRemaining() == atHold - 5),
                         10_000, "a periodic datagram 5 s on while the owner is held");
-                assertEquals(1, release.getCount(), "the owner was held all along");
-            } finally {
-                release.countDown();
+                assertTrue(held.holding(), "the owner was held all along");
             }
         }
     }

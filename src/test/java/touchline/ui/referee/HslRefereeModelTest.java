@@ -140,19 +140,9 @@ class HslRefereeModelTest {
      */
     @Test
     void anActionOnlyEnqueuesAndItsOutcomeComesAtAFrameAfterTheOwnerAnswered() throws Exception {
-        java.util.concurrent.CountDownLatch held = new java.util.concurrent.CountDownLatch(1);
-        java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
-        owners.get(0).addListener(s -> {
-            held.countDown();
-            try {
-                release.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        try {
+        try (touchline.testing.HeldOwner held = new touchline.testing.HeldOwner(owners.get(0))) {
             model.perform(model.ready());
-            held.await();
+            held.awaitHeld();
             model.perform(model.goal(0)); // no goal in READY
             model.refresh();
             assertTrue(model.waiting());
@@ -161,8 +151,6 @@ class HslRefereeModelTest {
             model.refresh();
             assertTrue(model.refused());
             assertEquals("the GameController did not answer within " + GameRuntime.ANSWER_MS + " ms", model.message());
-        } finally {
-            release.countDown();
         }
         settle(model);
         assertEquals(HslPlayState.READY, model.state().state());
