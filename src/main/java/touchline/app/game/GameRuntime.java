@@ -23,7 +23,7 @@ import java.util.function.Supplier;
  * The one owner of a refereed game (GameController3's runtime task): its thread {@value #THREAD}
  * is the only one that changes the game. The referee's buttons and commands, robots' return
  * packets and the sender's timer only enqueue events ({@link #perform}, {@link #undo},
- * {@link #tick}); the owner applies them one at a time in the order they came and, after each,
+ * {@link #tick}, {@link #timed()}); the owner applies them one at a time in the order they came and, after each,
  * publishes an immutable {@link RefereeSnapshot} that the sender, the views and the CLI read.
  * The sender never waits for the owner: a periodic send runs the newest snapshot's time on to
  * its own instant ({@link #timed()}).
@@ -119,8 +119,8 @@ public final class GameRuntime implements AutoCloseable {
      * The sender's timer (a periodic send): the newest snapshot with time run on to the game
      * clock's now ({@link RefereeSnapshot#at}), computed on the caller's thread. It never waits
      * for the owner, so a real-time sender keeps its grid however busy the owner is (listeners,
-     * events queued ahead, a thread of lower priority); the owner's own timer event ({@link
-     * #tick}) is enqueued too, unless the last one has not run yet, so the owner publishes what
+     * events queued ahead, a thread of lower priority); the owner's own timer event is asked
+     * for too (a flag, one at a time, run before the queue's next), so the owner publishes what
      * time changed and its listeners hear of it. It takes no lock the owner holds.
      */
     public RefereeSnapshot timed() {
@@ -182,7 +182,10 @@ public final class GameRuntime implements AutoCloseable {
         return true;
     }
 
-    /** The next event: the sender's timer when it is due, else the queue's first; null once closed and empty. */
+    /**
+     * The next event: the sender's timer when it is due (ahead of the queue: an action runs time
+     * on before it applies anyway), else the queue's first; null once closed and empty, or interrupted.
+     */
     private Runnable take() {
         while (true) {
             if (timerDue.getAndSet(false)) {
@@ -195,6 +198,9 @@ public final class GameRuntime implements AutoCloseable {
                 }
             }
             LockSupport.park(this);
+            if (Thread.currentThread().isInterrupted()) {
+                return null;
+            }
         }
     }
 
