@@ -74,6 +74,24 @@ public final class GameState implements RefereeState {
         return new GameState(this);
     }
 
+    /**
+     * A deep copy as the timer would leave it at {@code nowMs} (timed penalties ended, halves
+     * switched, the half clock brought up to date); this state stays as it is (a reader's view of
+     * a snapshot, such as the GameController's sender at its send instant).
+     */
+    public GameState at(long nowMs) {
+        GameState c = copy();
+        c.tick(nowMs);
+        return c;
+    }
+
+    /** The timer's event at {@code nowMs}: {@link #advance}, then the half clock; true when the state changed. */
+    boolean tick(long nowMs) {
+        boolean changed = advance(nowMs);
+        syncClock(nowMs);
+        return changed;
+    }
+
     /** {@code seconds} minus the whole seconds elapsed since {@code sinceMs} (may be negative). */
     static int remaining(int seconds, long sinceMs, long nowMs) {
         return seconds - (int) Math.floorDiv(nowMs - sinceMs, 1000L);

@@ -19,9 +19,7 @@ final class HlLeague implements League<GameState> {
 
     @Override
     public boolean tick(GameState s, long nowMs) {
-        boolean changed = s.advance(nowMs);
-        s.syncClock(nowMs);
-        return changed;
+        return s.tick(nowMs);
     }
 
     @Override

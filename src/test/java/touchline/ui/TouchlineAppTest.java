@@ -4,12 +4,11 @@ import org.junit.jupiter.api.Test;
 import touchline.app.Console;
 import touchline.app.ConsoleConfig;
 import touchline.app.game.EmbeddedGameController;
-import touchline.app.game.RefereeSnapshot;
 import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.game.ToReady;
 import touchline.testing.Await;
-import touchline.testing.HeldListener;
+import touchline.testing.HeldOwner;
 import touchline.transport.UdpConfig;
 import touchline.transport.gamecontroller.GcConfig;
 import touchline.transport.gamecontroller.GcProfile;
@@ -40,17 +39,13 @@ class TouchlineAppTest {
                     new InetSocketAddress("127.0.0.1", 0), null, GcConfig.INTERVAL_MS, false);
             EmbeddedGameController running = console.referee().start(
                     new Game(LeagueParams.hlSimulationKidSize(), 3, 1, 4, 0, console.referee().gameClock()), gc);
-            HeldListener<RefereeSnapshot> owner = new HeldListener<>();
-            running.runtime().addListener(owner);
-            try {
+            try (HeldOwner owner = new HeldOwner(running.runtime())) {
                 running.runtime().perform(new ToReady()); // a change: the listener holds gc-game
                 assertTrue(owner.awaitHeld(), "the game's thread is held");
                 new TouchlineApp(console).stop();
                 stopped = true;
                 assertTrue(console.referee().gameController().isPresent(),
                         "stop returned while the close (stopping the GameController) was held");
-            } finally {
-                owner.release();
             }
             Await.until("the console closed", () -> console.referee().gameController().isEmpty()
                     && Thread.getAllStackTraces().keySet().stream().noneMatch(t -> t.getName().equals("touchline-close")));

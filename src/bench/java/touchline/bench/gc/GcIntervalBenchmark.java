@@ -92,7 +92,7 @@ public final class GcIntervalBenchmark {
         try (touchline.app.game.GameRuntime owner = new touchline.app.game.GameRuntime(game);
              GcIntervalProbe ours = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
              GcIntervalProbe baseline = new GcIntervalProbe("probe-baseline", INTERVAL_MS, realtime);
-             GcSender sender = new GcSender(p -> (p ? owner.tick().join() : owner.snapshot()).robots(),
+             GcSender sender = new GcSender(p -> (p ? owner.timed() : owner.snapshot()).robots(),
                      List.of(format), List.of(ours.address()), null, e -> { }, INTERVAL_MS,
                      new touchline.app.SystemClock());
              DatagramSocket naive = new DatagramSocket()) {
@@ -133,7 +133,7 @@ public final class GcIntervalBenchmark {
         // as the embedded GameController runs it: one owner changes the game, the sender reads its snapshots
         try (touchline.app.game.GameRuntime owner = new touchline.app.game.GameRuntime(game);
              GcIntervalProbe probe = new GcIntervalProbe("probe-touchline", INTERVAL_MS, realtime);
-             GcSender sender = new GcSender(p -> (p ? owner.tick().join() : owner.snapshot()).robots(),
+             GcSender sender = new GcSender(p -> (p ? owner.timed() : owner.snapshot()).robots(),
                      List.of(new HslGameState20()), List.of(probe.address()), null, e -> { }, INTERVAL_MS, true,
                      new touchline.app.SystemClock())) {
             owner.addListener(snapshot -> sender.changed(snapshot.robots().stopped()));

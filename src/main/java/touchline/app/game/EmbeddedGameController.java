@@ -10,8 +10,6 @@ import touchline.transport.gamecontroller.RobotLiveness;
 import touchline.transport.gamecontroller.GcListener;
 import touchline.transport.gamecontroller.MonitorRegistrations;
 
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 import touchline.game.Game;
 import touchline.game.RefereedGame;
 import touchline.protocol.gamecontroller.KnownGameStateFormats;
@@ -29,9 +27,6 @@ import java.net.SocketException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 
 /**
@@ -48,9 +43,6 @@ import java.util.function.Consumer;
  */
 public final class EmbeddedGameController implements AutoCloseable {
 
-    private static final Logger LOG = LoggerFactory.getLogger(EmbeddedGameController.class);
-    /** How long a periodic send waits for the owner's timer event (it works in memory: microseconds). */
-    private static final long TICK_WAIT_MS = 100;
 
     /** The HL game when one is refereed (robots' manual penalty requests apply to it), else null. */
     private final Game game;
@@ -290,8 +282,9 @@ public final class EmbeddedGameController implements AutoCloseable {
     /**
      * The robots' send cycle: the state to send, and after the robots' datagrams went out, the
      * true state handed to the monitors (whose thread sends it), so no monitor delays the robots.
-     * It changes nothing: a periodic cycle is the runtime's timer event and sends the snapshot
-     * the owner published after it; a send after a change sends the snapshot of that change.
+     * It changes nothing and never waits for the owner: a periodic cycle sends the newest
+     * snapshot with time run on to its instant ({@link GameRuntime#timed()}, which also enqueues
+     * the owner's timer event); a send after a change sends the snapshot of that change.
      */
     private final class RobotsCycle implements GcSender.Source {
 
@@ -300,26 +293,13 @@ public final class EmbeddedGameController implements AutoCloseable {
 
         @Override
         public GameControlData next(boolean periodic) {
-            RefereeSnapshot s = periodic ? ticked() : runtime.snapshot();
+            RefereeSnapshot s = periodic ? runtime.timed() : runtime.snapshot();
             GameControlData data = s.robots();
             if (periodic && monitors != null) {
                 truth = s.truth();
             }
             states.own(data.state());
             return data;
-        }
-
-        /** The snapshot after the timer's event; the last one when the owner does not answer in time. */
-        private RefereeSnapshot ticked() {
-            try {
-                return runtime.tick().get(TICK_WAIT_MS, TimeUnit.MILLISECONDS);
-            } catch (TimeoutException | ExecutionException e) {
-                LOG.warn("the game's owner did not run the timer in {} ms; sending its last state", TICK_WAIT_MS);
-                return runtime.snapshot();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return runtime.snapshot();
-            }
         }
 
         @Override

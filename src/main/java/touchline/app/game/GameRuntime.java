@@ -14,6 +14,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 
@@ -21,8 +23,10 @@ import java.util.function.Supplier;
  * The one owner of a refereed game (GameController3's runtime task): its thread {@value #THREAD}
  * is the only one that changes the game. The referee's buttons and commands, robots' return
  * packets and the sender's timer only enqueue events ({@link #perform}, {@link #undo},
- * {@link #tick}); the owner applies them one at a time in the order they came and, after each,
+ * {@link #tick}, {@link #timed()}); the owner applies them one at a time in the order they came and, after each,
  * publishes an immutable {@link RefereeSnapshot} that the sender, the views and the CLI read.
+ * The sender never waits for the owner: a periodic send runs the newest snapshot's time on to
+ * its own instant ({@link #timed()}).
  * Listeners hear of every change on the owner thread and must only hand it on (the sender's
  * wake-up). Events enqueued before {@link #start()} wait for it; after {@link #close()} they are
  * refused at once.
@@ -42,10 +46,12 @@ public final class GameRuntime implements AutoCloseable {
     private final Deque<Runnable> events = new ArrayDeque<>();
     private final List<Consumer<RefereeSnapshot>> listeners = new CopyOnWriteArrayList<>();
     private volatile RefereeSnapshot snapshot;
+    /** Set by {@link #timed()}, cleared by the owner when it runs the timer event (before the queue's next). */
+    private final AtomicBoolean timerDue = new AtomicBoolean();
     /** Set by the game's own listener; read and cleared by the owner after each event. */
     private volatile boolean changed;
-    private Thread owner;
-    private boolean closed;
+    private volatile Thread owner;
+    private volatile boolean closed;
 
     /** @param game the game this runtime owns from now on: nobody else calls its actions */
     public GameRuntime(RefereedGame game) {
@@ -110,6 +116,22 @@ public final class GameRuntime implements AutoCloseable {
     }
 
     /**
+     * The sender's timer (a periodic send): the newest snapshot with time run on to the game
+     * clock's now ({@link RefereeSnapshot#at}), computed on the caller's thread. It never waits
+     * for the owner, so a real-time sender keeps its grid however busy the owner is (listeners,
+     * events queued ahead, a thread of lower priority); the owner's own timer event is asked
+     * for too (a flag, one at a time, run before the queue's next), so the owner publishes what
+     * time changed and its listeners hear of it. It takes no lock the owner holds.
+     */
+    public RefereeSnapshot timed() {
+        if (!timerDue.getAndSet(true)) {
+            LockSupport.unpark(owner); // no lock: the owner may hold the queue's while it is not scheduled
+        }
+        RefereeSnapshot s = snapshot; // before the clock: time is only ever run on
+        return s.at(game.now());
+    }
+
+    /**
      * A command's wait for its own event's outcome (the CLI's; a view never waits, it takes the
      * outcome at a frame once the future is done): the owner works in memory only, so this is
      * the events ahead in the queue; a stopped or stuck owner is an outcome, not a hang.
@@ -149,33 +171,51 @@ public final class GameRuntime implements AutoCloseable {
         return done;
     }
 
-    private synchronized boolean enqueue(Runnable event) {
-        if (closed) {
-            return false;
+    private boolean enqueue(Runnable event) {
+        synchronized (this) {
+            if (closed) {
+                return false;
+            }
+            events.addLast(event);
         }
-        events.addLast(event);
-        notifyAll();
+        LockSupport.unpark(owner);
         return true;
     }
 
-    private synchronized Runnable take() throws InterruptedException {
-        while (events.isEmpty() && !closed) {
-            wait();
+    /**
+     * The next event: the sender's timer when it is due (ahead of the queue: an action runs time
+     * on before it applies anyway), else the queue's first; null once closed and empty, or interrupted.
+     */
+    private Runnable take() {
+        while (true) {
+            if (timerDue.getAndSet(false)) {
+                return this::timer;
+            }
+            synchronized (this) {
+                Runnable e = events.pollFirst();
+                if (e != null || closed) {
+                    return e;
+                }
+            }
+            LockSupport.park(this);
+            if (Thread.currentThread().isInterrupted()) {
+                return null;
+            }
         }
-        return events.pollFirst();
+    }
+
+    private void timer() {
+        game.advance();
+        publish();
     }
 
     private void run() {
-        try {
-            for (Runnable event = take(); event != null; event = take()) {
-                try {
-                    event.run();
-                } catch (RuntimeException e) {
-                    LOG.error("a GameController event failed; the game goes on", e);
-                }
+        for (Runnable event = take(); event != null; event = take()) {
+            try {
+                event.run();
+            } catch (RuntimeException e) {
+                LOG.error("a GameController event failed; the game goes on", e);
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
         }
     }
 
@@ -198,9 +238,9 @@ public final class GameRuntime implements AutoCloseable {
         Thread t;
         synchronized (this) {
             closed = true;
-            notifyAll();
             t = owner;
         }
+        LockSupport.unpark(t);
         if (t != null && t != Thread.currentThread()) {
             try {
                 t.join(ANSWER_MS);

@@ -35,6 +35,21 @@ public record RefereeSnapshot(GameControlData robots, GameControlData truth, Str
         return new RefereeSnapshot(robots, robots, g.describe(), g.snapshot(), null, g.undoList());
     }
 
+    /**
+     * This snapshot as the owner's timer event would leave the game at {@code nowMs}, computed
+     * by the league's own rules on private copies: what a periodic send sends at its instant
+     * without waiting for the owner ({@link GameRuntime#timed()}). This snapshot stays as it is.
+     */
+    public RefereeSnapshot at(long nowMs) {
+        if (hsl != null) {
+            HslState h = hsl.at(nowMs);
+            return new RefereeSnapshot(h.robotData(), h.trueData(), h.describe(), null, h, undoList);
+        }
+        GameState g = hl.at(nowMs);
+        GameControlData data = g.toControlData(nowMs);
+        return new RefereeSnapshot(data, data, g.describe(nowMs), g, null, undoList);
+    }
+
     /** Whether a team with this number plays in this game. */
     public boolean hasTeam(int number) {
         return truth.team(number) != null;

@@ -3,15 +3,26 @@ package touchline.app.game;
 import org.junit.jupiter.api.Test;
 import touchline.app.SystemClock;
 import touchline.game.Game;
+import touchline.game.LeagueAction;
 import touchline.game.LeagueParams;
 import touchline.game.ManualClock;
 import touchline.game.Outcome;
 import touchline.game.Penalize;
 import touchline.game.Penalty;
+import touchline.game.ToPlaying;
 import touchline.game.ToReady;
+import touchline.game.ToSet;
 import touchline.game.hsl.Competition;
 import touchline.game.hsl.HslGame;
 import touchline.game.hsl.HslRules;
+import touchline.game.hsl.FreeSetPlay;
+import touchline.game.hsl.HslStartSetPlay;
+import touchline.game.hsl.SetPlay;
+import touchline.game.hsl.StopPlay;
+import touchline.game.hsl.WaitForSetPlay;
+import touchline.protocol.gamecontroller.GameStateFormat;
+import touchline.protocol.gamecontroller.HlGameState12;
+import touchline.protocol.gamecontroller.HslGameState20;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.testing.Await;
 import touchline.transport.gamecontroller.GcConfig;
@@ -28,6 +39,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -130,6 +142,56 @@ class GameRuntimeTest {
             Outcome o = owner.perform(new ToReady()).join();
             assertFalse(o.applied());
             assertEquals("ready is not an action of this game's rules", o.message());
+        }
+    }
+
+    @Test
+    void aSnapshotRunOnToAnInstantIsWhatTheOwnersTimerMakesOfIt() {
+        ManualClock clock = new ManualClock(0);
+        try (GameRuntime owner = new GameRuntime(game(clock))) {
+            owner.start();
+            for (LeagueAction<?> a : List.<LeagueAction<?>>of(new ToReady(), new ToSet(), new ToPlaying(),
+                    new Penalize(13, 1, Penalty.PHYSICAL_CONTACT))) {
+                assertTrue(owner.perform(a).join().applied());
+            }
+            sameAsTheOwnersTimer(owner, clock, new HlGameState12(), new HlGameState12());
+        }
+        ManualClock hslClock = new ManualClock(0);
+        try (GameRuntime owner = new GameRuntime(new HslGame(HslRules.v7(Competition.MIDDLE_ADVANCED), 5,
+                new TeamColour[]{TeamColour.RED, TeamColour.PURPLE}, 14,
+                new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, hslClock))) {
+            owner.start();
+            for (LeagueAction<?> a : List.<LeagueAction<?>>of(new HslStartSetPlay(5, SetPlay.KICK_OFF),
+                    new WaitForSetPlay(), new FreeSetPlay(), new StopPlay(false))) {
+                assertTrue(owner.perform(a).join().applied());
+            }
+            sameAsTheOwnersTimer(owner, hslClock, new HslGameState20(), HslGameState20.trueData());
+        }
+    }
+
+    /** Through penalties ending, set plays timing out and halves ending: the sender's view equals the owner's, byte for byte. */
+    private static void sameAsTheOwnersTimer(GameRuntime owner, ManualClock clock, GameStateFormat robots,
+                                             GameStateFormat truth) {
+        for (int step = 0; step < 200; step++) {
+            RefereeSnapshot before = owner.snapshot();
+            clock.advance(7_300);
+            RefereeSnapshot sent = before.at(clock.millis());
+            RefereeSnapshot owners = owner.tick().join();
+            assertArrayEquals(robots.encode(owners.robots()), robots.encode(sent.robots()), "robots at step " + step);
+            assertArrayEquals(truth.encode(owners.truth()), truth.encode(sent.truth()), "truth at step " + step);
+            assertEquals(owners.description(), sent.description(), "step " + step);
+        }
+    }
+
+    @Test
+    void theSendersTimerTakesNoLockTheOwnerHolds() throws Exception {
+        try (GameRuntime owner = new GameRuntime(game(new ManualClock(0)))) {
+            owner.start();
+            CompletableFuture<RefereeSnapshot> timed = new CompletableFuture<>();
+            synchronized (owner) { // as the owner holds it taking its next event, then is not scheduled
+                new Thread(() -> timed.complete(owner.timed()), "gc-sender").start();
+                Await.until("the sender's timer while the owner holds its queue", timed::isDone);
+            }
         }
     }
 }

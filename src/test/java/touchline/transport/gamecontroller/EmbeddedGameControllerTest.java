@@ -6,6 +6,7 @@ import org.junit.jupiter.api.Test;
 import touchline.game.Game;
 import touchline.game.GameClock;
 import touchline.game.LeagueParams;
+import touchline.game.ManualClock;
 import touchline.app.game.MatchMode;
 import touchline.game.Penalty;
 import touchline.game.ToPlaying;
@@ -14,6 +15,7 @@ import touchline.game.ToSet;
 import touchline.protocol.gamecontroller.GameControlData;
 import touchline.protocol.gamecontroller.HlGameState12;
 import touchline.protocol.gamecontroller.ReturnPacket;
+import touchline.testing.HeldOwner;
 import touchline.transport.Direction;
 import touchline.transport.Envelope;
 
@@ -165,6 +167,32 @@ class EmbeddedGameControllerTest {
             gc.runtime().perform(new ToPlaying()).join();
             Await.until(() -> !matchMode.mayConsoleSend(), 2000, "console silenced");
             assertTrue(matchMode.hold("debug option request"));
+        }
+    }
+
+    @Test
+    void periodicSendGoesOutWithItsOwnTimeWhileTheOwnerIsHeld() throws Exception {
+        ManualClock clock = new ManualClock(1_000_000);
+        Game game = new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock);
+        try (LoopbackReceiver robot = new LoopbackReceiver();
+             EmbeddedGameController gc = new EmbeddedGameController(game, new GcConfig(GcProfile.HL12, false,
+                     List.of(robot.address()), ANY_LOOPBACK_PORT, ANY_LOOPBACK_PORT, null, 50, false),
+                     envelopes::add, null, new touchline.app.SystemClock())) {
+            gc.start();
+            gc.runtime().perform(new ToReady()).join();
+            gc.runtime().perform(new ToSet()).join();
+            try (HeldOwner held = new HeldOwner(gc.runtime())) {
+                // the owner publishes PLAYING, then its listener holds it: no event runs from now on
+                gc.runtime().perform(new ToPlaying());
+                assertTrue(held.awaitHeld(), "the game's owner is held");
+                int atHold = gc.runtime().snapshot().robots().secsRemaining();
+                clock.advance(5_000);
+                // the sender's grid goes on with the game's time run on to each send, not the held owner's last state
+                Await.until(() -> envelopes.stream().anyMatch(e -> e.direction() == Direction.OUT
+                                && new HlGameState12().decode(e.raw()).value().secsRemaining() == atHold - 5),
+                        10_000, "a periodic datagram 5 s on while the owner is held");
+                assertTrue(held.holding(), "the owner was held all along");
+            }
         }
     }
 }

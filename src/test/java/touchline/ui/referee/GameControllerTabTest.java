@@ -12,7 +12,7 @@ import touchline.app.game.EmbeddedGameController;
 import touchline.game.Game;
 import touchline.game.LeagueParams;
 import touchline.testing.Await;
-import touchline.testing.HeldListener;
+import touchline.testing.HeldOwner;
 import touchline.testing.UiTest;
 import touchline.transport.Channel;
 import touchline.transport.Direction;
@@ -104,9 +104,7 @@ class GameControllerTabTest {
 
             // Stop only asks: with the game's thread held (so the runtime's close cannot end), the
             // FX thread comes back at once and the tab says "stopping…" until the close is done
-            HeldListener<touchline.app.game.RefereeSnapshot> owner = new HeldListener<>();
-            console.referee().gameController().orElseThrow().runtime().addListener(owner);
-            try {
+            try (HeldOwner owner = new HeldOwner(console.referee().gameController().orElseThrow().runtime())) {
                 fx(() -> {
                     ((Button) tab.node().lookup("#gc-undo")).fire(); // a change: the listener holds gc-game
                     return null;
@@ -119,8 +117,6 @@ class GameControllerTabTest {
                 });
                 assertEquals("stopping…", asked, "Stop returned while the runtime's close was held");
                 assertTrue(console.referee().gameController().isEmpty(), "no longer the running GameController");
-            } finally {
-                owner.release();
             }
             Await.until("the stop done", () -> "stopped".equals(onFx(() -> {
                 tab.refresh(null);
@@ -141,9 +137,7 @@ class GameControllerTabTest {
                     new InetSocketAddress("127.0.0.1", 0), null, GcConfig.INTERVAL_MS, false);
             EmbeddedGameController elsewhere = console.referee().start(
                     new Game(LeagueParams.hlSimulationKidSize(), 3, 1, 4, 0, console.referee().gameClock()), elsewhereConfig);
-            HeldListener<touchline.app.game.RefereeSnapshot> owner = new HeldListener<>();
-            elsewhere.runtime().addListener(owner);
-            try {
+            try (HeldOwner owner = new HeldOwner(elsewhere.runtime())) {
                 elsewhere.runtime().perform(new touchline.game.ToReady()); // a change: the listener holds gc-game
                 assertTrue(owner.awaitHeld(), "the game's thread is held");
                 String asked = fx(() -> {
@@ -153,8 +147,6 @@ class GameControllerTabTest {
                     return tab.node().lookup("#gc-setup-message") == null ? "shown by Start itself" : setupMessage(tab);
                 });
                 assertEquals("starting…", asked, "Start returned while the stop before it was held");
-            } finally {
-                owner.release();
             }
             Await.until("the started GameController shown", () -> onFx(() -> {
                 tab.refresh(null);

@@ -140,11 +140,9 @@ class HslRefereeModelTest {
      */
     @Test
     void anActionOnlyEnqueuesAndItsOutcomeComesAtAFrameAfterTheOwnerAnswered() throws Exception {
-        touchline.testing.HeldListener<touchline.app.game.RefereeSnapshot> owner = new touchline.testing.HeldListener<>();
-        owners.get(0).addListener(owner);
-        try {
+        try (touchline.testing.HeldOwner held = new touchline.testing.HeldOwner(owners.get(0))) {
             model.perform(model.ready());
-            assertTrue(owner.awaitHeld(), "the owner is held");
+            assertTrue(held.awaitHeld(), "the game's owner is held");
             model.perform(model.goal(0)); // no goal in READY
             model.refresh();
             assertTrue(model.waiting());
@@ -153,8 +151,6 @@ class HslRefereeModelTest {
             model.refresh();
             assertTrue(model.refused());
             assertEquals("the GameController did not answer within " + GameRuntime.ANSWER_MS + " ms", model.message());
-        } finally {
-            owner.release();
         }
         settle(model);
         assertEquals(HslPlayState.READY, model.state().state());

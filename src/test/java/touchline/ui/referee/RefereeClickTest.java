@@ -23,9 +23,9 @@ import touchline.game.hsl.SetPlay;
 import touchline.game.hsl.HslStartSetPlay;
 import touchline.protocol.gamecontroller.TeamColour;
 import touchline.testing.Await;
+import touchline.testing.HeldOwner;
 import touchline.ui.frame.View;
 
-import java.util.concurrent.CountDownLatch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -41,8 +41,7 @@ import static touchline.testing.FxStep.fx;
 class RefereeClickTest {
 
     private final ManualClock clock = new ManualClock(0);
-    private final CountDownLatch held = new CountDownLatch(1);
-    private final CountDownLatch release = new CountDownLatch(1);
+    private HeldOwner held;
     private GameRuntime owner;
 
     @BeforeAll
@@ -52,21 +51,14 @@ class RefereeClickTest {
 
     @AfterEach
     void letGo() {
-        release.countDown();
+        held.close();
         owner.close();
     }
 
-    /** A started owner of {@code game} that holds its thread at the first change until {@link #release}. */
+    /** A started owner of {@code game} that holds its thread at the first change until {@link #held} is closed. */
     private GameRuntime heldAtTheFirstChange(RefereedGame game) {
         owner = new GameRuntime(game);
-        owner.addListener(s -> {
-            held.countDown();
-            try {
-                release.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
+        held = new HeldOwner(owner);
         owner.start();
         return owner;
     }
@@ -83,7 +75,7 @@ class RefereeClickTest {
     private void pressThenLetGo(View view, String id) throws Exception {
         fx(() -> {
             ((ButtonBase) view.node().lookup("#" + id)).fire();
-            release.countDown();
+            held.close();
             return null;
         });
     }
@@ -110,7 +102,7 @@ class RefereeClickTest {
         GameRuntime game = heldAtTheFirstChange(new Game(LeagueParams.hlSimulationKidSize(), 13, 1, 7, 0, clock));
         GameControllerView view = shown(() -> new GameControllerView(game, null));
         game.perform(new ToReady());
-        held.await();
+        assertTrue(held.awaitHeld(), "the game's owner is held");
         pressThenLetGo(view, "gc-play"); // no whistle in READY
         String line = awaitMessage(view, "illegal now: ");
         assertTrue(line.contains("READY"), line);
@@ -125,7 +117,7 @@ class RefereeClickTest {
                 new TeamColour[]{TeamColour.BLUE, TeamColour.YELLOW}, clock));
         HslRefereeView view = shown(() -> new HslRefereeView(new HslRefereeModel(game), null, null));
         game.perform(new HslStartSetPlay(5, SetPlay.KICK_OFF)); // READY, as if a key had been pressed
-        held.await();
+        assertTrue(held.awaitHeld(), "the game's owner is held");
         // the box last drew INITIAL, where Ready is allowed: a second Ready, refused by the rules
         pressThenLetGo(view, "gc-ready");
         awaitMessage(view, "illegal now: ");
